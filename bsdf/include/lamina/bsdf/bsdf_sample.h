@@ -1,0 +1,57 @@
+// The types of the BSDF interface (DESIGN.md, "The BSDF interface").
+#pragma once
+
+#include <cstdint>
+
+#include "lamina/core/spectrum.h"
+#include "lamina/core/vector.h"
+
+namespace lamina {
+
+/// Which quantity a path carries. Refraction scales radiance by 1/eta^2 but not importance
+/// (Veach 1997, section 5.2); evaluating in the wrong mode makes light tracing and camera
+/// tracing disagree.
+enum class TransportMode { Radiance, Importance };
+
+/// Lobe flags: what kind of scattering a lobe or a sample is.
+enum LobeFlags : std::uint32_t {
+    kLobeNone = 0,
+    kLobeReflection = 1u << 0,
+    kLobeTransmission = 1u << 1,
+    kLobeDiffuse = 1u << 2,
+    kLobeGlossy = 1u << 3,
+    kLobeSpecular = 1u << 4,  ///< a Dirac delta: never evaluated by eval() or pdf()
+    kLobeDiffuseReflection = kLobeDiffuse | kLobeReflection,
+    kLobeDiffuseTransmission = kLobeDiffuse | kLobeTransmission,
+    kLobeGlossyReflection = kLobeGlossy | kLobeReflection,
+    kLobeGlossyTransmission = kLobeGlossy | kLobeTransmission,
+    kLobeSpecularReflection = kLobeSpecular | kLobeReflection,
+    kLobeSpecularTransmission = kLobeSpecular | kLobeTransmission,
+    kLobeAll = kLobeReflection | kLobeTransmission | kLobeDiffuse | kLobeGlossy | kLobeSpecular,
+};
+
+inline bool isSpecular(std::uint32_t f) { return (f & kLobeSpecular) != 0; }
+inline bool isTransmission(std::uint32_t f) { return (f & kLobeTransmission) != 0; }
+inline bool isReflection(std::uint32_t f) { return (f & kLobeReflection) != 0; }
+
+/// What sample() returns: the article's evalIndirect.
+template <SpectrumType S>
+struct BsdfSample {
+    using Float = typename S::Float;
+    Vec3<Float> wi{0, 0, 1};
+    /// eval(wo, wi) / pdf(wo, wi) for the whole BSDF; for a delta lobe, the lobe's
+    /// f * |cos| / (discrete probability of choosing it).
+    S weight{};
+    /// Solid-angle density of wi (mixture over lobes), or the discrete probability of the
+    /// chosen delta lobe times the probabilities of delta choices.
+    Float pdf = 0;
+    std::uint32_t flags = kLobeNone;
+    /// Relative index of refraction across the boundary along the sampled direction
+    /// (eta_transmitted / eta_incident); 1 for reflection.
+    Float eta = 1;
+
+    bool isSpecular() const { return lamina::isSpecular(flags); }
+    bool isTransmission() const { return lamina::isTransmission(flags); }
+};
+
+}  // namespace lamina

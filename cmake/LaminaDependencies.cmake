@@ -1,0 +1,42 @@
+# Every third-party dependency is found through its own CMake config package. A missing one
+# stops the configuration with the Debian package that provides it and the set-up command.
+set(LAMINA_SETUP_HINT "run `bash scripts/setup.sh` (as root) to install every dependency")
+
+macro(lamina_require package debian_package)
+  find_package(${package} ${ARGN} CONFIG QUIET)
+  if(NOT ${package}_FOUND)
+    message(FATAL_ERROR
+      "lamina: CMake package '${package}' not found. It comes with the Debian package "
+      "'${debian_package}': ${LAMINA_SETUP_HINT}.")
+  endif()
+endmacro()
+
+lamina_require(glm libglm-dev)
+lamina_require(nlohmann_json nlohmann-json3-dev)
+lamina_require(yaml-cpp libyaml-cpp-dev)
+
+if(LAMINA_BUILD_APP)
+  lamina_require(embree libembree-dev 3)
+  lamina_require(TBB libtbb-dev)
+  lamina_require(OpenImageIO libopenimageio-dev)
+  lamina_require(CLI11 libcli11-dev)
+  lamina_require(tinyobjloader libtinyobjloader-dev)
+endif()
+if(LAMINA_BUILD_TESTS)
+  lamina_require(GTest libgtest-dev)
+endif()
+if(LAMINA_BUILD_BENCHMARKS)
+  lamina_require(benchmark libbenchmark-dev)
+endif()
+
+# The CIE tables come from Debian's colord-data at build time (never copied into the repo).
+set(LAMINA_COLORD_DIR "/usr/share/colord" CACHE PATH "Where colord-data installed its tables")
+if(NOT EXISTS "${LAMINA_COLORD_DIR}/cmf/CIE1931-2deg-XYZ.cmf"
+   OR NOT EXISTS "${LAMINA_COLORD_DIR}/illuminant/CIE-D65.sp")
+  message(FATAL_ERROR
+    "lamina: CIE tables not found under ${LAMINA_COLORD_DIR} (cmf/CIE1931-2deg-XYZ.cmf, "
+    "illuminant/CIE-D65.sp). They come with the Debian package 'colord-data': "
+    "${LAMINA_SETUP_HINT}.")
+endif()
+
+find_package(Python3 COMPONENTS Interpreter QUIET)
