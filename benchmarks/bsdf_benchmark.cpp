@@ -1,7 +1,7 @@
 // Throughput of eval and sample per BSDF model, in float (the renderer's precision).
 #include <benchmark/benchmark.h>
 
-#include "lamina/bsdf/lambert.h"
+#include "lamina/bsdf/diffuse.h"
 #include "lamina/core/pcg32.h"
 
 namespace lamina {
@@ -26,8 +26,8 @@ void benchSample(benchmark::State& state, const B& bxdf) {
             bxdf.sample(wo, rng.nextFloat(), rng.nextFloat2(), TransportMode::Radiance));
 }
 
-void BM_LambertEval(benchmark::State& s) { benchEval(s, LambertBxdf<Rgbf>(Rgbf(0.5f))); }
-void BM_LambertSample(benchmark::State& s) { benchSample(s, LambertBxdf<Rgbf>(Rgbf(0.5f))); }
+void BM_LambertEval(benchmark::State& s) { benchEval(s, DiffuseBxdf<Rgbf>(Rgbf(0.5f))); }
+void BM_LambertSample(benchmark::State& s) { benchSample(s, DiffuseBxdf<Rgbf>(Rgbf(0.5f))); }
 BENCHMARK(BM_LambertEval);
 BENCHMARK(BM_LambertSample);
 

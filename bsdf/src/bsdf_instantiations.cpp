@@ -1,16 +1,26 @@
 // Explicit instantiations of the BSDF templates for the four variants of DESIGN.md
 // (RGB/float, RGB/double, spectral/float, spectral/double): every model is compiled in all
 // of them, so a change that breaks one variant fails the build, not a later render.
-#include "lamina/bsdf/lambert.h"
+#include "lamina/bsdf/conductor.h"
+#include "lamina/bsdf/dielectric.h"
+#include "lamina/bsdf/diffuse.h"
+#include "lamina/bsdf/layered.h"
 
 namespace lamina {
 
-#define LAMINA_INSTANTIATE_BSDF(Class)                   \
-    template class Class<Rgb<float>>;                    \
-    template class Class<Rgb<double>>;                   \
-    template class Class<SampledSpectrum<float>>;        \
+#define LAMINA_INSTANTIATE_BSDF(Class)            \
+    template class Class<Rgb<float>>;             \
+    template class Class<Rgb<double>>;            \
+    template class Class<SampledSpectrum<float>>; \
     template class Class<SampledSpectrum<double>>;
 
-LAMINA_INSTANTIATE_BSDF(LambertBxdf)
+LAMINA_INSTANTIATE_BSDF(DiffuseBxdf)
+LAMINA_INSTANTIATE_BSDF(ConductorBxdf)
+LAMINA_INSTANTIATE_BSDF(DielectricBxdf)
+LAMINA_INSTANTIATE_BSDF(LayeredBxdf)
+LAMINA_INSTANTIATE_BSDF(MicrofacetReflectionLobe)
+
+template class MicrofacetDistribution<float>;
+template class MicrofacetDistribution<double>;
 
 }  // namespace lamina

@@ -61,3 +61,32 @@ TEST(ChiSquareSelfTest, SidakCorrection) {
 
 }  // namespace
 }  // namespace lamina
+
+#include "bsdf_cases.h"
+
+namespace lamina {
+namespace {
+
+TEST(ChiSquareSelfTest, RejectsABsdfWhosePdfIsNotItsSampler) {
+    // Samples from Walter's NDF sampling, tested against the visible-normal density of the
+    // same GGX lobe: both are valid densities, but not of each other.
+    using testing::Spec;
+    const MicrofacetDistribution<double> d(NdfKind::Ggx, 0.5, 0.5);
+    const ConductorBxdf<Spec> walter(
+        MicrofacetReflectionLobe<Spec>(d, testing::goldFresnel(), MicrofacetSampling::Walter));
+    const ConductorBxdf<Spec> vndf(MicrofacetReflectionLobe<Spec>(d, testing::goldFresnel()));
+    const Vec3d wo = testing::directionAt(60.0);
+    const ChiSquareResult r = runChiSquareTest(
+        config(),
+        [&](Pcg32& rng) -> std::optional<Vec3d> {
+            const auto s = walter.sample(wo, 0.5, Vec2d(rng.nextDouble(), rng.nextDouble()),
+                                         TransportMode::Radiance);
+            if (!s) return std::nullopt;
+            return s->wi;
+        },
+        [&](const Vec3d& wi) { return vndf.pdf(wo, wi); });
+    EXPECT_FALSE(r.passed) << r.message;
+}
+
+}  // namespace
+}  // namespace lamina

@@ -1,12 +1,12 @@
 #include <gtest/gtest.h>
 
-#include "lamina/bsdf/lambert.h"
+#include "lamina/bsdf/diffuse.h"
 
 namespace lamina {
 namespace {
 
 TEST(Lambert, EvalIsReflectanceOverPiTimesCosine) {
-    const LambertBxdf<Rgbd> bxdf(Rgbd(0.5, 0.25, 1.0));
+    const DiffuseBxdf<Rgbd> bxdf(Rgbd(0.5, 0.25, 1.0));
     const Vec3d wo(0, 0, 1), wi = glm::normalize(Vec3d(1, 0, 1));
     const Rgbd f = bxdf.eval(wo, wi, TransportMode::Radiance);
     EXPECT_NEAR(f[0], 0.5 / kPi<double> * wi.z, 1e-15);
@@ -17,7 +17,7 @@ TEST(Lambert, EvalIsReflectanceOverPiTimesCosine) {
 }
 
 TEST(Lambert, SampleWeightIsReflectance) {
-    const LambertBxdf<SampledSpectrum<float>> bxdf(SampledSpectrum<float>(0.1f, 0.2f, 0.3f, 0.4f));
+    const DiffuseBxdf<SampledSpectrum<float>> bxdf(SampledSpectrum<float>(0.1f, 0.2f, 0.3f, 0.4f));
     const auto s = bxdf.sample(Vec3f(0, 0, -1), 0.5f, Vec2f(0.3f, 0.6f), TransportMode::Radiance);
     ASSERT_TRUE(s);
     EXPECT_LT(s->wi.z, 0.0f);

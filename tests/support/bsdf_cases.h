@@ -1,0 +1,148 @@
+// A catalogue of BSDF configurations shared by the statistical BSDF tests: every lobe and
+// layered combination, across roughness, NDF, sampling method and Fresnel model.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "lamina/bsdf/conductor.h"
+#include "lamina/bsdf/dielectric.h"
+#include "lamina/bsdf/diffuse.h"
+#include "lamina/bsdf/layered.h"
+
+namespace lamina::testing {
+
+using Spec = Rgb<double>;
+
+struct BsdfCase {
+    std::string name;
+    std::shared_ptr<const Bxdf<Spec>> bxdf;
+    bool transmissive = false;
+};
+
+inline const char* samplingName(MicrofacetSampling s) {
+    switch (s) {
+        case MicrofacetSampling::VisibleNormals: return "vndf";
+        case MicrofacetSampling::SphericalCaps: return "caps";
+        case MicrofacetSampling::Walter: return "walter";
+        case MicrofacetSampling::WalterWidened: return "walter_widened";
+    }
+    return "?";
+}
+
+inline const char* ndfName(NdfKind k) {
+    switch (k) {
+        case NdfKind::Ggx: return "ggx";
+        case NdfKind::Beckmann: return "beckmann";
+        case NdfKind::BlinnPhong: return "blinn_phong";
+    }
+    return "?";
+}
+
+inline std::string alphaName(double a) {
+    std::string s = std::to_string(a);
+    s.erase(s.find_last_not_of('0') + 1);
+    for (char& c : s)
+        if (c == '.') c = 'p';
+    return s;
+}
+
+/// Gold-like conductor optics at three wavelengths (n, k at ~650, 550, 450 nm).
+inline Fresnel<Spec> goldFresnel() {
+    return Fresnel<Spec>::conductor(Spec(0.18, 0.42, 1.37), Spec(3.42, 2.35, 1.77));
+}
+
+inline std::vector<BsdfCase> bsdfCases() {
+    std::vector<BsdfCase> cases;
+    const Spec albedo(0.8, 0.5, 0.3);
+    for (auto [model, name] : {std::pair{DiffuseModel::Lambert, "lambert"},
+                               std::pair{DiffuseModel::OrenNayar, "oren_nayar"},
+                               std::pair{DiffuseModel::Burley, "burley"},
+                               std::pair{DiffuseModel::Frostbite, "frostbite"}})
+        cases.push_back({name, std::make_shared<DiffuseBxdf<Spec>>(albedo, model, 0.7)});
+
+    // Conductors: GGX over alpha and sampling methods, Beckmann, Blinn-Phong, anisotropic.
+    for (double alpha : {0.05, 0.2, 0.5, 1.0})
+        for (auto s : {MicrofacetSampling::VisibleNormals, MicrofacetSampling::SphericalCaps,
+                       MicrofacetSampling::Walter, MicrofacetSampling::WalterWidened})
+            cases.push_back({std::string("conductor_ggx_") + samplingName(s) + "_a" + alphaName(alpha),
+                             std::make_shared<ConductorBxdf<Spec>>(MicrofacetReflectionLobe<Spec>(
+                                 MicrofacetDistribution<double>(NdfKind::Ggx, alpha, alpha),
+                                 goldFresnel(), s))});
+    for (double alpha : {0.05, 0.2, 0.5, 1.0})
+        for (auto s : {MicrofacetSampling::VisibleNormals, MicrofacetSampling::Walter})
+            cases.push_back({std::string("conductor_beckmann_") + samplingName(s) + "_a" + alphaName(alpha),
+                             std::make_shared<ConductorBxdf<Spec>>(MicrofacetReflectionLobe<Spec>(
+                                 MicrofacetDistribution<double>(NdfKind::Beckmann, alpha, alpha),
+                                 goldFresnel(), s))});
+    cases.push_back({"conductor_blinn_phong_a0p3",
+                     std::make_shared<ConductorBxdf<Spec>>(MicrofacetReflectionLobe<Spec>(
+                         MicrofacetDistribution<double>(NdfKind::BlinnPhong, 0.3, 0.3),
+                         Fresnel<Spec>::schlick(Spec(0.9, 0.6, 0.3))))});
+    cases.push_back({"conductor_ggx_anisotropic_vndf",
+                     std::make_shared<ConductorBxdf<Spec>>(MicrofacetReflectionLobe<Spec>(
+                         MicrofacetDistribution<double>(NdfKind::Ggx, 0.1, 0.5), goldFresnel()))});
+    cases.push_back({"conductor_ggx_anisotropic_walter",
+                     std::make_shared<ConductorBxdf<Spec>>(MicrofacetReflectionLobe<Spec>(
+                         MicrofacetDistribution<double>(NdfKind::Ggx, 0.5, 0.1), goldFresnel(),
+                         MicrofacetSampling::Walter))});
+    cases.push_back({"conductor_beckmann_anisotropic_vndf",
+                     std::make_shared<ConductorBxdf<Spec>>(MicrofacetReflectionLobe<Spec>(
+                         MicrofacetDistribution<double>(NdfKind::Beckmann, 0.15, 0.6),
+                         goldFresnel()))});
+
+    // Rough dielectrics, entering and leaving (eta < 1 seen from the other side: TIR).
+    for (double alpha : {0.05, 0.2, 0.5, 1.0})
+        for (double eta : {1.5, 1.0 / 1.5})
+            cases.push_back({std::string("dielectric_ggx_a") + alphaName(alpha) + (eta > 1 ? "_eta1p5" : "_eta0p67"),
+                             std::make_shared<DielectricBxdf<Spec>>(
+                                 eta, MicrofacetDistribution<double>(NdfKind::Ggx, alpha, alpha)),
+                             true});
+    cases.push_back({"dielectric_beckmann_a0p3",
+                     std::make_shared<DielectricBxdf<Spec>>(
+                         1.33, MicrofacetDistribution<double>(NdfKind::Beckmann, 0.3, 0.3)),
+                     true});
+
+    // Layered: the article's default (GGX + Lambert, shadowed Schlick, fresnel coupling),
+    // sum coupling with Frostbite, and a transmissive stack.
+    auto layered = [&](double alpha, DiffuseModel dm, LayerCoupling c, double t,
+                       FresnelKind fk) {
+        typename LayeredBxdf<Spec>::Layers l;
+        const Fresnel<Spec> f = fk == FresnelKind::ExactDielectric
+                                    ? Fresnel<Spec>::dielectric(Spec(1.5))
+                                    : Fresnel<Spec>::schlickShadowed(Spec(0.04), Spec(1.0));
+        const MicrofacetDistribution<double> d(NdfKind::Ggx, alpha, alpha);
+        l.interface.emplace(d, f);
+        l.diffuse.emplace(albedo, dm, std::sqrt(alpha));
+        if (t > 0) l.transmission.emplace(1.5, d);
+        l.transmissionWeight = t;
+        l.coupling = c;
+        return std::make_shared<LayeredBxdf<Spec>>(l);
+    };
+    for (double alpha : {0.05, 0.2, 0.5, 1.0}) {
+        cases.push_back({"layered_article_a" + alphaName(alpha),
+                         layered(alpha, DiffuseModel::Lambert, LayerCoupling::Fresnel, 0.0,
+                                 FresnelKind::SchlickShadowed)});
+        cases.push_back({"layered_transmission_a" + alphaName(alpha),
+                         layered(alpha, DiffuseModel::Lambert, LayerCoupling::Fresnel, 0.6,
+                                 FresnelKind::ExactDielectric),
+                         true});
+    }
+    cases.push_back({"layered_frostbite_sum",
+                     layered(0.3, DiffuseModel::Frostbite, LayerCoupling::Sum, 0.0,
+                             FresnelKind::SchlickShadowed)});
+    cases.push_back({"layered_schlick_transmission",
+                     layered(0.3, DiffuseModel::OrenNayar, LayerCoupling::Fresnel, 0.5,
+                             FresnelKind::SchlickShadowed),
+                     true});
+    return cases;
+}
+
+/// Directions of wo at the given polar angle (degrees), off the xz-plane so anisotropy shows.
+inline Vec3d directionAt(double thetaDeg, double phiDeg = 20.0) {
+    const double t = radians(thetaDeg), p = radians(phiDeg);
+    return {std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t)};
+}
+
+}  // namespace lamina::testing
