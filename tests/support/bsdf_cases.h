@@ -3,6 +3,7 @@
 #pragma once
 
 #include <memory>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -19,7 +20,10 @@ struct BsdfCase {
     std::string name;
     std::shared_ptr<const Bxdf<Spec>> bxdf;
     bool transmissive = false;
+    double eta = 1.0;  ///< relative index of the transmissive boundary (inside / outside)
 };
+
+inline void PrintTo(const BsdfCase& c, std::ostream* os) { *os << c.name; }
 
 inline const char* samplingName(MicrofacetSampling s) {
     switch (s) {
@@ -98,11 +102,11 @@ inline std::vector<BsdfCase> bsdfCases() {
             cases.push_back({std::string("dielectric_ggx_a") + alphaName(alpha) + (eta > 1 ? "_eta1p5" : "_eta0p67"),
                              std::make_shared<DielectricBxdf<Spec>>(
                                  eta, MicrofacetDistribution<double>(NdfKind::Ggx, alpha, alpha)),
-                             true});
+                             true, eta});
     cases.push_back({"dielectric_beckmann_a0p3",
                      std::make_shared<DielectricBxdf<Spec>>(
                          1.33, MicrofacetDistribution<double>(NdfKind::Beckmann, 0.3, 0.3)),
-                     true});
+                     true, 1.33});
 
     // Layered: the article's default (GGX + Lambert, shadowed Schlick, fresnel coupling),
     // sum coupling with Frostbite, and a transmissive stack.
@@ -127,7 +131,7 @@ inline std::vector<BsdfCase> bsdfCases() {
         cases.push_back({"layered_transmission_a" + alphaName(alpha),
                          layered(alpha, DiffuseModel::Lambert, LayerCoupling::Fresnel, 0.6,
                                  FresnelKind::ExactDielectric),
-                         true});
+                         true, 1.5});
     }
     cases.push_back({"layered_frostbite_sum",
                      layered(0.3, DiffuseModel::Frostbite, LayerCoupling::Sum, 0.0,
@@ -135,7 +139,7 @@ inline std::vector<BsdfCase> bsdfCases() {
     cases.push_back({"layered_schlick_transmission",
                      layered(0.3, DiffuseModel::OrenNayar, LayerCoupling::Fresnel, 0.5,
                              FresnelKind::SchlickShadowed),
-                     true});
+                     true, 1.5});
     return cases;
 }
 
