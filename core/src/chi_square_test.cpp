@@ -26,7 +26,8 @@ struct Grid {
 };
 
 Grid makeGrid(const ChiSquareConfig& c) {
-    if (c.domain == ChiSquareDomain::Plane) return {c.planeMin, c.planeMax, c.phiBins, c.cosThetaBins};
+    if (c.domain == ChiSquareDomain::Plane)
+        return {c.planeMin, c.planeMax, c.phiBins, c.cosThetaBins};
     return {{0.0, -1.0}, {2.0 * kPi<double>, 1.0}, c.phiBins, c.cosThetaBins};
 }
 
@@ -74,9 +75,9 @@ double gauss3(ChiSquareDomain domain, double x0, double y0, double w, double h,
 double integrateAdaptive(ChiSquareDomain domain, double x0, double y0, double w, double h,
                          double coarse, int depth, int minDepth, const ChiSquarePdf& pdf) {
     const double hw = 0.5 * w, hh = 0.5 * h;
-    const double q[4] = {gauss3(domain, x0, y0, hw, hh, pdf), gauss3(domain, x0 + hw, y0, hw, hh, pdf),
-                         gauss3(domain, x0, y0 + hh, hw, hh, pdf),
-                         gauss3(domain, x0 + hw, y0 + hh, hw, hh, pdf)};
+    const double q[4] = {
+        gauss3(domain, x0, y0, hw, hh, pdf), gauss3(domain, x0 + hw, y0, hw, hh, pdf),
+        gauss3(domain, x0, y0 + hh, hw, hh, pdf), gauss3(domain, x0 + hw, y0 + hh, hw, hh, pdf)};
     const double fine = q[0] + q[1] + q[2] + q[3];
     // The first levels are always refined (12 x 12 nodes per cell) so that a density that is
     // non-zero only in a corner of a cell is not missed by the coarse rule.
@@ -137,7 +138,8 @@ ChiSquareResult runChiSquareTest(const ChiSquareConfig& config, const ChiSquareS
     double integral = 0.0;
     for (int iy = 0; iy < grid.ny; ++iy) {
         for (int ix = 0; ix < grid.nx; ++ix) {
-            const double p = integrateCell(grid, config.domain, ix, iy, config.maxSubdivisions, pdf);
+            const double p =
+                integrateCell(grid, config.domain, ix, iy, config.maxSubdivisions, pdf);
             integral += p;
             result.expected[static_cast<std::size_t>(iy) * grid.nx + ix] =
                 p * static_cast<double>(config.sampleCount);
@@ -155,8 +157,9 @@ ChiSquareResult runChiSquareTest(const ChiSquareConfig& config, const ChiSquareS
     //    distributed when every expected count is reasonably large).
     std::vector<std::size_t> order(cells);
     std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(),
-              [&](std::size_t a, std::size_t b) { return result.expected[a] < result.expected[b]; });
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        return result.expected[a] < result.expected[b];
+    });
     constexpr double kMinExpected = 5.0;
     double pooledExpected = 0.0, pooledObserved = 0.0, statistic = 0.0;
     int bins = 0;

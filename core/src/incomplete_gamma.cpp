@@ -11,7 +11,9 @@ constexpr int kMaxIterations = 100000;
 constexpr double kEpsilon = 1e-15;
 
 // log of x^a e^-x / Gamma(a): the prefactor common to both expansions.
-double logPrefactor(double a, double x) { return a * std::log(x) - x - std::lgamma(a); }
+double logPrefactor(double a, double x) {
+    return a * std::log(x) - x - std::lgamma(a);
+}
 
 // P(a, x) by its power series, which converges quickly for x < a + 1:
 // P = x^a e^-x / Gamma(a) * sum_n x^n / (a (a+1) ... (a+n)).

@@ -4,9 +4,15 @@
 
 namespace lamina {
 
-double cieX(double nm) { return cie_data::kCmfX(nm); }
-double cieY(double nm) { return cie_data::kCmfY(nm); }
-double cieZ(double nm) { return cie_data::kCmfZ(nm); }
+double cieX(double nm) {
+    return cie_data::kCmfX(nm);
+}
+double cieY(double nm) {
+    return cie_data::kCmfY(nm);
+}
+double cieZ(double nm) {
+    return cie_data::kCmfZ(nm);
+}
 
 double cieYIntegral() {
     static const double integral = integrateAgainstCmf([](double) { return 1.0; }).y;
@@ -21,7 +27,8 @@ const TabulatedCurve* findCieIlluminant(std::string_view name) {
 
 std::vector<std::string> cieIlluminantNames() {
     std::vector<std::string> names;
-    for (const NamedCurve& c : cie_data::kIlluminantList) names.emplace_back(c.name);
+    for (const NamedCurve& c : cie_data::kIlluminantList)
+        names.emplace_back(c.name);
     return names;
 }
 

@@ -12,7 +12,8 @@ RgbColorSpace::RgbColorSpace(Chromaticity r, Chromaticity g, Chromaticity b, Vec
     const Mat3<double> primaries(r.toXyz(), g.toXyz(), b.toXyz());
     // Scale each primary so that their sum is the white point.
     const Vec3d scale = glm::inverse(primaries) * whiteXyz;
-    rgbToXyz_ = Mat3<double>(primaries[0] * scale.x, primaries[1] * scale.y, primaries[2] * scale.z);
+    rgbToXyz_ =
+        Mat3<double>(primaries[0] * scale.x, primaries[1] * scale.y, primaries[2] * scale.z);
     xyzToRgb_ = glm::inverse(rgbToXyz_);
 }
 

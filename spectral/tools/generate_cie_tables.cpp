@@ -37,19 +37,25 @@ Table readCgats(const fs::path& file, int expectedSets) {
         std::istringstream ls(line);
         std::string key;
         ls >> key;
-        if (key == "SPECTRAL_START_NM") ls >> t.startNm;
-        else if (key == "SPECTRAL_END_NM") ls >> t.endNm;
-        else if (key == "SPECTRAL_BANDS") ls >> t.bands;
-        else if (key == "BEGIN_DATA") inData = true;
-        else if (key == "END_DATA") inData = false;
+        if (key == "SPECTRAL_START_NM")
+            ls >> t.startNm;
+        else if (key == "SPECTRAL_END_NM")
+            ls >> t.endNm;
+        else if (key == "SPECTRAL_BANDS")
+            ls >> t.bands;
+        else if (key == "BEGIN_DATA")
+            inData = true;
+        else if (key == "END_DATA")
+            inData = false;
         else if (inData && !key.empty()) {
             std::istringstream row(line);
             std::vector<double> values;
             double v;
-            while (row >> v) values.push_back(v);
+            while (row >> v)
+                values.push_back(v);
             if (static_cast<int>(values.size()) != t.bands)
-                fail(file, "a data row has " + std::to_string(values.size()) + " values, expected " +
-                               std::to_string(t.bands));
+                fail(file, "a data row has " + std::to_string(values.size()) +
+                               " values, expected " + std::to_string(t.bands));
             t.sets.push_back(std::move(values));
         }
     }
@@ -62,7 +68,8 @@ Table readCgats(const fs::path& file, int expectedSets) {
 
 void writeArray(std::ostream& out, const std::string& name, const std::vector<double>& v) {
     out << "const double " << name << "[" << v.size() << "] = {";
-    for (std::size_t i = 0; i < v.size(); ++i) out << (i % 8 == 0 ? "\n    " : " ") << v[i] << ",";
+    for (std::size_t i = 0; i < v.size(); ++i)
+        out << (i % 8 == 0 ? "\n    " : " ") << v[i] << ",";
     out << "\n};\n";
 }
 
@@ -85,7 +92,8 @@ int main(int argc, char** argv) {
     }
     for (const char* required : {"D65", "A", "E"})
         if (!illuminants.count(required))
-            fail(colord / "illuminant", std::string("illuminant CIE-") + required + ".sp is missing");
+            fail(colord / "illuminant",
+                 std::string("illuminant CIE-") + required + ".sp is missing");
 
     const fs::path tmp = output.string() + ".tmp";
     {
@@ -98,7 +106,8 @@ int main(int argc, char** argv) {
         writeArray(out, "kCmfXValues", cmf.sets[0]);
         writeArray(out, "kCmfYValues", cmf.sets[1]);
         writeArray(out, "kCmfZValues", cmf.sets[2]);
-        for (const auto& [name, t] : illuminants) writeArray(out, "kIlluminant" + name, t.sets[0]);
+        for (const auto& [name, t] : illuminants)
+            writeArray(out, "kIlluminant" + name, t.sets[0]);
         out << "}  // namespace\n\n";
         auto curve = [&](const Table& t, const std::string& array) {
             std::ostringstream s;

@@ -21,12 +21,13 @@ ChiSquareConfig config() {
     return c;
 }
 
-std::optional<Vec3d> cosineSample(Pcg32& r) { return squareToCosineHemisphere(next2(r)); }
+std::optional<Vec3d> cosineSample(Pcg32& r) {
+    return squareToCosineHemisphere(next2(r));
+}
 
 TEST(ChiSquareSelfTest, RejectsADensityScaledBy1Point05) {
-    const ChiSquareResult r = runChiSquareTest(config(), cosineSample, [](const Vec3d& w) {
-        return 1.05 * cosineHemispherePdf(w);
-    });
+    const ChiSquareResult r = runChiSquareTest(
+        config(), cosineSample, [](const Vec3d& w) { return 1.05 * cosineHemispherePdf(w); });
     EXPECT_FALSE(r.passed) << r.message;
 }
 
@@ -46,8 +47,8 @@ TEST(ChiSquareSelfTest, RejectsSamplesWhereTheDensityIsZero) {
 }
 
 TEST(ChiSquareSelfTest, AcceptsTheCorrectDensityWithTheSameSettings) {
-    const ChiSquareResult r =
-        runChiSquareTest(config(), cosineSample, [](const Vec3d& w) { return cosineHemispherePdf(w); });
+    const ChiSquareResult r = runChiSquareTest(
+        config(), cosineSample, [](const Vec3d& w) { return cosineHemispherePdf(w); });
     EXPECT_TRUE(r.passed) << r.message;
     EXPECT_NEAR(r.pdfIntegral, 1.0, 1e-3);
 }

@@ -23,23 +23,32 @@ struct BsdfCase {
     double eta = 1.0;  ///< relative index of the transmissive boundary (inside / outside)
 };
 
-inline void PrintTo(const BsdfCase& c, std::ostream* os) { *os << c.name; }
+inline void PrintTo(const BsdfCase& c, std::ostream* os) {
+    *os << c.name;
+}
 
 inline const char* samplingName(MicrofacetSampling s) {
     switch (s) {
-        case MicrofacetSampling::VisibleNormals: return "vndf";
-        case MicrofacetSampling::SphericalCaps: return "caps";
-        case MicrofacetSampling::Walter: return "walter";
-        case MicrofacetSampling::WalterWidened: return "walter_widened";
+        case MicrofacetSampling::VisibleNormals:
+            return "vndf";
+        case MicrofacetSampling::SphericalCaps:
+            return "caps";
+        case MicrofacetSampling::Walter:
+            return "walter";
+        case MicrofacetSampling::WalterWidened:
+            return "walter_widened";
     }
     return "?";
 }
 
 inline const char* ndfName(NdfKind k) {
     switch (k) {
-        case NdfKind::Ggx: return "ggx";
-        case NdfKind::Beckmann: return "beckmann";
-        case NdfKind::BlinnPhong: return "blinn_phong";
+        case NdfKind::Ggx:
+            return "ggx";
+        case NdfKind::Beckmann:
+            return "beckmann";
+        case NdfKind::BlinnPhong:
+            return "blinn_phong";
     }
     return "?";
 }
@@ -70,16 +79,18 @@ inline std::vector<BsdfCase> bsdfCases() {
     for (double alpha : {0.05, 0.2, 0.5, 1.0})
         for (auto s : {MicrofacetSampling::VisibleNormals, MicrofacetSampling::SphericalCaps,
                        MicrofacetSampling::Walter, MicrofacetSampling::WalterWidened})
-            cases.push_back({std::string("conductor_ggx_") + samplingName(s) + "_a" + alphaName(alpha),
-                             std::make_shared<ConductorBxdf<Spec>>(MicrofacetReflectionLobe<Spec>(
-                                 MicrofacetDistribution<double>(NdfKind::Ggx, alpha, alpha),
-                                 goldFresnel(), s))});
+            cases.push_back(
+                {std::string("conductor_ggx_") + samplingName(s) + "_a" + alphaName(alpha),
+                 std::make_shared<ConductorBxdf<Spec>>(MicrofacetReflectionLobe<Spec>(
+                     MicrofacetDistribution<double>(NdfKind::Ggx, alpha, alpha), goldFresnel(),
+                     s))});
     for (double alpha : {0.05, 0.2, 0.5, 1.0})
         for (auto s : {MicrofacetSampling::VisibleNormals, MicrofacetSampling::Walter})
-            cases.push_back({std::string("conductor_beckmann_") + samplingName(s) + "_a" + alphaName(alpha),
-                             std::make_shared<ConductorBxdf<Spec>>(MicrofacetReflectionLobe<Spec>(
-                                 MicrofacetDistribution<double>(NdfKind::Beckmann, alpha, alpha),
-                                 goldFresnel(), s))});
+            cases.push_back(
+                {std::string("conductor_beckmann_") + samplingName(s) + "_a" + alphaName(alpha),
+                 std::make_shared<ConductorBxdf<Spec>>(MicrofacetReflectionLobe<Spec>(
+                     MicrofacetDistribution<double>(NdfKind::Beckmann, alpha, alpha), goldFresnel(),
+                     s))});
     cases.push_back({"conductor_blinn_phong_a0p3",
                      std::make_shared<ConductorBxdf<Spec>>(MicrofacetReflectionLobe<Spec>(
                          MicrofacetDistribution<double>(NdfKind::BlinnPhong, 0.3, 0.3),
@@ -91,15 +102,16 @@ inline std::vector<BsdfCase> bsdfCases() {
                      std::make_shared<ConductorBxdf<Spec>>(MicrofacetReflectionLobe<Spec>(
                          MicrofacetDistribution<double>(NdfKind::Ggx, 0.5, 0.1), goldFresnel(),
                          MicrofacetSampling::Walter))});
-    cases.push_back({"conductor_beckmann_anisotropic_vndf",
-                     std::make_shared<ConductorBxdf<Spec>>(MicrofacetReflectionLobe<Spec>(
-                         MicrofacetDistribution<double>(NdfKind::Beckmann, 0.15, 0.6),
-                         goldFresnel()))});
+    cases.push_back(
+        {"conductor_beckmann_anisotropic_vndf",
+         std::make_shared<ConductorBxdf<Spec>>(MicrofacetReflectionLobe<Spec>(
+             MicrofacetDistribution<double>(NdfKind::Beckmann, 0.15, 0.6), goldFresnel()))});
 
     // Rough dielectrics, entering and leaving (eta < 1 seen from the other side: TIR).
     for (double alpha : {0.05, 0.2, 0.5, 1.0})
         for (double eta : {1.5, 1.0 / 1.5})
-            cases.push_back({std::string("dielectric_ggx_a") + alphaName(alpha) + (eta > 1 ? "_eta1p5" : "_eta0p67"),
+            cases.push_back({std::string("dielectric_ggx_a") + alphaName(alpha) +
+                                 (eta > 1 ? "_eta1p5" : "_eta0p67"),
                              std::make_shared<DielectricBxdf<Spec>>(
                                  eta, MicrofacetDistribution<double>(NdfKind::Ggx, alpha, alpha)),
                              true, eta});
@@ -110,8 +122,7 @@ inline std::vector<BsdfCase> bsdfCases() {
 
     // Layered: the article's default (GGX + Lambert, shadowed Schlick, fresnel coupling),
     // sum coupling with Frostbite, and a transmissive stack.
-    auto layered = [&](double alpha, DiffuseModel dm, LayerCoupling c, double t,
-                       FresnelKind fk) {
+    auto layered = [&](double alpha, DiffuseModel dm, LayerCoupling c, double t, FresnelKind fk) {
         typename LayeredBxdf<Spec>::Layers l;
         const Fresnel<Spec> f = fk == FresnelKind::ExactDielectric
                                     ? Fresnel<Spec>::dielectric(Spec(1.5))
@@ -133,9 +144,9 @@ inline std::vector<BsdfCase> bsdfCases() {
                                  FresnelKind::ExactDielectric),
                          true, 1.5});
     }
-    cases.push_back({"layered_frostbite_sum",
-                     layered(0.3, DiffuseModel::Frostbite, LayerCoupling::Sum, 0.0,
-                             FresnelKind::SchlickShadowed)});
+    cases.push_back(
+        {"layered_frostbite_sum", layered(0.3, DiffuseModel::Frostbite, LayerCoupling::Sum, 0.0,
+                                          FresnelKind::SchlickShadowed)});
     cases.push_back({"layered_schlick_transmission",
                      layered(0.3, DiffuseModel::OrenNayar, LayerCoupling::Fresnel, 0.5,
                              FresnelKind::SchlickShadowed),

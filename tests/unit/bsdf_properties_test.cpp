@@ -65,8 +65,8 @@ TEST_P(BsdfProperties, ReciprocityAndAdjointTransmission) {
             // swapped (Veach 1997, eq. 5.14): this holds for reflection and refraction alike.
             const double scale = std::max({fImp[c], bRad[c], 1e-12});
             ASSERT_NEAR(fImp[c], bRad[c], 1e-6 * scale)
-                << "wo=(" << wo.x << "," << wo.y << "," << wo.z << ") wi=(" << wi.x << ","
-                << wi.y << "," << wi.z << ")";
+                << "wo=(" << wo.x << "," << wo.y << "," << wo.z << ") wi=(" << wi.x << "," << wi.y
+                << "," << wi.z << ")";
             if (sameHemisphere(wo, wi)) {  // Helmholtz reciprocity of reflection
                 ASSERT_NEAR(fRad[c], bRad[c], 1e-6 * scale);
             } else {
@@ -100,7 +100,8 @@ TEST(DielectricTransportMode, RadianceScalesRefractionByInverseEtaSquared) {
     EXPECT_NEAR(rad->weight[0], imp->weight[0] / (1.5 * 1.5), 1e-12);
     EXPECT_NEAR(imp->eta, 1.5, 1e-12);
     // From inside the relative index is 1/1.5 and radiance grows by 1.5^2.
-    const auto out = glass.sample(-testing::directionAt(20.0), 0.99, Vec2d(0.5), TransportMode::Radiance);
+    const auto out =
+        glass.sample(-testing::directionAt(20.0), 0.99, Vec2d(0.5), TransportMode::Radiance);
     ASSERT_TRUE(out && out->isTransmission());
     EXPECT_NEAR(out->weight[0], 1.5 * 1.5, 1e-12);
 }

@@ -34,7 +34,8 @@ TEST(ColorSpace, Rec709MatricesRoundTripAndMapWhite) {
     const RgbColorSpace& cs = RgbColorSpace::rec709();
     const Mat3<double> identity = cs.xyzToRgb() * cs.rgbToXyz();
     for (int c = 0; c < 3; ++c)
-        for (int r = 0; r < 3; ++r) EXPECT_NEAR(identity[c][r], c == r ? 1.0 : 0.0, 1e-6);
+        for (int r = 0; r < 3; ++r)
+            EXPECT_NEAR(identity[c][r], c == r ? 1.0 : 0.0, 1e-6);
     const Vec3d white = cs.toRgb(d65WhiteXyz());
     EXPECT_NEAR(white.x, 1.0, 1e-12);
     EXPECT_NEAR(white.y, 1.0, 1e-12);

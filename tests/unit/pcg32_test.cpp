@@ -10,12 +10,14 @@ TEST(Pcg32, MatchesTheReferenceSequence) {
     Pcg32 rng(42u, 54u);
     const std::uint32_t expected[] = {0xa15c02b7, 0x7b47f409, 0xba1d3330,
                                       0x83d2f293, 0xbfa4784b, 0xcbed606e};
-    for (std::uint32_t e : expected) EXPECT_EQ(rng.nextUint32(), e);
+    for (std::uint32_t e : expected)
+        EXPECT_EQ(rng.nextUint32(), e);
 }
 
 TEST(Pcg32, AdvanceMatchesStepping) {
     Pcg32 a(7, 3), b(7, 3);
-    for (int i = 0; i < 1000; ++i) a.nextUint32();
+    for (int i = 0; i < 1000; ++i)
+        a.nextUint32();
     b.advance(1000);
     EXPECT_EQ(a.nextUint32(), b.nextUint32());
     b.advance(-1001);
@@ -42,10 +44,12 @@ TEST(Pcg32, FloatsStayInUnitInterval) {
 
 TEST(Pcg32, BoundedIntegersAreInRangeAndStreamsDiffer) {
     Pcg32 rng(11);
-    for (int i = 0; i < 10000; ++i) ASSERT_LT(rng.nextUint32(7), 7u);
+    for (int i = 0; i < 10000; ++i)
+        ASSERT_LT(rng.nextUint32(7), 7u);
     Pcg32 s1(5, 1), s2(5, 2);
     int same = 0;
-    for (int i = 0; i < 100; ++i) same += s1.nextUint32() == s2.nextUint32();
+    for (int i = 0; i < 100; ++i)
+        same += s1.nextUint32() == s2.nextUint32();
     EXPECT_LT(same, 3);
 }
 

@@ -20,7 +20,8 @@ TEST(SampledWavelengths, VisibleSamplingInvertsTheCdf) {
         const double nm = visible_wavelengths::sample(u);
         double cdf = 0.0;
         const double h = 0.001;
-        for (double x = kLambdaMin; x < nm; x += h) cdf += h * visible_wavelengths::pdf(x + 0.5 * h);
+        for (double x = kLambdaMin; x < nm; x += h)
+            cdf += h * visible_wavelengths::pdf(x + 0.5 * h);
         EXPECT_NEAR(cdf, u, 2e-4) << "u = " << u;
     }
     EXPECT_NEAR(visible_wavelengths::sample(0.0), kLambdaMin, 1e-9);
@@ -50,7 +51,8 @@ TEST(SampledWavelengths, TerminateSecondaryKeepsOnlyTheHero) {
     w.terminateSecondary();
     EXPECT_TRUE(w.secondaryTerminated());
     EXPECT_NEAR(w.pdf()[0], heroPdf / kSpectrumSamples, 1e-15);
-    for (int i = 1; i < kSpectrumSamples; ++i) EXPECT_EQ(w.pdf()[i], 0.0);
+    for (int i = 1; i < kSpectrumSamples; ++i)
+        EXPECT_EQ(w.pdf()[i], 0.0);
     w.terminateSecondary();  // idempotent
     EXPECT_NEAR(w.pdf()[0], heroPdf / kSpectrumSamples, 1e-15);
 }

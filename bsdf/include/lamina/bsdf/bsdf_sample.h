@@ -30,9 +30,15 @@ enum LobeFlags : std::uint32_t {
     kLobeAll = kLobeReflection | kLobeTransmission | kLobeDiffuse | kLobeGlossy | kLobeSpecular,
 };
 
-inline bool isSpecular(std::uint32_t f) { return (f & kLobeSpecular) != 0; }
-inline bool isTransmission(std::uint32_t f) { return (f & kLobeTransmission) != 0; }
-inline bool isReflection(std::uint32_t f) { return (f & kLobeReflection) != 0; }
+inline bool isSpecular(std::uint32_t f) {
+    return (f & kLobeSpecular) != 0;
+}
+inline bool isTransmission(std::uint32_t f) {
+    return (f & kLobeTransmission) != 0;
+}
+inline bool isReflection(std::uint32_t f) {
+    return (f & kLobeReflection) != 0;
+}
 
 /// What sample() returns: the article's evalIndirect.
 template <SpectrumType S>

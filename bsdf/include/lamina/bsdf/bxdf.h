@@ -12,7 +12,7 @@ namespace lamina {
 
 template <SpectrumType S>
 class Bxdf {
-public:
+  public:
     using Float = typename S::Float;
     using V3 = Vec3<Float>;
     using V2 = Vec2<Float>;

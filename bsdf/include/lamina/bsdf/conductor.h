@@ -9,7 +9,7 @@ namespace lamina {
 
 template <SpectrumType S>
 class ConductorBxdf final : public Bxdf<S> {
-public:
+  public:
     using typename Bxdf<S>::Float;
     using typename Bxdf<S>::V3;
     using typename Bxdf<S>::V2;
@@ -48,7 +48,7 @@ public:
         return isSmooth() ? kLobeSpecularReflection : kLobeGlossyReflection;
     }
 
-private:
+  private:
     MicrofacetReflectionLobe<S> lobe_;
 };
 

@@ -6,7 +6,8 @@
 // Transport mode: radiance crossing into a medium of relative index eta' is compressed into
 // a smaller solid angle, so the BTDF carries 1/eta'^2 in radiance mode and not in importance
 // mode (Veach 1997, section 5.2). With eta' the relative index along the sampled direction,
-//   f_t(wo, wi) |cos_i| = D G2 (1 - F) |wi.m| |wo.m| / (|cos_o| (wi.m + wo.m / eta')^2)  [/ eta'^2].
+//   f_t(wo, wi) |cos_i| = D G2 (1 - F) |wi.m| |wo.m| / (|cos_o| (wi.m + wo.m / eta')^2)  [/
+//   eta'^2].
 //
 // |eta - 1| < kIndexMatched is treated as an index-matched boundary: light passes straight
 // through (a delta lobe). The refracted lobe's width there is ~ |eta - 1| alpha, so this is
@@ -43,7 +44,7 @@ std::optional<std::pair<Vec3<T>, T>> refract(const Vec3<T>& w, Vec3<T> n, T eta)
 
 template <SpectrumType S>
 class DielectricBxdf final : public Bxdf<S> {
-public:
+  public:
     using typename Bxdf<S>::Float;
     using typename Bxdf<S>::V3;
     using typename Bxdf<S>::V2;
@@ -147,18 +148,18 @@ public:
     std::optional<std::pair<V3, Float>> sampleRefraction(const V3& wo, const V2& u) const {
         if (wo.z == Float(0)) return std::nullopt;
         if (indexMatched()) return std::make_pair(-wo, Float(1));
-        const V3 m = isSmooth() ? V3(0, 0, 1)
-                                : distribution_.sampleVisible(wo.z < Float(0) ? -wo : wo, u);
+        const V3 m =
+            isSmooth() ? V3(0, 0, 1) : distribution_.sampleVisible(wo.z < Float(0) ? -wo : wo, u);
         const auto t = refract(wo, m, eta_);
         if (!t || sameHemisphere(wo, t->first) || t->first.z == Float(0)) return std::nullopt;
         return t;
     }
 
-private:
+  private:
     struct Geometry {
-        V3 m;          ///< microfacet normal, m.z > 0
+        V3 m;  ///< microfacet normal, m.z > 0
         bool reflection;
-        Float etap;    ///< relative index along wi (1 for reflection)
+        Float etap;  ///< relative index along wi (1 for reflection)
     };
 
     // The generalised half vector of (wo, wi) and whether the pair is a reflection; nullopt

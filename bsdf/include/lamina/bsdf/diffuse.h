@@ -26,7 +26,7 @@ enum class DiffuseModel { Lambert, OrenNayar, Burley, Frostbite };
 
 template <SpectrumType S>
 class DiffuseBxdf final : public Bxdf<S> {
-public:
+  public:
     using typename Bxdf<S>::Float;
     using typename Bxdf<S>::V3;
     using typename Bxdf<S>::V2;
@@ -47,25 +47,30 @@ public:
     Float shape(const V3& wo, const V3& wi) const {
         const Float cosO = std::abs(wo.z), cosI = std::abs(wi.z);
         switch (model_) {
-            case DiffuseModel::Lambert: return Float(1);
+            case DiffuseModel::Lambert:
+                return Float(1);
             case DiffuseModel::OrenNayar: {
                 const Float sinO = sinTheta(wo), sinI = sinTheta(wi);
                 Float cosDeltaPhi = Float(0);
                 if (sinO > Float(1e-6) && sinI > Float(1e-6))
-                    cosDeltaPhi = clamp((wo.x * wi.x + wo.y * wi.y) / (sinO * sinI), Float(-1), Float(1));
+                    cosDeltaPhi =
+                        clamp((wo.x * wi.x + wo.y * wi.y) / (sinO * sinI), Float(-1), Float(1));
                 // alpha = max(theta_i, theta_o), beta = min(...): sin(alpha) tan(beta).
                 const Float sinAlphaTanBeta =
                     cosI > cosO ? sinO * sinI / cosI : sinI * sinO / std::max(cosO, Float(1e-30));
-                return orenNayarA_ + orenNayarB_ * std::max(Float(0), cosDeltaPhi) * sinAlphaTanBeta;
+                return orenNayarA_ +
+                       orenNayarB_ * std::max(Float(0), cosDeltaPhi) * sinAlphaTanBeta;
             }
             case DiffuseModel::Burley:
             case DiffuseModel::Frostbite: {
                 // cos^2(theta_d) = (wi.h)^2 = (1 + wo.wi) / 2 for the half vector h.
-                const Float cos2D = clamp(Float(0.5) * (Float(1) + glm::dot(wo, wi)), Float(0), Float(1));
+                const Float cos2D =
+                    clamp(Float(0.5) * (Float(1) + glm::dot(wo, wi)), Float(0), Float(1));
                 const bool frostbite = model_ == DiffuseModel::Frostbite;
                 const Float fd90 = (frostbite ? Float(0.5) * roughness_ : Float(0.5)) +
                                    Float(2) * roughness_ * cos2D;
-                const Float scale = frostbite ? lerp(roughness_, Float(1), Float(1) / Float(1.51)) : Float(1);
+                const Float scale =
+                    frostbite ? lerp(roughness_, Float(1), Float(1) / Float(1.51)) : Float(1);
                 return (Float(1) + (fd90 - Float(1)) * pow5(Float(1) - cosI)) *
                        (Float(1) + (fd90 - Float(1)) * pow5(Float(1) - cosO)) * scale;
             }
@@ -94,7 +99,7 @@ public:
 
     std::uint32_t flags() const override { return kLobeDiffuseReflection; }
 
-private:
+  private:
     S reflectance_;
     DiffuseModel model_;
     Float roughness_;

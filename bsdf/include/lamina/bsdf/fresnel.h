@@ -86,7 +86,8 @@ struct Fresnel {
         const Float c = std::abs(cosTheta);
         switch (kind) {
             case FresnelKind::Schlick:
-            case FresnelKind::SchlickShadowed: return schlickAt(f0, f90, c);
+            case FresnelKind::SchlickShadowed:
+                return schlickAt(f0, f90, c);
             case FresnelKind::SchlickSphericalGaussian: {
                 // Lagarde 2012, "Spherical Gaussian approximation for Blinn-Phong, Phong and
                 // Fresnel": (1 - c)^5 ~ 2^((-5.55473 c - 6.98316) c).
@@ -100,16 +101,19 @@ struct Fresnel {
                 const Float cb = Float(kF82Cosine);
                 const Float denom = cb * pow5(Float(1) - cb) * (Float(1) - cb);
                 const S a = (schlickAt(f0, f90, cb) - f82) / denom;
-                return saturate(schlickAt(f0, f90, c) - a * (c * pow5(Float(1) - c) * (Float(1) - c)));
+                return saturate(schlickAt(f0, f90, c) -
+                                a * (c * pow5(Float(1) - c) * (Float(1) - c)));
             }
             case FresnelKind::ExactDielectric: {
                 S r;
-                for (int i = 0; i < S::kSize; ++i) r[i] = fresnelDielectric(cosTheta, eta[i]);
+                for (int i = 0; i < S::kSize; ++i)
+                    r[i] = fresnelDielectric(cosTheta, eta[i]);
                 return r;
             }
             case FresnelKind::ExactConductor: {
                 S r;
-                for (int i = 0; i < S::kSize; ++i) r[i] = fresnelConductor(c, eta[i], k[i]);
+                for (int i = 0; i < S::kSize; ++i)
+                    r[i] = fresnelConductor(c, eta[i], k[i]);
                 return r;
             }
         }

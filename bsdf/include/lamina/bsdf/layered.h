@@ -33,7 +33,7 @@ enum class LayerCoupling { Fresnel, Sum };
 
 template <SpectrumType S>
 class LayeredBxdf final : public Bxdf<S> {
-public:
+  public:
     using typename Bxdf<S>::Float;
     using typename Bxdf<S>::V3;
     using typename Bxdf<S>::V2;
@@ -98,9 +98,9 @@ public:
             const auto t = l_.transmission->sampleRefraction(wo, u);
             if (!t) return std::nullopt;
             if (l_.transmission->isSmooth()) {
-                const S weight = transmissionFresnelFactor(wo, V3(0, 0, 1)) *
-                                 (l_.transmissionWeight / p[2]) *
-                                 (mode == TransportMode::Radiance ? Float(1) / sqr(t->second) : Float(1));
+                const S weight =
+                    transmissionFresnelFactor(wo, V3(0, 0, 1)) * (l_.transmissionWeight / p[2]) *
+                    (mode == TransportMode::Radiance ? Float(1) / sqr(t->second) : Float(1));
                 return BsdfSample<S>{t->first, weight, p[2], kLobeSpecularTransmission, t->second};
             }
             wi = t->first;
@@ -132,8 +132,8 @@ public:
 
     /// Lobe selection probabilities (specular, diffuse, transmission) for wo.
     std::array<Float, 3> lobeProbabilities(const V3& wo) const {
-        const Float F = l_.interface ? l_.interface->fresnel().evaluate(std::abs(wo.z)).average()
-                                    : Float(0);
+        const Float F =
+            l_.interface ? l_.interface->fresnel().evaluate(std::abs(wo.z)).average() : Float(0);
         const Float t = l_.transmissionWeight;
         std::array<Float, 3> w{};
         if (l_.interface) w[0] = std::max(F, Float(0));
@@ -155,7 +155,7 @@ public:
         return p;
     }
 
-private:
+  private:
     bool interfaceSmooth() const {
         return l_.interface && l_.interface->distribution().effectivelySmooth();
     }
@@ -167,7 +167,8 @@ private:
             S coupling(Float(1));
             if (l_.coupling == LayerCoupling::Fresnel && l_.interface)
                 coupling = S(Float(1)) - l_.interface->fresnelAt(wo, wi);
-            result += l_.diffuse->eval(wo, wi, mode) * coupling * (Float(1) - l_.transmissionWeight);
+            result +=
+                l_.diffuse->eval(wo, wi, mode) * coupling * (Float(1) - l_.transmissionWeight);
         }
         return result;
     }

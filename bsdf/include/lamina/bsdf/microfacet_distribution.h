@@ -38,7 +38,7 @@ inline constexpr double kSmoothAlpha = 1e-3;
 
 template <std::floating_point T>
 class MicrofacetDistribution {
-public:
+  public:
     using V3 = Vec3<T>;
     using V2 = Vec2<T>;
 
@@ -88,7 +88,7 @@ public:
         if (a2sin2 == T(0)) return T(0);
         if (cos2 == T(0)) return std::numeric_limits<T>::infinity();
         if (kind_ == NdfKind::Ggx) {
-            const T x = a2sin2 / cos2;  // alpha_0^2 tan^2 theta
+            const T x = a2sin2 / cos2;                         // alpha_0^2 tan^2 theta
             return x / (T(2) * (std::sqrt(T(1) + x) + T(1)));  // (sqrt(1 + x) - 1) / 2, stable
         }
         const T a = std::abs(w.z) / std::sqrt(a2sin2);  // 1 / (alpha_0 tan theta)
@@ -130,14 +130,15 @@ public:
             return sphericalDirection(safeSqrt(T(1) - cosTheta * cosTheta), cosTheta, phi);
         }
         // Sample the slope of the unit-roughness distribution, then stretch it by alpha.
-        const T r = kind_ == NdfKind::Ggx ? std::sqrt(u.x / (T(1) - u.x))
-                                          : std::sqrt(-std::log1p(-u.x));
+        const T r =
+            kind_ == NdfKind::Ggx ? std::sqrt(u.x / (T(1) - u.x)) : std::sqrt(-std::log1p(-u.x));
         const T sx = r * std::cos(phi) * ax_, sy = r * std::sin(phi) * ay_;
-        if (!std::isfinite(sx) || !std::isfinite(sy)) return safeNormalize(V3(-std::cos(phi), -std::sin(phi), T(0)));
+        if (!std::isfinite(sx) || !std::isfinite(sy))
+            return safeNormalize(V3(-std::cos(phi), -std::sin(phi), T(0)));
         return glm::normalize(V3(-sx, -sy, T(1)));
     }
 
-private:
+  private:
     // Heitz 2018, "Sampling the GGX Distribution of Visible Normals", listing 1.
     V3 sampleGgxVisible(const V3& w, const V2& u) const {
         const V3 wh = glm::normalize(V3(ax_ * w.x, ay_ * w.y, w.z));  // hemisphere config.

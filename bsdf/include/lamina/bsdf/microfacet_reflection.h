@@ -14,7 +14,7 @@ namespace lamina {
 
 template <SpectrumType S>
 class MicrofacetReflectionLobe {
-public:
+  public:
     using Float = typename S::Float;
     using V3 = Vec3<Float>;
     using V2 = Vec2<Float>;
@@ -95,14 +95,15 @@ public:
         return Sample{wi, weight, p};
     }
 
-private:
+  private:
     // Density of the sampled microfacet normal m given wo.
     Float normalPdf(const V3& wo, const V3& m) const {
         switch (sampling_) {
             case MicrofacetSampling::VisibleNormals:
             case MicrofacetSampling::SphericalCaps:
                 return distribution_.visibleD(wo, m);
-            case MicrofacetSampling::Walter: return distribution_.ndfPdf(m);
+            case MicrofacetSampling::Walter:
+                return distribution_.ndfPdf(m);
             case MicrofacetSampling::WalterWidened:
                 return widened(wo).ndfPdf(m);
         }
@@ -111,10 +112,14 @@ private:
 
     V3 sampleNormal(const V3& wo, const V2& u) const {
         switch (sampling_) {
-            case MicrofacetSampling::VisibleNormals: return distribution_.sampleVisible(wo, u, false);
-            case MicrofacetSampling::SphericalCaps: return distribution_.sampleVisible(wo, u, true);
-            case MicrofacetSampling::Walter: return distribution_.sampleNdf(u);
-            case MicrofacetSampling::WalterWidened: return widened(wo).sampleNdf(u);
+            case MicrofacetSampling::VisibleNormals:
+                return distribution_.sampleVisible(wo, u, false);
+            case MicrofacetSampling::SphericalCaps:
+                return distribution_.sampleVisible(wo, u, true);
+            case MicrofacetSampling::Walter:
+                return distribution_.sampleNdf(u);
+            case MicrofacetSampling::WalterWidened:
+                return widened(wo).sampleNdf(u);
         }
         return V3(0, 0, 1);
     }

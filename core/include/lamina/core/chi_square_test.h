@@ -1,8 +1,9 @@
 // Chi-square goodness-of-fit test for samplers that come with a density, in the manner of
 // Mitsuba 3's BSDF tests: draw many samples into a histogram, integrate the density over each
-// histogram cell by adaptive Gauss-Legendre quadrature to get the expected counts, pool cells whose expected count is
-// below 5, and compare with Pearson's statistic. A sampler passes when the p-value is above
-// the significance level after a Sidak correction for the number of tests in the suite.
+// histogram cell by adaptive Gauss-Legendre quadrature to get the expected counts, pool cells whose
+// expected count is below 5, and compare with Pearson's statistic. A sampler passes when the
+// p-value is above the significance level after a Sidak correction for the number of tests in the
+// suite.
 #pragma once
 
 #include <cstddef>
@@ -29,12 +30,12 @@ enum class ChiSquareDomain {
 
 struct ChiSquareConfig {
     ChiSquareDomain domain = ChiSquareDomain::Sphere;
-    int cosThetaBins = 32;         ///< y resolution (cos theta, or plane y)
-    int phiBins = 64;              ///< x resolution (phi, or plane x)
+    int cosThetaBins = 32;  ///< y resolution (cos theta, or plane y)
+    int phiBins = 64;       ///< x resolution (phi, or plane x)
     std::size_t sampleCount = 1000000;
-    int maxSubdivisions = 7;       ///< depth of the adaptive quadrature of the density per cell
-    double significance = 0.01;    ///< family-wise significance level of the suite
-    int testCount = 1;             ///< number of tests in the suite (Sidak correction)
+    int maxSubdivisions = 7;     ///< depth of the adaptive quadrature of the density per cell
+    double significance = 0.01;  ///< family-wise significance level of the suite
+    int testCount = 1;           ///< number of tests in the suite (Sidak correction)
     std::uint64_t seed = 7;
     Vec2d planeMin{-1.0, -1.0};
     Vec2d planeMax{1.0, 1.0};
@@ -45,12 +46,12 @@ struct ChiSquareResult {
     double pValue = 0.0;
     double statistic = 0.0;
     int degreesOfFreedom = 0;
-    double alpha = 0.0;             ///< per-test significance after the Sidak correction
-    std::size_t validSamples = 0;   ///< samples the sampler returned (others failed)
-    double pdfIntegral = 0.0;       ///< integral of the density over the domain
-    std::string message;            ///< why it failed, or a one-line summary
+    double alpha = 0.0;            ///< per-test significance after the Sidak correction
+    std::size_t validSamples = 0;  ///< samples the sampler returned (others failed)
+    double pdfIntegral = 0.0;      ///< integral of the density over the domain
+    std::string message;           ///< why it failed, or a one-line summary
 
-    std::vector<double> observed;   ///< per cell, row-major (cos theta / y rows)
+    std::vector<double> observed;  ///< per cell, row-major (cos theta / y rows)
     std::vector<double> expected;
 };
 

@@ -9,7 +9,7 @@ namespace lamina {
 /// A problem with what the user gave us: a file, a parameter, a scene. The message names
 /// the file, the JSON path or line, and what was expected.
 class InputError : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 

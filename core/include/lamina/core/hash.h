@@ -20,7 +20,8 @@ constexpr std::uint64_t mixBits(std::uint64_t v) {
 /// Hashes several integers into one 64-bit value (order matters).
 constexpr std::uint64_t hashValues(std::initializer_list<std::uint64_t> values) {
     std::uint64_t h = 0x6a09e667f3bcc909ULL;
-    for (std::uint64_t v : values) h = mixBits(h ^ (v + 0x9e3779b97f4a7c15ULL + (h << 6u)));
+    for (std::uint64_t v : values)
+        h = mixBits(h ^ (v + 0x9e3779b97f4a7c15ULL + (h << 6u)));
     return h;
 }
 

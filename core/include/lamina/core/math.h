@@ -84,7 +84,8 @@ constexpr T pow5(T x) {
 template <std::floating_point T, std::size_t N>
 constexpr T evalPolynomial(T x, const T (&c)[N]) {
     T result = c[N - 1];
-    for (std::size_t i = N - 1; i-- > 0;) result = result * x + c[i];
+    for (std::size_t i = N - 1; i-- > 0;)
+        result = result * x + c[i];
     return result;
 }
 

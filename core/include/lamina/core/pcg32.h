@@ -12,7 +12,7 @@
 namespace lamina {
 
 class Pcg32 {
-public:
+  public:
     static constexpr std::uint64_t kMultiplier = 6364136223846793005ULL;
     static constexpr std::uint64_t kDefaultState = 0x853c49e6748fea9bULL;
     static constexpr std::uint64_t kDefaultStream = 0xda3e39cb94b95bdbULL;
@@ -89,7 +89,7 @@ public:
         state_ = accMult * state_ + accPlus;
     }
 
-private:
+  private:
     std::uint64_t state_ = kDefaultState;
     std::uint64_t inc_ = kDefaultStream;
 };

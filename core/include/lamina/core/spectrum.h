@@ -19,40 +19,44 @@ struct SampledTag {};
 
 template <std::floating_point T, int N, typename Tag>
 class CoefficientSpectrum {
-public:
+  public:
     using Float = T;
     static constexpr int kSize = N;
 
     constexpr CoefficientSpectrum() : c_{} {}
     constexpr explicit CoefficientSpectrum(T v) { c_.fill(v); }
     template <typename... A>
-        requires(sizeof...(A) == N && N > 1 && (std::convertible_to<A, T> && ...))
-    constexpr CoefficientSpectrum(A... v) : c_{static_cast<T>(v)...} {}
+    requires(sizeof...(A) == N && N > 1 &&
+             (std::convertible_to<A, T> && ...)) constexpr CoefficientSpectrum(A... v)
+        : c_{static_cast<T>(v)...} {}
     /// Precision conversion (float <-> double) of the same representation.
     template <std::floating_point U>
-        requires(!std::same_as<U, T>)
-    constexpr explicit CoefficientSpectrum(const CoefficientSpectrum<U, N, Tag>& o) {
-        for (int i = 0; i < N; ++i) c_[i] = static_cast<T>(o[i]);
+    requires(!std::same_as<U, T>) constexpr explicit CoefficientSpectrum(
+        const CoefficientSpectrum<U, N, Tag>& o) {
+        for (int i = 0; i < N; ++i)
+            c_[i] = static_cast<T>(o[i]);
     }
 
     constexpr T& operator[](int i) { return c_[i]; }
     constexpr const T& operator[](int i) const { return c_[i]; }
 
-#define LAMINA_SPECTRUM_OP(op)                                                     \
-    constexpr CoefficientSpectrum& operator op##=(const CoefficientSpectrum & o) { \
-        for (int i = 0; i < N; ++i) c_[i] op## = o.c_[i];                          \
-        return *this;                                                              \
-    }                                                                              \
-    constexpr CoefficientSpectrum& operator op##=(T s) {                           \
-        for (int i = 0; i < N; ++i) c_[i] op## = s;                                \
-        return *this;                                                              \
-    }                                                                              \
-    friend constexpr CoefficientSpectrum operator op(CoefficientSpectrum a,        \
+#define LAMINA_SPECTRUM_OP(op)                                                       \
+    constexpr CoefficientSpectrum& operator op##=(const CoefficientSpectrum& o) {    \
+        for (int i = 0; i < N; ++i)                                                  \
+            c_[i] op## = o.c_[i];                                                    \
+        return *this;                                                                \
+    }                                                                                \
+    constexpr CoefficientSpectrum& operator op##=(T s) {                             \
+        for (int i = 0; i < N; ++i)                                                  \
+            c_[i] op## = s;                                                          \
+        return *this;                                                                \
+    }                                                                                \
+    friend constexpr CoefficientSpectrum operator op(CoefficientSpectrum a,          \
                                                      const CoefficientSpectrum& b) { \
-        return a op## = b;                                                         \
-    }                                                                              \
-    friend constexpr CoefficientSpectrum operator op(CoefficientSpectrum a, T s) { \
-        return a op## = s;                                                         \
+        return a op## = b;                                                           \
+    }                                                                                \
+    friend constexpr CoefficientSpectrum operator op(CoefficientSpectrum a, T s) {   \
+        return a op## = s;                                                           \
     }
     LAMINA_SPECTRUM_OP(+)
     LAMINA_SPECTRUM_OP(-)
@@ -60,15 +64,21 @@ public:
     LAMINA_SPECTRUM_OP(/)
 #undef LAMINA_SPECTRUM_OP
 
-    friend constexpr CoefficientSpectrum operator*(T s, CoefficientSpectrum a) { return a *= s; }
-    friend constexpr CoefficientSpectrum operator+(T s, CoefficientSpectrum a) { return a += s; }
+    friend constexpr CoefficientSpectrum operator*(T s, CoefficientSpectrum a) {
+        return a *= s;
+    }
+    friend constexpr CoefficientSpectrum operator+(T s, CoefficientSpectrum a) {
+        return a += s;
+    }
     friend constexpr CoefficientSpectrum operator-(T s, const CoefficientSpectrum& a) {
         return CoefficientSpectrum(s) - a;
     }
     friend constexpr CoefficientSpectrum operator/(T s, const CoefficientSpectrum& a) {
         return CoefficientSpectrum(s) / a;
     }
-    constexpr CoefficientSpectrum operator-() const { return CoefficientSpectrum(T(0)) - *this; }
+    constexpr CoefficientSpectrum operator-() const {
+        return CoefficientSpectrum(T(0)) - *this;
+    }
     constexpr bool operator==(const CoefficientSpectrum&) const = default;
 
     constexpr bool isZero() const {
@@ -78,17 +88,20 @@ public:
     }
     constexpr T maxValue() const {
         T m = c_[0];
-        for (T v : c_) m = v > m ? v : m;
+        for (T v : c_)
+            m = v > m ? v : m;
         return m;
     }
     constexpr T minValue() const {
         T m = c_[0];
-        for (T v : c_) m = v < m ? v : m;
+        for (T v : c_)
+            m = v < m ? v : m;
         return m;
     }
     constexpr T average() const {
         T s = 0;
-        for (T v : c_) s += v;
+        for (T v : c_)
+            s += v;
         return s / T(N);
     }
     bool isFinite() const {
@@ -106,7 +119,8 @@ public:
     template <typename F>
     friend CoefficientSpectrum map(const CoefficientSpectrum& s, F&& f) {
         CoefficientSpectrum r;
-        for (int i = 0; i < N; ++i) r[i] = f(s[i]);
+        for (int i = 0; i < N; ++i)
+            r[i] = f(s[i]);
         return r;
     }
     /// Component-wise combination of two spectra.
@@ -114,7 +128,8 @@ public:
     friend CoefficientSpectrum zipWith(const CoefficientSpectrum& a, const CoefficientSpectrum& b,
                                        F&& f) {
         CoefficientSpectrum r;
-        for (int i = 0; i < N; ++i) r[i] = f(a[i], b[i]);
+        for (int i = 0; i < N; ++i)
+            r[i] = f(a[i], b[i]);
         return r;
     }
     friend CoefficientSpectrum sqrt(const CoefficientSpectrum& s) {
@@ -144,7 +159,7 @@ public:
         return zipWith(a, b, [](T x, T y) { return y != T(0) ? x / y : T(0); });
     }
 
-private:
+  private:
     std::array<T, N> c_;
 };
 

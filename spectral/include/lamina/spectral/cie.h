@@ -19,7 +19,9 @@ inline constexpr double kLambdaMax = 830.0;
 double cieX(double nm);
 double cieY(double nm);
 double cieZ(double nm);
-inline Vec3d cieXyz(double nm) { return {cieX(nm), cieY(nm), cieZ(nm)}; }
+inline Vec3d cieXyz(double nm) {
+    return {cieX(nm), cieY(nm), cieZ(nm)};
+}
 
 /// Integral of y-bar over [kLambdaMin, kLambdaMax] (about 106.86 nm).
 double cieYIntegral();

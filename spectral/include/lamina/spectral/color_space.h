@@ -14,7 +14,7 @@ struct Chromaticity {
 };
 
 class RgbColorSpace {
-public:
+  public:
     RgbColorSpace(Chromaticity r, Chromaticity g, Chromaticity b, Vec3d whiteXyz);
 
     /// Linear Rec.709 / sRGB primaries (ITU-R BT.709-6: R (0.64, 0.33), G (0.30, 0.60),
@@ -31,7 +31,7 @@ public:
     Chromaticity green() const { return g_; }
     Chromaticity blue() const { return b_; }
 
-private:
+  private:
     Chromaticity r_, g_, b_;
     Vec3d white_;
     Mat3<double> rgbToXyz_, xyzToRgb_;

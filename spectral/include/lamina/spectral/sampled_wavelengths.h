@@ -25,8 +25,12 @@ enum class WavelengthSampling { Visible, Uniform };
 namespace visible_wavelengths {
 inline constexpr double kA = 0.0072;
 inline constexpr double kMu = 538.0;
-inline double t0() { return std::tanh(kA * (kLambdaMin - kMu)); }
-inline double t1() { return std::tanh(kA * (kLambdaMax - kMu)); }
+inline double t0() {
+    return std::tanh(kA * (kLambdaMin - kMu));
+}
+inline double t1() {
+    return std::tanh(kA * (kLambdaMax - kMu));
+}
 
 inline double pdf(double nm) {
     if (nm < kLambdaMin || nm > kLambdaMax) return 0.0;
@@ -40,7 +44,7 @@ inline double sample(double u) {
 
 template <std::floating_point T, int N = kSpectrumSamples>
 class SampledWavelengths {
-public:
+  public:
     using Spectrum = SampledSpectrum<T, N>;
 
     /// Hero wavelength from u in [0, 1), the others rotated by k/N.
@@ -76,7 +80,8 @@ public:
     T hero() const { return lambda_[0]; }
     Spectrum pdf() const {
         Spectrum s;
-        for (int i = 0; i < N; ++i) s[i] = pdf_[i];
+        for (int i = 0; i < N; ++i)
+            s[i] = pdf_[i];
         return s;
     }
 
@@ -85,7 +90,8 @@ public:
     /// averaged with them, so its density is divided by N (pbrt-v4 does the same).
     void terminateSecondary() {
         if (secondaryTerminated()) return;
-        for (int i = 1; i < N; ++i) pdf_[i] = T(0);
+        for (int i = 1; i < N; ++i)
+            pdf_[i] = T(0);
         pdf_[0] /= T(N);
     }
     bool secondaryTerminated() const {
@@ -94,7 +100,7 @@ public:
         return true;
     }
 
-private:
+  private:
     std::array<T, N> lambda_{};
     std::array<T, N> pdf_{};
 };
