@@ -25,6 +25,10 @@ std::vector<Chi2Param> params() {
     return p;
 }
 
+void PrintTo(const Chi2Param& p, std::ostream* os) {
+    *os << p.bsdfCase.name << " at " << p.thetaDeg << (p.fromBelow ? " deg from below" : " deg");
+}
+
 const int kSuiteSize = static_cast<int>(params().size());
 
 class BsdfChi2 : public ::testing::TestWithParam<Chi2Param> {};

@@ -56,6 +56,7 @@ inline const char* ndfName(NdfKind k) {
 inline std::string alphaName(double a) {
     std::string s = std::to_string(a);
     s.erase(s.find_last_not_of('0') + 1);
+    if (s.back() == '.') s.pop_back();
     for (char& c : s)
         if (c == '.') c = 'p';
     return s;
