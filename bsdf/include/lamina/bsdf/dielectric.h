@@ -62,13 +62,11 @@ class DielectricBxdf final : public Bxdf<S> {
         const auto g = geometry(wo, wi);
         if (!g) return S(Float(0));
         const Float F = fresnelDielectric(glm::dot(wo, g->m), eta_);
-        const Float dg = distribution_.D(g->m) * distribution_.G2(wo, wi, g2_);
-        if (g->reflection) return S(dg * F / (Float(4) * std::abs(wo.z)));
-        const Float wim = glm::dot(wi, g->m), wom = glm::dot(wo, g->m);
-        const Float denom = sqr(wim + wom / g->etap);
-        Float ft = dg * (Float(1) - F) * std::abs(wim * wom) / (std::abs(wo.z) * denom);
-        if (mode == TransportMode::Radiance) ft /= sqr(g->etap);
-        return S(ft);
+        if (g->reflection) {
+            const Float dg = distribution_.D(g->m) * distribution_.G2(wo, wi, g2_);
+            return S(dg * F / (Float(4) * std::abs(wo.z)));
+        }
+        return S(btdfWithoutFresnel(wo, wi, *g, mode) * (Float(1) - F));
     }
 
     Float pdf(const V3& wo, const V3& wi) const override {
@@ -128,11 +126,7 @@ class DielectricBxdf final : public Bxdf<S> {
     Transmission transmissionWithoutFresnel(const V3& wo, const V3& wi, TransportMode mode) const {
         const auto g = geometry(wo, wi);
         if (!g || g->reflection) return {};
-        const Float wim = glm::dot(wi, g->m), wom = glm::dot(wo, g->m);
-        Float ft = distribution_.D(g->m) * distribution_.G2(wo, wi, g2_) * std::abs(wim * wom) /
-                   (std::abs(wo.z) * sqr(wim + wom / g->etap));
-        if (mode == TransportMode::Radiance) ft /= sqr(g->etap);
-        return {ft, g->m};
+        return {btdfWithoutFresnel(wo, wi, *g, mode), g->m};
     }
 
     /// Density of sampleRefraction(): visible normal m, refracted (no Fresnel choice).
@@ -175,6 +169,16 @@ class DielectricBxdf final : public Bxdf<S> {
         if (glm::dot(m, wi) * wi.z < Float(0) || glm::dot(m, wo) * wo.z < Float(0))
             return std::nullopt;
         return Geometry{m, reflection, etap};
+    }
+
+    // Walter's BTDF times |cos_i| without (1 - F), for a transmission geometry.
+    Float btdfWithoutFresnel(const V3& wo, const V3& wi, const Geometry& g,
+                             TransportMode mode) const {
+        const Float wim = glm::dot(wi, g.m), wom = glm::dot(wo, g.m);
+        Float ft = distribution_.D(g.m) * distribution_.G2(wo, wi, g2_) * std::abs(wim * wom) /
+                   (std::abs(wo.z) * sqr(wim + wom / g.etap));
+        if (mode == TransportMode::Radiance) ft /= sqr(g.etap);
+        return ft;
     }
 
     // Visible-normal density of m seen from wo's side.
