@@ -5,6 +5,7 @@
 #include "lamina/bsdf/dielectric.h"
 #include "lamina/bsdf/diffuse.h"
 #include "lamina/bsdf/layered.h"
+#include "lamina/bsdf/material_builder.h"
 
 namespace lamina {
 
@@ -19,6 +20,9 @@ LAMINA_INSTANTIATE_BSDF(ConductorBxdf)
 LAMINA_INSTANTIATE_BSDF(DielectricBxdf)
 LAMINA_INSTANTIATE_BSDF(LayeredBxdf)
 LAMINA_INSTANTIATE_BSDF(MicrofacetReflectionLobe)
+LAMINA_INSTANTIATE_BSDF(MixBxdf)
+template class MaterialBuilder<Rgb<float>>;
+template class MaterialBuilder<Rgb<double>>;
 
 template class MicrofacetDistribution<float>;
 template class MicrofacetDistribution<double>;

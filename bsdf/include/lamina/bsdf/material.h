@@ -1,0 +1,109 @@
+// Material descriptions: the JSON objects of docs/bsdf.md ("Materials"), parsed and validated
+// once, independent of the rendering mode. `buildBxdf` (material_builder.h) turns one into a
+// BSDF of either variant. Colours are linear Rec.709 triples; what a colour means in spectral
+// mode is decided by the builder's SpectrumContext.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <variant>
+
+#include "lamina/bsdf/diffuse.h"
+#include "lamina/bsdf/layered.h"
+#include "lamina/bsdf/microfacet_distribution.h"
+#include "lamina/core/json_reader.h"
+#include "lamina/core/spectrum.h"
+
+namespace lamina {
+
+using RgbInput = Rgb<double>;
+
+/// The microfacet switches shared by every rough lobe.
+struct MicrofacetParams {
+    NdfKind ndf = NdfKind::Ggx;
+    double alphaX = 0;
+    double alphaY = 0;
+    G2Form g2 = G2Form::HeightCorrelated;
+    MicrofacetSampling sampling = MicrofacetSampling::VisibleNormals;
+
+    /// Perceptual roughness for the diffuse models (sqrt of the mean alpha).
+    double perceptualRoughness() const;
+};
+
+enum class FresnelChoice { Auto, Schlick, SchlickShadowed, SchlickSphericalGaussian, F82, Exact };
+
+/// `standard`: the article's material (and its generalisations); see docs/bsdf.md.
+struct StandardMaterial {
+    RgbInput baseColor{0.8};
+    double metalness = 0;
+    double specular = 0.04;                  ///< F0 of the dielectric part
+    std::optional<RgbInput> specularColor;   ///< specular workflow: F0 directly
+    std::optional<RgbInput> f82;             ///< absolute reflectance at cos = 1/7
+    std::optional<RgbInput> f82Tint;         ///< multiplier of Schlick at cos = 1/7
+    double transmission = 0;
+    double ior = 1.5;
+    std::optional<DiffuseModel> diffuse = DiffuseModel::Lambert;  ///< nullopt: none
+    bool specularLobe = true;
+    MicrofacetParams microfacet;
+    FresnelChoice fresnel = FresnelChoice::SchlickShadowed;
+    LayerCoupling coupling = LayerCoupling::Fresnel;
+};
+
+/// `lambert`, `oren_nayar`, `burley`, `frostbite`.
+struct DiffuseMaterial {
+    DiffuseModel model = DiffuseModel::Lambert;
+    RgbInput reflectance{0.5};
+    double roughness = 0;  ///< perceptual
+};
+
+/// A conductor's optics: exactly one form.
+struct ConductorOptics {
+    enum class Form { EtaK, F0F82 };
+    Form form = Form::EtaK;
+    RgbInput eta{0.2};     ///< EtaK: real part of the relative index (per channel)
+    RgbInput k{3.9};       ///< EtaK: imaginary part
+    RgbInput f0{0.9};      ///< F0F82: normal-incidence reflectance
+    std::optional<RgbInput> f82;  ///< F0F82: reflectance at cos = 1/7 (absent: plain Schlick)
+    bool etaKIsGrey() const;
+};
+
+/// `conductor`. Fresnel: Auto is exact for eta/k optics and Hoffman's F82 for f0/f82.
+struct ConductorMaterial {
+    ConductorOptics optics;
+    MicrofacetParams microfacet;
+    FresnelChoice fresnel = FresnelChoice::Auto;
+};
+
+/// `dielectric`: a boundary between outside (index 1) and inside (index ior).
+struct DielectricMaterial {
+    double ior = 1.5;
+    MicrofacetParams microfacet;
+};
+
+struct MaterialDesc;
+
+/// `mix`: (1 - weight) a + weight b.
+struct MixMaterial {
+    std::shared_ptr<const MaterialDesc> a, b;
+    double weight = 0.5;
+};
+
+struct MaterialDesc {
+    std::string type;  ///< the JSON "type", for messages and `lamina info`
+    std::variant<StandardMaterial, DiffuseMaterial, ConductorMaterial, DielectricMaterial,
+                 MixMaterial>
+        model;
+};
+
+/// The material types parseMaterial accepts.
+const char* const* materialTypeNames();
+
+/// Parses and validates one material object ({"type": ..., ...}); unknown types, unknown keys
+/// and out-of-range values are InputErrors naming the JSON path.
+MaterialDesc parseMaterial(const JsonReader& reader);
+
+/// Parses a material given on a command line: a JSON object literal or "@file.json".
+MaterialDesc parseMaterialArgument(const std::string& argument);
+
+}  // namespace lamina

@@ -1,0 +1,167 @@
+// MaterialDesc -> BSDF of a variant. Lobes with zero weight are dropped here, so a render
+// never evaluates them (DESIGN.md: a scene pays only for what it uses).
+#pragma once
+
+#include <memory>
+#include <stdexcept>
+
+#include "lamina/bsdf/conductor.h"
+#include "lamina/bsdf/dielectric.h"
+#include "lamina/bsdf/layered.h"
+#include "lamina/bsdf/material.h"
+#include "lamina/bsdf/mix.h"
+#include "lamina/bsdf/spectrum_context.h"
+
+namespace lamina {
+
+/// The Rec.709 F0 and F82 of a conductor given per channel by (eta, k): the exact Fresnel
+/// reflectance at normal incidence and at cos = 1/7 (Hoffman 2019's reduction, per channel).
+inline std::pair<RgbInput, RgbInput> conductorF0F82(const RgbInput& eta, const RgbInput& k) {
+    RgbInput f0, f82;
+    for (int c = 0; c < 3; ++c) {
+        f0[c] = fresnelConductor(1.0, eta[c], k[c]);
+        f82[c] = fresnelConductor(kF82Cosine, eta[c], k[c]);
+    }
+    return {f0, f82};
+}
+
+template <SpectrumType S>
+class MaterialBuilder {
+  public:
+    using Float = typename S::Float;
+    using Distribution = MicrofacetDistribution<Float>;
+
+    explicit MaterialBuilder(const SpectrumContext<S>& context) : ctx_(context) {}
+
+    std::unique_ptr<Bxdf<S>> build(const MaterialDesc& desc) const {
+        return std::visit([&](const auto& m) { return buildModel(m); }, desc.model);
+    }
+
+  private:
+    static Distribution distribution(const MicrofacetParams& m) {
+        return Distribution(m.ndf, Float(m.alphaX), Float(m.alphaY));
+    }
+
+    std::unique_ptr<Bxdf<S>> buildModel(const DiffuseMaterial& d) const {
+        return std::make_unique<DiffuseBxdf<S>>(ctx_.reflectance(d.reflectance), d.model,
+                                                Float(d.roughness));
+    }
+
+    std::unique_ptr<Bxdf<S>> buildModel(const DielectricMaterial& d) const {
+        return std::make_unique<DielectricBxdf<S>>(Float(d.ior), distribution(d.microfacet),
+                                                   d.microfacet.g2);
+    }
+
+    std::unique_ptr<Bxdf<S>> buildModel(const MixMaterial& m) const {
+        return std::make_unique<MixBxdf<S>>(build(*m.a), build(*m.b), Float(m.weight));
+    }
+
+    Fresnel<S> conductorFresnel(const ConductorMaterial& c) const {
+        const ConductorOptics& o = c.optics;
+        if (o.form == ConductorOptics::Form::F0F82) {
+            const S f0 = ctx_.reflectance(o.f0);
+            switch (c.fresnel) {
+                case FresnelChoice::Schlick:
+                    return Fresnel<S>::schlick(f0);
+                case FresnelChoice::SchlickShadowed:
+                    return Fresnel<S>::schlickShadowed(f0, shadowedF90(o.f0));
+                case FresnelChoice::SchlickSphericalGaussian:
+                    return Fresnel<S>::schlickSphericalGaussian(f0);
+                default:  // Auto, F82 (Exact is rejected by the parser)
+                    return o.f82 ? Fresnel<S>::hoffmanF82(f0, ctx_.reflectance(*o.f82))
+                                 : Fresnel<S>::schlick(f0);
+            }
+        }
+        // Exact conductor Fresnel where the optics are known at every channel: per channel in
+        // RGB mode, and in spectral mode only for grey (eta, k), which are constant spectra.
+        const bool exactPossible = !SpectrumContext<S>::kSpectral || o.etaKIsGrey();
+        if (c.fresnel == FresnelChoice::Exact && exactPossible)
+            return Fresnel<S>::conductor(ctx_.unbounded(o.eta), ctx_.unbounded(o.k));
+        if (c.fresnel == FresnelChoice::Auto && SpectrumContext<S>::kSpectral && exactPossible)
+            return Fresnel<S>::conductor(ctx_.unbounded(o.eta), ctx_.unbounded(o.k));
+        // Otherwise reduce to reflectances (never upsample eta and k as if they were albedos:
+        // PITFALLS.md, Mitsuba 3 #208).
+        const auto [f0rgb, f82rgb] = conductorF0F82(o.eta, o.k);
+        const S f0 = ctx_.reflectance(f0rgb);
+        switch (c.fresnel) {
+            case FresnelChoice::Schlick:
+                return Fresnel<S>::schlick(f0);
+            case FresnelChoice::SchlickShadowed:
+                return Fresnel<S>::schlickShadowed(f0, shadowedF90(f0rgb));
+            case FresnelChoice::SchlickSphericalGaussian:
+                return Fresnel<S>::schlickSphericalGaussian(f0);
+            default:
+                return Fresnel<S>::hoffmanF82(f0, ctx_.reflectance(f82rgb));
+        }
+    }
+
+    std::unique_ptr<Bxdf<S>> buildModel(const ConductorMaterial& c) const {
+        return std::make_unique<ConductorBxdf<S>>(MicrofacetReflectionLobe<S>(
+            distribution(c.microfacet), conductorFresnel(c), c.microfacet.sampling,
+            c.microfacet.g2));
+    }
+
+    // The article's F90 = min(1, luminance(F0) / 0.04), from the Rec.709 F0 in both modes.
+    static S shadowedF90(const RgbInput& f0) {
+        return S(Float(std::min(1.0, luminance(f0) / 0.04)));
+    }
+
+    std::unique_ptr<Bxdf<S>> buildModel(const StandardMaterial& s) const {
+        // Article, section 5: F0 = lerp(0.04, base_color, metalness) (with `specular` in
+        // place of 0.04), diffuse reflectance = base_color (1 - metalness).
+        const RgbInput f0rgb = s.specularColor
+                                   ? *s.specularColor
+                                   : RgbInput(s.specular) * (1.0 - s.metalness) +
+                                         s.baseColor * s.metalness;
+        const RgbInput diffuseRgb =
+            s.specularColor ? s.baseColor : s.baseColor * (1.0 - s.metalness);
+
+        typename LayeredBxdf<S>::Layers layers;
+        layers.coupling = s.coupling;
+        const Distribution dist = distribution(s.microfacet);
+        if (s.specularLobe) {
+            const S f0 = ctx_.reflectance(f0rgb);
+            Fresnel<S> fresnel;
+            switch (s.fresnel) {
+                case FresnelChoice::Schlick:
+                    fresnel = Fresnel<S>::schlick(f0);
+                    break;
+                case FresnelChoice::SchlickSphericalGaussian:
+                    fresnel = Fresnel<S>::schlickSphericalGaussian(f0);
+                    break;
+                case FresnelChoice::F82:
+                    if (s.f82)
+                        fresnel = Fresnel<S>::hoffmanF82(f0, ctx_.reflectance(*s.f82));
+                    else
+                        fresnel = Fresnel<S>::hoffmanF82Tint(
+                            f0, ctx_.unbounded(s.f82Tint.value_or(RgbInput(1.0))));
+                    break;
+                case FresnelChoice::Exact:
+                    fresnel = Fresnel<S>::dielectric(S(Float(s.ior)));
+                    break;
+                default:
+                    fresnel = Fresnel<S>::schlickShadowed(f0, shadowedF90(f0rgb));
+                    break;
+            }
+            layers.interface.emplace(dist, fresnel, s.microfacet.sampling, s.microfacet.g2);
+        }
+        if (s.diffuse && s.transmission < 1.0 && diffuseRgb.maxValue() > 0.0)
+            layers.diffuse.emplace(ctx_.reflectance(diffuseRgb), *s.diffuse,
+                                   Float(s.microfacet.perceptualRoughness()));
+        if (s.transmission > 0.0) {
+            layers.transmission.emplace(Float(s.ior), dist, s.microfacet.g2);
+            layers.transmissionWeight = Float(s.transmission);
+        }
+        return std::make_unique<LayeredBxdf<S>>(std::move(layers));
+    }
+
+    const SpectrumContext<S>& ctx_;
+};
+
+/// Builds the BSDF of `desc` in the variant of `context`.
+template <SpectrumType S>
+std::unique_ptr<Bxdf<S>> buildBxdf(const MaterialDesc& desc, const SpectrumContext<S>& context) {
+    return MaterialBuilder<S>(context).build(desc);
+}
+
+}  // namespace lamina

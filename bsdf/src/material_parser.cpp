@@ -1,0 +1,246 @@
+// JSON -> MaterialDesc, with validation (docs/bsdf.md, "Materials").
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "lamina/bsdf/material.h"
+
+namespace lamina {
+
+namespace {
+
+constexpr const char* kTypeNames[] = {"standard", "lambert",   "oren_nayar", "burley", "frostbite",
+                                      "conductor", "dielectric", "mix",        nullptr};
+
+RgbInput toRgb(const std::array<double, 3>& a) {
+    return RgbInput(a[0], a[1], a[2]);
+}
+
+// Roughness in one of three forms: perceptual `roughness` (alpha = roughness^2), `alpha`, or
+// `alpha_x` and `alpha_y`; `anisotropy` in [0, 1) stretches the first two along the tangent
+// (Kulla and Conty 2017, "Revisiting Physically Based Shading at Imageworks", slide 20:
+// aspect = sqrt(1 - 0.9 anisotropy), alpha_x = alpha / aspect, alpha_y = alpha aspect).
+void readRoughness(const JsonReader& r, double defaultRoughness, MicrofacetParams& m) {
+    const int forms = int(r.has("roughness")) + int(r.has("alpha")) +
+                      int(r.has("alpha_x") || r.has("alpha_y"));
+    if (forms > 1) r.fail("give only one of roughness, alpha, or alpha_x and alpha_y");
+    if (r.has("alpha_x") || r.has("alpha_y")) {
+        m.alphaX = r.requiredNumber("alpha_x", Range::unit());
+        m.alphaY = r.requiredNumber("alpha_y", Range::unit());
+        if (r.has("anisotropy")) r.failAt("anisotropy", "not allowed with alpha_x and alpha_y");
+        return;
+    }
+    double alpha = sqr(defaultRoughness);
+    if (r.has("alpha")) alpha = r.requiredNumber("alpha", Range::unit());
+    if (r.has("roughness")) alpha = sqr(r.requiredNumber("roughness", Range::unit()));
+    const double anisotropy = r.number("anisotropy", 0.0, {0.0, 0.99});
+    const double aspect = std::sqrt(1.0 - 0.9 * anisotropy);
+    m.alphaX = std::min(1.0, alpha / aspect);
+    m.alphaY = alpha * aspect;
+}
+
+void readMicrofacetSwitches(const JsonReader& r, MicrofacetParams& m, bool allowSampling) {
+    m.g2 = r.choice("g2", G2Form::HeightCorrelated,
+                    {{"height_correlated", G2Form::HeightCorrelated},
+                     {"separable", G2Form::Separable}});
+    if (!allowSampling) return;
+    m.sampling = r.choice("sampling", MicrofacetSampling::VisibleNormals,
+                          {{"vndf", MicrofacetSampling::VisibleNormals},
+                           {"caps", MicrofacetSampling::SphericalCaps},
+                           {"walter", MicrofacetSampling::Walter},
+                           {"walter_widened", MicrofacetSampling::WalterWidened}});
+    if (m.sampling == MicrofacetSampling::SphericalCaps && m.ndf != NdfKind::Ggx)
+        r.failAt("sampling", "\"caps\" (Dupuy and Benyoub 2023) is defined for GGX only");
+}
+
+FresnelChoice readFresnel(const JsonReader& r, FresnelChoice defaultValue, bool allowAuto) {
+    const FresnelChoice f =
+        r.choice("fresnel", defaultValue,
+                 {{"schlick", FresnelChoice::Schlick},
+                  {"schlick_shadowed", FresnelChoice::SchlickShadowed},
+                  {"schlick_sg", FresnelChoice::SchlickSphericalGaussian},
+                  {"f82", FresnelChoice::F82},
+                  {"exact", FresnelChoice::Exact},
+                  {"auto", FresnelChoice::Auto}});
+    if (f == FresnelChoice::Auto && !allowAuto)
+        r.failAt("fresnel", "expected one of schlick, schlick_shadowed, schlick_sg, f82, exact");
+    return f;
+}
+
+StandardMaterial readStandard(const JsonReader& r) {
+    StandardMaterial s;
+    s.baseColor = toRgb(r.triple("base_color", {0.8, 0.8, 0.8}, Range::unit()));
+    s.metalness = r.number("metalness", 0.0, Range::unit());
+    s.transmission = r.number("transmission", 0.0, Range::unit());
+    const auto ior = r.optionalNumber("ior", Range::positive());
+    const auto specular = r.optionalNumber("specular", Range::unit());
+    // One of ior and specular implies the other (F0 = ((ior - 1) / (ior + 1))^2); given
+    // neither, F0 = 0.04 and ior = 1.5, which agree.
+    if (specular) {
+        s.specular = *specular;
+        const double root = std::sqrt(std::min(*specular, 0.999999));
+        s.ior = ior.value_or((1.0 + root) / (1.0 - root));
+    } else if (ior) {
+        s.ior = *ior;
+        s.specular = sqr((*ior - 1.0) / (*ior + 1.0));
+    }
+    if (const auto c = r.optionalTriple("specular_color", Range::unit())) {
+        s.specularColor = toRgb(*c);
+        if (r.has("metalness"))
+            r.failAt("specular_color",
+                     "the specular workflow (specular_color) excludes metalness; give one");
+    }
+    if (r.has("f82") && r.has("f82_tint")) r.fail("give only one of f82 and f82_tint");
+    if (const auto c = r.optionalTriple("f82", Range::unit())) s.f82 = toRgb(*c);
+    if (const auto c = r.optionalTriple("f82_tint", Range::nonNegative())) s.f82Tint = toRgb(*c);
+
+    s.diffuse = r.choice<std::optional<DiffuseModel>>(
+        "diffuse_model", DiffuseModel::Lambert,
+        {{"lambert", DiffuseModel::Lambert},
+         {"oren_nayar", DiffuseModel::OrenNayar},
+         {"burley", DiffuseModel::Burley},
+         {"frostbite", DiffuseModel::Frostbite},
+         {"none", std::nullopt}});
+    const auto spec = r.choice<std::optional<NdfKind>>(
+        "specular_model", NdfKind::Ggx,
+        {{"ggx", NdfKind::Ggx}, {"beckmann", NdfKind::Beckmann}, {"none", std::nullopt}});
+    s.specularLobe = spec.has_value();
+    s.microfacet.ndf = spec.value_or(NdfKind::Ggx);
+    readRoughness(r, 0.5, s.microfacet);
+    readMicrofacetSwitches(r, s.microfacet, true);
+    s.fresnel = readFresnel(r, FresnelChoice::SchlickShadowed, false);
+    if (s.fresnel == FresnelChoice::Exact && s.metalness > 0)
+        r.failAt("fresnel",
+                 "\"exact\" is the dielectric Fresnel of `ior`; a metal's exact Fresnel needs "
+                 "n and k: use a \"conductor\" material");
+    if ((s.f82 || s.f82Tint) && s.fresnel != FresnelChoice::F82)
+        r.fail("f82 / f82_tint need \"fresnel\": \"f82\"");
+    // The article sums Frostbite's renormalised diffuse and the specular lobe.
+    const LayerCoupling defaultCoupling = s.diffuse == DiffuseModel::Frostbite
+                                              ? LayerCoupling::Sum
+                                              : LayerCoupling::Fresnel;
+    s.coupling = r.choice("coupling", defaultCoupling,
+                          {{"fresnel", LayerCoupling::Fresnel}, {"sum", LayerCoupling::Sum}});
+    return s;
+}
+
+DiffuseMaterial readDiffuse(const JsonReader& r, DiffuseModel model) {
+    DiffuseMaterial d;
+    d.model = model;
+    d.reflectance = toRgb(r.triple("reflectance", {0.5, 0.5, 0.5}, Range::unit()));
+    if (model != DiffuseModel::Lambert) {
+        MicrofacetParams m;
+        readRoughness(r, 0.5, m);
+        if (m.alphaX != m.alphaY) r.fail("diffuse roughness is isotropic");
+        d.roughness = m.perceptualRoughness();
+    }
+    return d;
+}
+
+ConductorMaterial readConductor(const JsonReader& r) {
+    ConductorMaterial c;
+    const bool etaK = r.has("eta") || r.has("k");
+    const bool f0 = r.has("f0") || r.has("f82");
+    if (int(etaK) + int(f0) != 1)
+        r.fail("a conductor's optics are exactly one of {\"eta\", \"k\"} or {\"f0\", \"f82\"}");
+    if (etaK) {
+        c.optics.form = ConductorOptics::Form::EtaK;
+        c.optics.eta = toRgb(r.optionalTriple("eta", Range::positive()).value_or(
+            std::array<double, 3>{}));
+        if (!r.has("eta")) r.failAt("eta", "missing; expected a number > 0 or [r, g, b]");
+        if (!r.has("k")) r.failAt("k", "missing; expected a number >= 0 or [r, g, b]");
+        c.optics.k = toRgb(*r.optionalTriple("k", Range::nonNegative()));
+    } else {
+        c.optics.form = ConductorOptics::Form::F0F82;
+        if (!r.has("f0")) r.failAt("f0", "missing; expected a number in [0, 1] or [r, g, b]");
+        c.optics.f0 = toRgb(*r.optionalTriple("f0", Range::unit()));
+        if (const auto v = r.optionalTriple("f82", Range::unit())) c.optics.f82 = toRgb(*v);
+    }
+    c.microfacet.ndf = r.choice("distribution", NdfKind::Ggx,
+                                {{"ggx", NdfKind::Ggx},
+                                 {"beckmann", NdfKind::Beckmann},
+                                 {"blinn_phong", NdfKind::BlinnPhong}});
+    readRoughness(r, 0.0, c.microfacet);
+    readMicrofacetSwitches(r, c.microfacet, true);
+    c.fresnel = readFresnel(r, FresnelChoice::Auto, true);
+    if (c.optics.form == ConductorOptics::Form::F0F82 && c.fresnel == FresnelChoice::Exact)
+        r.failAt("fresnel", "\"exact\" needs the eta and k of the conductor, not f0");
+    return c;
+}
+
+DielectricMaterial readDielectric(const JsonReader& r) {
+    DielectricMaterial d;
+    d.ior = r.number("ior", 1.5, Range::positive());
+    d.microfacet.ndf = r.choice("distribution", NdfKind::Ggx,
+                                {{"ggx", NdfKind::Ggx}, {"beckmann", NdfKind::Beckmann}});
+    readRoughness(r, 0.0, d.microfacet);
+    readMicrofacetSwitches(r, d.microfacet, false);
+    return d;
+}
+
+MixMaterial readMix(const JsonReader& r) {
+    MixMaterial m;
+    m.weight = r.number("weight", 0.5, Range::unit());
+    m.a = std::make_shared<MaterialDesc>(parseMaterial(r.child("a")));
+    m.b = std::make_shared<MaterialDesc>(parseMaterial(r.child("b")));
+    return m;
+}
+
+}  // namespace
+
+double MicrofacetParams::perceptualRoughness() const {
+    return std::sqrt(0.5 * (alphaX + alphaY));
+}
+
+bool ConductorOptics::etaKIsGrey() const {
+    return eta[0] == eta[1] && eta[1] == eta[2] && k[0] == k[1] && k[1] == k[2];
+}
+
+const char* const* materialTypeNames() {
+    return kTypeNames;
+}
+
+MaterialDesc parseMaterial(const JsonReader& r) {
+    r.expectObject();
+    MaterialDesc desc;
+    desc.type = r.requiredString("type");
+    const std::string& t = desc.type;
+    if (t == "standard") {
+        desc.model = readStandard(r);
+    } else if (t == "lambert") {
+        desc.model = readDiffuse(r, DiffuseModel::Lambert);
+    } else if (t == "oren_nayar") {
+        desc.model = readDiffuse(r, DiffuseModel::OrenNayar);
+    } else if (t == "burley") {
+        desc.model = readDiffuse(r, DiffuseModel::Burley);
+    } else if (t == "frostbite") {
+        desc.model = readDiffuse(r, DiffuseModel::Frostbite);
+    } else if (t == "conductor") {
+        desc.model = readConductor(r);
+    } else if (t == "dielectric") {
+        desc.model = readDielectric(r);
+    } else if (t == "mix") {
+        desc.model = readMix(r);
+    } else {
+        std::string list;
+        for (const char* const* n = kTypeNames; *n; ++n)
+            list += (list.empty() ? "" : ", ") + std::string(*n);
+        r.failAt("type", "unknown material type \"" + t + "\"; expected one of " + list);
+    }
+    r.finish();
+    return desc;
+}
+
+MaterialDesc parseMaterialArgument(const std::string& argument) {
+    if (!argument.empty() && argument[0] == '@') {
+        const std::filesystem::path path = argument.substr(1);
+        const Json j = readJsonFile(path);
+        const JsonSource source{path.string(), path.parent_path()};
+        return parseMaterial(JsonReader(j, "", source));
+    }
+    static const JsonSource source{"<material argument>", "."};
+    const Json j = parseJsonText(argument, source);
+    return parseMaterial(JsonReader(j, "", source));
+}
+
+}  // namespace lamina

@@ -1,0 +1,133 @@
+// Reading validated values out of JSON objects (materials, scenes). Every error names the
+// file, the JSON path of the value and what was expected, e.g.
+//   scene.json: materials.gold.roughness: expected a number in [0, 1], got -0.2
+// and a reader refuses keys it does not know (a misspelt key is an error, never ignored).
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <initializer_list>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "lamina/core/error.h"
+
+namespace lamina {
+
+using Json = nlohmann::json;
+
+/// Where JSON came from: the file name used in messages and the directory relative paths
+/// inside it are resolved against.
+struct JsonSource {
+    std::string name = "<input>";
+    std::filesystem::path directory = ".";
+};
+
+/// Parses JSON text (comments allowed); a syntax error names the line and column.
+Json parseJsonText(const std::string& text, const JsonSource& source);
+/// Reads and parses a JSON file; a missing file is an InputError naming it.
+Json readJsonFile(const std::filesystem::path& path);
+
+/// A closed interval for numeric validation.
+struct Range {
+    double min = -std::numeric_limits<double>::infinity();
+    double max = std::numeric_limits<double>::infinity();
+    bool minOpen = false;  ///< true: min itself is not allowed
+
+    static Range any() { return {}; }
+    static Range nonNegative() { return {0.0}; }
+    static Range positive() { return {0.0, std::numeric_limits<double>::infinity(), true}; }
+    static Range unit() { return {0.0, 1.0}; }
+    bool contains(double v) const {
+        return (minOpen ? v > min : v >= min) && v <= max;
+    }
+    std::string describe() const;
+};
+
+class JsonReader {
+  public:
+    JsonReader(const Json& value, std::string path, const JsonSource& source);
+
+    const Json& value() const { return value_; }
+    const std::string& path() const { return path_; }
+    const JsonSource& source() const { return source_; }
+
+    /// Throws InputError "<file>: <path>: <message>".
+    [[noreturn]] void fail(const std::string& message) const;
+    [[noreturn]] void failAt(const std::string& key, const std::string& message) const;
+    std::string childPath(const std::string& key) const;
+    std::string indexPath(std::size_t index) const;
+
+    /// Requires the value to be an object.
+    void expectObject() const;
+    bool has(const std::string& key) const;
+    /// A reader for a child value (marks the key as known).
+    JsonReader child(const std::string& key) const;
+    std::optional<JsonReader> optionalChild(const std::string& key) const;
+
+    double number(const std::string& key, double defaultValue, Range range = Range::any()) const;
+    double requiredNumber(const std::string& key, Range range = Range::any()) const;
+    std::optional<double> optionalNumber(const std::string& key, Range range = Range::any()) const;
+    int integer(const std::string& key, int defaultValue, int min, int max) const;
+    bool boolean(const std::string& key, bool defaultValue) const;
+    std::string string(const std::string& key, const std::string& defaultValue) const;
+    std::string requiredString(const std::string& key) const;
+    /// A number given alone (grey) or as [r, g, b].
+    std::array<double, 3> triple(const std::string& key, std::array<double, 3> defaultValue,
+                                 Range range = Range::any()) const;
+    std::optional<std::array<double, 3>> optionalTriple(const std::string& key,
+                                                        Range range = Range::any()) const;
+    /// Exactly N numbers in an array.
+    template <std::size_t N>
+    std::array<double, N> requiredArray(const std::string& key, Range range = Range::any()) const;
+
+    /// One of a fixed set of names.
+    template <typename E>
+    E choice(const std::string& key, E defaultValue,
+             std::initializer_list<std::pair<const char*, E>> names) const {
+        if (!has(key)) return defaultValue;
+        const std::string s = string(key, "");
+        for (const auto& [name, e] : names)
+            if (s == name) return e;
+        std::string list;
+        for (const auto& [name, e] : names)
+            list += (list.empty() ? "" : ", ") + std::string(name);
+        failAt(key, "expected one of " + list + ", got \"" + s + "\"");
+    }
+
+    /// Fails on any key that was not read (misspelt or unsupported parameters).
+    void finish() const;
+
+    /// Checks a number read by other means (e.g. from an array).
+    double checkNumber(const Json& v, const std::string& path, Range range) const;
+
+  private:
+    const Json* find(const std::string& key) const;
+
+    const Json& value_;
+    std::string path_;
+    const JsonSource& source_;
+    mutable std::set<std::string> used_;
+};
+
+template <std::size_t N>
+std::array<double, N> JsonReader::requiredArray(const std::string& key, Range range) const {
+    const Json* v = find(key);
+    if (!v) failAt(key, "missing; expected an array of " + std::to_string(N) + " numbers");
+    if (!v->is_array() || v->size() != N)
+        failAt(key, "expected an array of " + std::to_string(N) + " numbers, got " + v->dump());
+    std::array<double, N> out{};
+    for (std::size_t i = 0; i < N; ++i)
+        out[i] = checkNumber((*v)[i], childPath(key) + "[" + std::to_string(i) + "]", range);
+    return out;
+}
+
+/// Formats a number for messages (shortest round-trip form).
+std::string formatNumber(double v);
+
+}  // namespace lamina

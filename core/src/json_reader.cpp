@@ -1,0 +1,213 @@
+#include "lamina/core/json_reader.h"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace lamina {
+
+namespace {
+
+// nlohmann reports a byte offset; users want a line and a column.
+std::string lineAndColumn(const std::string& text, std::size_t byte) {
+    std::size_t line = 1, column = 1;
+    for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
+        if (text[i] == '\n') {
+            ++line;
+            column = 1;
+        } else {
+            ++column;
+        }
+    }
+    return "line " + std::to_string(line) + ", column " + std::to_string(column);
+}
+
+std::string typeName(const Json& v) {
+    return v.is_number() ? "a number" : std::string("a ") + v.type_name() + " " + v.dump();
+}
+
+}  // namespace
+
+std::string formatNumber(double v) {
+    std::ostringstream s;
+    s.precision(10);
+    s << v;
+    return s.str();
+}
+
+Json parseJsonText(const std::string& text, const JsonSource& source) {
+    try {
+        return Json::parse(text, nullptr, true, /*ignore_comments=*/true);
+    } catch (const Json::parse_error& e) {
+        // e.what() is "[json.exception.parse_error.101] parse error at line 3, column 5: ...";
+        // keep the part after the position, which says what was expected.
+        std::string what = e.what();
+        const auto colon = what.find(": ", what.find("parse error"));
+        const std::string detail = colon == std::string::npos ? what : what.substr(colon + 2);
+        throw InputError(source.name + ": malformed JSON at " +
+                         lineAndColumn(text, e.byte == 0 ? 0 : e.byte - 1) + ": " + detail);
+    } catch (const Json::exception& e) {
+        // e.g. "number overflow parsing '1e999'": keep the part after the exception id.
+        std::string what = e.what();
+        const auto bracket = what.find("] ");
+        throw InputError(source.name + ": malformed JSON: " +
+                         (bracket == std::string::npos ? what : what.substr(bracket + 2)));
+    }
+}
+
+Json readJsonFile(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path.string() + ": cannot open file");
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    JsonSource source{path.string(), path.parent_path()};
+    return parseJsonText(buffer.str(), source);
+}
+
+std::string Range::describe() const {
+    const bool lo = std::isfinite(min), hi = std::isfinite(max);
+    if (lo && hi) return "a number in " + std::string(minOpen ? "(" : "[") + formatNumber(min) +
+                         ", " + formatNumber(max) + "]";
+    if (lo) return std::string("a number ") + (minOpen ? "> " : ">= ") + formatNumber(min);
+    if (hi) return "a number <= " + formatNumber(max);
+    return "a finite number";
+}
+
+JsonReader::JsonReader(const Json& value, std::string path, const JsonSource& source)
+    : value_(value), path_(std::move(path)), source_(source) {}
+
+void JsonReader::fail(const std::string& message) const {
+    throw InputError(source_.name + ": " + (path_.empty() ? "(top level)" : path_) + ": " +
+                     message);
+}
+
+void JsonReader::failAt(const std::string& key, const std::string& message) const {
+    throw InputError(source_.name + ": " + childPath(key) + ": " + message);
+}
+
+std::string JsonReader::childPath(const std::string& key) const {
+    return path_.empty() ? key : path_ + "." + key;
+}
+
+std::string JsonReader::indexPath(std::size_t index) const {
+    return path_ + "[" + std::to_string(index) + "]";
+}
+
+void JsonReader::expectObject() const {
+    if (!value_.is_object()) fail("expected a JSON object, got " + typeName(value_));
+}
+
+const Json* JsonReader::find(const std::string& key) const {
+    used_.insert(key);  // every key asked for is a known one, present or not
+    if (!value_.is_object()) return nullptr;
+    const auto it = value_.find(key);
+    return it == value_.end() ? nullptr : &*it;
+}
+
+bool JsonReader::has(const std::string& key) const {
+    used_.insert(key);
+    return value_.is_object() && value_.contains(key);
+}
+
+JsonReader JsonReader::child(const std::string& key) const {
+    const Json* v = find(key);
+    if (!v) failAt(key, "missing");
+    return JsonReader(*v, childPath(key), source_);
+}
+
+std::optional<JsonReader> JsonReader::optionalChild(const std::string& key) const {
+    const Json* v = find(key);
+    if (!v) return std::nullopt;
+    return JsonReader(*v, childPath(key), source_);
+}
+
+double JsonReader::checkNumber(const Json& v, const std::string& path, Range range) const {
+    // NaN and Inf cannot be written in JSON, but a string "nan" or a huge literal can.
+    if (!v.is_number())
+        throw InputError(source_.name + ": " + path + ": expected " + range.describe() +
+                         ", got " + typeName(v));
+    const double d = v.get<double>();
+    if (!std::isfinite(d) || !range.contains(d))
+        throw InputError(source_.name + ": " + path + ": expected " + range.describe() +
+                         ", got " + formatNumber(d));
+    return d;
+}
+
+double JsonReader::number(const std::string& key, double defaultValue, Range range) const {
+    const Json* v = find(key);
+    return v ? checkNumber(*v, childPath(key), range) : defaultValue;
+}
+
+double JsonReader::requiredNumber(const std::string& key, Range range) const {
+    const Json* v = find(key);
+    if (!v) failAt(key, "missing; expected " + range.describe());
+    return checkNumber(*v, childPath(key), range);
+}
+
+std::optional<double> JsonReader::optionalNumber(const std::string& key, Range range) const {
+    const Json* v = find(key);
+    if (!v) return std::nullopt;
+    return checkNumber(*v, childPath(key), range);
+}
+
+int JsonReader::integer(const std::string& key, int defaultValue, int min, int max) const {
+    const Json* v = find(key);
+    if (!v) return defaultValue;
+    if (!v->is_number_integer() || v->get<long long>() < min || v->get<long long>() > max)
+        failAt(key, "expected an integer in [" + std::to_string(min) + ", " +
+                        std::to_string(max) + "], got " + v->dump());
+    return int(v->get<long long>());
+}
+
+bool JsonReader::boolean(const std::string& key, bool defaultValue) const {
+    const Json* v = find(key);
+    if (!v) return defaultValue;
+    if (!v->is_boolean()) failAt(key, "expected true or false, got " + v->dump());
+    return v->get<bool>();
+}
+
+std::string JsonReader::string(const std::string& key, const std::string& defaultValue) const {
+    const Json* v = find(key);
+    if (!v) return defaultValue;
+    if (!v->is_string()) failAt(key, "expected a string, got " + v->dump());
+    return v->get<std::string>();
+}
+
+std::string JsonReader::requiredString(const std::string& key) const {
+    if (!has(key)) failAt(key, "missing; expected a string");
+    return string(key, "");
+}
+
+std::optional<std::array<double, 3>> JsonReader::optionalTriple(const std::string& key,
+                                                                Range range) const {
+    const Json* v = find(key);
+    if (!v) return std::nullopt;
+    if (v->is_number()) {
+        const double d = checkNumber(*v, childPath(key), range);
+        return std::array<double, 3>{d, d, d};
+    }
+    if (!v->is_array() || v->size() != 3)
+        failAt(key, "expected a number or an array [r, g, b] of numbers, got " + v->dump());
+    std::array<double, 3> out{};
+    for (std::size_t i = 0; i < 3; ++i)
+        out[i] = checkNumber((*v)[i], childPath(key) + "[" + std::to_string(i) + "]", range);
+    return out;
+}
+
+std::array<double, 3> JsonReader::triple(const std::string& key,
+                                         std::array<double, 3> defaultValue, Range range) const {
+    return optionalTriple(key, range).value_or(defaultValue);
+}
+
+void JsonReader::finish() const {
+    if (!value_.is_object()) return;
+    for (const auto& [key, v] : value_.items()) {
+        if (used_.count(key)) continue;
+        std::string known;
+        for (const auto& k : used_)
+            known += (known.empty() ? "" : ", ") + k;
+        failAt(key, "unknown key" + (known.empty() ? std::string() : " (expected one of: " + known + ")"));
+    }
+}
+
+}  // namespace lamina
