@@ -4,8 +4,11 @@
 
 namespace lamina::cli {
 
+void registerRenderCommand(CLI::App& app);
+
+// Every subcommand is registered here, in the order `lamina --help` lists them.
 void registerCommands(CLI::App& app) {
-    (void)app;  // The subcommands are added below as the libraries provide them.
+    registerRenderCommand(app);
 }
 
 }  // namespace lamina::cli

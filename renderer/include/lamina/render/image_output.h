@@ -1,0 +1,38 @@
+// Writing renders: OpenEXR (through OpenImageIO), float RGB with metadata and optional AOV
+// layers that Blender and tev read (Albedo.R/G/B, N.X/Y/Z, Z, Variance.Y), and a PNG preview
+// (sRGB, with exposure). Files are written under a temporary name in the same directory and
+// renamed, so an interrupted write never leaves a broken file behind.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include "lamina/render/film.h"
+
+namespace lamina::render {
+
+struct ImageMetadata {
+    std::map<std::string, std::string> strings;  ///< written as "lamina:<key>"
+    std::map<std::string, float> floats;
+    std::map<std::string, int> ints;
+};
+
+/// Checks that `path` can be written (directory exists, extension known) before a long
+/// render starts; InputError otherwise.
+void checkOutputPath(const std::filesystem::path& path);
+
+void writeExr(const std::filesystem::path& path, const Film& film, bool aovs,
+              const ImageMetadata& metadata);
+void writePngPreview(const std::filesystem::path& path, const Film& film, double exposure);
+
+/// A float RGB image read back (tests, comparisons).
+struct RgbImage {
+    int width = 0, height = 0;
+    std::vector<float> pixels;  ///< RGB interleaved
+    std::map<std::string, std::string> metadata;
+    float at(int x, int y, int c) const { return pixels[(std::size_t(y) * width + x) * 3 + c]; }
+};
+RgbImage readRgbImage(const std::filesystem::path& path);
+
+}  // namespace lamina::render

@@ -1,0 +1,67 @@
+// Lights: area lights on triangles and spheres, point, directional and constant environment
+// lights, and the light selection distribution. Every sampling routine has its density for
+// MIS. Radiance is returned as linear Rec.709 RGB; the integrator converts it to the render
+// mode's spectrum (an illuminant in spectral mode).
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "lamina/render/geometry.h"
+
+namespace lamina::render {
+
+using Rgbf = Rgb<float>;
+
+struct LightSample {
+    Vec3f wi;          ///< unit, from the reference point towards the light
+    float distance;    ///< to the sampled point; infinity for infinite lights
+    Rgbf radiance;     ///< arriving along -wi (intensity / d^2 for a point light)
+    float pdf;         ///< solid angle density at the reference point; 1 for delta lights
+    bool delta;
+    Vec3f point;   ///< the sampled point (finite lights), for the shadow ray's far end
+    Vec3f normal;  ///< the light's surface normal there, facing the reference point
+};
+
+class Light {
+  public:
+    virtual ~Light() = default;
+    /// Samples a direction towards the light from `ref`; nullopt if nothing can be sampled.
+    virtual std::optional<LightSample> sample(const Vec3f& ref, const Vec2f& u) const = 0;
+    /// Solid-angle density of sample() producing the point `onLight` (hit from `ref`).
+    virtual float pdf(const Vec3f& ref, const SurfaceHit& onLight) const = 0;
+    /// Emitted radiance leaving `hit` towards direction `w` (unit, away from the surface).
+    virtual Rgbf radiance(const SurfaceHit& hit, const Vec3f& w) const = 0;
+    /// Total emitted power (for light selection), in RGB luminance.
+    virtual double power() const = 0;
+    virtual bool isDelta() const { return false; }
+    virtual bool isInfinite() const { return false; }
+    /// Infinite lights: radiance arriving along -w (w points away from the scene) and density.
+    virtual Rgbf environment(const Vec3f&) const { return Rgbf(0.0f); }
+    virtual float environmentPdf(const Vec3f&) const { return 0.0f; }
+};
+
+/// Lights of the scene and the distribution they are chosen with.
+class LightSet {
+  public:
+    LightSet(const SceneDesc& scene, Geometry& geometry, bool uniformSelection);
+
+    bool empty() const { return lights_.empty(); }
+    std::size_t size() const { return lights_.size(); }
+    const Light& light(std::size_t i) const { return *lights_[i]; }
+    /// Chooses a light; returns its index and probability.
+    std::pair<std::size_t, float> choose(float u) const;
+    float probability(std::size_t i) const { return pmf_[i]; }
+    const std::vector<std::size_t>& infiniteLights() const { return infinite_; }
+    /// The area light of a hit primitive, or -1.
+    int lightAt(const SurfaceHit& hit) const;
+
+  private:
+    std::vector<std::unique_ptr<Light>> lights_;
+    std::vector<float> pmf_, cdf_;
+    std::vector<std::size_t> infinite_;
+    const Geometry& geometry_;
+};
+
+}  // namespace lamina::render

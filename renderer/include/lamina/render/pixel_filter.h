@@ -1,0 +1,44 @@
+// Pixel reconstruction filters, applied by filter importance sampling (Ernst et al. 2006;
+// pbrt-v4 section 8.8): each camera sample's film position is drawn from the filter's shape
+// around the pixel centre and carries the weight f / pdf, so samples never leave their pixel
+// and every pixel's value depends on its own samples only (deterministic under threading).
+// Filters are separable: f(x, y) = f1(x) f1(y).
+//   box             f1 = 1 on [-r, r]                  (r = 0.5: the one-pixel box)
+//   gaussian        f1 = exp(-x^2 / (2 s^2)) - exp(-r^2 / (2 s^2)), s = r / 3
+//   blackman_harris the 4-term Blackman-Harris window over [-r, r] (Harris 1978, Table 1:
+//                   a0 = 0.35875, a1 = 0.48829, a2 = 0.14128, a3 = 0.01168)
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "lamina/core/math.h"
+#include "lamina/core/vector.h"
+#include "lamina/render/scene_description.h"
+
+namespace lamina::render {
+
+class PixelFilter {
+  public:
+    explicit PixelFilter(const FilmDesc& film);
+
+    struct Sample {
+        Vec2<float> offset;  ///< from the pixel centre, in pixels
+        float weight;        ///< f / pdf
+    };
+    Sample sample(const Vec2<float>& u) const;
+    float evaluate1D(float x) const;
+    float radius() const { return radius_; }
+
+  private:
+    // Piecewise-constant 1D distribution of f1 over [-r, r].
+    float sample1D(float u, float& pdf) const;
+
+    FilterKind kind_;
+    float radius_;
+    std::vector<float> cdf_;   ///< kBins + 1 entries
+    std::vector<float> func_;  ///< kBins entries
+    float integral_ = 1;
+};
+
+}  // namespace lamina::render

@@ -1,0 +1,55 @@
+// A render: the scene's acceleration structure, lights and camera, passes of samples over
+// tiles in parallel (oneTBB), progress, and interruption (Ctrl-C finishes the pass in flight).
+#pragma once
+
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "lamina/render/film.h"
+#include "lamina/render/scene_description.h"
+
+namespace lamina::render {
+
+enum class RenderModeKind { Rgb, Spectral };
+
+struct RenderOptions {
+    RenderModeKind mode = RenderModeKind::Rgb;
+    std::optional<int> spp;          ///< overrides the scene's
+    std::optional<double> seconds;   ///< progressive passes until this much time has passed
+    std::optional<std::uint64_t> seed;
+    std::optional<int> maxDepth;
+    std::optional<std::pair<int, int>> resolution;
+    std::optional<SamplerKind> sampler;
+    int threads = 0;  ///< 0: all cores
+    bool aovs = false;
+};
+
+struct RenderProgress {
+    double fraction = 0;  ///< of the planned work (of the time budget with --time)
+    double seconds = 0;
+    int passesDone = 0;
+    int sppDone = 0;
+};
+
+struct RenderResult {
+    std::unique_ptr<Film> film;
+    int spp = 0;           ///< samples per pixel rendered
+    double seconds = 0;
+    std::uint64_t rays = 0;
+    std::uint64_t paths = 0;
+    bool partial = false;  ///< interrupted before the requested spp or time
+    std::string modeName;
+    RenderSettings settings;  ///< after command-line overrides
+};
+
+/// Set (from a signal handler) to stop after the pass in flight.
+std::atomic<bool>& renderInterruptFlag();
+
+/// Renders the scene. `progress` is called from the calling thread now and then.
+RenderResult renderScene(const SceneDesc& scene, const RenderOptions& options,
+                         const std::function<void(const RenderProgress&)>& progress = {});
+
+}  // namespace lamina::render

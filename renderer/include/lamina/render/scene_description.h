@@ -1,0 +1,100 @@
+// The scene as described by a scene file (docs/scene-format.md), after validation and before
+// any acceleration structure is built: plain data, in world space, millimetres or whatever
+// unit the file uses (lamina is scale-independent apart from ray offsets, which are relative).
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lamina/bsdf/material.h"
+#include "lamina/core/vector.h"
+
+namespace lamina::render {
+
+using Vec3d = Vec3<double>;
+
+struct CameraDesc {
+    Vec3d position{0, 0, 0};
+    Vec3d lookAt{0, 0, 1};
+    Vec3d up{0, 1, 0};
+    double verticalFovDegrees = 40;
+    double apertureRadius = 0;  ///< 0: pinhole
+    double focusDistance = 1;
+};
+
+enum class FilterKind { Box, Gaussian, BlackmanHarris };
+
+struct FilmDesc {
+    int width = 256, height = 256;
+    FilterKind filter = FilterKind::Box;
+    double filterRadius = 0.5;  ///< pixels; box radius 0.5 is a one-pixel box
+};
+
+enum class SamplerKind { Sobol, Independent };
+
+struct RenderSettings {
+    int maxDepth = 16;          ///< scattering events along a path
+    int russianRouletteDepth = 5;
+    int spp = 16;
+    std::uint64_t seed = 0;
+    SamplerKind sampler = SamplerKind::Sobol;
+    bool uniformLightSelection = false;  ///< default: proportional to power
+};
+
+/// Emission of an area light: RGB radiance (linear Rec.709), one- or two-sided.
+struct EmissionDesc {
+    Rgb<double> radiance{0.0};
+    bool twoSided = false;
+};
+
+/// A triangle mesh in world space. Quads and polygons from files are already split.
+struct MeshDesc {
+    std::string name;  ///< for messages and `lamina info`
+    std::vector<Vec3<float>> positions;
+    std::vector<Vec3<float>> normals;  ///< per vertex, optional (shading normals)
+    std::vector<Vec2<float>> uvs;      ///< per vertex, optional
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+    int material = -1;
+    std::optional<EmissionDesc> emission;
+};
+
+struct SphereDesc {
+    std::string name;
+    Vec3d center{0.0};
+    double radius = 1;
+    bool flipNormals = false;  ///< emits / faces inwards (a closed emitting room)
+    int material = -1;
+    std::optional<EmissionDesc> emission;
+};
+
+enum class LightKind { Point, Directional, Environment };
+
+/// Lights that are not shapes.
+struct LightDesc {
+    LightKind kind = LightKind::Point;
+    Vec3d position{0.0};    ///< point
+    Vec3d direction{0, -1, 0};  ///< directional: the direction light travels
+    Rgb<double> intensity{1.0};  ///< point: W/sr; directional: irradiance; environment: radiance
+};
+
+struct SceneDesc {
+    std::filesystem::path file;
+    CameraDesc camera;
+    FilmDesc film;
+    RenderSettings settings;
+    std::vector<MaterialDesc> materials;
+    std::vector<std::string> materialNames;
+    std::vector<MeshDesc> meshes;
+    std::vector<SphereDesc> spheres;
+    std::vector<LightDesc> lights;
+};
+
+/// Reads and validates a scene file. Errors name the file and the JSON path.
+SceneDesc loadScene(const std::filesystem::path& file);
+/// The same from text already in memory (tests); relative paths resolve against `directory`.
+SceneDesc parseScene(const std::string& text, const JsonSource& source);
+
+}  // namespace lamina::render

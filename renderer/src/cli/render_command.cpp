@@ -1,0 +1,195 @@
+// `lamina render SCENE`: renders a scene file to OpenEXR (and optionally a PNG preview).
+#include <CLI/CLI.hpp>
+#include <unistd.h>
+
+#include <csignal>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "lamina/cli/commands.h"
+#include "lamina/core/error.h"
+#include "lamina/render/image_output.h"
+#include "lamina/render/renderer.h"
+#include "lamina/version.h"
+
+namespace lamina::cli {
+
+namespace {
+
+struct RenderArgs {
+    std::string scene;
+    std::string output;
+    std::string mode = "rgb";
+    std::string integrator = "path";
+    std::string sampler;
+    int spp = 0;
+    double seconds = 0;
+    long long seed = -1;
+    int threads = 0;
+    std::string resolution;
+    int maxDepth = 0;
+    bool preview = false;
+    double exposure = 0;
+    bool aovs = false;
+    bool quiet = false;
+};
+
+std::string fileHash(const std::string& path) {
+    // FNV-1a 64 of the file's bytes: enough to tell which version of a scene made an image.
+    std::ifstream in(path, std::ios::binary);
+    std::uint64_t h = 1469598103934665603ULL;
+    char c;
+    while (in.get(c)) {
+        h ^= std::uint8_t(c);
+        h *= 1099511628211ULL;
+    }
+    char buf[17];
+    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+    return buf;
+}
+
+void onInterrupt(int) {
+    render::renderInterruptFlag().store(true);
+    std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C stops at once
+}
+
+class ProgressPrinter {
+  public:
+    explicit ProgressPrinter(bool quiet) : quiet_(quiet), terminal_(::isatty(STDERR_FILENO)) {}
+
+    void operator()(const render::RenderProgress& p) {
+        if (quiet_) return;
+        const double eta = p.fraction > 0 ? p.seconds * (1 - p.fraction) / p.fraction : 0;
+        if (terminal_) {
+            const int width = 40, filled = int(p.fraction * width + 0.5);
+            std::fprintf(stderr, "\r[%s%s] %5.1f%%  %d spp  %.1fs  ETA %.1fs ",
+                         std::string(std::size_t(filled), '#').c_str(),
+                         std::string(std::size_t(width - filled), '.').c_str(),
+                         100 * p.fraction, p.sppDone, p.seconds, eta);
+            std::fflush(stderr);
+            lastLineOpen_ = true;
+        } else {
+            const int decile = int(p.fraction * 10);
+            if (decile <= lastDecile_) return;
+            lastDecile_ = decile;
+            std::fprintf(stderr, "progress: %3.0f%% (%d spp, %.1f s, ETA %.1f s)\n",
+                         100 * p.fraction, p.sppDone, p.seconds, eta);
+        }
+    }
+    void finish() {
+        if (lastLineOpen_) std::fprintf(stderr, "\n");
+    }
+
+  private:
+    bool quiet_, terminal_;
+    bool lastLineOpen_ = false;
+    int lastDecile_ = -1;
+};
+
+void runRender(const RenderArgs& a) {
+    const render::SceneDesc scene = render::loadScene(a.scene);
+    std::filesystem::path output = a.output;
+    if (output.empty()) output = std::filesystem::path(a.scene).stem().string() + ".exr";
+    render::checkOutputPath(output);
+    const std::filesystem::path preview =
+        std::filesystem::path(output).replace_extension(".png");
+
+    render::RenderOptions o;
+    o.mode = a.mode == "spectral" ? render::RenderModeKind::Spectral : render::RenderModeKind::Rgb;
+    if (a.spp > 0) o.spp = a.spp;
+    if (a.seconds > 0) o.seconds = a.seconds;
+    if (a.seed >= 0) o.seed = std::uint64_t(a.seed);
+    if (a.maxDepth > 0) o.maxDepth = a.maxDepth;
+    if (!a.sampler.empty())
+        o.sampler = a.sampler == "independent" ? render::SamplerKind::Independent
+                                               : render::SamplerKind::Sobol;
+    o.threads = a.threads;
+    o.aovs = a.aovs;
+    if (!a.resolution.empty()) {
+        int w = 0, h = 0;
+        char x = 0;
+        std::istringstream in(a.resolution);
+        if (!(in >> w >> x >> h) || x != 'x' || w < 1 || h < 1 || !in.eof())
+            throw CLI::ValidationError("--resolution", "expected WIDTHxHEIGHT, e.g. 512x512");
+        o.resolution = std::make_pair(w, h);
+    }
+
+    ProgressPrinter printer(a.quiet);
+    std::signal(SIGINT, onInterrupt);
+    const render::RenderResult r =
+        render::renderScene(scene, o, [&](const render::RenderProgress& p) { printer(p); });
+    std::signal(SIGINT, SIG_DFL);
+    printer.finish();
+
+    render::ImageMetadata meta;
+    meta.strings["version"] = LAMINA_VERSION_STRING;
+    meta.strings["mode"] = r.modeName;
+    meta.strings["integrator"] = a.integrator;
+    meta.strings["scene"] = a.scene;
+    meta.strings["scene_hash"] = fileHash(a.scene);
+    meta.strings["sampler"] =
+        r.settings.sampler == render::SamplerKind::Sobol ? "sobol" : "independent";
+    meta.ints["spp"] = r.spp;
+    meta.ints["seed"] = int(r.settings.seed);
+    meta.ints["max_depth"] = r.settings.maxDepth;
+    meta.ints["partial"] = r.partial ? 1 : 0;
+    meta.ints["rejected_samples"] = int(std::min<std::uint64_t>(r.film->rejectedSamples(), 1u << 30));
+    meta.floats["seconds"] = float(r.seconds);
+    render::writeExr(output, *r.film, a.aovs, meta);
+    if (a.preview) render::writePngPreview(preview, *r.film, a.exposure);
+
+    if (!a.quiet) {
+        std::fprintf(stderr,
+                     "%s: %dx%d, %d spp, %s mode, %.2f s, %.3g paths/s, %.3g rays/s, "
+                     "%llu rejected samples%s\n",
+                     output.string().c_str(), r.film->width(), r.film->height(), r.spp,
+                     r.modeName.c_str(), r.seconds, double(r.paths) / r.seconds,
+                     double(r.rays) / r.seconds,
+                     static_cast<unsigned long long>(r.film->rejectedSamples()),
+                     r.partial ? " (interrupted: partial image)" : "");
+        if (a.preview) std::fprintf(stderr, "preview: %s\n", preview.string().c_str());
+    }
+}
+
+}  // namespace
+
+void registerRenderCommand(CLI::App& app) {
+    auto args = std::make_shared<RenderArgs>();
+    CLI::App* cmd = app.add_subcommand("render", "Render a scene file to OpenEXR");
+    cmd->add_option("scene", args->scene, "Scene file (JSON, see docs/scene-format.md)")
+        ->required()
+        ->check(CLI::ExistingFile);
+    cmd->add_option("-o,--output", args->output,
+                    "Output EXR (default: the scene's name in the current directory)");
+    cmd->add_option("--mode", args->mode, "Render mode")
+        ->check(CLI::IsMember({"rgb", "spectral"}))
+        ->capture_default_str();
+    cmd->add_option("--integrator", args->integrator, "Light transport algorithm")
+        ->check(CLI::IsMember({"path"}))
+        ->capture_default_str();
+    auto* spp = cmd->add_option("--spp", args->spp, "Samples per pixel (overrides the scene's)")
+                    ->check(CLI::Range(1, 1 << 24));
+    cmd->add_option("--time", args->seconds, "Render progressive passes for this many seconds")
+        ->check(CLI::PositiveNumber)
+        ->excludes(spp);
+    cmd->add_option("--seed", args->seed, "Random seed (overrides the scene's)")
+        ->check(CLI::Range(0LL, 2147483647LL));
+    cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")
+        ->check(CLI::Range(1, 1024));
+    cmd->add_option("--resolution", args->resolution, "Image size WIDTHxHEIGHT (overrides)");
+    cmd->add_option("--max-depth", args->maxDepth, "Maximum scattering events per path")
+        ->check(CLI::Range(1, 1024));
+    cmd->add_option("--sampler", args->sampler, "Sample generator")
+        ->check(CLI::IsMember({"sobol", "independent"}));
+    cmd->add_flag("--preview", args->preview, "Also write a PNG preview beside the EXR");
+    cmd->add_option("--exposure", args->exposure, "Exposure of the preview in stops")
+        ->capture_default_str();
+    cmd->add_flag("--aovs", args->aovs,
+                  "Add AOV layers: Albedo.RGB, N.XYZ (shading normal), Z (depth), Variance.Y");
+    cmd->add_flag("-q,--quiet", args->quiet, "No progress or summary on stderr");
+    cmd->callback([args] { runRender(*args); });
+}
+
+}  // namespace lamina::cli

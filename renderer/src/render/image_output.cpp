@@ -1,0 +1,137 @@
+#include "lamina/render/image_output.h"
+
+#include <OpenImageIO/imageio.h>
+#include <unistd.h>
+
+#include <cmath>
+
+#include "lamina/core/error.h"
+#include "lamina/spectral/color_space.h"
+
+namespace lamina::render {
+
+namespace {
+
+std::filesystem::path temporaryName(const std::filesystem::path& path) {
+    // Same directory (rename is atomic there) and the same extension (OIIO picks the format
+    // from it).
+    return path.parent_path() /
+           ("." + path.stem().string() + ".tmp" + std::to_string(::getpid()) +
+            path.extension().string());
+}
+
+void writeAtomically(const std::filesystem::path& path, const OIIO::ImageSpec& spec,
+                     const std::vector<float>& data) {
+    const auto tmp = temporaryName(path);
+    auto out = OIIO::ImageOutput::create(path.string());
+    if (!out) throw InputError(path.string() + ": cannot write this image format");
+    if (!out->open(tmp.string(), spec)) {
+        std::filesystem::remove(tmp);
+        throw InputError(path.string() + ": cannot write: " + out->geterror());
+    }
+    const bool ok = out->write_image(OIIO::TypeDesc::FLOAT, data.data());
+    const bool closed = out->close();
+    if (!ok || !closed) {
+        std::error_code ec;
+        std::filesystem::remove(tmp, ec);
+        throw InputError(path.string() + ": write failed: " + out->geterror());
+    }
+    std::filesystem::rename(tmp, path);
+}
+
+}  // namespace
+
+void checkOutputPath(const std::filesystem::path& path) {
+    const auto dir = path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path();
+    if (!std::filesystem::is_directory(dir))
+        throw InputError(path.string() + ": the directory " + dir.string() + " does not exist");
+    if (::access(dir.c_str(), W_OK) != 0)
+        throw InputError(path.string() + ": the directory " + dir.string() + " is not writable");
+    auto out = OIIO::ImageOutput::create(path.string());
+    if (!out)
+        throw InputError(path.string() + ": unknown image format \"" + path.extension().string() +
+                         "\" (use .exr)");
+}
+
+void writeExr(const std::filesystem::path& path, const Film& film, bool aovs,
+              const ImageMetadata& metadata) {
+    const int w = film.width(), h = film.height();
+    std::vector<std::string> channels = {"R", "G", "B"};
+    if (aovs)
+        channels.insert(channels.end(), {"Albedo.R", "Albedo.G", "Albedo.B", "N.X", "N.Y", "N.Z",
+                                         "Z", "Variance.Y"});
+    const std::size_t nc = channels.size();
+    OIIO::ImageSpec spec(w, h, int(nc), OIIO::TypeDesc::FLOAT);
+    spec.channelnames = channels;
+    spec.attribute("compression", "zip");
+    for (const auto& [k, v] : metadata.strings)
+        spec.attribute("lamina:" + k, v);
+    for (const auto& [k, v] : metadata.floats)
+        spec.attribute("lamina:" + k, v);
+    for (const auto& [k, v] : metadata.ints)
+        spec.attribute("lamina:" + k, v);
+    // The primaries and white of lamina's linear Rec.709 (the EXR "chromaticities" attribute).
+    const RgbColorSpace& cs = RgbColorSpace::rec709();
+    const Vec3d white = cs.whiteXyz();
+    const double sum = white.x + white.y + white.z;
+    const float chroma[8] = {float(cs.red().x),   float(cs.red().y),  float(cs.green().x),
+                             float(cs.green().y), float(cs.blue().x), float(cs.blue().y),
+                             float(white.x / sum), float(white.y / sum)};
+    spec.attribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8), chroma);
+
+    std::vector<float> data(std::size_t(w) * h * nc);
+    const double splatScale = 0.0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            float* p = &data[(std::size_t(y) * w + x) * nc];
+            const Rgb<double> v = film.pixel(x, y, splatScale);
+            for (int c = 0; c < 3; ++c)
+                p[c] = float(v[c]);
+            if (!aovs) continue;
+            const PixelAovs a = film.aovs(x, y);
+            for (int c = 0; c < 3; ++c) {
+                p[3 + c] = float(a.albedo[c]);
+                p[6 + c] = float(a.normal[c]);
+            }
+            p[9] = float(a.depth);
+            p[10] = float(film.varianceOfMean(x, y));
+        }
+    writeAtomically(path, spec, data);
+}
+
+void writePngPreview(const std::filesystem::path& path, const Film& film, double exposure) {
+    const int w = film.width(), h = film.height();
+    OIIO::ImageSpec spec(w, h, 3, OIIO::TypeDesc::UINT8);
+    std::vector<float> data(std::size_t(w) * h * 3);
+    const double scale = std::exp2(exposure);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const Rgb<double> v = film.pixel(x, y);
+            for (int c = 0; c < 3; ++c) {
+                // The sRGB transfer function (IEC 61966-2-1).
+                const double l = std::clamp(v[c] * scale, 0.0, 1.0);
+                const double e = l <= 0.0031308 ? 12.92 * l : 1.055 * std::pow(l, 1 / 2.4) - 0.055;
+                data[(std::size_t(y) * w + x) * 3 + std::size_t(c)] = float(e);
+            }
+        }
+    writeAtomically(path, spec, data);
+}
+
+RgbImage readRgbImage(const std::filesystem::path& path) {
+    auto in = OIIO::ImageInput::open(path.string());
+    if (!in) throw InputError(path.string() + ": cannot read image: " + OIIO::geterror());
+    const OIIO::ImageSpec& spec = in->spec();
+    if (spec.nchannels < 3) throw InputError(path.string() + ": expected at least 3 channels");
+    RgbImage img;
+    img.width = spec.width;
+    img.height = spec.height;
+    img.pixels.resize(std::size_t(spec.width) * spec.height * 3);
+    if (!in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, img.pixels.data()))
+        throw InputError(path.string() + ": cannot read image: " + in->geterror());
+    for (const auto& p : spec.extra_attribs)
+        img.metadata[p.name().string()] = p.get_string();
+    in->close();
+    return img;
+}
+
+}  // namespace lamina::render

@@ -1,0 +1,306 @@
+#include "lamina/render/lights.h"
+
+#include <algorithm>
+
+#include "lamina/core/warp.h"
+#include "lamina/render/ray_offset.h"
+
+namespace lamina::render {
+
+namespace {
+
+using Vec3d = Vec3<double>;
+
+Rgbf toRgbf(const Rgb<double>& c) {
+    return Rgbf(float(c[0]), float(c[1]), float(c[2]));
+}
+
+// Converts an area density at a light point to solid angle at `ref`.
+float areaToSolidAngle(float pdfArea, const Vec3f& ref, const Vec3f& p, const Vec3f& n) {
+    const Vec3f d = p - ref;
+    const float dist2 = glm::dot(d, d);
+    const float cosLight = std::abs(glm::dot(n, d)) / std::sqrt(dist2);
+    if (!(cosLight > 0.0f)) return 0.0f;
+    return pdfArea * dist2 / cosLight;
+}
+
+/// One emitting triangle of a mesh, sampled uniformly by area.
+class TriangleLight final : public Light {
+  public:
+    TriangleLight(const MeshDesc& mesh, std::size_t triangle)
+        : emission_(*mesh.emission), radiance_(toRgbf(mesh.emission->radiance)) {
+        const auto& t = mesh.triangles[triangle];
+        p0_ = mesh.positions[t[0]];
+        p1_ = mesh.positions[t[1]];
+        p2_ = mesh.positions[t[2]];
+        const Vec3d c = glm::cross(Vec3d(p1_ - p0_), Vec3d(p2_ - p0_));
+        area_ = 0.5 * glm::length(c);
+        n_ = Vec3f(glm::normalize(c));
+    }
+
+    std::optional<LightSample> sample(const Vec3f& ref, const Vec2f& u) const override {
+        if (!(area_ > 0)) return std::nullopt;
+        const Vec2f b = squareToUniformTriangle(u);
+        const Vec3f p = b.x * p0_ + b.y * p1_ + (1.0f - b.x - b.y) * p2_;
+        const Vec3f d = p - ref;
+        const float dist = glm::length(d);
+        if (!(dist > 0.0f)) return std::nullopt;
+        const Vec3f wi = d / dist;
+        const float cosLight = glm::dot(n_, -wi);
+        if (!emission_.twoSided && !(cosLight > 0.0f)) return std::nullopt;
+        const float pdf = areaToSolidAngle(float(1.0 / area_), ref, p, n_);
+        if (!(pdf > 0.0f) || !std::isfinite(pdf)) return std::nullopt;
+        return LightSample{wi, dist, radiance_, pdf, false, p, cosLight > 0 ? n_ : -n_};
+    }
+
+    float pdf(const Vec3f& ref, const SurfaceHit& hit) const override {
+        return areaToSolidAngle(float(1.0 / area_), ref, hit.p, hit.ng);
+    }
+
+    Rgbf radiance(const SurfaceHit& hit, const Vec3f& w) const override {
+        return emission_.twoSided || glm::dot(hit.ng, w) > 0.0f ? radiance_ : Rgbf(0.0f);
+    }
+
+    double power() const override {
+        return (emission_.twoSided ? 2.0 : 1.0) * kPi<double> * area_ *
+               luminance(emission_.radiance);
+    }
+
+  private:
+    EmissionDesc emission_;
+    Rgbf radiance_;
+    Vec3f p0_, p1_, p2_, n_;
+    double area_ = 0;
+};
+
+/// An emitting sphere: sampled uniformly in the cone it subtends when seen from outside
+/// (emitting outwards), uniformly by area otherwise.
+class SphereLight final : public Light {
+  public:
+    explicit SphereLight(const SphereDesc& s)
+        : sphere_(s), radiance_(toRgbf(s.emission->radiance)) {}
+
+    std::optional<LightSample> sample(const Vec3f& refF, const Vec2f& u) const override {
+        const Vec3d ref(refF), c = sphere_.center;
+        const double r = sphere_.radius;
+        const double dc2 = glm::dot(ref - c, ref - c);
+        Vec3d p;
+        double pdf;
+        if (useCone(dc2)) {
+            const double dc = std::sqrt(dc2);
+            const double sin2Max = r * r / dc2;
+            const double cosMax = std::sqrt(std::max(0.0, 1.0 - sin2Max));
+            const double oneMinusCos = sin2Max / (1.0 + cosMax);  // stable for small cones
+            // Uniform in the cone: 1 - cos(theta) uniform in [0, 1 - cos(theta_max)].
+            const double omc = double(u.x) * oneMinusCos;
+            const double cosT = 1.0 - omc;
+            const double sinT = std::sqrt(std::max(0.0, omc * (2.0 - omc)));
+            const double phi = 2.0 * kPi<double> * double(u.y);
+            const Frame<double> frame = Frame<double>::fromNormal((c - ref) / dc);
+            const Vec3d dir =
+                frame.toWorld(Vec3d(sinT * std::cos(phi), sinT * std::sin(phi), cosT));
+            // The nearer intersection of the ray with the sphere (tangent: the closest point).
+            const double b = glm::dot(dir, c - ref);
+            const double disc = std::max(0.0, r * r - (dc2 - b * b));
+            const double t = b - std::sqrt(disc);
+            p = ref + t * dir;
+            pdf = 1.0 / (2.0 * kPi<double> * oneMinusCos);
+        } else {
+            const Vec3d n = Vec3d(squareToUniformSphere(Vec2<double>(u)));
+            p = c + r * n;
+            const Vec3d d = p - ref;
+            const double dist2 = glm::dot(d, d);
+            const double cosL = std::abs(glm::dot(n, d)) / std::sqrt(dist2);
+            if (!(cosL > 0.0)) return std::nullopt;
+            pdf = dist2 / (cosL * 4.0 * kPi<double> * r * r);
+        }
+        Vec3d n = glm::normalize(p - c);
+        if (sphere_.flipNormals) n = -n;
+        const Vec3d d = p - ref;
+        const double dist = glm::length(d);
+        if (!(dist > 0.0) || !(pdf > 0.0) || !std::isfinite(pdf)) return std::nullopt;
+        const Vec3f wi = Vec3f(d / dist);
+        const bool front = glm::dot(Vec3f(n), -wi) > 0.0f;
+        if (!front && !sphere_.emission->twoSided) return std::nullopt;
+        return LightSample{wi, float(dist), radiance_, float(pdf), false, Vec3f(p),
+                           front ? Vec3f(n) : -Vec3f(n)};
+    }
+
+    float pdf(const Vec3f& refF, const SurfaceHit& hit) const override {
+        const Vec3d ref(refF), c = sphere_.center;
+        const double r = sphere_.radius;
+        const double dc2 = glm::dot(ref - c, ref - c);
+        if (useCone(dc2)) {
+            const double sin2Max = r * r / dc2;
+            const double cosMax = std::sqrt(std::max(0.0, 1.0 - sin2Max));
+            return float(1.0 / (2.0 * kPi<double> * sin2Max / (1.0 + cosMax)));
+        }
+        return areaToSolidAngle(float(1.0 / (4.0 * kPi<double> * r * r)), refF, hit.p, hit.ng);
+    }
+
+    Rgbf radiance(const SurfaceHit& hit, const Vec3f& w) const override {
+        return sphere_.emission->twoSided || glm::dot(hit.ng, w) > 0.0f ? radiance_ : Rgbf(0.0f);
+    }
+
+    double power() const override {
+        return (sphere_.emission->twoSided ? 2.0 : 1.0) * kPi<double> * 4.0 * kPi<double> *
+               sphere_.radius * sphere_.radius * luminance(sphere_.emission->radiance);
+    }
+
+  private:
+    // The cone is only valid for points outside; an inward-emitting sphere is seen from
+    // inside, where its whole surface is visible.
+    bool useCone(double dc2) const {
+        return !sphere_.flipNormals && dc2 > sqr(sphere_.radius) * (1.0 + 1e-6);
+    }
+
+    SphereDesc sphere_;
+    Rgbf radiance_;
+};
+
+class PointLight final : public Light {
+  public:
+    explicit PointLight(const LightDesc& d)
+        : position_(Vec3f(d.position)), intensity_(toRgbf(d.intensity)), desc_(d) {}
+
+    std::optional<LightSample> sample(const Vec3f& ref, const Vec2f&) const override {
+        const Vec3f d = position_ - ref;
+        const float dist2 = glm::dot(d, d);
+        if (!(dist2 > 0.0f)) return std::nullopt;
+        const float dist = std::sqrt(dist2);
+        return LightSample{d / dist, dist, intensity_ / dist2, 1.0f, true, position_, -d / dist};
+    }
+    float pdf(const Vec3f&, const SurfaceHit&) const override { return 0.0f; }
+    Rgbf radiance(const SurfaceHit&, const Vec3f&) const override { return Rgbf(0.0f); }
+    double power() const override { return 4.0 * kPi<double> * luminance(desc_.intensity); }
+    bool isDelta() const override { return true; }
+
+  private:
+    Vec3f position_;
+    Rgbf intensity_;
+    LightDesc desc_;
+};
+
+class DirectionalLight final : public Light {
+  public:
+    DirectionalLight(const LightDesc& d, const Geometry& g)
+        : direction_(Vec3f(d.direction)), irradiance_(toRgbf(d.intensity)), desc_(d),
+          radius_(g.boundsRadius()) {}
+
+    std::optional<LightSample> sample(const Vec3f&, const Vec2f&) const override {
+        return LightSample{-direction_, std::numeric_limits<float>::infinity(), irradiance_, 1.0f,
+                           true, Vec3f(0.0f), direction_};
+    }
+    float pdf(const Vec3f&, const SurfaceHit&) const override { return 0.0f; }
+    Rgbf radiance(const SurfaceHit&, const Vec3f&) const override { return Rgbf(0.0f); }
+    double power() const override {
+        return kPi<double> * sqr(double(radius_)) * luminance(desc_.intensity);
+    }
+    bool isDelta() const override { return true; }
+    bool isInfinite() const override { return true; }
+
+  private:
+    Vec3f direction_;
+    Rgbf irradiance_;
+    LightDesc desc_;
+    float radius_;
+};
+
+/// A constant environment: radiance L from every direction, sampled uniformly on the sphere.
+class ConstantEnvironment final : public Light {
+  public:
+    ConstantEnvironment(const LightDesc& d, const Geometry& g)
+        : radiance_(toRgbf(d.intensity)), desc_(d), radius_(g.boundsRadius()) {}
+
+    std::optional<LightSample> sample(const Vec3f&, const Vec2f& u) const override {
+        const Vec3f wi = squareToUniformSphere(u);
+        return LightSample{wi, std::numeric_limits<float>::infinity(), radiance_,
+                           uniformSpherePdf<float>(), false, Vec3f(0.0f), -wi};
+    }
+    float pdf(const Vec3f&, const SurfaceHit&) const override { return 0.0f; }
+    Rgbf radiance(const SurfaceHit&, const Vec3f&) const override { return Rgbf(0.0f); }
+    double power() const override {
+        // The flux through the scene's bounding disk from all directions (pbrt-v4's measure).
+        return 4.0 * kPi<double> * kPi<double> * sqr(double(radius_)) *
+               luminance(desc_.intensity);
+    }
+    bool isInfinite() const override { return true; }
+    Rgbf environment(const Vec3f&) const override { return radiance_; }
+    float environmentPdf(const Vec3f&) const override { return uniformSpherePdf<float>(); }
+
+  private:
+    Rgbf radiance_;
+    LightDesc desc_;
+    float radius_;
+};
+
+}  // namespace
+
+LightSet::LightSet(const SceneDesc& scene, Geometry& geometry, bool uniformSelection)
+    : geometry_(geometry) {
+    const auto& shapes = geometry.shapes();
+    for (std::size_t s = 0; s < shapes.size(); ++s) {
+        const ShapeInfo& info = shapes[s];
+        if (info.kind == ShapeInfo::Kind::Mesh) {
+            const MeshDesc& m = scene.meshes[std::size_t(info.index)];
+            if (!m.emission || m.emission->radiance.maxValue() <= 0.0) continue;
+            geometry.setFirstLight(int(s), int(lights_.size()));
+            for (std::size_t t = 0; t < m.triangles.size(); ++t)
+                lights_.push_back(std::make_unique<TriangleLight>(m, t));
+        } else {
+            const SphereDesc& sp = scene.spheres[std::size_t(info.index)];
+            if (!sp.emission || sp.emission->radiance.maxValue() <= 0.0) continue;
+            geometry.setFirstLight(int(s), int(lights_.size()));
+            lights_.push_back(std::make_unique<SphereLight>(sp));
+        }
+    }
+    for (const LightDesc& d : scene.lights) {
+        if (d.intensity.maxValue() <= 0.0) continue;
+        switch (d.kind) {
+            case LightKind::Point:
+                lights_.push_back(std::make_unique<PointLight>(d));
+                break;
+            case LightKind::Directional:
+                lights_.push_back(std::make_unique<DirectionalLight>(d, geometry));
+                break;
+            case LightKind::Environment:
+                infinite_.push_back(lights_.size());
+                lights_.push_back(std::make_unique<ConstantEnvironment>(d, geometry));
+                break;
+        }
+        if (d.kind == LightKind::Directional) infinite_.push_back(lights_.size() - 1);
+    }
+    // Selection proportional to power (or uniform); a light of zero luminance but non-zero
+    // colour (pure blue, say) still gets a share so it is never starved.
+    double total = 0;
+    std::vector<double> w(lights_.size());
+    for (std::size_t i = 0; i < lights_.size(); ++i) {
+        w[i] = uniformSelection ? 1.0 : std::max(lights_[i]->power(), 0.0);
+        total += w[i];
+    }
+    pmf_.resize(lights_.size());
+    cdf_.resize(lights_.size());
+    double running = 0;
+    for (std::size_t i = 0; i < lights_.size(); ++i) {
+        const double p = total > 0 ? 0.99 * w[i] / total + 0.01 / double(lights_.size())
+                                   : 1.0 / double(lights_.size());
+        pmf_[i] = float(p);
+        running += p;
+        cdf_[i] = float(running);
+    }
+    if (!cdf_.empty()) cdf_.back() = 1.0f;
+}
+
+std::pair<std::size_t, float> LightSet::choose(float u) const {
+    const auto it = std::upper_bound(cdf_.begin(), cdf_.end(), u);
+    const std::size_t i = std::min(std::size_t(it - cdf_.begin()), cdf_.size() - 1);
+    return {i, pmf_[i]};
+}
+
+int LightSet::lightAt(const SurfaceHit& hit) const {
+    const ShapeInfo& info = geometry_.shapes()[std::size_t(hit.shape)];
+    if (info.firstLight < 0) return -1;
+    return info.firstLight + (info.kind == ShapeInfo::Kind::Mesh ? int(hit.primitive) : 0);
+}
+
+}  // namespace lamina::render

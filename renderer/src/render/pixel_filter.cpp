@@ -1,0 +1,75 @@
+#include "lamina/render/pixel_filter.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lamina::render {
+
+namespace {
+constexpr int kBins = 512;
+}
+
+PixelFilter::PixelFilter(const FilmDesc& film)
+    : kind_(film.filter), radius_(float(film.filterRadius)) {
+    if (kind_ == FilterKind::Box) return;
+    func_.resize(kBins);
+    cdf_.resize(kBins + 1);
+    cdf_[0] = 0;
+    const float dx = 2.0f * radius_ / float(kBins);
+    for (int i = 0; i < kBins; ++i) {
+        // The bin's mean value by a few midpoints: the tabulated pdf must be close to f so
+        // the weights f / pdf stay near constant.
+        float sum = 0;
+        for (int k = 0; k < 8; ++k)
+            sum += evaluate1D(-radius_ + (float(i) + (float(k) + 0.5f) / 8.0f) * dx);
+        func_[std::size_t(i)] = std::max(sum / 8.0f, 0.0f);
+        cdf_[std::size_t(i) + 1] = cdf_[std::size_t(i)] + func_[std::size_t(i)] * dx;
+    }
+    integral_ = cdf_.back();
+    for (float& c : cdf_)
+        c /= integral_;
+}
+
+float PixelFilter::evaluate1D(float x) const {
+    if (std::abs(x) > radius_) return 0.0f;
+    switch (kind_) {
+        case FilterKind::Box:
+            return 1.0f;
+        case FilterKind::Gaussian: {
+            const float s = radius_ / 3.0f;
+            return std::max(0.0f, std::exp(-x * x / (2 * s * s)) -
+                                      std::exp(-radius_ * radius_ / (2 * s * s)));
+        }
+        case FilterKind::BlackmanHarris: {
+            const float t = 2.0f * kPi<float> * (x + radius_) / (2.0f * radius_);
+            return 0.35875f - 0.48829f * std::cos(t) + 0.14128f * std::cos(2 * t) -
+                   0.01168f * std::cos(3 * t);
+        }
+    }
+    return 0.0f;
+}
+
+float PixelFilter::sample1D(float u, float& pdf) const {
+    const auto it = std::upper_bound(cdf_.begin(), cdf_.end(), u);
+    const int i = std::clamp(int(it - cdf_.begin()) - 1, 0, kBins - 1);
+    const float c0 = cdf_[std::size_t(i)], c1 = cdf_[std::size_t(i) + 1];
+    const float t = c1 > c0 ? (u - c0) / (c1 - c0) : 0.5f;
+    const float dx = 2.0f * radius_ / float(kBins);
+    pdf = func_[std::size_t(i)] / integral_;
+    return -radius_ + (float(i) + t) * dx;
+}
+
+PixelFilter::Sample PixelFilter::sample(const Vec2<float>& u) const {
+    if (kind_ == FilterKind::Box)
+        return {Vec2<float>((2 * u.x - 1) * radius_, (2 * u.y - 1) * radius_), 1.0f};
+    float px, py;
+    const float x = sample1D(u.x, px), y = sample1D(u.y, py);
+    // Normalised so that a constant image stays constant: f / pdf / (integral of f)^2 = 1
+    // wherever the table matches f.
+    const float weight =
+        px > 0 && py > 0 ? evaluate1D(x) * evaluate1D(y) / (px * py * integral_ * integral_)
+                         : 0.0f;
+    return {Vec2<float>(x, y), weight};
+}
+
+}  // namespace lamina::render
