@@ -1,0 +1,96 @@
+// Renders with known answers: the white furnace and a closed emitting sphere. Each test
+// checks the image mean with a z-test at significance 0.001 (|z| < 3.29), using the
+// per-pixel variance estimates of the film as the standard error.
+#include <gtest/gtest.h>
+
+#include "render_helpers.h"
+
+namespace lamina {
+namespace {
+
+using testing::imageMean;
+using testing::sceneFromText;
+
+constexpr double kZ = 3.29;  // two-sided significance 0.001
+
+render::RenderResult renderText(const std::string& json, render::RenderModeKind mode,
+                                int spp) {
+    render::RenderOptions o;
+    o.mode = mode;
+    o.spp = spp;
+    return render::renderScene(sceneFromText(json), o);
+}
+
+const char* kFurnace = R"({
+  "camera": {"position": [0, 0, -4], "look_at": [0, 0, 0], "fov": 40},
+  "film": {"resolution": [24, 24]},
+  "integrator": {"max_depth": 64},
+  "materials": {"white": {"type": "lambert", "reflectance": 1}},
+  "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "white"}],
+  "lights": [{"type": "environment", "radiance": 1}]
+})";
+
+class AnalyticRender : public ::testing::TestWithParam<render::RenderModeKind> {};
+
+TEST_P(AnalyticRender, WhiteFurnaceIsOneEverywhere) {
+    const auto r = renderText(kFurnace, GetParam(), 64);
+    for (int c = 0; c < 3; ++c) {
+        const auto m = imageMean(*r.film, c);
+        EXPECT_LT(std::abs(m.mean - 1.0), kZ * m.standardError + 1e-4)
+            << "channel " << c << " mean " << m.mean << " se " << m.standardError;
+    }
+    // Every pixel, not only the mean: within 5 of its own standard errors (or 1e-3).
+    int outliers = 0;
+    for (int y = 0; y < r.film->height(); ++y)
+        for (int x = 0; x < r.film->width(); ++x) {
+            const double v = r.film->pixel(x, y)[1];
+            const double se = std::sqrt(r.film->varianceOfMean(x, y));
+            outliers += std::abs(v - 1.0) > 5 * se + 1e-3;
+        }
+    EXPECT_EQ(outliers, 0);
+    EXPECT_EQ(r.film->rejectedSamples(), 0u);
+}
+
+TEST_P(AnalyticRender, ClosedEmittingSphereGivesLeOverOneMinusRho) {
+    // Inside a sphere that emits Le = 1 and reflects diffusely with albedo 0.5, the radiance
+    // is Le (1 + rho + rho^2 + ...) = Le / (1 - rho) = 2 everywhere (truncated at depth 64).
+    const char* scene = R"({
+      "camera": {"position": [0, 0, 0], "look_at": [0, 0, 1], "fov": 60},
+      "film": {"resolution": [16, 16]},
+      "integrator": {"max_depth": 64, "rr_depth": 64},
+      "materials": {"m": {"type": "lambert", "reflectance": 0.5}},
+      "shapes": [{"type": "sphere", "radius": 3, "flip_normals": true, "material": "m",
+                  "emission": {"radiance": 1}}]
+    })";
+    const auto r = renderText(scene, GetParam(), 64);
+    for (int c = 0; c < 3; ++c) {
+        const auto m = imageMean(*r.film, c);
+        EXPECT_LT(std::abs(m.mean - 2.0), kZ * m.standardError + 1e-4)
+            << "channel " << c << " mean " << m.mean << " se " << m.standardError;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Modes, AnalyticRender,
+                         ::testing::Values(render::RenderModeKind::Rgb),
+                         [](const auto& paramInfo) {
+                             return paramInfo.param == render::RenderModeKind::Rgb ? "rgb"
+                                                                              : "spectral";
+                         });
+
+TEST(Determinism, SameImageWithOneAndTwoThreads) {
+    auto scene = render::loadScene(testing::sharedCornellBox());
+    render::RenderOptions o;
+    o.spp = 4;
+    o.resolution = std::make_pair(48, 48);
+    o.threads = 1;
+    const auto a = render::renderScene(scene, o);
+    o.threads = 2;
+    const auto b = render::renderScene(scene, o);
+    for (int y = 0; y < 48; ++y)
+        for (int x = 0; x < 48; ++x)
+            for (int c = 0; c < 3; ++c)
+                ASSERT_EQ(a.film->pixel(x, y)[c], b.film->pixel(x, y)[c]) << x << "," << y;
+}
+
+}  // namespace
+}  // namespace lamina

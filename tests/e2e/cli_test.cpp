@@ -1,0 +1,154 @@
+// The `lamina` command line as a user meets it: exit codes, one clear error line naming the
+// file and JSON path, and nothing written when the input is bad.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "lamina/render/image_output.h"
+
+namespace lamina {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CommandRun {
+    int exitCode;
+    std::string output;  // stdout and stderr
+};
+
+CommandRun runLamina(const std::string& args) {
+    const std::string cmd = std::string(LAMINA_BINARY_DIR) + "/renderer/lamina " + args + " 2>&1";
+    FILE* pipe = ::popen(cmd.c_str(), "r");
+    std::string out;
+    std::array<char, 4096> buf{};
+    while (pipe && std::fgets(buf.data(), int(buf.size()), pipe))
+        out += buf.data();
+    const int status = pipe ? ::pclose(pipe) : -1;
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+class CliTest : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() /
+               ("lamina-cli-" + std::to_string(::getpid()) + "-" +
+                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    std::string write(const std::string& name, const std::string& text) {
+        const fs::path p = dir_ / name;
+        std::ofstream(p) << text;
+        return p.string();
+    }
+    std::size_t filesIn() const {
+        return std::size_t(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()));
+    }
+
+    fs::path dir_;
+};
+
+// A valid small scene whose parts the bad-input cases replace.
+std::string scene(const std::string& material, const std::string& emission = "[1, 1, 1]",
+                  const std::string& extraShape = "") {
+    return R"({
+  "camera": {"position": [0, 0, -4], "look_at": [0, 0, 0]},
+  "film": {"resolution": [8, 8]},
+  "materials": {"m": )" + material + R"(},
+  "shapes": [)" + extraShape + R"(
+    {"type": "sphere", "radius": 1, "material": "m"},
+    {"type": "rectangle", "material": "m", "transform": [{"translate": [0, 3, 0]}],
+     "emission": {"radiance": )" + emission + R"(}}
+  ]
+})";
+}
+
+TEST_F(CliTest, RendersAValidSceneWithMetadata) {
+    const auto s = write("ok.json", scene(R"({"type": "lambert"})"));
+    const auto out = (dir_ / "ok.exr").string();
+    const CommandRun r = runLamina("render " + s + " -o " + out + " --spp 2 --seed 7 -q");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto img = render::readRgbImage(out);
+    EXPECT_EQ(img.width, 8);
+    EXPECT_EQ(img.metadata.at("lamina:mode"), "rgb");
+    EXPECT_EQ(img.metadata.at("lamina:spp"), "2");
+    EXPECT_EQ(img.metadata.at("lamina:seed"), "7");
+    EXPECT_EQ(img.metadata.at("lamina:partial"), "0");
+    EXPECT_EQ(filesIn(), 2u);  // the scene and the image, no temporary left behind
+}
+
+struct BadInput {
+    const char* name;
+    std::string sceneText;
+    const char* expected;
+};
+
+class CliBadInput : public CliTest, public ::testing::WithParamInterface<BadInput> {};
+
+TEST_P(CliBadInput, ExitsWithOneClearErrorAndWritesNothing) {
+    const auto s = write("scene.json", GetParam().sceneText);
+    const auto out = (dir_ / "out.exr").string();
+    const CommandRun r = runLamina("render " + s + " -o " + out + " -q");
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_THAT(r.output, ::testing::HasSubstr("scene.json"));
+    EXPECT_THAT(r.output, ::testing::HasSubstr(GetParam().expected));
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_FALSE(fs::exists(out));
+    EXPECT_EQ(filesIn(), 1u);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, CliBadInput,
+    ::testing::Values(
+        BadInput{"malformed_json", "{\n  \"camera\": {\n    \"fov\": 40,,\n  }\n}",
+                 "malformed JSON at line 3"},
+        BadInput{"unknown_key", scene(R"({"type": "lambert", "reflectanse": 0.5})"),
+                 "materials.m.reflectanse: unknown key"},
+        BadInput{"wrong_type", scene(R"({"type": "lambert", "reflectance": "red"})"),
+                 "materials.m.reflectance: expected a number"},
+        BadInput{"negative_radiance", scene(R"({"type": "lambert"})", "[1, -1, 1]"),
+                 "shapes[1].emission.radiance[1]: expected a number >= 0, got -1"},
+        BadInput{"roughness_out_of_range", scene(R"({"type": "standard", "roughness": 1.5})"),
+                 "materials.m.roughness: expected a number in [0, 1], got 1.5"},
+        BadInput{"unknown_material_type", scene(R"({"type": "velvet"})"),
+                 "unknown material type \"velvet\""},
+        BadInput{"zero_area_light",
+                 scene(R"({"type": "lambert"})", "1",
+                       R"({"type": "mesh", "material": "m", "positions": [[0,0,0],[1,0,0],[2,0,0]],
+                           "faces": [[0,1,2]], "emission": {"radiance": 1}},)"),
+                 "shapes[0].emission: the emitting shape has zero area"},
+        BadInput{"missing_mesh",
+                 scene(R"({"type": "lambert"})", "1",
+                       R"({"type": "obj", "file": "nowhere.obj", "material": "m"},)"),
+                 "nowhere.obj: no such file"},
+        BadInput{"unknown_material_name",
+                 scene(R"({"type": "lambert"})", "1",
+                       R"({"type": "sphere", "material": "gold"},)"),
+                 "shapes[0].material: unknown material \"gold\""},
+        BadInput{"no_light", R"({"shapes": []})", "the scene has no light"}),
+    [](const auto& paramInfo) { return std::string(paramInfo.param.name); });
+
+TEST_F(CliTest, UnwritableOutputIsReportedBeforeRendering) {
+    const auto s = write("ok.json", scene(R"({"type": "lambert"})"));
+    const CommandRun r = runLamina("render " + s + " -o " + (dir_ / "missing" / "x.exr").string());
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_THAT(r.output, ::testing::HasSubstr("does not exist"));
+}
+
+TEST_F(CliTest, UsageErrorsExitWithTwo) {
+    const auto s = write("ok.json", scene(R"({"type": "lambert"})"));
+    EXPECT_EQ(runLamina("render " + s + " --spp 0").exitCode, 2);
+    EXPECT_EQ(runLamina("render " + s + " --mode infrared").exitCode, 2);
+    EXPECT_EQ(runLamina("render").exitCode, 2);
+    EXPECT_EQ(runLamina("render --help").exitCode, 0);
+}
+
+}  // namespace
+}  // namespace lamina
