@@ -23,6 +23,8 @@ LAMINA_INSTANTIATE_BSDF(MicrofacetReflectionLobe)
 LAMINA_INSTANTIATE_BSDF(MixBxdf)
 template class MaterialBuilder<Rgb<float>>;
 template class MaterialBuilder<Rgb<double>>;
+template class MaterialBuilder<SampledSpectrum<float>>;
+template class MaterialBuilder<SampledSpectrum<double>>;
 
 template class MicrofacetDistribution<float>;
 template class MicrofacetDistribution<double>;

@@ -119,6 +119,9 @@ RenderResult renderScene(const SceneDesc& scene, const RenderOptions& options,
     std::optional<tbb::global_control> threads;
     if (options.threads > 0)
         threads.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(options.threads));
+    if (options.mode == RenderModeKind::Spectral)
+        return renderWithMode<SampledSpectrum<float>>(scene, options, settings, width, height,
+                                                      progress);
     return renderWithMode<Rgb<float>>(scene, options, settings, width, height, progress);
 }
 

@@ -5,6 +5,8 @@
 #pragma once
 
 #include "lamina/core/spectrum.h"
+#include "lamina/spectral/rgb_to_spectrum.h"
+#include "lamina/spectral/sampled_wavelengths.h"
 
 namespace lamina {
 
@@ -27,6 +29,32 @@ struct SpectrumContext<Rgb<T>> {
             return c;
         else
             return Rgb<T>(c);
+    }
+};
+
+/// Spectral mode: colours are upsampled (Jakob and Hanika 2019) and evaluated at the path's
+/// wavelengths. Per-channel values that are not reflectances (a conductor's eta, k given as
+/// RGB triples) have no spectral meaning; the builder reduces them to reflectances first.
+template <std::floating_point T>
+struct SpectrumContext<SampledSpectrum<T>> {
+    static constexpr bool kSpectral = true;
+    SampledWavelengths<T> lambda;
+
+    SampledSpectrum<T> reflectance(const Rgb<double>& c) const {
+        return evaluate(RgbSpectrum(c, RgbSpectrumKind::Reflectance));
+    }
+    /// Grey values are constant spectra; others are upsampled as unbounded spectra (a tint).
+    SampledSpectrum<T> unbounded(const Rgb<double>& c) const {
+        if (c[0] == c[1] && c[1] == c[2]) return SampledSpectrum<T>(T(c[0]));
+        return evaluate(RgbSpectrum(c, RgbSpectrumKind::Unbounded));
+    }
+
+    template <typename F>
+    SampledSpectrum<T> evaluate(const F& f) const {
+        SampledSpectrum<T> s;
+        for (int i = 0; i < SampledSpectrum<T>::kSize; ++i)
+            s[i] = T(f(double(lambda[i])));
+        return s;
     }
 };
 
