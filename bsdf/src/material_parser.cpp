@@ -137,13 +137,55 @@ DiffuseMaterial readDiffuse(const JsonReader& r, DiffuseModel model) {
     return d;
 }
 
+std::string knownNames(const std::vector<std::string>& names) {
+    std::string list;
+    for (const auto& n : names)
+        list += (list.empty() ? "" : ", ") + n;
+    return list;
+}
+
+// A path in a material relative to the JSON file's directory, else to the working directory.
+std::filesystem::path resolvePath(const JsonReader& r, const std::string& key) {
+    std::filesystem::path p = r.requiredString(key);
+    if (p.is_relative()) {
+        const auto beside = (r.source().directory / p).lexically_normal();
+        if (std::filesystem::exists(beside) || !std::filesystem::exists(p)) p = beside;
+    }
+    if (!std::filesystem::exists(p)) r.failAt(key, p.string() + ": no such file");
+    return p;
+}
+
+std::shared_ptr<const IorSpectrum> loadIorAt(const JsonReader& r, const std::string& key) {
+    const std::filesystem::path path = resolvePath(r, key);
+    try {
+        return std::make_shared<const IorSpectrum>(loadIorFile(path));
+    } catch (const InputError& e) {
+        r.failAt(key, e.what());
+    }
+}
+
 ConductorMaterial readConductor(const JsonReader& r) {
     ConductorMaterial c;
     const bool etaK = r.has("eta") || r.has("k");
     const bool f0 = r.has("f0") || r.has("f82");
-    if (int(etaK) + int(f0) != 1)
-        r.fail("a conductor's optics are exactly one of {\"eta\", \"k\"} or {\"f0\", \"f82\"}");
-    if (etaK) {
+    const bool named = r.has("material"), file = r.has("nk_file");
+    if (int(etaK) + int(f0) + int(named) + int(file) != 1)
+        r.fail("a conductor's optics are exactly one of {\"material\": name}, {\"eta\", \"k\"}, "
+               "{\"nk_file\": path} or {\"f0\", \"f82\"}");
+    if (named || file) {
+        c.optics.form = ConductorOptics::Form::Spectral;
+        if (named) {
+            const std::string name = r.requiredString("material");
+            const auto ior = namedIor(name);
+            if (!ior || ior->k(550) == 0)
+                r.failAt("material", "unknown metal \"" + name + "\"; expected one of " +
+                                         knownNames(namedMetalNames()));
+            c.optics.spectrum = std::make_shared<const IorSpectrum>(*ior);
+        } else {
+            c.optics.spectrum = loadIorAt(r, "nk_file");
+        }
+        std::tie(c.optics.f0, c.optics.f82) = conductorF0F82(*c.optics.spectrum);
+    } else if (etaK) {
         c.optics.form = ConductorOptics::Form::EtaK;
         c.optics.eta = toRgb(r.optionalTriple("eta", Range::positive()).value_or(
             std::array<double, 3>{}));
@@ -170,7 +212,23 @@ ConductorMaterial readConductor(const JsonReader& r) {
 
 DielectricMaterial readDielectric(const JsonReader& r) {
     DielectricMaterial d;
-    d.ior = r.number("ior", 1.5, Range::positive());
+    if (r.has("ior") && r.has("ior_file")) r.fail("give only one of ior and ior_file");
+    if (r.has("ior_file")) {
+        d.spectrum = loadIorAt(r, "ior_file");
+    } else if (r.has("ior") && r.value()["ior"].is_string()) {
+        const std::string name = r.requiredString("ior");
+        const auto ior = namedIor(name);
+        if (!ior || ior->k(550) != 0)
+            r.failAt("ior", "unknown glass \"" + name + "\"; expected a number or one of " +
+                                knownNames(namedGlassNames()));
+        d.spectrum = std::make_shared<const IorSpectrum>(*ior);
+    } else {
+        d.ior = r.number("ior", 1.5, Range::positive());
+    }
+    if (d.spectrum) {
+        d.ior = d.spectrum->n(kDLineNm);
+        if (!(d.ior > 0)) r.fail("the index of refraction at 587.56 nm is not positive");
+    }
     d.microfacet.ndf = r.choice("distribution", NdfKind::Ggx,
                                 {{"ggx", NdfKind::Ggx}, {"beckmann", NdfKind::Beckmann}});
     readRoughness(r, 0.0, d.microfacet);

@@ -156,3 +156,50 @@ TEST(MaterialErrors, AMissingFileIsNamed) {
 
 }  // namespace
 }  // namespace lamina
+
+namespace lamina {
+namespace {
+
+TEST(ConductorMaterial, NamedMetalIsExactInSpectralModeAndF82InRgbMode) {
+    const MaterialDesc gold = parseMaterialArgument(R"({"type":"conductor","material":"Au"})");
+    const Vec3<double> normal(0, 0, 1);
+    // Spectral: the exact Fresnel reflectance of the LD gold at each wavelength.
+    auto lambda = SampledWavelengths<double>::fixed({450, 550, 650, 700});
+    const SpectrumContext<SampledSpectrum<double>> spectral{lambda};
+    const auto s = buildBxdf(gold, spectral)->sample(normal, 0.5, {0.5, 0.5}, TransportMode::Radiance);
+    ASSERT_TRUE(s);
+    const IorSpectrum au = *namedIor("Au");
+    for (int i = 0; i < 4; ++i)
+        EXPECT_NEAR(s->weight[i], fresnelConductor(1.0, au.n(lambda[i]), au.k(lambda[i])), 1e-12);
+    // RGB: the reductions of the same n, k.
+    const SpectrumContext<Rgb<double>> rgb;
+    const auto r = buildBxdf(gold, rgb)->sample(normal, 0.5, {0.5, 0.5}, TransportMode::Radiance);
+    const auto [f0, f82] = conductorF0F82(au);
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(r->weight[c], f0[c], 1e-12);
+    (void)f82;
+}
+
+TEST(DielectricMaterial, DispersiveGlassKeepsOnlyTheHeroWavelength) {
+    const MaterialDesc glass = parseMaterialArgument(R"({"type":"dielectric","ior":"bk7"})");
+    auto lambda = SampledWavelengths<float>::fixed({450, 550, 650, 700});
+    const SpectrumContext<SampledSpectrum<float>> spectral{lambda};
+    (void)buildBxdf(glass, spectral);
+    EXPECT_TRUE(lambda.secondaryTerminated());
+    const MaterialDesc constant = parseMaterialArgument(R"({"type":"dielectric","ior":1.5})");
+    auto lambda2 = SampledWavelengths<float>::fixed({450, 550, 650, 700});
+    const SpectrumContext<SampledSpectrum<float>> spectral2{lambda2};
+    (void)buildBxdf(constant, spectral2);
+    EXPECT_FALSE(lambda2.secondaryTerminated());
+}
+
+TEST(MaterialErrors, UnknownMetalsGlassesAndFilesAreNamed) {
+    expectError(R"({"type":"conductor","material":"Unobtainium"})",
+                "unknown metal \"Unobtainium\"; expected one of Ag, Au");
+    expectError(R"({"type":"dielectric","ior":"crown"})", "unknown glass \"crown\"");
+    expectError(R"({"type":"conductor","nk_file":"no/such/file.yml"})",
+                "nk_file: no/such/file.yml: no such file");
+}
+
+}  // namespace
+}  // namespace lamina

@@ -15,9 +15,12 @@ namespace {
 std::filesystem::path temporaryName(const std::filesystem::path& path) {
     // Same directory (rename is atomic there) and the same extension (OIIO picks the format
     // from it).
-    return path.parent_path() /
-           ("." + path.stem().string() + ".tmp" + std::to_string(::getpid()) +
-            path.extension().string());
+    std::string name = ".";
+    name += path.stem().string();
+    name += ".tmp";
+    name += std::to_string(::getpid());
+    name += path.extension().string();
+    return path.parent_path() / name;
 }
 
 void writeAtomically(const std::filesystem::path& path, const OIIO::ImageSpec& spec,

@@ -316,7 +316,7 @@ class SceneParser {
     std::filesystem::path resolve(const JsonReader& r, const std::string& key) {
         std::filesystem::path p = r.requiredString(key);
         if (p.is_relative()) {
-            const auto beside = source_.directory / p;
+            const auto beside = (source_.directory / p).lexically_normal();
             if (std::filesystem::exists(beside) || !std::filesystem::exists(p)) p = beside;
         }
         if (!std::filesystem::exists(p)) r.failAt(key, p.string() + ": no such file");

@@ -14,6 +14,7 @@
 #include "lamina/bsdf/microfacet_distribution.h"
 #include "lamina/core/json_reader.h"
 #include "lamina/core/spectrum.h"
+#include "lamina/spectral/ior_spectrum.h"
 
 namespace lamina {
 
@@ -59,12 +60,15 @@ struct DiffuseMaterial {
 
 /// A conductor's optics: exactly one form.
 struct ConductorOptics {
-    enum class Form { EtaK, F0F82 };
+    /// EtaK: numbers per channel; F0F82: reflectances; Spectral: n, k as functions of
+    /// wavelength (a named metal or an n/k file), with its RGB-mode reductions precomputed.
+    enum class Form { EtaK, F0F82, Spectral };
     Form form = Form::EtaK;
     RgbInput eta{0.2};     ///< EtaK: real part of the relative index (per channel)
     RgbInput k{3.9};       ///< EtaK: imaginary part
     RgbInput f0{0.9};      ///< F0F82: normal-incidence reflectance
     std::optional<RgbInput> f82;  ///< F0F82: reflectance at cos = 1/7 (absent: plain Schlick)
+    std::shared_ptr<const IorSpectrum> spectrum;  ///< Spectral (f0 and f82 hold its reductions)
     bool etaKIsGrey() const;
 };
 
@@ -77,7 +81,8 @@ struct ConductorMaterial {
 
 /// `dielectric`: a boundary between outside (index 1) and inside (index ior).
 struct DielectricMaterial {
-    double ior = 1.5;
+    double ior = 1.5;  ///< the RGB-mode index (n at 587.56 nm for a dispersive glass)
+    std::shared_ptr<const IorSpectrum> spectrum;  ///< a named glass or an ior_file
     MicrofacetParams microfacet;
 };
 

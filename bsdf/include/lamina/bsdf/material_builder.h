@@ -48,7 +48,8 @@ class MaterialBuilder {
     }
 
     std::unique_ptr<Bxdf<S>> buildModel(const DielectricMaterial& d) const {
-        return std::make_unique<DielectricBxdf<S>>(Float(d.ior), distribution(d.microfacet),
+        const Float eta = d.spectrum ? ctx_.dielectricIor(*d.spectrum) : Float(d.ior);
+        return std::make_unique<DielectricBxdf<S>>(eta, distribution(d.microfacet),
                                                    d.microfacet.g2);
     }
 
@@ -58,6 +59,23 @@ class MaterialBuilder {
 
     Fresnel<S> conductorFresnel(const ConductorMaterial& c) const {
         const ConductorOptics& o = c.optics;
+        if (o.form == ConductorOptics::Form::Spectral) {
+            // Spectral mode: the exact Fresnel equations at the path's wavelengths. RGB mode
+            // (and the approximations in spectral mode): the reductions F0, F82 of the same
+            // n, k (Hoffman 2019), so the two modes differ only by the approximation.
+            if constexpr (SpectrumContext<S>::kSpectral) {
+                if (c.fresnel == FresnelChoice::Auto || c.fresnel == FresnelChoice::Exact) {
+                    const IorSpectrum& ior = *o.spectrum;
+                    return Fresnel<S>::conductor(
+                        ctx_.evaluate([&](double nm) { return ior.n(nm); }),
+                        ctx_.evaluate([&](double nm) { return ior.k(nm); }));
+                }
+            }
+            ConductorMaterial reduced = c;
+            reduced.optics.form = ConductorOptics::Form::F0F82;
+            if (reduced.fresnel == FresnelChoice::Exact) reduced.fresnel = FresnelChoice::F82;
+            return conductorFresnel(reduced);
+        }
         if (o.form == ConductorOptics::Form::F0F82) {
             const S f0 = ctx_.reflectance(o.f0);
             switch (c.fresnel) {

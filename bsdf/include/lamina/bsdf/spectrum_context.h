@@ -5,6 +5,7 @@
 #pragma once
 
 #include "lamina/core/spectrum.h"
+#include "lamina/spectral/ior_spectrum.h"
 #include "lamina/spectral/rgb_to_spectrum.h"
 #include "lamina/spectral/sampled_wavelengths.h"
 
@@ -17,6 +18,9 @@ struct SpectrumContext;
 template <std::floating_point T>
 struct SpectrumContext<Rgb<T>> {
     static constexpr bool kSpectral = false;
+
+    /// The RGB-mode index of a possibly dispersive material: n at the d-line.
+    T dielectricIor(const IorSpectrum& ior) const { return T(ior.n(kDLineNm)); }
 
     /// A reflectance in [0, 1] (albedo, F0).
     Rgb<T> reflectance(const Rgb<double>& c) const { return convert(c); }
@@ -38,7 +42,14 @@ struct SpectrumContext<Rgb<T>> {
 template <std::floating_point T>
 struct SpectrumContext<SampledSpectrum<T>> {
     static constexpr bool kSpectral = true;
-    SampledWavelengths<T> lambda;
+    SampledWavelengths<T>& lambda;  ///< the path's: a dispersive material terminates it
+
+    /// A dispersive index splits the wavelengths into different directions: only the hero
+    /// wavelength continues (Wilkie et al. 2014, section 4.3), with its own index.
+    T dielectricIor(const IorSpectrum& ior) const {
+        if (ior.dispersive()) lambda.terminateSecondary();
+        return T(ior.n(double(lambda.hero())));
+    }
 
     SampledSpectrum<T> reflectance(const Rgb<double>& c) const {
         return evaluate(RgbSpectrum(c, RgbSpectrumKind::Reflectance));
