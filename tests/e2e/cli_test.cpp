@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "lamina/bsdf/material_builder.h"
 #include "lamina/render/image_output.h"
 
 namespace lamina {
@@ -21,8 +22,15 @@ struct CommandRun {
     std::string output;  // stdout and stderr
 };
 
-CommandRun runLamina(const std::string& args) {
-    const std::string cmd = std::string(LAMINA_BINARY_DIR) + "/renderer/lamina " + args + " 2>&1";
+CommandRun runLamina(const std::string& args, const std::string& input = "") {
+    std::string redirect;
+    if (!input.empty()) {
+        const fs::path in = fs::temp_directory_path() / ("lamina-cli-stdin-" + std::to_string(::getpid()));
+        std::ofstream(in) << input << "\n";
+        redirect = " < " + in.string();
+    }
+    const std::string cmd =
+        std::string(LAMINA_BINARY_DIR) + "/renderer/lamina " + args + redirect + " 2>&1";
     FILE* pipe = ::popen(cmd.c_str(), "r");
     std::string out;
     std::array<char, 4096> buf{};
@@ -148,6 +156,39 @@ TEST_F(CliTest, UsageErrorsExitWithTwo) {
     EXPECT_EQ(runLamina("render " + s + " --mode infrared").exitCode, 2);
     EXPECT_EQ(runLamina("render").exitCode, 2);
     EXPECT_EQ(runLamina("render --help").exitCode, 0);
+}
+
+TEST_F(CliTest, BsdfEvalMatchesTheLibraryAndSampleCountsLines) {
+    const std::string material = R"('{"type":"standard","base_color":[0.8,0.5,0.2],"roughness":0.4}')";
+    const CommandRun e = runLamina("bsdf eval " + material, R"({"wo":[0.3,0,1],"wi":[-0.2,0.1,1]})");
+    ASSERT_EQ(e.exitCode, 0) << e.output;
+    const Json j = Json::parse(e.output);
+    const auto desc = parseMaterialArgument(
+        R"({"type":"standard","base_color":[0.8,0.5,0.2],"roughness":0.4})");
+    const auto bsdf = buildBxdf(desc, SpectrumContext<Rgb<double>>{});
+    const Vec3<double> wo = glm::normalize(Vec3<double>(0.3, 0, 1)),
+                       wi = glm::normalize(Vec3<double>(-0.2, 0.1, 1));
+    const auto f = bsdf->eval(wo, wi, TransportMode::Radiance);
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(j["f"][std::size_t(c)].get<double>(), f[c], 1e-8 * f[c]);
+    EXPECT_NEAR(j["pdf"].get<double>(), bsdf->pdf(wo, wi), 1e-8);
+    EXPECT_NEAR(j["pdf_reverse"].get<double>(), bsdf->pdf(wi, wo), 1e-8);
+
+    const CommandRun s = runLamina("bsdf sample " + material + " --wo 0,0.2,1 --count 25");
+    ASSERT_EQ(s.exitCode, 0) << s.output;
+    EXPECT_EQ(std::count(s.output.begin(), s.output.end(), '\n'), 25);
+    const CommandRun c = runLamina("bsdf chi2 " + material + " --wo 0.5,0,0.5 --samples 100000");
+    EXPECT_THAT(c.output, ::testing::HasSubstr("accepted"));
+}
+
+TEST_F(CliTest, BsdfBadInputIsReported) {
+    const CommandRun e = runLamina(R"(bsdf eval '{"type":"lambert"}')", R"({"wo":[0,0,1]})");
+    EXPECT_EQ(e.exitCode, 1);
+    EXPECT_THAT(e.output, ::testing::HasSubstr("<stdin> line 1: wi: missing"));
+    const CommandRun m = runLamina(R"(bsdf sample '{"type":"lambert","roughness":-1}' --wo 0,0,1)");
+    EXPECT_EQ(m.exitCode, 1);
+    EXPECT_THAT(m.output, ::testing::HasSubstr("roughness"));
+    EXPECT_EQ(runLamina(R"(bsdf sample '{"type":"lambert"}' --wo 0,0,0)").exitCode, 2);
 }
 
 }  // namespace

@@ -5,10 +5,12 @@
 namespace lamina::cli {
 
 void registerRenderCommand(CLI::App& app);
+void registerBsdfCommand(CLI::App& app);
 
 // Every subcommand is registered here, in the order `lamina --help` lists them.
 void registerCommands(CLI::App& app) {
     registerRenderCommand(app);
+    registerBsdfCommand(app);
 }
 
 }  // namespace lamina::cli
