@@ -3,6 +3,8 @@
 // per-pixel variance estimates of the film as the standard error.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include "render_helpers.h"
 
 namespace lamina {
@@ -122,6 +124,33 @@ TEST(Determinism, SameImageWithOneAndTwoThreads) {
         for (int x = 0; x < 48; ++x)
             for (int c = 0; c < 3; ++c)
                 ASSERT_EQ(a.film->pixel(x, y)[c], b.film->pixel(x, y)[c]) << x << "," << y;
+}
+
+}  // namespace
+}  // namespace lamina
+
+namespace lamina {
+namespace {
+
+// Every example scene loads and renders (tiny, 1 spp) in both modes without rejected
+// samples: the scenes in the repository stay valid as the format evolves.
+TEST(ExampleScenes, LoadAndRenderInBothModes) {
+    int scenes = 0;
+    for (const auto& entry :
+         std::filesystem::directory_iterator(std::string(LAMINA_SOURCE_DIR) + "/scenes")) {
+        if (entry.path().extension() != ".json") continue;
+        const auto scene = render::loadScene(entry.path());
+        for (auto mode : {render::RenderModeKind::Rgb, render::RenderModeKind::Spectral}) {
+            render::RenderOptions o;
+            o.mode = mode;
+            o.spp = 1;
+            o.resolution = std::make_pair(12, 8);
+            const auto r = render::renderScene(scene, o);
+            EXPECT_EQ(r.film->rejectedSamples(), 0u) << entry.path();
+        }
+        ++scenes;
+    }
+    EXPECT_GE(scenes, 6);
 }
 
 }  // namespace

@@ -6,11 +6,15 @@ namespace lamina::cli {
 
 void registerRenderCommand(CLI::App& app);
 void registerBsdfCommand(CLI::App& app);
+void registerSpectrumCommand(CLI::App& app);
+void registerInfoCommand(CLI::App& app);
 
 // Every subcommand is registered here, in the order `lamina --help` lists them.
 void registerCommands(CLI::App& app) {
     registerRenderCommand(app);
     registerBsdfCommand(app);
+    registerInfoCommand(app);
+    registerSpectrumCommand(app);
 }
 
 }  // namespace lamina::cli

@@ -43,6 +43,9 @@ class MaterialBuilder {
     }
 
     std::unique_ptr<Bxdf<S>> buildModel(const DiffuseMaterial& d) const {
+        // A black diffuse surface (an emitter's back, say) has no lobe at all.
+        if (d.reflectance.maxValue() <= 0.0)
+            return std::make_unique<LayeredBxdf<S>>(typename LayeredBxdf<S>::Layers{});
         return std::make_unique<DiffuseBxdf<S>>(ctx_.reflectance(d.reflectance), d.model,
                                                 Float(d.roughness));
     }
