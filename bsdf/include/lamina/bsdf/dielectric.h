@@ -195,7 +195,9 @@ class DielectricBxdf final : public Bxdf<S> {
         if (indexMatched())  // straight through, no bending and no 1/eta'^2 worth keeping
             return BsdfSample<S>{-wo, S(Float(1)), Float(1), kLobeSpecularTransmission, Float(1)};
         const auto t = refract(wo, V3(0, 0, 1), eta_);
-        if (!t) return std::nullopt;  // R = 1 under total internal reflection: unreachable
+        // R = 1 under total internal reflection; at grazing angles R can also round to 1
+        // without TIR (float), leaving no probability for this branch.
+        if (!t || !(Float(1) - R > Float(0))) return std::nullopt;
         const Float scale = mode == TransportMode::Radiance ? Float(1) / sqr(t->second) : Float(1);
         return BsdfSample<S>{t->first, S(scale), Float(1) - R, kLobeSpecularTransmission,
                              t->second};

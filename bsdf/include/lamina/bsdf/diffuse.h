@@ -71,8 +71,12 @@ class DiffuseBxdf final : public Bxdf<S> {
                                    Float(2) * roughness_ * cos2D;
                 const Float scale =
                     frostbite ? lerp(roughness_, Float(1), Float(1) / Float(1.51)) : Float(1);
-                return (Float(1) + (fd90 - Float(1)) * pow5(Float(1) - cosI)) *
-                       (Float(1) + (fd90 - Float(1)) * pow5(Float(1) - cosO)) * scale;
+                // 1 + (F_D90 - 1)(1 - c)^5, written as (1 - (1 - c)^5) + F_D90 (1 - c)^5 so
+                // that a small F_D90 at grazing angles does not cancel catastrophically.
+                auto term = [fd90](Float c) {
+                    return oneMinusPow5OfComplement(c) + fd90 * pow5(Float(1) - c);
+                };
+                return term(cosI) * term(cosO) * scale;
             }
         }
         return Float(1);

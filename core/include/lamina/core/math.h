@@ -80,6 +80,14 @@ constexpr T pow5(T x) {
     return x2 * x2 * x;
 }
 
+/// 1 - (1 - c)^5 for c in [0, 1] without the cancellation of the direct form at small c
+/// (where it is ~5c): -expm1(5 log1p(-c)).
+template <typename T>
+T oneMinusPow5OfComplement(T c) {
+    if (c >= T(1)) return T(1);
+    return -std::expm1(T(5) * std::log1p(-c));
+}
+
 /// Evaluates the polynomial c[0] + c[1] x + c[2] x^2 + ... by Horner's rule.
 template <std::floating_point T, std::size_t N>
 constexpr T evalPolynomial(T x, const T (&c)[N]) {
