@@ -3,7 +3,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "lamina/bsdf/material.h"
+#include "lamina/bsdf/material_builder.h"
 
 namespace lamina {
 
@@ -120,7 +120,11 @@ StandardMaterial readStandard(const JsonReader& r) {
                                               ? LayerCoupling::Sum
                                               : LayerCoupling::Fresnel;
     s.coupling = r.choice("coupling", defaultCoupling,
-                          {{"fresnel", LayerCoupling::Fresnel}, {"sum", LayerCoupling::Sum}});
+                          {{"fresnel", LayerCoupling::Fresnel},
+                           {"sum", LayerCoupling::Sum},
+                           {"albedo", LayerCoupling::Albedo}});
+    s.microfacet.multiscatter = r.boolean("multiscatter", false);
+    prepareEnergyTables(s);
     return s;
 }
 
@@ -205,6 +209,8 @@ ConductorMaterial readConductor(const JsonReader& r) {
     readRoughness(r, 0.0, c.microfacet);
     readMicrofacetSwitches(r, c.microfacet, true);
     c.fresnel = readFresnel(r, FresnelChoice::Auto, true);
+    c.microfacet.multiscatter = r.boolean("multiscatter", false);
+    prepareEnergyTables(c);
     if (c.optics.form == ConductorOptics::Form::F0F82 && c.fresnel == FresnelChoice::Exact)
         r.failAt("fresnel", "\"exact\" needs the eta and k of the conductor, not f0");
     return c;
@@ -245,6 +251,28 @@ MixMaterial readMix(const JsonReader& r) {
 }
 
 }  // namespace
+
+void prepareEnergyTables(ConductorMaterial& c) {
+    if (c.microfacet.multiscatter) c.microfacet.energyF1 = microfacetEnergyTable(c.microfacet);
+}
+
+void prepareEnergyTables(StandardMaterial& s) {
+    if (s.microfacet.multiscatter && s.specularLobe)
+        s.microfacet.energyF1 = microfacetEnergyTable(s.microfacet);
+    if (s.coupling != LayerCoupling::Albedo) return;
+    // The interface alone (with its compensation, if any), from the same builder.
+    StandardMaterial interfaceOnly = s;
+    interfaceOnly.diffuse.reset();
+    interfaceOnly.transmission = 0;
+    interfaceOnly.coupling = LayerCoupling::Fresnel;
+    MaterialDesc desc{"standard", interfaceOnly};
+    const auto bsdf = buildBxdf(desc, SpectrumContext<Rgb<double>>{});
+    s.interfaceAlbedo = std::make_shared<const AlbedoTable>(AlbedoTable::compute(
+        [&](const Vec3<double>& wo, double u1, double u2, double uc) {
+            const auto r = bsdf->sample(wo, uc, {u1, u2}, TransportMode::Radiance);
+            return r ? r->weight.average() : 0.0;
+        }));
+}
 
 double MicrofacetParams::perceptualRoughness() const {
     return std::sqrt(0.5 * (alphaX + alphaY));

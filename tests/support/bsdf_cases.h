@@ -11,6 +11,7 @@
 #include "lamina/bsdf/dielectric.h"
 #include "lamina/bsdf/diffuse.h"
 #include "lamina/bsdf/layered.h"
+#include "lamina/bsdf/material_builder.h"
 
 namespace lamina::testing {
 
@@ -152,6 +153,26 @@ inline std::vector<BsdfCase> bsdfCases() {
                      layered(0.3, DiffuseModel::OrenNayar, LayerCoupling::Fresnel, 0.5,
                              FresnelKind::SchlickShadowed),
                      true, 1.5});
+
+    // Energy-compensated materials: Kulla-Conty multiple scattering and the albedo coupling.
+    auto material = [](const std::string& json) {
+        return std::shared_ptr<const Bxdf<Spec>>(
+            buildBxdf(parseMaterialArgument(json), SpectrumContext<Spec>{}));
+    };
+    cases.push_back({"conductor_multiscatter_r0p3",
+                     material(R"({"type":"conductor","eta":[0.2,0.4,1.4],"k":[3.4,2.4,1.8],)"
+                              R"("fresnel":"exact","roughness":0.3,"multiscatter":true})")});
+    cases.push_back({"conductor_multiscatter_r1",
+                     material(R"({"type":"conductor","f0":0.9,"roughness":1,"multiscatter":true})")});
+    cases.push_back({"standard_albedo_coupling_r0p5",
+                     material(R"({"type":"standard","base_color":[0.8,0.5,0.2],"roughness":0.5,)"
+                              R"("coupling":"albedo"})")});
+    cases.push_back({"standard_albedo_multiscatter_r0p2",
+                     material(R"({"type":"standard","base_color":[0.8,0.5,0.2],"roughness":0.2,)"
+                              R"("coupling":"albedo","multiscatter":true})")});
+    cases.push_back({"standard_albedo_multiscatter_metal_r0p8",
+                     material(R"({"type":"standard","base_color":[0.9,0.6,0.3],"metalness":1,)"
+                              R"("roughness":0.8,"coupling":"albedo","multiscatter":true})")});
     return cases;
 }
 

@@ -9,16 +9,21 @@
 //            and in sampling alike (the article's code sample samples a different h for the
 //            diffuse weight, which breaks weight == eval/pdf; lamina does not);
 //   sum      W = 1 (the article's combination for Frostbite's diffuse, which is normalised
-//            for GGX specular).
+//            for GGX specular);
+//   albedo   W = (1 - E(mu_o)) (1 - E(mu_i)) / (1 - E_avg) with E the interface's directional
+//            albedo (Kelemen and Szirmay-Kalos 2001; Kulla and Conty 2017): reciprocal, and
+//            a white base under any interface reflects exactly what the interface transmits.
+// The interface may carry Kulla-Conty multiple-scattering compensation (multiscatter.h).
 // f_btdf is Walter's BTDF without its Fresnel factor, weighted by (1 - F) of the interface's
 // own Fresnel model on the refraction microfacet normal m_t, so reflection and transmission
 // split each microfacet's energy exactly once (never twice: Mitsuba 3 issue 465). A Fresnel
 // approximation seen from inside is evaluated at the angle outside (Snell's law), and total
 // internal reflection gives F = 1.
 //
-// Sampling picks a lobe with probabilities estimated from wo (specular ~ F(cos_o), diffuse ~
-// (1 - t)(1 - F) albedo, transmission ~ t (1 - F); 10% spread evenly so no lobe is starved),
-// then weight = eval / pdf of the whole mixture.
+// Sampling picks a lobe with probabilities estimated from wo (specular ~ F(cos_o), cosine
+// lobes (diffuse and multiple-scattering compensation) ~ their albedos, transmission ~
+// t (1 - F); 10% spread evenly so no lobe is starved), then weight = eval / pdf of the whole
+// mixture.
 #pragma once
 
 #include <array>
@@ -26,10 +31,11 @@
 #include "lamina/bsdf/dielectric.h"
 #include "lamina/bsdf/diffuse.h"
 #include "lamina/bsdf/microfacet_reflection.h"
+#include "lamina/bsdf/multiscatter.h"
 
 namespace lamina {
 
-enum class LayerCoupling { Fresnel, Sum };
+enum class LayerCoupling { Fresnel, Sum, Albedo };
 
 template <SpectrumType S>
 class LayeredBxdf final : public Bxdf<S> {
@@ -44,9 +50,15 @@ class LayeredBxdf final : public Bxdf<S> {
         std::optional<DielectricBxdf<S>> transmission;  ///< geometry of the transmitted lobe
         Float transmissionWeight = 0;                   ///< t in [0, 1]
         LayerCoupling coupling = LayerCoupling::Fresnel;
+        /// Albedo coupling: the interface's directional albedo (with compensation if any).
+        std::shared_ptr<const AlbedoTable> interfaceAlbedo;
+        std::optional<MultiscatterLobe<S>> interfaceMultiscatter;
     };
 
     explicit LayeredBxdf(Layers layers) : l_(std::move(layers)) {
+        if (!l_.interface || interfaceSmooth()) l_.interfaceMultiscatter.reset();
+        if (l_.coupling == LayerCoupling::Albedo && !l_.interfaceAlbedo)
+            l_.coupling = LayerCoupling::Fresnel;
         if (!l_.transmission) l_.transmissionWeight = Float(0);
         if (l_.transmissionWeight <= Float(0)) l_.transmission.reset();
         if (l_.transmissionWeight >= Float(1)) l_.diffuse.reset();
@@ -70,7 +82,7 @@ class LayeredBxdf final : public Bxdf<S> {
         const V3 o = wo * s, i = wi * s;
         Float result = Float(0);
         if (l_.interface && !interfaceSmooth()) result += p[0] * l_.interface->pdf(o, i);
-        if (l_.diffuse) result += p[1] * l_.diffuse->pdf(o, i);
+        if (hasCosineLobe()) result += p[1] * cosineHemispherePdf(i);
         return result;
     }
 
@@ -89,10 +101,9 @@ class LayeredBxdf final : public Bxdf<S> {
             const auto r = l_.interface->sample(wo * s, u);
             if (!r) return std::nullopt;
             wi = r->wi * s;
-        } else if (uc < p[0] + p[1]) {  // diffuse base
-            const auto r = l_.diffuse->sample(wo, Float(0), u, mode);
-            if (!r) return std::nullopt;
-            wi = r->wi;
+        } else if (uc < p[0] + p[1]) {  // diffuse base and compensation: cosine-distributed
+            wi = squareToCosineHemisphere(u) * s;
+            if (wi.z == Float(0)) return std::nullopt;
         } else {  // transmission
             if (!l_.transmission) return std::nullopt;
             const auto t = l_.transmission->sampleRefraction(wo, u);
@@ -124,7 +135,7 @@ class LayeredBxdf final : public Bxdf<S> {
     std::uint32_t flags() const override {
         std::uint32_t f = kLobeNone;
         if (l_.interface) f |= interfaceSmooth() ? kLobeSpecularReflection : kLobeGlossyReflection;
-        if (l_.diffuse) f |= kLobeDiffuseReflection;
+        if (hasCosineLobe()) f |= l_.diffuse ? kLobeDiffuseReflection : kLobeGlossyReflection;
         if (l_.transmission)
             f |= l_.transmission->isSmooth() ? kLobeSpecularTransmission : kLobeGlossyTransmission;
         return f;
@@ -136,12 +147,20 @@ class LayeredBxdf final : public Bxdf<S> {
             l_.interface ? l_.interface->fresnel().evaluate(std::abs(wo.z)).average() : Float(0);
         const Float t = l_.transmissionWeight;
         std::array<Float, 3> w{};
+        const Float mu = std::abs(wo.z);
         if (l_.interface) w[0] = std::max(F, Float(0));
-        if (l_.diffuse)
+        if (l_.diffuse) {
+            Float coupling = Float(1) - F;
+            if (l_.coupling == LayerCoupling::Sum) coupling = Float(1);
+            if (l_.coupling == LayerCoupling::Albedo)
+                coupling = Float(1) - (*l_.interfaceAlbedo)(mu);
             w[1] = (Float(1) - t) * std::max(l_.diffuse->reflectance().average(), Float(0)) *
-                   (l_.coupling == LayerCoupling::Sum ? Float(1) : Float(1) - F);
+                   coupling;
+        }
+        if (l_.interfaceMultiscatter)
+            w[1] += std::max(l_.interfaceMultiscatter->albedo(mu).average(), Float(0));
         if (l_.transmission) w[2] = t * (Float(1) - F);
-        const bool present[3] = {l_.interface.has_value(), l_.diffuse.has_value(),
+        const bool present[3] = {l_.interface.has_value(), hasCosineLobe(),
                                  l_.transmission.has_value()};
         const int n = int(present[0]) + int(present[1]) + int(present[2]);
         const Float total = w[0] + w[1] + w[2];
@@ -156,6 +175,10 @@ class LayeredBxdf final : public Bxdf<S> {
     }
 
   private:
+    bool hasCosineLobe() const {
+        return l_.diffuse.has_value() || l_.interfaceMultiscatter.has_value();
+    }
+
     bool interfaceSmooth() const {
         return l_.interface && l_.interface->distribution().effectivelySmooth();
     }
@@ -163,10 +186,16 @@ class LayeredBxdf final : public Bxdf<S> {
     S evalReflection(const V3& wo, const V3& wi, TransportMode mode) const {
         S result(Float(0));
         if (l_.interface && !interfaceSmooth()) result += l_.interface->eval(wo, wi);
+        if (l_.interfaceMultiscatter) result += l_.interfaceMultiscatter->eval(wo, wi);
         if (l_.diffuse) {
             S coupling(Float(1));
             if (l_.coupling == LayerCoupling::Fresnel && l_.interface)
                 coupling = S(Float(1)) - l_.interface->fresnelAt(wo, wi);
+            if (l_.coupling == LayerCoupling::Albedo) {
+                const AlbedoTable& e = *l_.interfaceAlbedo;
+                coupling = S((Float(1) - e(wo.z)) * (Float(1) - e(wi.z)) /
+                             std::max(Float(1e-6), Float(1) - Float(e.average())));
+            }
             result +=
                 l_.diffuse->eval(wo, wi, mode) * coupling * (Float(1) - l_.transmissionWeight);
         }

@@ -9,6 +9,7 @@
 #include <string>
 #include <variant>
 
+#include "lamina/bsdf/albedo_table.h"
 #include "lamina/bsdf/diffuse.h"
 #include "lamina/bsdf/layered.h"
 #include "lamina/bsdf/microfacet_distribution.h"
@@ -27,6 +28,9 @@ struct MicrofacetParams {
     double alphaY = 0;
     G2Form g2 = G2Form::HeightCorrelated;
     MicrofacetSampling sampling = MicrofacetSampling::VisibleNormals;
+    /// Kulla-Conty multiple-scattering compensation, with the F = 1 albedo table it needs.
+    bool multiscatter = false;
+    std::shared_ptr<const AlbedoTable> energyF1;
 
     /// Perceptual roughness for the diffuse models (sqrt of the mean alpha).
     double perceptualRoughness() const;
@@ -49,6 +53,8 @@ struct StandardMaterial {
     MicrofacetParams microfacet;
     FresnelChoice fresnel = FresnelChoice::SchlickShadowed;
     LayerCoupling coupling = LayerCoupling::Fresnel;
+    /// Albedo coupling: the directional albedo of the specular interface (RGB average).
+    std::shared_ptr<const AlbedoTable> interfaceAlbedo;
 };
 
 /// `lambert`, `oren_nayar`, `burley`, `frostbite`.

@@ -117,9 +117,14 @@ class MaterialBuilder {
     }
 
     std::unique_ptr<Bxdf<S>> buildModel(const ConductorMaterial& c) const {
-        return std::make_unique<ConductorBxdf<S>>(MicrofacetReflectionLobe<S>(
-            distribution(c.microfacet), conductorFresnel(c), c.microfacet.sampling,
-            c.microfacet.g2));
+        const Fresnel<S> fresnel = conductorFresnel(c);
+        std::optional<MultiscatterLobe<S>> ms;
+        if (c.microfacet.multiscatter && c.microfacet.energyF1)
+            ms.emplace(c.microfacet.energyF1, fresnel);
+        return std::make_unique<ConductorBxdf<S>>(
+            MicrofacetReflectionLobe<S>(distribution(c.microfacet), fresnel,
+                                        c.microfacet.sampling, c.microfacet.g2),
+            std::move(ms));
     }
 
     // The article's F90 = min(1, luminance(F0) / 0.04), from the Rec.709 F0 in both modes.
@@ -165,7 +170,10 @@ class MaterialBuilder {
                     break;
             }
             layers.interface.emplace(dist, fresnel, s.microfacet.sampling, s.microfacet.g2);
+            if (s.microfacet.multiscatter && s.microfacet.energyF1)
+                layers.interfaceMultiscatter.emplace(s.microfacet.energyF1, fresnel);
         }
+        layers.interfaceAlbedo = s.interfaceAlbedo;
         if (s.diffuse && s.transmission < 1.0 && diffuseRgb.maxValue() > 0.0)
             layers.diffuse.emplace(ctx_.reflectance(diffuseRgb), *s.diffuse,
                                    Float(s.microfacet.perceptualRoughness()));
@@ -178,6 +186,25 @@ class MaterialBuilder {
 
     const SpectrumContext<S>& ctx_;
 };
+
+/// The single-scattering albedo table of a microfacet lobe with F = 1 (what Kulla-Conty
+/// compensation needs), computed from the lobe itself.
+inline std::shared_ptr<const AlbedoTable> microfacetEnergyTable(const MicrofacetParams& m) {
+    using S = Rgb<double>;
+    const MicrofacetReflectionLobe<S> lobe(
+        MicrofacetDistribution<double>(m.ndf, std::max(m.alphaX, kSmoothAlpha),
+                                       std::max(m.alphaY, kSmoothAlpha)),
+        Fresnel<S>::schlick(S(1.0)), MicrofacetSampling::VisibleNormals, m.g2);
+    return std::make_shared<const AlbedoTable>(AlbedoTable::compute(
+        [&](const Vec3<double>& wo, double u1, double u2, double) {
+            const auto r = lobe.sample(wo, {u1, u2});
+            return r ? r->weight.average() : 0.0;
+        }));
+}
+
+/// Fills in the tables a material's energy options need (called once, when it is parsed).
+void prepareEnergyTables(StandardMaterial& s);
+void prepareEnergyTables(ConductorMaterial& c);
 
 /// Builds the BSDF of `desc` in the variant of `context`.
 template <SpectrumType S>
