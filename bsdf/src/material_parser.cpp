@@ -9,8 +9,9 @@ namespace lamina {
 
 namespace {
 
-constexpr const char* kTypeNames[] = {"standard", "lambert",   "oren_nayar", "burley", "frostbite",
-                                      "conductor", "dielectric", "mix",        nullptr};
+constexpr const char* kTypeNames[] = {"standard",  "lambert",    "oren_nayar", "burley",
+                                      "frostbite", "conductor",  "dielectric", "phong",
+                                      "mix",       nullptr};
 
 RgbInput toRgb(const std::array<double, 3>& a) {
     return RgbInput(a[0], a[1], a[2]);
@@ -101,11 +102,12 @@ StandardMaterial readStandard(const JsonReader& r) {
          {"burley", DiffuseModel::Burley},
          {"frostbite", DiffuseModel::Frostbite},
          {"none", std::nullopt}});
-    const auto spec = r.choice<std::optional<NdfKind>>(
-        "specular_model", NdfKind::Ggx,
-        {{"ggx", NdfKind::Ggx}, {"beckmann", NdfKind::Beckmann}, {"none", std::nullopt}});
-    s.specularLobe = spec.has_value();
-    s.microfacet.ndf = spec.value_or(NdfKind::Ggx);
+    const std::string spec = r.string("specular_model", "ggx");
+    if (spec != "ggx" && spec != "beckmann" && spec != "phong" && spec != "none")
+        r.failAt("specular_model", "expected one of ggx, beckmann, phong, none, got \"" + spec + "\"");
+    s.specularLobe = spec != "none";
+    s.phong = spec == "phong";
+    s.microfacet.ndf = spec == "beckmann" ? NdfKind::Beckmann : NdfKind::Ggx;
     readRoughness(r, 0.5, s.microfacet);
     readMicrofacetSwitches(r, s.microfacet, true);
     s.fresnel = readFresnel(r, FresnelChoice::SchlickShadowed, false);
@@ -124,6 +126,8 @@ StandardMaterial readStandard(const JsonReader& r) {
                            {"sum", LayerCoupling::Sum},
                            {"albedo", LayerCoupling::Albedo}});
     s.microfacet.multiscatter = r.boolean("multiscatter", false);
+    if (s.phong && s.microfacet.multiscatter)
+        r.failAt("multiscatter", "compensates microfacet lobes only, not \"phong\"");
     prepareEnergyTables(s);
     return s;
 }
@@ -242,6 +246,22 @@ DielectricMaterial readDielectric(const JsonReader& r) {
     return d;
 }
 
+PhongMaterial readPhong(const JsonReader& r) {
+    PhongMaterial p;
+    p.reflectance = toRgb(r.triple("reflectance", {0.5, 0.5, 0.5}, Range::unit()));
+    if (r.has("shininess")) {
+        if (r.has("roughness") || r.has("alpha"))
+            r.fail("give either shininess or a roughness (roughness or alpha), not both");
+        p.shininess = r.requiredNumber("shininess", {0.0, 1e6});
+    } else {
+        MicrofacetParams m;
+        readRoughness(r, 0.5, m);
+        if (m.alphaX != m.alphaY) r.fail("the Phong lobe is isotropic");
+        p.shininess = PhongLobe<Rgb<double>>::shininessFromAlpha(m.alphaX);
+    }
+    return p;
+}
+
 MixMaterial readMix(const JsonReader& r) {
     MixMaterial m;
     m.weight = r.number("weight", 0.5, Range::unit());
@@ -257,7 +277,7 @@ void prepareEnergyTables(ConductorMaterial& c) {
 }
 
 void prepareEnergyTables(StandardMaterial& s) {
-    if (s.microfacet.multiscatter && s.specularLobe)
+    if (s.microfacet.multiscatter && s.specularLobe && !s.phong)
         s.microfacet.energyF1 = microfacetEnergyTable(s.microfacet);
     if (s.coupling != LayerCoupling::Albedo) return;
     // The interface alone (with its compensation, if any), from the same builder.
@@ -305,6 +325,8 @@ MaterialDesc parseMaterial(const JsonReader& r) {
         desc.model = readConductor(r);
     } else if (t == "dielectric") {
         desc.model = readDielectric(r);
+    } else if (t == "phong") {
+        desc.model = readPhong(r);
     } else if (t == "mix") {
         desc.model = readMix(r);
     } else {

@@ -56,6 +56,7 @@ std::vector<EnergyCase> cases() {
         out.push_back({"standard_glass_r" + rs,
                        R"({"type":"standard","base_color":1,"transmission":1,"roughness":)" + rs + "}", 1});
         out.push_back({"oren_nayar_r" + rs, R"({"type":"oren_nayar","reflectance":1,"roughness":)" + rs + "}", 1.015});
+        out.push_back({"phong_r" + rs, R"({"type":"phong","reflectance":1,"roughness":)" + rs + "}", 1});
         out.push_back({"frostbite_r" + rs, R"({"type":"frostbite","reflectance":1,"roughness":)" + rs + "}", 1});
         out.push_back({"burley_r" + rs, R"({"type":"burley","reflectance":1,"roughness":)" + rs + "}", 1.5});
     }

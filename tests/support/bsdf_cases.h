@@ -173,6 +173,11 @@ inline std::vector<BsdfCase> bsdfCases() {
     cases.push_back({"standard_albedo_multiscatter_metal_r0p8",
                      material(R"({"type":"standard","base_color":[0.9,0.6,0.3],"metalness":1,)"
                               R"("roughness":0.8,"coupling":"albedo","multiscatter":true})")});
+    cases.push_back({"phong_r0p3", material(R"({"type":"phong","reflectance":0.9,"roughness":0.3})")});
+    cases.push_back({"phong_r0p8", material(R"({"type":"phong","reflectance":0.9,"roughness":0.8})")});
+    cases.push_back({"standard_phong_r0p5",
+                     material(R"({"type":"standard","base_color":[0.8,0.5,0.2],"roughness":0.5,)"
+                              R"("specular_model":"phong"})")});
     return cases;
 }
 

@@ -75,6 +75,32 @@ TEST(StandardMaterial, DefaultSwitchesReproduceTheArticle) {
     EXPECT_EQ(checked, 5 * 5 * 4 * 3);
 }
 
+TEST(StandardMaterial, PhongSpecularReproducesTheArticle) {
+    // The article's Phong specular (F0 (s + 1) / (2 pi) max(0, R.V)^s N.L, s = 2 / alpha^2 - 2)
+    // with Lambert diffuse weighted by 1 - F(L.H), Schlick with the shadowed F90.
+    const double roughness = 0.6, alpha = roughness * roughness;
+    const double s = 2.0 / std::clamp(alpha * alpha, 2e-4, 0.9999) - 2.0;
+    const Spec base(0.7, 0.4, 0.2);
+    const auto bsdf = build(R"({"type":"standard","base_color":[0.7,0.4,0.2],"roughness":0.6,)"
+                            R"("specular_model":"phong"})");
+    for (double thetaO : {0.0, 30.0, 70.0})
+        for (double thetaI : {5.0, 35.0, 80.0}) {
+            const double to = thetaO * kPi<double> / 180, ti = thetaI * kPi<double> / 180;
+            const V3 v(std::sin(to), 0, std::cos(to)), l(-std::sin(ti) * 0.8, std::sin(ti) * 0.6, std::cos(ti));
+            const V3 h = glm::normalize(v + l);
+            const V3 r(-l.x, -l.y, l.z);  // L reflected about N
+            const double f90 = std::min(1.0, 0.04 / 0.04);
+            const double F = 0.04 + (f90 - 0.04) * std::pow(1 - glm::dot(l, h), 5.0);
+            const double phong = 0.04 * (s + 1) / (2 * kPi<double>) *
+                                 std::pow(std::max(0.0, glm::dot(r, v)), s) * l.z;
+            const Spec got = bsdf->eval(v, l, TransportMode::Radiance);
+            for (int c = 0; c < 3; ++c) {
+                const double ref = (1 - F) * base[c] / kPi<double> * l.z + phong;
+                EXPECT_NEAR(got[c], ref, 1e-4 * ref) << thetaO << " " << thetaI;
+            }
+        }
+}
+
 TEST(StandardMaterial, FrostbiteDiffuseSumsWithSpecularByDefault) {
     const auto summed = build(R"({"type":"standard","diffuse_model":"frostbite"})");
     const auto explicitSum =

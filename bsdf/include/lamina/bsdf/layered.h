@@ -1,4 +1,5 @@
-// The layered stack (article section 5, generalised): a specular microfacet interface over a
+// The layered stack (article section 5, generalised): a specular interface (microfacet or the
+// article's Phong lobe) over a
 // base of diffuse reflection and/or rough dielectric transmission, split by `transmission`
 // (the article's diffuse probability):
 //
@@ -32,6 +33,7 @@
 #include "lamina/bsdf/diffuse.h"
 #include "lamina/bsdf/microfacet_reflection.h"
 #include "lamina/bsdf/multiscatter.h"
+#include "lamina/bsdf/specular_lobe.h"
 
 namespace lamina {
 
@@ -45,7 +47,7 @@ class LayeredBxdf final : public Bxdf<S> {
     using typename Bxdf<S>::V2;
 
     struct Layers {
-        std::optional<MicrofacetReflectionLobe<S>> interface;  ///< none: no specular layer
+        std::optional<SpecularLobe<S>> interface;  ///< none: no specular layer
         std::optional<DiffuseBxdf<S>> diffuse;
         std::optional<DielectricBxdf<S>> transmission;  ///< geometry of the transmitted lobe
         Float transmissionWeight = 0;                   ///< t in [0, 1]
@@ -180,7 +182,7 @@ class LayeredBxdf final : public Bxdf<S> {
     }
 
     bool interfaceSmooth() const {
-        return l_.interface && l_.interface->distribution().effectivelySmooth();
+        return l_.interface && l_.interface->isSmooth();
     }
 
     S evalReflection(const V3& wo, const V3& wi, TransportMode mode) const {

@@ -50,6 +50,7 @@ struct StandardMaterial {
     double ior = 1.5;
     std::optional<DiffuseModel> diffuse = DiffuseModel::Lambert;  ///< nullopt: none
     bool specularLobe = true;
+    bool phong = false;  ///< the article's Phong lobe instead of a microfacet one
     MicrofacetParams microfacet;
     FresnelChoice fresnel = FresnelChoice::SchlickShadowed;
     LayerCoupling coupling = LayerCoupling::Fresnel;
@@ -92,6 +93,12 @@ struct DielectricMaterial {
     MicrofacetParams microfacet;
 };
 
+/// `phong`: the article's Phong lobe alone.
+struct PhongMaterial {
+    RgbInput reflectance{0.5};
+    double shininess = 0;
+};
+
 struct MaterialDesc;
 
 /// `mix`: (1 - weight) a + weight b.
@@ -103,7 +110,7 @@ struct MixMaterial {
 struct MaterialDesc {
     std::string type;  ///< the JSON "type", for messages and `lamina info`
     std::variant<StandardMaterial, DiffuseMaterial, ConductorMaterial, DielectricMaterial,
-                 MixMaterial>
+                 PhongMaterial, MixMaterial>
         model;
 };
 

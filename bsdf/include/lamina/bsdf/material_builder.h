@@ -56,6 +56,13 @@ class MaterialBuilder {
                                                    d.microfacet.g2);
     }
 
+    std::unique_ptr<Bxdf<S>> buildModel(const PhongMaterial& p) const {
+        typename LayeredBxdf<S>::Layers layers;
+        const S rho = ctx_.reflectance(p.reflectance);
+        layers.interface.emplace(PhongLobe<S>(rho, Float(p.shininess), Fresnel<S>::schlick(rho)));
+        return std::make_unique<LayeredBxdf<S>>(std::move(layers));
+    }
+
     std::unique_ptr<Bxdf<S>> buildModel(const MixMaterial& m) const {
         return std::make_unique<MixBxdf<S>>(build(*m.a), build(*m.b), Float(m.weight));
     }
@@ -169,8 +176,15 @@ class MaterialBuilder {
                     fresnel = Fresnel<S>::schlickShadowed(f0, shadowedF90(f0rgb));
                     break;
             }
-            layers.interface.emplace(dist, fresnel, s.microfacet.sampling, s.microfacet.g2);
-            if (s.microfacet.multiscatter && s.microfacet.energyF1)
+            if (s.phong) {
+                // The article's Phong specular: reflectance F0, exponent from alpha.
+                const Float alpha = Float(0.5 * (s.microfacet.alphaX + s.microfacet.alphaY));
+                layers.interface.emplace(
+                    PhongLobe<S>(f0, PhongLobe<S>::shininessFromAlpha(alpha), fresnel));
+            } else {
+                layers.interface.emplace(dist, fresnel, s.microfacet.sampling, s.microfacet.g2);
+            }
+            if (s.microfacet.multiscatter && s.microfacet.energyF1 && !s.phong)
                 layers.interfaceMultiscatter.emplace(s.microfacet.energyF1, fresnel);
         }
         layers.interfaceAlbedo = s.interfaceAlbedo;
