@@ -11,7 +11,7 @@ namespace {
 
 constexpr const char* kTypeNames[] = {"standard",  "lambert",    "oren_nayar", "burley",
                                       "frostbite", "conductor",  "dielectric", "phong",
-                                      "mix",       nullptr};
+                                      "layered",   "mix",        nullptr};
 
 RgbInput toRgb(const std::array<double, 3>& a) {
     return RgbInput(a[0], a[1], a[2]);
@@ -132,6 +132,70 @@ StandardMaterial readStandard(const JsonReader& r) {
     return s;
 }
 
+// `layered`: the stack spelled out, an interface over a base with a coupling, built as the
+// equivalent `standard` material in the specular workflow (one implementation of the stack).
+StandardMaterial readLayered(const JsonReader& r) {
+    StandardMaterial s;
+    if (const auto i = r.optionalChild("interface")) {
+        i->expectObject();
+        const std::string model = i->string("model", "ggx");
+        if (model != "ggx" && model != "beckmann" && model != "phong")
+            i->failAt("model", "expected one of ggx, beckmann, phong, got \"" + model + "\"");
+        s.phong = model == "phong";
+        s.microfacet.ndf = model == "beckmann" ? NdfKind::Beckmann : NdfKind::Ggx;
+        readRoughness(*i, 0.5, s.microfacet);
+        readMicrofacetSwitches(*i, s.microfacet, true);
+        s.fresnel = readFresnel(*i, FresnelChoice::SchlickShadowed, false);
+        const auto ior = i->optionalNumber("ior", Range::positive());
+        const auto f0 = i->optionalTriple("f0", Range::unit());
+        if (ior) s.ior = *ior;
+        const double f0FromIor = sqr((s.ior - 1.0) / (s.ior + 1.0));
+        s.specularColor = f0 ? toRgb(*f0) : RgbInput(f0FromIor);
+        if (s.fresnel == FresnelChoice::Exact && f0)
+            i->failAt("f0", "\"exact\" Fresnel takes the interface's ior, not f0");
+        if (i->has("f82") && i->has("f82_tint")) i->fail("give only one of f82 and f82_tint");
+        if (const auto c = i->optionalTriple("f82", Range::unit())) s.f82 = toRgb(*c);
+        if (const auto c = i->optionalTriple("f82_tint", Range::nonNegative()))
+            s.f82Tint = toRgb(*c);
+        if ((s.f82 || s.f82Tint) && s.fresnel != FresnelChoice::F82)
+            i->fail("f82 / f82_tint need \"fresnel\": \"f82\"");
+        s.microfacet.multiscatter = i->boolean("multiscatter", false);
+        if (s.phong && s.microfacet.multiscatter)
+            i->failAt("multiscatter", "compensates microfacet lobes only, not \"phong\"");
+        i->finish();
+    } else {
+        s.specularLobe = false;
+    }
+    if (const auto b = r.optionalChild("base")) {
+        b->expectObject();
+        s.diffuse = b->choice("type", DiffuseModel::Lambert,
+                              {{"lambert", DiffuseModel::Lambert},
+                               {"oren_nayar", DiffuseModel::OrenNayar},
+                               {"burley", DiffuseModel::Burley},
+                               {"frostbite", DiffuseModel::Frostbite}});
+        s.baseColor = toRgb(b->triple("reflectance", {0.5, 0.5, 0.5}, Range::unit()));
+        if (s.diffuse != DiffuseModel::Lambert) {
+            MicrofacetParams m;
+            readRoughness(*b, 0.5, m);
+            s.diffuseRoughness = m.perceptualRoughness();
+        }
+        b->finish();
+    } else {
+        s.diffuse.reset();
+    }
+    s.transmission = r.number("transmission", 0.0, Range::unit());
+    s.coupling = r.choice("coupling",
+                          s.diffuse == DiffuseModel::Frostbite ? LayerCoupling::Sum
+                                                               : LayerCoupling::Fresnel,
+                          {{"fresnel", LayerCoupling::Fresnel},
+                           {"sum", LayerCoupling::Sum},
+                           {"albedo", LayerCoupling::Albedo}});
+    if (!s.specularLobe && !s.diffuse && s.transmission == 0)
+        r.fail("a layered material needs an interface, a base or transmission");
+    prepareEnergyTables(s);
+    return s;
+}
+
 DiffuseMaterial readDiffuse(const JsonReader& r, DiffuseModel model) {
     DiffuseMaterial d;
     d.model = model;
@@ -172,6 +236,28 @@ std::shared_ptr<const IorSpectrum> loadIorAt(const JsonReader& r, const std::str
     }
 }
 
+// A spectrum given inline: [[nm, value], ...] with increasing wavelengths.
+bool isSpectrum(const JsonReader& r, const std::string& key) {
+    if (!r.has(key)) return false;
+    const Json& v = r.value()[key];
+    return v.is_array() && !v.empty() && v[0].is_array();
+}
+
+IorSpectrum::Curve readSpectrumCurve(const JsonReader& r, Range range) {
+    const Json& v = r.value();
+    if (v.size() < 2) r.fail("a spectrum needs at least two [nm, value] pairs");
+    std::vector<double> nm, values;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        if (!v[i].is_array() || v[i].size() != 2)
+            r.fail("expected [nm, value] pairs, got " + v[i].dump() + " at index " + std::to_string(i));
+        nm.push_back(r.checkNumber(v[i][0], r.indexPath(i) + "[0]", Range::positive()));
+        values.push_back(r.checkNumber(v[i][1], r.indexPath(i) + "[1]", range));
+        if (i > 0 && !(nm[i] > nm[i - 1]))
+            r.fail("wavelengths must increase (index " + std::to_string(i) + ")");
+    }
+    return tabulatedCurve(nm, values, r.source().name + ": " + r.path());
+}
+
 ConductorMaterial readConductor(const JsonReader& r) {
     ConductorMaterial c;
     const bool etaK = r.has("eta") || r.has("k");
@@ -192,6 +278,23 @@ ConductorMaterial readConductor(const JsonReader& r) {
         } else {
             c.optics.spectrum = loadIorAt(r, "nk_file");
         }
+        std::tie(c.optics.f0, c.optics.f82) = conductorF0F82(*c.optics.spectrum);
+    } else if (etaK && (isSpectrum(r, "eta") || isSpectrum(r, "k"))) {
+        // eta and k as spectra: lists of [nm, value] (a number is a constant spectrum).
+        if (!r.has("eta") || !r.has("k")) r.fail("give both eta and k");
+        auto curve = [&](const std::string& key, Range range) -> IorSpectrum::Curve {
+            if (!isSpectrum(r, key)) {
+                const double v = r.number(key, 0.0, range);
+                if (!r.value()[key].is_number())
+                    r.failAt(key, "with a spectrum for the other, expected a number or a spectrum");
+                return [v](double) { return v; };
+            }
+            return readSpectrumCurve(r.child(key), range);
+        };
+        const auto eta = curve("eta", Range::positive());
+        const auto k = curve("k", Range::nonNegative());
+        c.optics.form = ConductorOptics::Form::Spectral;
+        c.optics.spectrum = std::make_shared<const IorSpectrum>(r.path().empty() ? "eta/k" : r.path(), eta, k, true);
         std::tie(c.optics.f0, c.optics.f82) = conductorF0F82(*c.optics.spectrum);
     } else if (etaK) {
         c.optics.form = ConductorOptics::Form::EtaK;
@@ -325,6 +428,8 @@ MaterialDesc parseMaterial(const JsonReader& r) {
         desc.model = readConductor(r);
     } else if (t == "dielectric") {
         desc.model = readDielectric(r);
+    } else if (t == "layered") {
+        desc.model = readLayered(r);
     } else if (t == "phong") {
         desc.model = readPhong(r);
     } else if (t == "mix") {

@@ -101,6 +101,24 @@ TEST(StandardMaterial, PhongSpecularReproducesTheArticle) {
         }
 }
 
+TEST(LayeredMaterial, SpellsOutTheSameStackAsStandard) {
+    // An interface of F0 0.04 over a Lambert base of the same colour is the article's default
+    // standard material.
+    const auto layered = build(
+        R"({"type":"layered","interface":{"model":"ggx","roughness":0.5,"f0":0.04},)"
+        R"("base":{"type":"lambert","reflectance":[0.8,0.5,0.2]}})");
+    const auto standard = build(R"({"type":"standard","base_color":[0.8,0.5,0.2],"roughness":0.5})");
+    const V3 wo = glm::normalize(V3(0.4, 0.1, 0.8)), wi = glm::normalize(V3(-0.3, 0.2, 0.6));
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(layered->eval(wo, wi, TransportMode::Radiance)[c],
+                    standard->eval(wo, wi, TransportMode::Radiance)[c], 1e-12);
+    // A base with its own roughness and no interface is that diffuse model alone.
+    const auto base = build(R"({"type":"layered","base":{"type":"oren_nayar","reflectance":0.7,"roughness":0.9}})");
+    const auto on = build(R"({"type":"oren_nayar","reflectance":0.7,"roughness":0.9})");
+    EXPECT_NEAR(base->eval(wo, wi, TransportMode::Radiance)[0],
+                on->eval(wo, wi, TransportMode::Radiance)[0], 1e-12);
+}
+
 TEST(StandardMaterial, FrostbiteDiffuseSumsWithSpecularByDefault) {
     const auto summed = build(R"({"type":"standard","diffuse_model":"frostbite"})");
     const auto explicitSum =
@@ -168,6 +186,8 @@ TEST(MaterialErrors, NameTheJsonPathAndWhatWasExpected) {
                 "diffuse_model: expected one of lambert, oren_nayar");
     expectError(R"({"type":"conductor","eta":1.5})", "k: missing");
     expectError(R"({"type":"conductor","eta":1.5,"k":3,"f0":0.9})", "exactly one of");
+    expectError(R"({"type":"layered","interface":{"model":"cook"}})", "interface.model: expected one of");
+    expectError(R"({"type":"layered"})", "needs an interface, a base or transmission");
     expectError(R"({"type":"mix","a":{"type":"lambert"},"b":{"type":"lambert","reflectance":2}})",
                 "b.reflectance: expected a number in [0, 1], got 2");
     expectError(R"({"type":"standard", "roughness": 0.2,})", "malformed JSON at line 1");
@@ -204,6 +224,18 @@ TEST(ConductorMaterial, NamedMetalIsExactInSpectralModeAndF82InRgbMode) {
     for (int c = 0; c < 3; ++c)
         EXPECT_NEAR(r->weight[c], f0[c], 1e-12);
     (void)f82;
+}
+
+TEST(ConductorMaterial, InlineSpectraOfEtaAndK) {
+    const MaterialDesc m = parseMaterialArgument(
+        R"({"type":"conductor","eta":[[400,1.4],[700,0.2]],"k":[[400,1.9],[700,4.0]]})");
+    auto lambda = SampledWavelengths<double>::fixed({400, 550, 700, 700});
+    const SpectrumContext<SampledSpectrum<double>> spectral{lambda};
+    const auto s = buildBxdf(m, spectral)->sample({0, 0, 1}, 0.5, {0.5, 0.5}, TransportMode::Radiance);
+    ASSERT_TRUE(s);
+    EXPECT_NEAR(s->weight[0], fresnelConductor(1.0, 1.4, 1.9), 1e-12);
+    EXPECT_NEAR(s->weight[1], fresnelConductor(1.0, 0.8, 2.95), 1e-12);  // linear in between
+    expectError(R"({"type":"conductor","eta":[[400,1.4],[300,0.2]],"k":2})", "wavelengths must increase");
 }
 
 TEST(DielectricMaterial, DispersiveGlassKeepsOnlyTheHeroWavelength) {

@@ -51,6 +51,9 @@ struct StandardMaterial {
     std::optional<DiffuseModel> diffuse = DiffuseModel::Lambert;  ///< nullopt: none
     bool specularLobe = true;
     bool phong = false;  ///< the article's Phong lobe instead of a microfacet one
+    /// Perceptual roughness of the diffuse models (`layered` sets it; `standard` uses the
+    /// specular roughness, as the article does).
+    std::optional<double> diffuseRoughness;
     MicrofacetParams microfacet;
     FresnelChoice fresnel = FresnelChoice::SchlickShadowed;
     LayerCoupling coupling = LayerCoupling::Fresnel;

@@ -190,7 +190,8 @@ class MaterialBuilder {
         layers.interfaceAlbedo = s.interfaceAlbedo;
         if (s.diffuse && s.transmission < 1.0 && diffuseRgb.maxValue() > 0.0)
             layers.diffuse.emplace(ctx_.reflectance(diffuseRgb), *s.diffuse,
-                                   Float(s.microfacet.perceptualRoughness()));
+                                   Float(s.diffuseRoughness.value_or(
+                                       s.microfacet.perceptualRoughness())));
         if (s.transmission > 0.0) {
             layers.transmission.emplace(Float(s.ior), dist, s.microfacet.g2);
             layers.transmissionWeight = Float(s.transmission);
