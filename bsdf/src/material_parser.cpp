@@ -328,6 +328,56 @@ DielectricMaterial readDielectric(const JsonReader& r) {
     if (r.has("ior") && r.has("ior_file")) r.fail("give only one of ior and ior_file");
     if (r.has("ior_file")) {
         d.spectrum = loadIorAt(r, "ior_file");
+    } else if (r.has("ior") && r.value()["ior"].is_object()) {
+        // Dispersion formulas, wavelength in um:
+        //   {"cauchy": [A, B, C]}                n = A + B / l^2 + C / l^4 (C optional)
+        //   {"sellmeier": {"b": [...], "c": [...]}}  n^2 = 1 + sum b_i l^2 / (l^2 - c_i)
+        const JsonReader f = r.child("ior");
+        if (f.has("cauchy") == f.has("sellmeier"))
+            f.fail("expected exactly one of cauchy and sellmeier");
+        if (f.has("cauchy")) {
+            const Json& c = f.value()["cauchy"];
+            if (!c.is_array() || c.size() < 2 || c.size() > 3)
+                f.failAt("cauchy", "expected [A, B] or [A, B, C] (wavelength in um)");
+            std::array<double, 3> k{0, 0, 0};
+            for (std::size_t i = 0; i < c.size(); ++i)
+                k[i] = f.checkNumber(c[i], f.childPath("cauchy") + "[" + std::to_string(i) + "]",
+                                     i == 0 ? Range::positive() : Range::any());
+            (void)f.child("cauchy");
+            d.spectrum = std::make_shared<const IorSpectrum>(
+                "Cauchy",
+                [k](double nm) {
+                    const double l2 = sqr(nm * 1e-3);
+                    return k[0] + k[1] / l2 + k[2] / (l2 * l2);
+                },
+                [](double) { return 0.0; }, k[1] != 0 || k[2] != 0);
+        } else {
+            const JsonReader sm = f.child("sellmeier");
+            const Json& b = sm.value()["b"];
+            const Json& c = sm.value()["c"];
+            if (!sm.has("b") || !sm.has("c") || !b.is_array() || !c.is_array() ||
+                b.size() != c.size() || b.empty())
+                sm.fail("expected {\"b\": [...], \"c\": [...]} of equal, non-zero length (c in um^2)");
+            std::vector<double> bs, cs;
+            for (std::size_t i = 0; i < b.size(); ++i) {
+                bs.push_back(sm.checkNumber(b[i], sm.childPath("b") + "[" + std::to_string(i) + "]", Range::any()));
+                cs.push_back(sm.checkNumber(c[i], sm.childPath("c") + "[" + std::to_string(i) + "]", Range::nonNegative()));
+            }
+            (void)sm.child("b");
+            (void)sm.child("c");
+            sm.finish();
+            d.spectrum = std::make_shared<const IorSpectrum>(
+                "Sellmeier",
+                [bs, cs](double nm) {
+                    const double l2 = sqr(nm * 1e-3);
+                    double n2 = 1;
+                    for (std::size_t i = 0; i < bs.size(); ++i)
+                        n2 += bs[i] * l2 / (l2 - cs[i]);
+                    return std::sqrt(std::max(n2, 0.0));
+                },
+                [](double) { return 0.0; }, true);
+        }
+        f.finish();
     } else if (r.has("ior") && r.value()["ior"].is_string()) {
         const std::string name = r.requiredString("ior");
         const auto ior = namedIor(name);

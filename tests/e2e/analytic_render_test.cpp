@@ -111,6 +111,30 @@ TEST(ModesAgree, GreyMaterialsUnderWhiteLightRenderTheSameInRgbAndSpectral) {
     }
 }
 
+TEST(ModesAgree, SpectralEmittersUnderGreyMaterials) {
+    // A black body and a CIE illuminant as emitters: RGB mode uses their colour (the CMF
+    // reduction), spectral mode the spectra; with grey materials both must agree.
+    const char* scene = R"({
+      "camera": {"position": [0, 0, -4], "look_at": [0, 0, 0], "fov": 40},
+      "film": {"resolution": [24, 24]},
+      "materials": {"grey": {"type": "lambert", "reflectance": 0.5}},
+      "shapes": [
+        {"type": "sphere", "radius": 1, "material": "grey"},
+        {"type": "sphere", "center": [2, 2, -1], "radius": 0.5, "material": "grey",
+         "emission": {"radiance": {"illuminant": "A", "scale": 4}}}
+      ],
+      "lights": [{"type": "environment", "radiance": {"blackbody": 6000, "scale": 0.5}}]
+    })";
+    const auto rgb = renderText(scene, render::RenderModeKind::Rgb, 128);
+    const auto spectral = renderText(scene, render::RenderModeKind::Spectral, 128);
+    for (int c = 0; c < 3; ++c) {
+        const auto a = imageMean(*rgb.film, c), b = imageMean(*spectral.film, c);
+        const double se = std::hypot(a.standardError, b.standardError);
+        EXPECT_LT(std::abs(a.mean - b.mean), kZ * se)
+            << "channel " << c << ": rgb " << a.mean << " spectral " << b.mean << " se " << se;
+    }
+}
+
 TEST(Determinism, SameImageWithOneAndTwoThreads) {
     auto scene = render::loadScene(testing::sharedCornellBox());
     render::RenderOptions o;

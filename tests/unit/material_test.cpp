@@ -251,6 +251,23 @@ TEST(DielectricMaterial, DispersiveGlassKeepsOnlyTheHeroWavelength) {
     EXPECT_FALSE(lambda2.secondaryTerminated());
 }
 
+TEST(DielectricMaterial, CauchyAndSellmeierFormulas) {
+    // BK7 by its Sellmeier coefficients (SCHOTT) equals the named preset; Cauchy follows its
+    // formula; both are dispersive.
+    const auto sell = parseMaterialArgument(
+        R"({"type":"dielectric","ior":{"sellmeier":{"b":[1.03961212,0.231792344,1.01046945],)"
+        R"("c":[0.00600069867,0.0200179144,103.560653]}}})");
+    const auto& d = std::get<DielectricMaterial>(sell.model);
+    EXPECT_NEAR(d.ior, 1.5168, 1e-4);
+    EXPECT_NEAR(d.spectrum->n(450), namedIor("bk7")->n(450), 1e-12);
+    const auto cauchy = parseMaterialArgument(R"({"type":"dielectric","ior":{"cauchy":[1.5046,0.0042]}})");
+    const auto& c = std::get<DielectricMaterial>(cauchy.model);
+    EXPECT_NEAR(c.spectrum->n(500), 1.5046 + 0.0042 / 0.25, 1e-12);
+    EXPECT_TRUE(c.spectrum->dispersive());
+    expectError(R"({"type":"dielectric","ior":{"cauchy":[1.5]}})", "ior.cauchy: expected [A, B]");
+    expectError(R"({"type":"dielectric","ior":{"sellmeier":{"b":[1],"c":[]}}})", "equal, non-zero length");
+}
+
 TEST(MaterialErrors, UnknownMetalsGlassesAndFilesAreNamed) {
     expectError(R"({"type":"conductor","material":"Unobtainium"})",
                 "unknown metal \"Unobtainium\"; expected one of Ag, Au");

@@ -5,6 +5,7 @@
 #include "lamina/core/pcg32.h"
 #include "lamina/spectral/cie.h"
 #include "lamina/spectral/color_space.h"
+#include "lamina/spectral/emission_spectrum.h"
 #include "lamina/spectral/rgb_to_spectrum.h"
 #include "lamina/spectral/rgb_to_spectrum_fit.h"
 #include "lamina/spectral/sampled_wavelengths.h"
@@ -65,6 +66,18 @@ TEST(RgbToSpectrum, WhiteLightStaysWhite) {
     EXPECT_NEAR(w[0], 17, 34e-3);
     EXPECT_NEAR(w[1], 12, 34e-3);
     EXPECT_NEAR(w[2], 4, 34e-3);
+}
+
+TEST(EmissionSpectrum, NamedSpectraAreNormalisedToTheirLuminance) {
+    const Rgb<double> d65 = EmissionSpectrum::illuminant("D65", 1.0).rgb();
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(d65[c], 1.0, 1e-6);  // D65 is the white of Rec.709
+    const Rgb<double> warm = EmissionSpectrum::blackbody(2700, 3.0).rgb();
+    EXPECT_NEAR(luminance(warm), 3.0, 3e-3);  // scale is the luminance (for in-gamut colours)
+    EXPECT_GT(warm[0], warm[2]);
+    const Rgb<double> a = EmissionSpectrum::illuminant("A", 1.0).rgb();
+    EXPECT_GT(a[0], a[1]);
+    EXPECT_GT(a[1], a[2]);
 }
 
 TEST(RgbToSpectrum, OptimiserConvergesFromAColdStart) {

@@ -11,9 +11,6 @@ namespace {
 
 using Vec3d = Vec3<double>;
 
-Rgbf toRgbf(const Rgb<double>& c) {
-    return Rgbf(float(c[0]), float(c[1]), float(c[2]));
-}
 
 // Converts an area density at a light point to solid angle at `ref`.
 float areaToSolidAngle(float pdfArea, const Vec3f& ref, const Vec3f& p, const Vec3f& n) {
@@ -28,7 +25,7 @@ float areaToSolidAngle(float pdfArea, const Vec3f& ref, const Vec3f& p, const Ve
 class TriangleLight final : public Light {
   public:
     TriangleLight(const MeshDesc& mesh, std::size_t triangle)
-        : emission_(*mesh.emission), radiance_(toRgbf(mesh.emission->radiance)) {
+        : emission_(*mesh.emission), color_(mesh.emission->radiance, mesh.emission->spectrum) {
         const auto& t = mesh.triangles[triangle];
         p0_ = mesh.positions[t[0]];
         p1_ = mesh.positions[t[1]];
@@ -50,25 +47,26 @@ class TriangleLight final : public Light {
         if (!emission_.twoSided && !(cosLight > 0.0f)) return std::nullopt;
         const float pdf = areaToSolidAngle(float(1.0 / area_), ref, p, n_);
         if (!(pdf > 0.0f) || !std::isfinite(pdf)) return std::nullopt;
-        return LightSample{wi, dist, radiance_, pdf, false, p, cosLight > 0 ? n_ : -n_};
+        return LightSample{wi, dist, {&color_, 1.0f}, pdf, false, p, cosLight > 0 ? n_ : -n_};
     }
 
     float pdf(const Vec3f& ref, const SurfaceHit& hit) const override {
         return areaToSolidAngle(float(1.0 / area_), ref, hit.p, hit.ng);
     }
 
-    Rgbf radiance(const SurfaceHit& hit, const Vec3f& w) const override {
-        return emission_.twoSided || glm::dot(hit.ng, w) > 0.0f ? radiance_ : Rgbf(0.0f);
+    Emission radiance(const SurfaceHit& hit, const Vec3f& w) const override {
+        if (emission_.twoSided || glm::dot(hit.ng, w) > 0.0f) return {&color_, 1.0f};
+        return {};
     }
 
     double power() const override {
         return (emission_.twoSided ? 2.0 : 1.0) * kPi<double> * area_ *
-               luminance(emission_.radiance);
+               luminance(color_.rgbDouble());
     }
 
   private:
     EmissionDesc emission_;
-    Rgbf radiance_;
+    EmitterColor color_;
     Vec3f p0_, p1_, p2_, n_;
     double area_ = 0;
 };
@@ -78,7 +76,7 @@ class TriangleLight final : public Light {
 class SphereLight final : public Light {
   public:
     explicit SphereLight(const SphereDesc& s)
-        : sphere_(s), radiance_(toRgbf(s.emission->radiance)) {}
+        : sphere_(s), color_(s.emission->radiance, s.emission->spectrum) {}
 
     std::optional<LightSample> sample(const Vec3f& refF, const Vec2f& u) const override {
         const Vec3d ref(refF), c = sphere_.center;
@@ -122,7 +120,7 @@ class SphereLight final : public Light {
         const Vec3f wi = Vec3f(d / dist);
         const bool front = glm::dot(Vec3f(n), -wi) > 0.0f;
         if (!front && !sphere_.emission->twoSided) return std::nullopt;
-        return LightSample{wi, float(dist), radiance_, float(pdf), false, Vec3f(p),
+        return LightSample{wi, float(dist), {&color_, 1.0f}, float(pdf), false, Vec3f(p),
                            front ? Vec3f(n) : -Vec3f(n)};
     }
 
@@ -138,13 +136,14 @@ class SphereLight final : public Light {
         return areaToSolidAngle(float(1.0 / (4.0 * kPi<double> * r * r)), refF, hit.p, hit.ng);
     }
 
-    Rgbf radiance(const SurfaceHit& hit, const Vec3f& w) const override {
-        return sphere_.emission->twoSided || glm::dot(hit.ng, w) > 0.0f ? radiance_ : Rgbf(0.0f);
+    Emission radiance(const SurfaceHit& hit, const Vec3f& w) const override {
+        if (sphere_.emission->twoSided || glm::dot(hit.ng, w) > 0.0f) return {&color_, 1.0f};
+        return {};
     }
 
     double power() const override {
         return (sphere_.emission->twoSided ? 2.0 : 1.0) * kPi<double> * 4.0 * kPi<double> *
-               sphere_.radius * sphere_.radius * luminance(sphere_.emission->radiance);
+               sphere_.radius * sphere_.radius * luminance(color_.rgbDouble());
     }
 
   private:
@@ -155,54 +154,52 @@ class SphereLight final : public Light {
     }
 
     SphereDesc sphere_;
-    Rgbf radiance_;
+    EmitterColor color_;
 };
 
 class PointLight final : public Light {
   public:
     explicit PointLight(const LightDesc& d)
-        : position_(Vec3f(d.position)), intensity_(toRgbf(d.intensity)), desc_(d) {}
+        : position_(Vec3f(d.position)), color_(d.intensity, d.spectrum) {}
 
     std::optional<LightSample> sample(const Vec3f& ref, const Vec2f&) const override {
         const Vec3f d = position_ - ref;
         const float dist2 = glm::dot(d, d);
         if (!(dist2 > 0.0f)) return std::nullopt;
         const float dist = std::sqrt(dist2);
-        return LightSample{d / dist, dist, intensity_ / dist2, 1.0f, true, position_, -d / dist};
+        return LightSample{d / dist, dist, {&color_, 1.0f / dist2}, 1.0f, true, position_, -d / dist};
     }
     float pdf(const Vec3f&, const SurfaceHit&) const override { return 0.0f; }
-    Rgbf radiance(const SurfaceHit&, const Vec3f&) const override { return Rgbf(0.0f); }
-    double power() const override { return 4.0 * kPi<double> * luminance(desc_.intensity); }
+    Emission radiance(const SurfaceHit&, const Vec3f&) const override { return {}; }
+    double power() const override { return 4.0 * kPi<double> * luminance(color_.rgbDouble()); }
     bool isDelta() const override { return true; }
 
   private:
     Vec3f position_;
-    Rgbf intensity_;
-    LightDesc desc_;
+    EmitterColor color_;
 };
 
 class DirectionalLight final : public Light {
   public:
     DirectionalLight(const LightDesc& d, const Geometry& g)
-        : direction_(Vec3f(d.direction)), irradiance_(toRgbf(d.intensity)), desc_(d),
+        : direction_(Vec3f(d.direction)), color_(d.intensity, d.spectrum),
           radius_(g.boundsRadius()) {}
 
     std::optional<LightSample> sample(const Vec3f&, const Vec2f&) const override {
-        return LightSample{-direction_, std::numeric_limits<float>::infinity(), irradiance_, 1.0f,
-                           true, Vec3f(0.0f), direction_};
+        return LightSample{-direction_, std::numeric_limits<float>::infinity(), {&color_, 1.0f},
+                           1.0f, true, Vec3f(0.0f), direction_};
     }
     float pdf(const Vec3f&, const SurfaceHit&) const override { return 0.0f; }
-    Rgbf radiance(const SurfaceHit&, const Vec3f&) const override { return Rgbf(0.0f); }
+    Emission radiance(const SurfaceHit&, const Vec3f&) const override { return {}; }
     double power() const override {
-        return kPi<double> * sqr(double(radius_)) * luminance(desc_.intensity);
+        return kPi<double> * sqr(double(radius_)) * luminance(color_.rgbDouble());
     }
     bool isDelta() const override { return true; }
     bool isInfinite() const override { return true; }
 
   private:
     Vec3f direction_;
-    Rgbf irradiance_;
-    LightDesc desc_;
+    EmitterColor color_;
     float radius_;
 };
 
@@ -210,27 +207,26 @@ class DirectionalLight final : public Light {
 class ConstantEnvironment final : public Light {
   public:
     ConstantEnvironment(const LightDesc& d, const Geometry& g)
-        : radiance_(toRgbf(d.intensity)), desc_(d), radius_(g.boundsRadius()) {}
+        : color_(d.intensity, d.spectrum), radius_(g.boundsRadius()) {}
 
     std::optional<LightSample> sample(const Vec3f&, const Vec2f& u) const override {
         const Vec3f wi = squareToUniformSphere(u);
-        return LightSample{wi, std::numeric_limits<float>::infinity(), radiance_,
+        return LightSample{wi, std::numeric_limits<float>::infinity(), {&color_, 1.0f},
                            uniformSpherePdf<float>(), false, Vec3f(0.0f), -wi};
     }
     float pdf(const Vec3f&, const SurfaceHit&) const override { return 0.0f; }
-    Rgbf radiance(const SurfaceHit&, const Vec3f&) const override { return Rgbf(0.0f); }
+    Emission radiance(const SurfaceHit&, const Vec3f&) const override { return {}; }
     double power() const override {
         // The flux through the scene's bounding disk from all directions (pbrt-v4's measure).
         return 4.0 * kPi<double> * kPi<double> * sqr(double(radius_)) *
-               luminance(desc_.intensity);
+               luminance(color_.rgbDouble());
     }
     bool isInfinite() const override { return true; }
-    Rgbf environment(const Vec3f&) const override { return radiance_; }
+    Emission environment(const Vec3f&) const override { return {&color_, 1.0f}; }
     float environmentPdf(const Vec3f&) const override { return uniformSpherePdf<float>(); }
 
   private:
-    Rgbf radiance_;
-    LightDesc desc_;
+    EmitterColor color_;
     float radius_;
 };
 
@@ -243,19 +239,19 @@ LightSet::LightSet(const SceneDesc& scene, Geometry& geometry, bool uniformSelec
         const ShapeInfo& info = shapes[s];
         if (info.kind == ShapeInfo::Kind::Mesh) {
             const MeshDesc& m = scene.meshes[std::size_t(info.index)];
-            if (!m.emission || m.emission->radiance.maxValue() <= 0.0) continue;
+            if (!m.emission || (m.emission->radiance.maxValue() <= 0.0 && !m.emission->spectrum)) continue;
             geometry.setFirstLight(int(s), int(lights_.size()));
             for (std::size_t t = 0; t < m.triangles.size(); ++t)
                 lights_.push_back(std::make_unique<TriangleLight>(m, t));
         } else {
             const SphereDesc& sp = scene.spheres[std::size_t(info.index)];
-            if (!sp.emission || sp.emission->radiance.maxValue() <= 0.0) continue;
+            if (!sp.emission || (sp.emission->radiance.maxValue() <= 0.0 && !sp.emission->spectrum)) continue;
             geometry.setFirstLight(int(s), int(lights_.size()));
             lights_.push_back(std::make_unique<SphereLight>(sp));
         }
     }
     for (const LightDesc& d : scene.lights) {
-        if (d.intensity.maxValue() <= 0.0) continue;
+        if (d.intensity.maxValue() <= 0.0 && !d.spectrum) continue;
         switch (d.kind) {
             case LightKind::Point:
                 lights_.push_back(std::make_unique<PointLight>(d));

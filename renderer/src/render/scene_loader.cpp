@@ -198,14 +198,61 @@ class SceneParser {
         return int(scene_.materials.size() - 1);
     }
 
+    // A radiance or intensity: a number or [r, g, b] (linear Rec.709), or a spectrum:
+    // {"illuminant": "D65", "scale": Y}, {"blackbody": kelvin, "scale": Y} (both normalised
+    // to luminance 1 before scaling), or {"spectrum": [[nm, value], ...], "scale": s}.
+    std::pair<Rgb<double>, std::shared_ptr<const EmissionSpectrum>> readEmissionValue(
+        const JsonReader& parent, const std::string& key) {
+        if (!parent.has(key))
+            parent.failAt(key, "missing; expected a number >= 0, [r, g, b] or a spectrum object");
+        const JsonReader v = parent.child(key);
+        if (!v.value().is_object()) {
+            const auto rgb = *parent.optionalTriple(key, Range::nonNegative());
+            return {Rgb<double>(rgb[0], rgb[1], rgb[2]), nullptr};
+        }
+        const double scale = v.number("scale", 1.0, Range::nonNegative());
+        std::shared_ptr<const EmissionSpectrum> spectrum;
+        const int forms = int(v.has("illuminant")) + int(v.has("blackbody")) + int(v.has("spectrum"));
+        if (forms != 1) v.fail("expected exactly one of illuminant, blackbody, spectrum");
+        try {
+            if (v.has("illuminant")) {
+                spectrum = std::make_shared<const EmissionSpectrum>(
+                    EmissionSpectrum::illuminant(v.requiredString("illuminant"), scale));
+            } else if (v.has("blackbody")) {
+                spectrum = std::make_shared<const EmissionSpectrum>(EmissionSpectrum::blackbody(
+                    v.requiredNumber("blackbody", {100.0, 1e6}), scale));
+            }
+        } catch (const InputError& e) {
+            v.fail(e.what());
+        }
+        if (v.has("spectrum")) {
+            const JsonReader list = v.child("spectrum");
+            if (!list.value().is_array() || list.value().size() < 2)
+                list.fail("expected at least two [nm, value] pairs");
+            std::vector<double> nm, values;
+            for (std::size_t i = 0; i < list.value().size(); ++i) {
+                const auto& pair = list.value()[i];
+                if (!pair.is_array() || pair.size() != 2)
+                    list.fail("expected [nm, value] pairs, got " + pair.dump());
+                nm.push_back(list.checkNumber(pair[0], list.indexPath(i) + "[0]", Range::positive()));
+                values.push_back(
+                    list.checkNumber(pair[1], list.indexPath(i) + "[1]", Range::nonNegative()));
+                if (i > 0 && !(nm[i] > nm[i - 1]))
+                    list.fail("wavelengths must increase (index " + std::to_string(i) + ")");
+            }
+            spectrum = std::make_shared<const EmissionSpectrum>(EmissionSpectrum::tabulated(
+                nm, values, scale, source_.name + ": " + list.path()));
+        }
+        v.finish();
+        return {spectrum->rgb(), spectrum};
+    }
+
     std::optional<EmissionDesc> emissionOf(const JsonReader& shape) {
         const auto e = shape.optionalChild("emission");
         if (!e) return std::nullopt;
         e->expectObject();
         EmissionDesc d;
-        const auto rgb = e->optionalTriple("radiance", Range::nonNegative());
-        if (!rgb) e->failAt("radiance", "missing; expected a number >= 0 or [r, g, b]");
-        d.radiance = Rgb<double>((*rgb)[0], (*rgb)[1], (*rgb)[2]);
+        std::tie(d.radiance, d.spectrum) = readEmissionValue(*e, "radiance");
         d.twoSided = e->boolean("two_sided", false);
         e->finish();
         return d;
@@ -377,9 +424,7 @@ class SceneParser {
         const char* key = l.kind == LightKind::Point         ? "intensity"
                           : l.kind == LightKind::Directional ? "irradiance"
                                                              : "radiance";
-        const auto v = r.optionalTriple(key, Range::nonNegative());
-        if (!v) r.failAt(key, "missing; expected a number >= 0 or [r, g, b]");
-        l.intensity = Rgb<double>((*v)[0], (*v)[1], (*v)[2]);
+        std::tie(l.intensity, l.spectrum) = readEmissionValue(r, key);
         if (l.kind == LightKind::Point) l.position = toVec(r.requiredArray<3>("position"));
         if (l.kind == LightKind::Directional) {
             l.direction = toVec(r.requiredArray<3>("direction"));

@@ -1,13 +1,14 @@
 // Lights: area lights on triangles and spheres, point, directional and constant environment
 // lights, and the light selection distribution. Every sampling routine has its density for
-// MIS. Radiance is returned as linear Rec.709 RGB; the integrator converts it to the render
-// mode's spectrum (an illuminant in spectral mode).
+// MIS. Radiance is returned as an Emission (the emitter's colour in both modes times a
+// scale); the render mode turns it into its spectrum.
 #pragma once
 
 #include <memory>
 #include <optional>
 #include <vector>
 
+#include "lamina/render/emitter_color.h"
 #include "lamina/render/geometry.h"
 
 namespace lamina::render {
@@ -17,7 +18,7 @@ using Rgbf = Rgb<float>;
 struct LightSample {
     Vec3f wi;          ///< unit, from the reference point towards the light
     float distance;    ///< to the sampled point; infinity for infinite lights
-    Rgbf radiance;     ///< arriving along -wi (intensity / d^2 for a point light)
+    Emission radiance;  ///< arriving along -wi (intensity / d^2 for a point light)
     float pdf;         ///< solid angle density at the reference point; 1 for delta lights
     bool delta;
     Vec3f point;   ///< the sampled point (finite lights), for the shadow ray's far end
@@ -32,13 +33,13 @@ class Light {
     /// Solid-angle density of sample() producing the point `onLight` (hit from `ref`).
     virtual float pdf(const Vec3f& ref, const SurfaceHit& onLight) const = 0;
     /// Emitted radiance leaving `hit` towards direction `w` (unit, away from the surface).
-    virtual Rgbf radiance(const SurfaceHit& hit, const Vec3f& w) const = 0;
+    virtual Emission radiance(const SurfaceHit& hit, const Vec3f& w) const = 0;
     /// Total emitted power (for light selection), in RGB luminance.
     virtual double power() const = 0;
     virtual bool isDelta() const { return false; }
     virtual bool isInfinite() const { return false; }
     /// Infinite lights: radiance arriving along -w (w points away from the scene) and density.
-    virtual Rgbf environment(const Vec3f&) const { return Rgbf(0.0f); }
+    virtual Emission environment(const Vec3f&) const { return {}; }
     virtual float environmentPdf(const Vec3f&) const { return 0.0f; }
 };
 

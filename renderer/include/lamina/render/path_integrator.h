@@ -52,8 +52,8 @@ class PathIntegrator {
             if (!hit) {
                 for (std::size_t i : c_.lights.infiniteLights()) {
                     const Light& light = c_.lights.light(i);
-                    const Rgbf Le = light.environment(-d);
-                    if (Le.maxValue() <= 0.0f) continue;
+                    const Emission Le = light.environment(-d);
+                    if (Le.isZero()) continue;
                     const float w = specularBounce ? 1.0f
                                                    : powerHeuristic(prevPdf,
                                                                     c_.lights.probability(i) *
@@ -64,8 +64,8 @@ class PathIntegrator {
             }
             if (const int li = c_.lights.lightAt(*hit); li >= 0) {
                 const Light& light = c_.lights.light(std::size_t(li));
-                const Rgbf Le = light.radiance(*hit, -d);
-                if (Le.maxValue() > 0.0f) {
+                const Emission Le = light.radiance(*hit, -d);
+                if (!Le.isZero()) {
                     const float w =
                         specularBounce
                             ? 1.0f
@@ -131,7 +131,7 @@ class PathIntegrator {
         const auto [index, pmf] = c_.lights.choose(uLight);
         const Light& light = c_.lights.light(index);
         const auto ls = light.sample(hit.p, uPoint);
-        if (!ls || !(ls->pdf > 0.0f) || ls->radiance.maxValue() <= 0.0f) return S(0.0f);
+        if (!ls || !(ls->pdf > 0.0f) || ls->radiance.isZero()) return S(0.0f);
         const Vec3f wi = frame.toLocal(ls->wi);
         const S f = bsdf.eval(wo, wi, TransportMode::Radiance);
         if (f.maxValue() <= 0.0f) return S(0.0f);

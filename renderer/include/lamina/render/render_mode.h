@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "lamina/bsdf/material_builder.h"
+#include "lamina/render/emitter_color.h"
 #include "lamina/render/film.h"
 #include "lamina/render/sampler.h"
 #include "lamina/spectral/cie.h"
@@ -34,7 +35,7 @@ class RenderMode<Rgb<float>> {
     static constexpr const char* kName = "rgb";
 
     Path startPath(PixelSampler&) const { return {}; }
-    Spectrum emission(const Rgb<float>& rgb, const Path&) const { return rgb; }
+    Spectrum emission(const Emission& e, const Path&) const { return e.color->rgb() * e.scale; }
     const Bxdf<Spectrum>& bsdf(int material, Path&) const {
         return *bsdfs_[std::size_t(material)];
     }
@@ -58,20 +59,7 @@ class RenderMode<SampledSpectrum<float>> {
         std::unique_ptr<Bxdf<Spectrum>> bsdf;  ///< the BSDF of the current vertex
     };
 
-    explicit RenderMode(const SceneDesc& scene) : scene_(scene) {
-        // Emission colours are few: upsample each once.
-        auto add = [this](const Rgb<double>& rgb) {
-            for (const auto& e : emissions_)
-                if (e.first == Rgb<float>(rgb)) return;
-            emissions_.emplace_back(Rgb<float>(rgb), RgbSpectrum(rgb, RgbSpectrumKind::Illuminant));
-        };
-        for (const auto& m : scene.meshes)
-            if (m.emission) add(m.emission->radiance);
-        for (const auto& s : scene.spheres)
-            if (s.emission) add(s.emission->radiance);
-        for (const auto& l : scene.lights)
-            add(l.intensity);
-    }
+    explicit RenderMode(const SceneDesc& scene) : scene_(scene) {}
 
     static constexpr FilmSpace kFilmSpace = FilmSpace::Xyz;
     static constexpr const char* kName = "spectral";
@@ -80,10 +68,11 @@ class RenderMode<SampledSpectrum<float>> {
         return {SampledWavelengths<float>::sample(double(sampler.get1D())), nullptr};
     }
 
-    Spectrum emission(const Rgb<float>& rgb, const Path& path) const {
-        for (const auto& [key, spectrum] : emissions_)
-            if (key == rgb) return evaluate(spectrum, path);
-        return evaluate(RgbSpectrum(Rgb<double>(rgb), RgbSpectrumKind::Illuminant), path);
+    Spectrum emission(const Emission& e, const Path& path) const {
+        Spectrum out;
+        for (int i = 0; i < Spectrum::kSize; ++i)
+            out[i] = float(e.color->spectral(double(path.lambda[i]))) * e.scale;
+        return out;
     }
 
     const Bxdf<Spectrum>& bsdf(int material, Path& path) const {
@@ -103,15 +92,7 @@ class RenderMode<SampledSpectrum<float>> {
     }
 
   private:
-    static Spectrum evaluate(const RgbSpectrum& s, const Path& path) {
-        Spectrum out;
-        for (int i = 0; i < Spectrum::kSize; ++i)
-            out[i] = float(s(double(path.lambda[i])));
-        return out;
-    }
-
     const SceneDesc& scene_;
-    std::vector<std::pair<Rgb<float>, RgbSpectrum>> emissions_;
 };
 
 }  // namespace lamina::render

@@ -5,12 +5,14 @@
 
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "lamina/bsdf/material.h"
 #include "lamina/core/vector.h"
+#include "lamina/spectral/emission_spectrum.h"
 
 namespace lamina::render {
 
@@ -44,9 +46,10 @@ struct RenderSettings {
     bool uniformLightSelection = false;  ///< default: proportional to power
 };
 
-/// Emission of an area light: RGB radiance (linear Rec.709), one- or two-sided.
+/// Emission of an area light: RGB radiance (linear Rec.709) or a spectrum, one- or two-sided.
 struct EmissionDesc {
     Rgb<double> radiance{0.0};
+    std::shared_ptr<const EmissionSpectrum> spectrum;  ///< set: the radiance is this spectrum
     bool twoSided = false;
 };
 
@@ -78,6 +81,7 @@ struct LightDesc {
     Vec3d position{0.0};    ///< point
     Vec3d direction{0, -1, 0};  ///< directional: the direction light travels
     Rgb<double> intensity{1.0};  ///< point: W/sr; directional: irradiance; environment: radiance
+    std::shared_ptr<const EmissionSpectrum> spectrum;  ///< set: the intensity is this spectrum
 };
 
 struct SceneDesc {

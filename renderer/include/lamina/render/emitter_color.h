@@ -1,0 +1,42 @@
+// The colour of an emitter in both modes, prepared once when the scene is loaded: its RGB
+// (an RGB input, or the reduction of a spectrum) and its spectrum (the spectrum given, or the
+// RGB upsampled as an illuminant, so RGB (1, 1, 1) is D65 and stays white).
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include "lamina/spectral/emission_spectrum.h"
+#include "lamina/spectral/rgb_to_spectrum.h"
+
+namespace lamina::render {
+
+class EmitterColor {
+  public:
+    EmitterColor() = default;
+    EmitterColor(const Rgb<double>& rgb, std::shared_ptr<const EmissionSpectrum> spectrum)
+        : rgbD_(spectrum ? spectrum->rgb() : rgb),
+          rgb_(float(rgbD_[0]), float(rgbD_[1]), float(rgbD_[2])), spectrum_(std::move(spectrum)) {
+        if (!spectrum_) upsampled_.emplace(rgb, RgbSpectrumKind::Illuminant);
+    }
+
+    const Rgb<float>& rgb() const { return rgb_; }
+    const Rgb<double>& rgbDouble() const { return rgbD_; }
+    double spectral(double nm) const { return spectrum_ ? (*spectrum_)(nm) : (*upsampled_)(nm); }
+    bool isBlack() const { return rgb_.maxValue() <= 0.0f && !spectrum_; }
+
+  private:
+    Rgb<double> rgbD_{0.0};
+    Rgb<float> rgb_{0.0f};
+    std::shared_ptr<const EmissionSpectrum> spectrum_;
+    std::optional<RgbSpectrum> upsampled_;
+};
+
+/// Emitted radiance (or intensity / d^2, or irradiance): a colour times a scale.
+struct Emission {
+    const EmitterColor* color = nullptr;
+    float scale = 0;
+    bool isZero() const { return !color || !(scale > 0.0f) || color->isBlack(); }
+};
+
+}  // namespace lamina::render
