@@ -135,6 +135,64 @@ TEST(ModesAgree, SpectralEmittersUnderGreyMaterials) {
     }
 }
 
+TEST(DeltaLights, PointAndSpotLightsGiveTheInverseSquareLaw) {
+    // A Lambert floor (albedo 0.5) under a light of intensity 10 at height 2, seen straight
+    // down with a narrow camera, direct lighting only: L = rho / pi * I / h^2.
+    for (const std::string light :
+         {R"({"type": "point", "position": [0, 2, 0], "intensity": 10})",
+          R"({"type": "spot", "position": [0, 2, 0], "look_at": [0, 0, 0], "intensity": 10,
+              "cone_angle": 30, "falloff_start": 20})"}) {
+        const std::string scene = R"({
+          "camera": {"position": [0, 1, 0], "look_at": [0, 0, 0], "up": [0, 0, 1], "fov": 0.5},
+          "film": {"resolution": [4, 4]},
+          "integrator": {"max_depth": 1},
+          "materials": {"floor": {"type": "lambert", "reflectance": 0.5}},
+          "shapes": [{"type": "rectangle", "material": "floor",
+                      "transform": [{"rotate": {"axis": [1, 0, 0], "angle": -90}}, {"scale": 5}]}],
+          "lights": [)" + light + "]}";
+        const auto r = renderText(scene, render::RenderModeKind::Rgb, 4);
+        const double expected = 0.5 / kPi<double> * 10.0 / 4.0;
+        EXPECT_NEAR(r.film->pixel(2, 2)[1], expected, 1e-3 * expected) << light;
+    }
+    // Outside the spot's cone there is no light.
+    const auto dark = renderText(R"({
+      "camera": {"position": [3, 1, 0], "look_at": [3, 0, 0], "up": [0, 0, 1], "fov": 0.5},
+      "film": {"resolution": [4, 4]}, "integrator": {"max_depth": 1},
+      "materials": {"floor": {"type": "lambert", "reflectance": 0.5}},
+      "shapes": [{"type": "rectangle", "material": "floor",
+                  "transform": [{"rotate": {"axis": [1, 0, 0], "angle": -90}}, {"scale": 5}]}],
+      "lights": [{"type": "spot", "position": [0, 2, 0], "look_at": [0, 0, 0], "intensity": 10,
+                  "cone_angle": 30}]})",
+                                 render::RenderModeKind::Rgb, 4);
+    EXPECT_EQ(dark.film->pixel(2, 2)[1], 0.0);
+}
+
+TEST(Progressive, InterruptionFinishesThePassInFlightAndMarksThePartialImage) {
+    auto scene = render::loadScene(testing::sharedCornellBox());
+    render::RenderOptions o;
+    o.spp = 1024;
+    o.resolution = std::make_pair(16, 16);
+    auto& flag = render::renderInterruptFlag();
+    const auto r = render::renderScene(scene, o, [&](const render::RenderProgress& p) {
+        if (p.passesDone == 3) flag.store(true);  // as Ctrl-C would, between passes
+    });
+    flag.store(false);
+    EXPECT_TRUE(r.partial);
+    EXPECT_EQ(r.spp, 4);  // passes of 1, 1 and 2 spp; the flag raised after the third stops the loop
+    EXPECT_GT(r.film->pixel(8, 8)[1], 0.0);
+}
+
+TEST(Progressive, TimeLimitRendersWholePassesUntilTheTimeIsUsed) {
+    auto scene = render::loadScene(testing::sharedCornellBox());
+    render::RenderOptions o;
+    o.seconds = 0.3;
+    o.resolution = std::make_pair(16, 16);
+    const auto r = render::renderScene(scene, o);
+    EXPECT_FALSE(r.partial);
+    EXPECT_GE(r.seconds, 0.3);
+    EXPECT_GT(r.spp, 1);
+}
+
 TEST(Determinism, SameImageWithOneAndTwoThreads) {
     auto scene = render::loadScene(testing::sharedCornellBox());
     render::RenderOptions o;

@@ -179,6 +179,47 @@ class PointLight final : public Light {
     EmitterColor color_;
 };
 
+/// A spot light (pbrt-v4's convention): intensity I inside a cone, with a smoothstep falloff
+/// in cos(theta) between the falloff start and the cone's edge.
+class SpotLight final : public Light {
+  public:
+    explicit SpotLight(const LightDesc& d)
+        : position_(Vec3f(d.position)), axis_(Vec3f(d.direction)), color_(d.intensity, d.spectrum),
+          cosEdge_(float(std::cos(radians(d.coneAngle)))),
+          cosStart_(float(std::cos(radians(d.falloffStart)))) {}
+
+    std::optional<LightSample> sample(const Vec3f& ref, const Vec2f&) const override {
+        const Vec3f d = position_ - ref;
+        const float dist2 = glm::dot(d, d);
+        if (!(dist2 > 0.0f)) return std::nullopt;
+        const float dist = std::sqrt(dist2);
+        const float falloff = this->falloff(glm::dot(-d / dist, axis_));
+        if (!(falloff > 0.0f)) return std::nullopt;
+        return LightSample{d / dist, dist, {&color_, falloff / dist2}, 1.0f, true, position_, -d / dist};
+    }
+    float pdf(const Vec3f&, const SurfaceHit&) const override { return 0.0f; }
+    Emission radiance(const SurfaceHit&, const Vec3f&) const override { return {}; }
+    double power() const override {
+        // Integral of the falloff over the sphere: full inside the start, half the smoothstep
+        // band on average (pbrt-v4, SpotLight::Phi).
+        return 2.0 * kPi<double> * luminance(color_.rgbDouble()) *
+               ((1.0 - cosStart_) + (cosStart_ - cosEdge_) / 2.0);
+    }
+    bool isDelta() const override { return true; }
+
+  private:
+    float falloff(float cosTheta) const {
+        if (cosTheta >= cosStart_) return 1.0f;
+        if (cosTheta <= cosEdge_) return 0.0f;
+        const float t = (cosTheta - cosEdge_) / (cosStart_ - cosEdge_);
+        return t * t * (3.0f - 2.0f * t);
+    }
+
+    Vec3f position_, axis_;
+    EmitterColor color_;
+    float cosEdge_, cosStart_;
+};
+
 class DirectionalLight final : public Light {
   public:
     DirectionalLight(const LightDesc& d, const Geometry& g)
@@ -255,6 +296,9 @@ LightSet::LightSet(const SceneDesc& scene, Geometry& geometry, bool uniformSelec
         switch (d.kind) {
             case LightKind::Point:
                 lights_.push_back(std::make_unique<PointLight>(d));
+                break;
+            case LightKind::Spot:
+                lights_.push_back(std::make_unique<SpotLight>(d));
                 break;
             case LightKind::Directional:
                 lights_.push_back(std::make_unique<DirectionalLight>(d, geometry));

@@ -419,13 +419,22 @@ class SceneParser {
         LightDesc l;
         l.kind = r.choice("type", LightKind::Point,
                           {{"point", LightKind::Point},
+                           {"spot", LightKind::Spot},
                            {"directional", LightKind::Directional},
                            {"environment", LightKind::Environment}});
-        const char* key = l.kind == LightKind::Point         ? "intensity"
+        const char* key = l.kind == LightKind::Point || l.kind == LightKind::Spot ? "intensity"
                           : l.kind == LightKind::Directional ? "irradiance"
                                                              : "radiance";
         std::tie(l.intensity, l.spectrum) = readEmissionValue(r, key);
-        if (l.kind == LightKind::Point) l.position = toVec(r.requiredArray<3>("position"));
+        if (l.kind == LightKind::Point || l.kind == LightKind::Spot)
+            l.position = toVec(r.requiredArray<3>("position"));
+        if (l.kind == LightKind::Spot) {
+            const Vec3d target = toVec(r.requiredArray<3>("look_at"));
+            if (glm::length(target - l.position) == 0) r.failAt("look_at", "equals position");
+            l.direction = glm::normalize(target - l.position);
+            l.coneAngle = r.number("cone_angle", 30.0, {0.0, 90.0, true});
+            l.falloffStart = r.number("falloff_start", l.coneAngle * 0.8, {0.0, l.coneAngle});
+        }
         if (l.kind == LightKind::Directional) {
             l.direction = toVec(r.requiredArray<3>("direction"));
             if (glm::length(l.direction) == 0) r.failAt("direction", "expected a non-zero vector");

@@ -73,13 +73,15 @@ struct SphereDesc {
     std::optional<EmissionDesc> emission;
 };
 
-enum class LightKind { Point, Directional, Environment };
+enum class LightKind { Point, Spot, Directional, Environment };
 
 /// Lights that are not shapes.
 struct LightDesc {
     LightKind kind = LightKind::Point;
     Vec3d position{0.0};    ///< point
-    Vec3d direction{0, -1, 0};  ///< directional: the direction light travels
+    Vec3d direction{0, -1, 0};  ///< directional: the direction light travels; spot: its axis
+    double coneAngle = 30;      ///< spot: half-angle of the cone, degrees
+    double falloffStart = 25;   ///< spot: half-angle where the smooth falloff begins, degrees
     Rgb<double> intensity{1.0};  ///< point: W/sr; directional: irradiance; environment: radiance
     std::shared_ptr<const EmissionSpectrum> spectrum;  ///< set: the intensity is this spectrum
 };
