@@ -23,6 +23,10 @@ struct EnergyCase {
     double bound;  // the largest albedo allowed (1 for energy-conserving models)
 };
 
+void PrintTo(const EnergyCase& c, std::ostream* os) {
+    *os << c.json;
+}
+
 struct Albedo {
     double mean = 0, stderrOfMean = 0;
 };

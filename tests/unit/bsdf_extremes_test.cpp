@@ -27,6 +27,10 @@ struct Config {
     std::string name, json;
 };
 
+void PrintTo(const Config& c, std::ostream* os) {
+    *os << c.json;
+}
+
 std::string number(double v) {
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.17g", v);

@@ -8,12 +8,14 @@ void registerRenderCommand(CLI::App& app);
 void registerBsdfCommand(CLI::App& app);
 void registerSpectrumCommand(CLI::App& app);
 void registerInfoCommand(CLI::App& app);
+void registerBenchCommand(CLI::App& app);
 
 // Every subcommand is registered here, in the order `lamina --help` lists them.
 void registerCommands(CLI::App& app) {
     registerRenderCommand(app);
     registerBsdfCommand(app);
     registerInfoCommand(app);
+    registerBenchCommand(app);
     registerSpectrumCommand(app);
 }
 

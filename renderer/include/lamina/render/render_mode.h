@@ -56,7 +56,7 @@ class RenderMode<SampledSpectrum<float>> {
     using Spectrum = SampledSpectrum<float>;
     struct Path {
         SampledWavelengths<float> lambda;
-        std::unique_ptr<Bxdf<Spectrum>> bsdf;  ///< the BSDF of the current vertex
+        std::uint64_t id = 0;  ///< distinguishes paths for the per-thread BSDF cache
     };
 
     explicit RenderMode(const SceneDesc& scene) : scene_(scene) {}
@@ -65,7 +65,7 @@ class RenderMode<SampledSpectrum<float>> {
     static constexpr const char* kName = "spectral";
 
     Path startPath(PixelSampler& sampler) const {
-        return {SampledWavelengths<float>::sample(double(sampler.get1D())), nullptr};
+        return {SampledWavelengths<float>::sample(double(sampler.get1D())), ++cache().nextPathId};
     }
 
     Spectrum emission(const Emission& e, const Path& path) const {
@@ -75,10 +75,23 @@ class RenderMode<SampledSpectrum<float>> {
         return out;
     }
 
+    // A material's BSDF depends on the path's wavelengths: it is built at the first hit on
+    // that material along a path and reused at later hits of the same path (a per-thread
+    // cache, reset when the path changes).
     const Bxdf<Spectrum>& bsdf(int material, Path& path) const {
-        const SpectrumContext<Spectrum> context{path.lambda};
-        path.bsdf = buildBxdf(scene_.materials[std::size_t(material)], context);
-        return *path.bsdf;
+        BsdfCache& c = cache();
+        if (c.pathId != path.id) {
+            c.pathId = path.id;
+            c.bsdfs.resize(scene_.materials.size());
+            for (auto& b : c.bsdfs)
+                b.reset();
+        }
+        auto& slot = c.bsdfs[std::size_t(material)];
+        if (!slot) {
+            const SpectrumContext<Spectrum> context{path.lambda};
+            slot = buildBxdf(scene_.materials[std::size_t(material)], context);
+        }
+        return *slot;
     }
 
     Rgb<double> filmValue(const Spectrum& L, const Path& path) const {
@@ -92,6 +105,15 @@ class RenderMode<SampledSpectrum<float>> {
     }
 
   private:
+    struct BsdfCache {
+        std::uint64_t pathId = 0, nextPathId = 0;
+        std::vector<std::unique_ptr<Bxdf<Spectrum>>> bsdfs;
+    };
+    static BsdfCache& cache() {
+        thread_local BsdfCache c;
+        return c;
+    }
+
     const SceneDesc& scene_;
 };
 
