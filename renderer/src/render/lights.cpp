@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "lamina/core/warp.h"
+#include "lamina/render/environment_map.h"
 #include "lamina/render/ray_offset.h"
 
 namespace lamina::render {
@@ -271,6 +272,37 @@ class ConstantEnvironment final : public Light {
     float radius_;
 };
 
+/// An image around the scene (environment_map.h), importance-sampled.
+class ImageEnvironment final : public Light {
+  public:
+    ImageEnvironment(const LightDesc& d, const Geometry& g)
+        : map_(d.file, d.rotation), scale_(float(d.intensity[0])), radius_(g.boundsRadius()) {}
+
+    std::optional<LightSample> sample(const Vec3f&, const Vec2f& u) const override {
+        float pdf;
+        const Vec3f wi = map_.sample(u, pdf);
+        if (!(pdf > 0.0f)) return std::nullopt;
+        return LightSample{wi, std::numeric_limits<float>::infinity(), environment(wi), pdf,
+                           false, Vec3f(0.0f), -wi};
+    }
+    float pdf(const Vec3f&, const SurfaceHit&) const override { return 0.0f; }
+    Emission radiance(const SurfaceHit&, const Vec3f&) const override { return {}; }
+    double power() const override {
+        return 4.0 * kPi<double> * kPi<double> * sqr(double(radius_)) * scale_ *
+               map_.averageLuminance();
+    }
+    bool isInfinite() const override { return true; }
+    Emission environment(const Vec3f& w) const override {
+        return Emission{nullptr, scale_, map_.lookup(w)};
+    }
+    float environmentPdf(const Vec3f& w) const override { return map_.pdf(w); }
+
+  private:
+    EnvironmentMap map_;
+    float scale_;
+    float radius_;
+};
+
 }  // namespace
 
 LightSet::LightSet(const SceneDesc& scene, Geometry& geometry, bool uniformSelection)
@@ -305,7 +337,10 @@ LightSet::LightSet(const SceneDesc& scene, Geometry& geometry, bool uniformSelec
                 break;
             case LightKind::Environment:
                 infinite_.push_back(lights_.size());
-                lights_.push_back(std::make_unique<ConstantEnvironment>(d, geometry));
+                if (d.file.empty())
+                    lights_.push_back(std::make_unique<ConstantEnvironment>(d, geometry));
+                else
+                    lights_.push_back(std::make_unique<ImageEnvironment>(d, geometry));
                 break;
         }
         if (d.kind == LightKind::Directional) infinite_.push_back(lights_.size() - 1);

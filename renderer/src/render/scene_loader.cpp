@@ -425,7 +425,16 @@ class SceneParser {
         const char* key = l.kind == LightKind::Point || l.kind == LightKind::Spot ? "intensity"
                           : l.kind == LightKind::Directional ? "irradiance"
                                                              : "radiance";
-        std::tie(l.intensity, l.spectrum) = readEmissionValue(r, key);
+        if (l.kind == LightKind::Environment && r.has("file")) {
+            // An image: "scale" multiplies it, "rotate" turns it about +y.
+            if (r.has("radiance")) r.fail("give either radiance or file, not both");
+            l.file = resolve(r, "file");
+            const double scale = r.number("scale", 1.0, Range::nonNegative());
+            l.intensity = Rgb<double>(scale);
+            l.rotation = r.number("rotate", 0.0);
+        } else {
+            std::tie(l.intensity, l.spectrum) = readEmissionValue(r, key);
+        }
         if (l.kind == LightKind::Point || l.kind == LightKind::Spot)
             l.position = toVec(r.requiredArray<3>("position"));
         if (l.kind == LightKind::Spot) {

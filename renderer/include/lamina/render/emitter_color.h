@@ -32,11 +32,23 @@ class EmitterColor {
     std::optional<RgbSpectrum> upsampled_;
 };
 
-/// Emitted radiance (or intensity / d^2, or irradiance): a colour times a scale.
+/// Emitted radiance (or intensity / d^2, or irradiance): a colour times a scale. Image-based
+/// emitters (environment maps) give a texel instead of a colour: its RGB is used as it is in
+/// RGB mode and upsampled as an illuminant in spectral mode.
 struct Emission {
     const EmitterColor* color = nullptr;
     float scale = 0;
-    bool isZero() const { return !color || !(scale > 0.0f) || color->isBlack(); }
+    Rgb<float> texel{0.0f};  ///< used when color is null
+
+    bool isZero() const {
+        if (!(scale > 0.0f)) return true;
+        return color ? color->isBlack() : texel.maxValue() <= 0.0f;
+    }
+    Rgb<float> rgb() const { return (color ? color->rgb() : texel) * scale; }
+    double spectral(double nm) const {
+        if (color) return color->spectral(nm) * scale;
+        return RgbSpectrum(Rgb<double>(texel), RgbSpectrumKind::Illuminant)(nm) * scale;
+    }
 };
 
 }  // namespace lamina::render

@@ -35,7 +35,7 @@ class RenderMode<Rgb<float>> {
     static constexpr const char* kName = "rgb";
 
     Path startPath(PixelSampler&) const { return {}; }
-    Spectrum emission(const Emission& e, const Path&) const { return e.color->rgb() * e.scale; }
+    Spectrum emission(const Emission& e, const Path&) const { return e.rgb(); }
     const Bxdf<Spectrum>& bsdf(int material, Path&) const {
         return *bsdfs_[std::size_t(material)];
     }
@@ -70,6 +70,12 @@ class RenderMode<SampledSpectrum<float>> {
 
     Spectrum emission(const Emission& e, const Path& path) const {
         Spectrum out;
+        if (!e.color) {  // a texel: upsample once for the four wavelengths
+            const RgbSpectrum s(Rgb<double>(e.texel), RgbSpectrumKind::Illuminant);
+            for (int i = 0; i < Spectrum::kSize; ++i)
+                out[i] = float(s(double(path.lambda[i]))) * e.scale;
+            return out;
+        }
         for (int i = 0; i < Spectrum::kSize; ++i)
             out[i] = float(e.color->spectral(double(path.lambda[i]))) * e.scale;
         return out;

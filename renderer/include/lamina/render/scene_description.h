@@ -84,6 +84,8 @@ struct LightDesc {
     double falloffStart = 25;   ///< spot: half-angle where the smooth falloff begins, degrees
     Rgb<double> intensity{1.0};  ///< point: W/sr; directional: irradiance; environment: radiance
     std::shared_ptr<const EmissionSpectrum> spectrum;  ///< set: the intensity is this spectrum
+    std::filesystem::path file;  ///< environment: an equirectangular image (intensity scales it)
+    double rotation = 0;         ///< environment: rotation of the image about +y, degrees
 };
 
 struct SceneDesc {
