@@ -6,6 +6,7 @@
 #include <sstream>
 #include <tiny_obj_loader.h>
 
+#include "lamina/render/ply_reader.h"
 #include "lamina/render/scene_description.h"
 
 namespace lamina::render {
@@ -400,12 +401,19 @@ class SceneParser {
             readInlineMesh(r, mesh);
         } else if (type == "obj") {
             readObj(r, mesh);
+        } else if (type == "ply") {
+            const std::filesystem::path file = resolve(r, "file");
+            try {
+                readPly(file, mesh);
+            } catch (const InputError& e) {
+                r.failAt("file", e.what());
+            }
         } else if (type == "rectangle") {
             // The square [-1, 1]^2 in the plane z = 0, facing +z; place it with `transform`.
             mesh.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
             mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
         } else {
-            r.failAt("type", "expected one of sphere, rectangle, mesh, obj; got \"" + type + "\"");
+            r.failAt("type", "expected one of sphere, rectangle, mesh, obj, ply; got \"" + type + "\"");
         }
         mesh.material = materialOf(r);
         mesh.emission = emissionOf(r);
