@@ -72,6 +72,137 @@ class TriangleLight final : public Light {
     double area_ = 0;
 };
 
+/// An emitting rectangle, sampled uniformly in the solid angle it subtends (Urena, Fajardo
+/// and King 2013, "An Area-Preserving Parametrization for Spherical Rectangles", EGSR; the
+/// algorithm of their section 4, in double precision), or by area when the solid angle is
+/// too small for that to be accurate (below 1e-4 sr the spherical quantities cancel).
+class RectangleLight final : public Light {
+  public:
+    RectangleLight(const MeshDesc& mesh)
+        : emission_(*mesh.emission), color_(mesh.emission->radiance, mesh.emission->spectrum) {
+        corner_ = Vec3d(mesh.positions[0]);
+        const Vec3d ex = Vec3d(mesh.positions[1]) - corner_, ey = Vec3d(mesh.positions[3]) - corner_;
+        lx_ = glm::length(ex);
+        ly_ = glm::length(ey);
+        x_ = ex / lx_;
+        y_ = ey / ly_;
+        n_ = glm::normalize(glm::cross(ex, ey));
+        // The winding of (0, 1, 2) gives the front side, as for the triangles.
+        const Vec3d winding = glm::cross(Vec3d(mesh.positions[1]) - corner_,
+                                         Vec3d(mesh.positions[2]) - corner_);
+        if (glm::dot(winding, n_) < 0) n_ = -n_;
+        area_ = lx_ * ly_;
+    }
+
+    static bool isRectangle(const MeshDesc& m) {
+        if (!m.isRectangle || m.positions.size() != 4) return false;
+        const Vec3d ex = Vec3d(m.positions[1] - m.positions[0]), ey = Vec3d(m.positions[3] - m.positions[0]);
+        return std::abs(glm::dot(ex, ey)) <= 1e-6 * glm::length(ex) * glm::length(ey);
+    }
+
+    std::optional<LightSample> sample(const Vec3f& refF, const Vec2f& u) const override {
+        const Vec3d ref(refF);
+        Vec3d p;
+        double pdf;
+        const Spherical sph = spherical(ref);
+        if (sph.solidAngle > kMinSolidAngle) {
+            // Section 4 of the paper: invert the area of the sub-rectangle left of x_u, then
+            // the height along y at that x.
+            const double au = double(u.x) * sph.solidAngle + sph.k;
+            const double fu = (std::cos(au) * sph.b0 - sph.b1) / std::sin(au);
+            double cu = (fu > 0 ? 1.0 : -1.0) / std::sqrt(fu * fu + sph.b0 * sph.b0);
+            cu = std::clamp(cu, -1.0, 1.0);
+            double xu = -(cu * sph.z0) / std::sqrt(std::max(1e-300, 1.0 - cu * cu));
+            xu = std::clamp(xu, sph.x0, sph.x1);
+            const double dd = std::sqrt(xu * xu + sph.z0 * sph.z0);
+            const double h0 = sph.y0 / std::sqrt(dd * dd + sph.y0 * sph.y0);
+            const double h1 = sph.y1 / std::sqrt(dd * dd + sph.y1 * sph.y1);
+            const double hv = h0 + double(u.y) * (h1 - h0), hv2 = hv * hv;
+            const double yv = hv2 < 1.0 - 1e-12 ? hv * dd / std::sqrt(1.0 - hv2) : sph.y1;
+            p = ref + xu * sph.x + yv * sph.y + sph.z0 * sph.z;
+            pdf = 1.0 / sph.solidAngle;
+        } else {
+            p = corner_ + double(u.x) * lx_ * x_ + double(u.y) * ly_ * y_;
+            const Vec3d d = p - ref;
+            const double dist2 = glm::dot(d, d);
+            const double cosL = std::abs(glm::dot(n_, d)) / std::sqrt(dist2);
+            if (!(cosL > 0)) return std::nullopt;
+            pdf = dist2 / (cosL * area_);
+        }
+        const Vec3d d = p - ref;
+        const double dist = glm::length(d);
+        if (!(dist > 0) || !(pdf > 0) || !std::isfinite(pdf)) return std::nullopt;
+        const Vec3f wi = Vec3f(d / dist);
+        const bool front = glm::dot(n_, -d) > 0;
+        if (!front && !emission_.twoSided) return std::nullopt;
+        return LightSample{wi, float(dist), {&color_, 1.0f}, float(pdf), false, Vec3f(p),
+                           Vec3f(front ? n_ : -n_)};
+    }
+
+    float pdf(const Vec3f& refF, const SurfaceHit& hit) const override {
+        const Spherical sph = spherical(Vec3d(refF));
+        if (sph.solidAngle > kMinSolidAngle) return float(1.0 / sph.solidAngle);
+        return areaToSolidAngle(float(1.0 / area_), refF, hit.p, hit.ng);
+    }
+
+    Emission radiance(const SurfaceHit& hit, const Vec3f& w) const override {
+        if (emission_.twoSided || glm::dot(hit.ng, w) > 0.0f) return {&color_, 1.0f};
+        return {};
+    }
+
+    double power() const override {
+        return (emission_.twoSided ? 2.0 : 1.0) * kPi<double> * area_ * luminance(color_.rgbDouble());
+    }
+
+  private:
+    static constexpr double kMinSolidAngle = 1e-4;
+
+    // The rectangle seen from `ref`, in the local frame of the paper (z towards the plane).
+    struct Spherical {
+        Vec3d x, y, z;
+        double x0, x1, y0, y1, z0;
+        double b0, b1, k, solidAngle = 0;
+    };
+    Spherical spherical(const Vec3d& ref) const {
+        Spherical s;
+        s.x = x_;
+        s.y = y_;
+        s.z = glm::cross(x_, y_);
+        const Vec3d d = corner_ - ref;
+        s.x0 = glm::dot(d, s.x);
+        s.y0 = glm::dot(d, s.y);
+        s.z0 = glm::dot(d, s.z);
+        if (s.z0 > 0) {
+            s.z0 = -s.z0;
+            s.z = -s.z;
+        }
+        if (!(std::abs(s.z0) > 0)) return s;  // in the plane: nothing subtended
+        s.x1 = s.x0 + lx_;
+        s.y1 = s.y0 + ly_;
+        const Vec3d v00(s.x0, s.y0, s.z0), v01(s.x0, s.y1, s.z0), v10(s.x1, s.y0, s.z0),
+            v11(s.x1, s.y1, s.z0);
+        const Vec3d n0 = glm::normalize(glm::cross(v00, v10));
+        const Vec3d n1 = glm::normalize(glm::cross(v10, v11));
+        const Vec3d n2 = glm::normalize(glm::cross(v11, v01));
+        const Vec3d n3 = glm::normalize(glm::cross(v01, v00));
+        const double g0 = std::acos(std::clamp(-glm::dot(n0, n1), -1.0, 1.0));
+        const double g1 = std::acos(std::clamp(-glm::dot(n1, n2), -1.0, 1.0));
+        const double g2 = std::acos(std::clamp(-glm::dot(n2, n3), -1.0, 1.0));
+        const double g3 = std::acos(std::clamp(-glm::dot(n3, n0), -1.0, 1.0));
+        s.b0 = n0.z;
+        s.b1 = n2.z;
+        s.k = 2 * kPi<double> - g2 - g3;
+        s.solidAngle = g0 + g1 - s.k;
+        if (!std::isfinite(s.solidAngle)) s.solidAngle = 0;
+        return s;
+    }
+
+    EmissionDesc emission_;
+    EmitterColor color_;
+    Vec3d corner_, x_, y_, n_;
+    double lx_ = 0, ly_ = 0, area_ = 0;
+};
+
 /// An emitting sphere: sampled uniformly in the cone it subtends when seen from outside
 /// (emitting outwards), uniformly by area otherwise.
 class SphereLight final : public Light {
@@ -313,6 +444,11 @@ LightSet::LightSet(const SceneDesc& scene, Geometry& geometry, bool uniformSelec
         if (info.kind == ShapeInfo::Kind::Mesh) {
             const MeshDesc& m = scene.meshes[std::size_t(info.index)];
             if (!m.emission || (m.emission->radiance.maxValue() <= 0.0 && !m.emission->spectrum)) continue;
+            if (RectangleLight::isRectangle(m)) {
+                geometry.setFirstLight(int(s), int(lights_.size()), false);
+                lights_.push_back(std::make_unique<RectangleLight>(m));
+                continue;
+            }
             geometry.setFirstLight(int(s), int(lights_.size()));
             for (std::size_t t = 0; t < m.triangles.size(); ++t)
                 lights_.push_back(std::make_unique<TriangleLight>(m, t));
@@ -375,7 +511,8 @@ std::pair<std::size_t, float> LightSet::choose(float u) const {
 int LightSet::lightAt(const SurfaceHit& hit) const {
     const ShapeInfo& info = geometry_.shapes()[std::size_t(hit.shape)];
     if (info.firstLight < 0) return -1;
-    return info.firstLight + (info.kind == ShapeInfo::Kind::Mesh ? int(hit.primitive) : 0);
+    return info.firstLight +
+           (info.kind == ShapeInfo::Kind::Mesh && info.lightPerPrimitive ? int(hit.primitive) : 0);
 }
 
 }  // namespace lamina::render

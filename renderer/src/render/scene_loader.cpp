@@ -412,6 +412,7 @@ class SceneParser {
             // The square [-1, 1]^2 in the plane z = 0, facing +z; place it with `transform`.
             mesh.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
             mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
+            mesh.isRectangle = true;
         } else {
             r.failAt("type", "expected one of sphere, rectangle, mesh, obj, ply; got \"" + type + "\"");
         }

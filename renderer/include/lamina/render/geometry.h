@@ -34,6 +34,7 @@ struct ShapeInfo {
     int index = -1;  ///< into SceneDesc::meshes or ::spheres
     int material = -1;
     int firstLight = -1;  ///< the area light of its first primitive, -1 if not emissive
+    bool lightPerPrimitive = true;  ///< false: one light for the whole shape (a rectangle)
 };
 
 class Geometry {
@@ -50,7 +51,10 @@ class Geometry {
     bool occluded(const Vec3f& origin, const Vec3f& direction, float tMax) const;
 
     const std::vector<ShapeInfo>& shapes() const { return shapes_; }
-    void setFirstLight(int shape, int light) { shapes_[std::size_t(shape)].firstLight = light; }
+    void setFirstLight(int shape, int light, bool perPrimitive = true) {
+        shapes_[std::size_t(shape)].firstLight = light;
+        shapes_[std::size_t(shape)].lightPerPrimitive = perPrimitive;
+    }
     /// Bounding sphere of everything (for environment and directional lights).
     Vec3f boundsCenter() const { return boundsCenter_; }
     float boundsRadius() const { return boundsRadius_; }
