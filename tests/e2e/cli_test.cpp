@@ -7,6 +7,9 @@
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <map>
+
+#include <OpenImageIO/imageio.h>
 #include <fstream>
 
 #include "lamina/bsdf/material_builder.h"
@@ -90,6 +93,39 @@ TEST_F(CliTest, RendersAValidSceneWithMetadata) {
     EXPECT_EQ(img.metadata.at("lamina:seed"), "7");
     EXPECT_EQ(img.metadata.at("lamina:partial"), "0");
     EXPECT_EQ(filesIn(), 2u);  // the scene and the image, no temporary left behind
+}
+
+TEST_F(CliTest, AovLayersHaveTheirNamesAndMeanings) {
+    // A Lambert sphere of albedo 0.3 seen head-on: the Albedo layer holds 0.3, N.Z points at
+    // the camera (-1 along z towards it), Z is the distance to the sphere.
+    const auto s = write("aov.json", R"({
+      "camera": {"position": [0, 0, -5], "look_at": [0, 0, 0], "fov": 5},
+      "film": {"resolution": [4, 4]},
+      "materials": {"m": {"type": "lambert", "reflectance": 0.3}},
+      "shapes": [{"type": "sphere", "radius": 1, "material": "m"}],
+      "lights": [{"type": "environment", "radiance": 1}]
+    })");
+    const auto out = (dir_ / "aov.exr").string();
+    ASSERT_EQ(runLamina("render " + s + " -o " + out + " --spp 4 --aovs -q").exitCode, 0);
+    auto in = OIIO::ImageInput::open(out);
+    ASSERT_TRUE(in);
+    const auto& spec = in->spec();
+    const std::vector<std::string> expected = {"R", "G", "B", "Albedo.R", "Albedo.G", "Albedo.B",
+                                               "N.X", "N.Y", "N.Z", "Z", "Variance.Y"};
+    ASSERT_EQ(spec.nchannels, int(expected.size()));
+    std::vector<float> px(std::size_t(spec.width) * spec.height * expected.size());
+    ASSERT_TRUE(in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, px.data()));
+    // EXR stores channels sorted by name: look them up by name.
+    std::map<std::string, float> centre;
+    const std::size_t base = (std::size_t(2) * spec.width + 2) * expected.size();
+    for (std::size_t c = 0; c < expected.size(); ++c)
+        centre[spec.channelnames[c]] = px[base + c];
+    for (const auto& name : expected)
+        EXPECT_EQ(centre.count(name), 1u) << name;
+    EXPECT_NEAR(centre["Albedo.G"], 0.3f, 1e-4f);
+    EXPECT_NEAR(centre["N.Z"], -1.0f, 1e-2f);
+    EXPECT_NEAR(centre["Z"], 4.0f, 1e-2f);
+    EXPECT_GE(centre["Variance.Y"], 0.0f);
 }
 
 struct BadInput {
