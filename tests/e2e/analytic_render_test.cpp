@@ -5,6 +5,7 @@
 
 #include <filesystem>
 
+#include "lamina/render/geometry.h"
 #include "render_helpers.h"
 
 namespace lamina {
@@ -165,6 +166,35 @@ TEST(DeltaLights, PointAndSpotLightsGiveTheInverseSquareLaw) {
                   "cone_angle": 30}]})",
                                  render::RenderModeKind::Rgb, 4);
     EXPECT_EQ(dark.film->pixel(2, 2)[1], 0.0);
+}
+
+TEST(DiskLight, IrradianceBelowTheCentreIsAnalytic) {
+    // A disk of radius R and radiance L at height h above a Lambert floor of albedo rho: under
+    // its centre E = pi L R^2 / (h^2 + R^2), so the floor's radiance is rho L R^2 / (h^2 + R^2).
+    const char* scene = R"({
+      "camera": {"position": [0, 0.5, 0], "look_at": [0, 0, 0], "up": [0, 0, 1], "fov": 0.5},
+      "film": {"resolution": [4, 4]},
+      "integrator": {"max_depth": 1},
+      "materials": {"floor": {"type": "lambert", "reflectance": 0.5},
+                    "lamp": {"type": "lambert", "reflectance": 0}},
+      "shapes": [{"type": "rectangle", "material": "floor",
+                  "transform": [{"rotate": {"axis": [1, 0, 0], "angle": -90}}, {"scale": 5}]},
+                 {"type": "disk", "center": [0, 2, 0], "normal": [0, -1, 0], "radius": 1.5,
+                  "material": "lamp", "emission": {"radiance": 3}}]
+    })";
+    const auto r = renderText(scene, render::RenderModeKind::Rgb, 1024);
+    const double expected = 0.5 * 3 * 1.5 * 1.5 / (4 + 1.5 * 1.5);
+    const auto m = imageMean(*r.film, 1);
+    EXPECT_LT(std::abs(m.mean - expected), kZ * m.standardError + 1e-4 * expected)
+        << m.mean << " vs " << expected;
+    // The disk itself is round: rays just inside its radius hit it, just outside miss.
+    const auto desc = testing::sceneFromText(scene);
+    const render::Geometry g(desc);
+    for (double rho : {1.49, 1.51}) {
+        const auto hit = g.intersect(Vec3f(float(rho), 3, 0), Vec3f(0, -1, 0));
+        ASSERT_TRUE(hit);
+        EXPECT_EQ(g.shapes()[std::size_t(hit->shape)].kind == render::ShapeInfo::Kind::Disk, rho < 1.5);
+    }
 }
 
 TEST(Progressive, InterruptionFinishesThePassInFlightAndMarksThePartialImage) {

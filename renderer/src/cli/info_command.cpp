@@ -50,6 +50,10 @@ void run(const std::string& file) {
         if (s.emission) ++emitters;
         used[std::size_t(s.material)] = true;
     }
+    for (const auto& d : scene.disks) {
+        if (d.emission) ++emitters;
+        used[std::size_t(d.material)] = true;
+    }
     // Embree's BVH over triangles takes roughly 64 bytes per primitive (a rough guide).
     bytes += (triangles + scene.spheres.size()) * 64;
     std::printf("scene: %s\n", file.c_str());
@@ -57,8 +61,9 @@ void run(const std::string& file) {
                 scene.film.height, scene.settings.spp, scene.settings.maxDepth,
                 scene.settings.sampler == render::SamplerKind::Sobol ? "sobol" : "independent",
                 static_cast<unsigned long long>(scene.settings.seed));
-    std::printf("geometry: %zu meshes (%zu triangles, %zu vertices), %zu spheres, ~%.1f MiB\n",
-                scene.meshes.size(), triangles, vertices, scene.spheres.size(),
+    std::printf("geometry: %zu meshes (%zu triangles, %zu vertices), %zu spheres, %zu disks, "
+                "~%.1f MiB\n",
+                scene.meshes.size(), triangles, vertices, scene.spheres.size(), scene.disks.size(),
                 double(bytes) / (1 << 20));
     std::printf("lights: %zu emitting primitives, %zu other lights\n", emitters,
                 scene.lights.size());

@@ -51,6 +51,28 @@ Geometry::Geometry(const SceneDesc& scene) : scene_(scene) {
         rtcReleaseGeometry(g);
         shapes_.push_back({ShapeInfo::Kind::Sphere, int(i), s.material, -1});
     }
+    for (std::size_t i = 0; i < scene.disks.size(); ++i) {
+        // Embree's normal-oriented disc points are exact disks.
+        const DiskDesc& d = scene.disks[i];
+        RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_ORIENTED_DISC_POINT);
+        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                             RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1));
+        v[0] = float(d.center.x);
+        v[1] = float(d.center.y);
+        v[2] = float(d.center.z);
+        v[3] = float(d.radius);
+        auto* n = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_NORMAL, 0,
+                                                             RTC_FORMAT_FLOAT3, 3 * sizeof(float), 1));
+        n[0] = float(d.normal.x);
+        n[1] = float(d.normal.y);
+        n[2] = float(d.normal.z);
+        lo = glm::min(lo, d.center - Vec3<double>(d.radius));
+        hi = glm::max(hi, d.center + Vec3<double>(d.radius));
+        rtcCommitGeometry(g);
+        rtcAttachGeometryByID(scene3_, g, unsigned(shapes_.size()));
+        rtcReleaseGeometry(g);
+        shapes_.push_back({ShapeInfo::Kind::Disk, int(i), d.material, -1});
+    }
     rtcCommitScene(scene3_);
     if (const RTCError e = rtcGetDeviceError(device_); e != RTC_ERROR_NONE)
         throw std::runtime_error("Embree could not build the scene (error code " +
@@ -110,6 +132,18 @@ std::optional<SurfaceHit> Geometry::intersect(const Vec3f& origin, const Vec3f& 
             hit.uv = b0 * m.uvs[tri[0]] + b1 * m.uvs[tri[1]] + b2 * m.uvs[tri[2]];
         else
             hit.uv = Vec2f(b1, b2);
+    } else if (info.kind == ShapeInfo::Kind::Disk) {
+        const DiskDesc& dk = scene_.disks[std::size_t(info.index)];
+        // Project o + t d onto the disk's plane (removes the error along the normal).
+        const Vec3<double> n = dk.normal;
+        Vec3<double> p = Vec3<double>(origin) + double(hit.t) * Vec3<double>(direction);
+        p -= glm::dot(p - dk.center, n) * n;
+        hit.p = Vec3f(p);
+        hit.ng = hit.ns = Vec3f(n);
+        const Frame<double> frame = Frame<double>::fromNormal(n);
+        const Vec3<double> local = frame.toLocal(p - dk.center);
+        hit.uv = Vec2f(float(glm::length(Vec2<double>(local.x, local.y)) / dk.radius),
+                       float(std::atan2(local.y, local.x) / (2 * kPi<double>) + 0.5));
     } else {
         const SphereDesc& s = scene_.spheres[std::size_t(info.index)];
         const Vec3<double> c = s.center;

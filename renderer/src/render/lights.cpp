@@ -203,6 +203,47 @@ class RectangleLight final : public Light {
     double lx_ = 0, ly_ = 0, area_ = 0;
 };
 
+/// An emitting disk, sampled uniformly by area (the concentric mapping).
+class DiskLight final : public Light {
+  public:
+    explicit DiskLight(const DiskDesc& d)
+        : disk_(d), color_(d.emission->radiance, d.emission->spectrum),
+          frame_(Frame<double>::fromNormal(d.normal)), area_(kPi<double> * d.radius * d.radius) {}
+
+    std::optional<LightSample> sample(const Vec3f& refF, const Vec2f& u) const override {
+        const Vec2<double> q = squareToUniformDiskConcentric(Vec2<double>(u)) * disk_.radius;
+        const Vec3<double> p = disk_.center + frame_.toWorld(Vec3<double>(q.x, q.y, 0.0));
+        const Vec3<double> d = p - Vec3<double>(refF);
+        const double dist = glm::length(d);
+        if (!(dist > 0)) return std::nullopt;
+        const double cosL = glm::dot(disk_.normal, -d) / dist;
+        if (!disk_.emission->twoSided && !(cosL > 0)) return std::nullopt;
+        if (cosL == 0) return std::nullopt;
+        const double pdf = dist * dist / (std::abs(cosL) * area_);
+        if (!std::isfinite(pdf)) return std::nullopt;
+        const Vec3f n = Vec3f(cosL > 0 ? disk_.normal : -disk_.normal);
+        return LightSample{Vec3f(d / dist), float(dist), {&color_, 1.0f}, float(pdf), false,
+                           Vec3f(p), n};
+    }
+    float pdf(const Vec3f& ref, const SurfaceHit& hit) const override {
+        return areaToSolidAngle(float(1.0 / area_), ref, hit.p, hit.ng);
+    }
+    Emission radiance(const SurfaceHit& hit, const Vec3f& w) const override {
+        if (disk_.emission->twoSided || glm::dot(hit.ng, w) > 0.0f) return {&color_, 1.0f};
+        return {};
+    }
+    double power() const override {
+        return (disk_.emission->twoSided ? 2.0 : 1.0) * kPi<double> * area_ *
+               luminance(color_.rgbDouble());
+    }
+
+  private:
+    DiskDesc disk_;
+    EmitterColor color_;
+    Frame<double> frame_;
+    double area_;
+};
+
 /// An emitting sphere: sampled uniformly in the cone it subtends when seen from outside
 /// (emitting outwards), uniformly by area otherwise.
 class SphereLight final : public Light {
@@ -452,6 +493,11 @@ LightSet::LightSet(const SceneDesc& scene, Geometry& geometry, bool uniformSelec
             geometry.setFirstLight(int(s), int(lights_.size()));
             for (std::size_t t = 0; t < m.triangles.size(); ++t)
                 lights_.push_back(std::make_unique<TriangleLight>(m, t));
+        } else if (info.kind == ShapeInfo::Kind::Disk) {
+            const DiskDesc& dk = scene.disks[std::size_t(info.index)];
+            if (!dk.emission || (dk.emission->radiance.maxValue() <= 0.0 && !dk.emission->spectrum)) continue;
+            geometry.setFirstLight(int(s), int(lights_.size()), false);
+            lights_.push_back(std::make_unique<DiskLight>(dk));
         } else {
             const SphereDesc& sp = scene.spheres[std::size_t(info.index)];
             if (!sp.emission || (sp.emission->radiance.maxValue() <= 0.0 && !sp.emission->spectrum)) continue;

@@ -94,6 +94,7 @@ class SceneParser {
         bool emitter = !scene_.lights.empty();
         for (const auto& m : scene_.meshes) emitter |= m.emission.has_value();
         for (const auto& s : scene_.spheres) emitter |= s.emission.has_value();
+        for (const auto& d : scene_.disks) emitter |= d.emission.has_value();
         if (!emitter) root_.fail("the scene has no light: add an emitting shape or a light");
         return std::move(scene_);
     }
@@ -395,6 +396,30 @@ class SceneParser {
             scene_.spheres.push_back(s);
             return;
         }
+        if (type == "disk") {
+            // The unit disk in the plane z = 0 facing +z, or centre / normal / radius.
+            DiskDesc d;
+            d.name = name;
+            d.center = readVec(r, "center", Vec3d(0.0));
+            d.normal = readVec(r, "normal", Vec3d(0, 0, 1));
+            if (glm::length(d.normal) == 0) r.failAt("normal", "expected a non-zero vector");
+            d.normal = glm::normalize(d.normal);
+            d.radius = r.number("radius", 1.0, Range::positive());
+            d.material = materialOf(r);
+            d.emission = emissionOf(r);
+            const Mat4 m = readTransform(r);
+            const double sx = glm::length(Vec3d(m[0])), sy = glm::length(Vec3d(m[1])),
+                         sz = glm::length(Vec3d(m[2]));
+            if (std::abs(sx - sy) > 1e-9 * sx || std::abs(sx - sz) > 1e-9 * sx)
+                r.failAt("transform", "a disk takes translate, rotate and uniform scale only");
+            d.center = Vec3d(m * glm::dvec4(d.center, 1.0));
+            d.normal = glm::normalize(glm::dmat3(m) * d.normal) *
+                       (glm::determinant(glm::dmat3(m)) < 0 ? -1.0 : 1.0);
+            d.radius *= sx;
+            r.finish();
+            scene_.disks.push_back(d);
+            return;
+        }
         MeshDesc mesh;
         mesh.name = name;
         if (type == "mesh") {
@@ -414,7 +439,7 @@ class SceneParser {
             mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
             mesh.isRectangle = true;
         } else {
-            r.failAt("type", "expected one of sphere, rectangle, mesh, obj, ply; got \"" + type + "\"");
+            r.failAt("type", "expected one of sphere, disk, rectangle, mesh, obj, ply; got \"" + type + "\"");
         }
         mesh.material = materialOf(r);
         mesh.emission = emissionOf(r);

@@ -30,8 +30,8 @@ struct SurfaceHit {
 
 /// What the geometry knows about each shape.
 struct ShapeInfo {
-    enum class Kind { Mesh, Sphere } kind = Kind::Mesh;
-    int index = -1;  ///< into SceneDesc::meshes or ::spheres
+    enum class Kind { Mesh, Sphere, Disk } kind = Kind::Mesh;
+    int index = -1;  ///< into SceneDesc::meshes, ::spheres or ::disks
     int material = -1;
     int firstLight = -1;  ///< the area light of its first primitive, -1 if not emissive
     bool lightPerPrimitive = true;  ///< false: one light for the whole shape (a rectangle)

@@ -76,6 +76,16 @@ struct SphereDesc {
     std::optional<EmissionDesc> emission;
 };
 
+/// An analytic disk: centre, unit normal (its front side), radius.
+struct DiskDesc {
+    std::string name;
+    Vec3d center{0.0};
+    Vec3d normal{0, 0, 1};
+    double radius = 1;
+    int material = -1;
+    std::optional<EmissionDesc> emission;
+};
+
 enum class LightKind { Point, Spot, Directional, Environment };
 
 /// Lights that are not shapes.
@@ -100,6 +110,7 @@ struct SceneDesc {
     std::vector<std::string> materialNames;
     std::vector<MeshDesc> meshes;
     std::vector<SphereDesc> spheres;
+    std::vector<DiskDesc> disks;
     std::vector<LightDesc> lights;
 };
 
