@@ -6,6 +6,7 @@
 #include <sstream>
 #include <tiny_obj_loader.h>
 
+#include "lamina/bsdf/phong.h"
 #include "lamina/render/ply_reader.h"
 #include "lamina/render/scene_description.h"
 
@@ -79,6 +80,7 @@ class SceneParser {
         if (const auto f = root_.optionalChild("film")) readFilm(*f);
         if (const auto i = root_.optionalChild("integrator")) readIntegrator(*i);
         if (const auto s = root_.optionalChild("sampler")) readSampler(*s);
+        if (const auto t = root_.optionalChild("textures")) readTextures(*t);
         if (const auto m = root_.optionalChild("materials")) readMaterials(*m);
         if (const auto s = root_.optionalChild("shapes")) {
             if (!s->value().is_array()) s->fail("expected an array of shapes");
@@ -172,11 +174,92 @@ class SceneParser {
         r.finish();
     }
 
+    // "textures": {"name": {"type": "checkerboard", "a": colour, "b": colour, "scale": [u, v]}
+    //             | {"type": "image", "file": path, "scale": [u, v], "color_space": "srgb"|"linear"}}
+    void readTextures(const JsonReader& r) {
+        r.expectObject();
+        for (const auto& [name, value] : r.value().items()) {
+            const JsonReader t = r.child(name);
+            t.expectObject();
+            const std::string type = t.requiredString("type");
+            Vec2<float> scale(1.0f);
+            if (t.has("scale")) {
+                const auto sc = t.requiredArray<2>("scale", Range::positive());
+                scale = Vec2<float>(float(sc[0]), float(sc[1]));
+            }
+            std::shared_ptr<const Texture> texture;
+            if (type == "checkerboard") {
+                const auto a = t.triple("a", {0.8, 0.8, 0.8}, Range::nonNegative());
+                const auto b = t.triple("b", {0.2, 0.2, 0.2}, Range::nonNegative());
+                if (!t.has("scale")) scale = Vec2<float>(8.0f);
+                texture = std::make_shared<CheckerboardTexture>(
+                    Rgb<float>(float(a[0]), float(a[1]), float(a[2])),
+                    Rgb<float>(float(b[0]), float(b[1]), float(b[2])), scale);
+            } else if (type == "image") {
+                const std::filesystem::path file = resolve(t, "file");
+                const bool srgb = t.choice("color_space", true, {{"srgb", true}, {"linear", false}});
+                try {
+                    texture = std::make_shared<ImageTexture>(file, scale, srgb);
+                } catch (const InputError& e) {
+                    t.failAt("file", e.what());
+                }
+            } else {
+                t.failAt("type", "expected checkerboard or image, got \"" + type + "\"");
+            }
+            t.finish();
+            scene_.textureNames.push_back(name);
+            scene_.textures.push_back(texture);
+        }
+        r.finish();
+    }
+
+    // Replaces {"texture": name} in a material's texturable keys by a constant the material
+    // parser accepts, and records the texture.
+    MaterialDesc parseTexturedMaterial(const JsonReader& r) {
+        if (!r.value().is_object()) return parseMaterial(r);
+        Json copy = r.value();
+        MaterialTextures tex;
+        for (const char* key : {"base_color", "reflectance", "roughness"}) {
+            if (!copy.contains(key) || !copy[key].is_object()) continue;
+            const JsonReader t(r.value()[key], r.childPath(key), source_);
+            const std::string name = t.requiredString("texture");
+            t.finish();
+            int index = -1;
+            for (std::size_t i = 0; i < scene_.textureNames.size(); ++i)
+                if (scene_.textureNames[i] == name) index = int(i);
+            if (index < 0) t.failAt("texture", "unknown texture \"" + name + "\"");
+            (std::string(key) == "roughness" ? tex.roughness : tex.color) = index;
+            copy[key] = 0.5;
+        }
+        const JsonReader patched(copy, r.path(), source_);
+        MaterialDesc desc = parseMaterial(patched);
+        if (tex.roughness >= 0) {
+            const bool energy = std::visit(
+                [](const auto& m) {
+                    if constexpr (requires { m.microfacet; })
+                        return m.microfacet.multiscatter;
+                    return false;
+                },
+                desc.model);
+            const auto* st = std::get_if<StandardMaterial>(&desc.model);
+            if (energy || (st && st->coupling == LayerCoupling::Albedo))
+                r.failAt("roughness", "a textured roughness cannot use the albedo tables of "
+                                      "multiscatter or the albedo coupling");
+            if (copy.contains("anisotropy")) r.failAt("roughness", "a textured roughness is isotropic");
+        }
+        if (tex.any() && (desc.type == "mix" || desc.type == "layered" ||
+                          (tex.color >= 0 && (desc.type == "conductor" || desc.type == "dielectric"))))
+            r.fail("textures apply to base_color / reflectance / roughness of standard, diffuse "
+                   "and phong materials, and to the roughness of conductors and dielectrics");
+        scene_.materialTextures.push_back(tex);
+        return desc;
+    }
+
     void readMaterials(const JsonReader& r) {
         r.expectObject();
         for (const auto& [name, value] : r.value().items()) {
             scene_.materialNames.push_back(name);
-            scene_.materials.push_back(parseMaterial(r.child(name)));
+            scene_.materials.push_back(parseTexturedMaterial(r.child(name)));
         }
         r.finish();
     }
@@ -196,7 +279,7 @@ class SceneParser {
                                   : "; defined: " + known));
         }
         scene_.materialNames.push_back(m.path());
-        scene_.materials.push_back(parseMaterial(m));
+        scene_.materials.push_back(parseTexturedMaterial(m));
         return int(scene_.materials.size() - 1);
     }
 
@@ -437,6 +520,7 @@ class SceneParser {
             // The square [-1, 1]^2 in the plane z = 0, facing +z; place it with `transform`.
             mesh.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
             mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
+            mesh.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
             mesh.isRectangle = true;
         } else {
             r.failAt("type", "expected one of sphere, disk, rectangle, mesh, obj, ply; got \"" + type + "\"");
@@ -493,6 +577,41 @@ class SceneParser {
 };
 
 }  // namespace
+
+MaterialDesc texturedMaterial(const SceneDesc& scene, int material, const Vec2<float>& uv) {
+    MaterialDesc desc = scene.materials[std::size_t(material)];
+    const MaterialTextures& t = scene.materialTextures[std::size_t(material)];
+    const auto colour = [&]() {
+        const Rgb<float> c = scene.textures[std::size_t(t.color)]->evaluate(uv);
+        return RgbInput(std::clamp(double(c[0]), 0.0, 1.0), std::clamp(double(c[1]), 0.0, 1.0),
+                        std::clamp(double(c[2]), 0.0, 1.0));
+    };
+    const double roughness =
+        t.roughness >= 0
+            ? std::clamp(double(scene.textures[std::size_t(t.roughness)]->evaluate(uv)[0]), 0.0, 1.0)
+            : 0.0;
+    const auto setRoughness = [&](MicrofacetParams& m) { m.alphaX = m.alphaY = roughness * roughness; };
+    std::visit(
+        [&](auto& m) {
+            using M = std::decay_t<decltype(m)>;
+            if constexpr (std::is_same_v<M, StandardMaterial>) {
+                if (t.color >= 0) m.baseColor = colour();
+                if (t.roughness >= 0) setRoughness(m.microfacet);
+            } else if constexpr (std::is_same_v<M, DiffuseMaterial>) {
+                if (t.color >= 0) m.reflectance = colour();
+                if (t.roughness >= 0) m.roughness = roughness;
+            } else if constexpr (std::is_same_v<M, PhongMaterial>) {
+                if (t.color >= 0) m.reflectance = colour();
+                if (t.roughness >= 0)
+                    m.shininess = PhongLobe<Rgb<double>>::shininessFromAlpha(roughness * roughness);
+            } else if constexpr (std::is_same_v<M, ConductorMaterial> ||
+                                 std::is_same_v<M, DielectricMaterial>) {
+                if (t.roughness >= 0) setRoughness(m.microfacet);
+            }
+        },
+        desc.model);
+    return desc;
+}
 
 SceneDesc parseScene(const std::string& text, const JsonSource& source) {
     const Json root = parseJsonText(text, source);

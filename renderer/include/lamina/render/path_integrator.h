@@ -77,7 +77,7 @@ class PathIntegrator {
             if (depth >= settings_.maxDepth) break;
 
             const ShapeInfo& shape = c_.geometry.shapes()[std::size_t(hit->shape)];
-            const Bxdf<S>& bsdf = mode_.bsdf(shape.material, path);
+            const Bxdf<S>& bsdf = mode_.bsdf(shape.material, hit->uv, path);
             const Frame<float> frame = Frame<float>::fromNormal(hit->ns);
             const Vec3f wo = frame.toLocal(-d);
 

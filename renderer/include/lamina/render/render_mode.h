@@ -25,7 +25,7 @@ class RenderMode<Rgb<float>> {
     using Spectrum = Rgb<float>;
     struct Path {};
 
-    explicit RenderMode(const SceneDesc& scene) {
+    explicit RenderMode(const SceneDesc& scene) : scene_(scene) {
         const SpectrumContext<Spectrum> context;
         for (const MaterialDesc& m : scene.materials)
             bsdfs_.push_back(buildBxdf(m, context));
@@ -36,12 +36,18 @@ class RenderMode<Rgb<float>> {
 
     Path startPath(PixelSampler&) const { return {}; }
     Spectrum emission(const Emission& e, const Path&) const { return e.rgb(); }
-    const Bxdf<Spectrum>& bsdf(int material, Path&) const {
-        return *bsdfs_[std::size_t(material)];
+    const Bxdf<Spectrum>& bsdf(int material, const Vec2<float>& uv, Path&) const {
+        if (!scene_.materialTextures[std::size_t(material)].any())
+            return *bsdfs_[std::size_t(material)];
+        // A textured material is built at every hit, with its parameters looked up at uv.
+        thread_local std::unique_ptr<Bxdf<Spectrum>> textured;
+        textured = buildBxdf(texturedMaterial(scene_, material, uv), SpectrumContext<Spectrum>{});
+        return *textured;
     }
     Rgb<double> filmValue(const Spectrum& L, const Path&) const { return Rgb<double>(L); }
 
   private:
+    const SceneDesc& scene_;
     std::vector<std::unique_ptr<Bxdf<Spectrum>>> bsdfs_;
 };
 
@@ -84,8 +90,13 @@ class RenderMode<SampledSpectrum<float>> {
     // A material's BSDF depends on the path's wavelengths: it is built at the first hit on
     // that material along a path and reused at later hits of the same path (a per-thread
     // cache, reset when the path changes).
-    const Bxdf<Spectrum>& bsdf(int material, Path& path) const {
+    const Bxdf<Spectrum>& bsdf(int material, const Vec2<float>& uv, Path& path) const {
         BsdfCache& c = cache();
+        if (scene_.materialTextures[std::size_t(material)].any()) {
+            const SpectrumContext<Spectrum> context{path.lambda};
+            c.textured = buildBxdf(texturedMaterial(scene_, material, uv), context);
+            return *c.textured;
+        }
         if (c.pathId != path.id) {
             c.pathId = path.id;
             c.bsdfs.resize(scene_.materials.size());
@@ -114,6 +125,7 @@ class RenderMode<SampledSpectrum<float>> {
     struct BsdfCache {
         std::uint64_t pathId = 0, nextPathId = 0;
         std::vector<std::unique_ptr<Bxdf<Spectrum>>> bsdfs;
+        std::unique_ptr<Bxdf<Spectrum>> textured;
     };
     static BsdfCache& cache() {
         thread_local BsdfCache c;

@@ -12,6 +12,7 @@
 
 #include "lamina/bsdf/material.h"
 #include "lamina/core/vector.h"
+#include "lamina/render/texture.h"
 #include "lamina/spectral/emission_spectrum.h"
 
 namespace lamina::render {
@@ -108,11 +109,17 @@ struct SceneDesc {
     RenderSettings settings;
     std::vector<MaterialDesc> materials;
     std::vector<std::string> materialNames;
+    std::vector<MaterialTextures> materialTextures;  ///< parallel to materials
+    std::vector<std::shared_ptr<const Texture>> textures;
+    std::vector<std::string> textureNames;
     std::vector<MeshDesc> meshes;
     std::vector<SphereDesc> spheres;
     std::vector<DiskDesc> disks;
     std::vector<LightDesc> lights;
 };
+
+/// The material with its textured parameters looked up at `uv`.
+MaterialDesc texturedMaterial(const SceneDesc& scene, int material, const Vec2<float>& uv);
 
 /// Reads and validates a scene file. Errors name the file and the JSON path.
 SceneDesc loadScene(const std::filesystem::path& file);

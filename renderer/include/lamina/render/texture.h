@@ -1,0 +1,56 @@
+// Textures for material parameters (colours and roughness), looked up by the surface's uv:
+// a checkerboard and images through OpenImageIO (bilinear, repeating; 8-bit images are
+// decoded from sRGB unless declared linear). Only the renderer knows textures: the BSDF
+// library receives the looked-up values (render_mode.h rebuilds a textured material per hit).
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+#include "lamina/core/spectrum.h"
+#include "lamina/core/vector.h"
+
+namespace lamina::render {
+
+class Texture {
+  public:
+    virtual ~Texture() = default;
+    virtual Rgb<float> evaluate(const Vec2<float>& uv) const = 0;
+};
+
+class CheckerboardTexture final : public Texture {
+  public:
+    CheckerboardTexture(const Rgb<float>& a, const Rgb<float>& b, const Vec2<float>& scale)
+        : a_(a), b_(b), scale_(scale) {}
+    Rgb<float> evaluate(const Vec2<float>& uv) const override {
+        const int parity = int(std::floor(uv.x * scale_.x)) + int(std::floor(uv.y * scale_.y));
+        return (parity & 1) ? b_ : a_;
+    }
+
+  private:
+    Rgb<float> a_, b_;
+    Vec2<float> scale_;
+};
+
+class ImageTexture final : public Texture {
+  public:
+    /// `srgb`: decode 8- and 16-bit integer images with the sRGB transfer function.
+    ImageTexture(const std::filesystem::path& file, const Vec2<float>& scale, bool srgb);
+    Rgb<float> evaluate(const Vec2<float>& uv) const override;
+
+  private:
+    Rgb<float> texel(int x, int y) const;
+    int width_ = 0, height_ = 0;
+    std::vector<Rgb<float>> pixels_;
+    Vec2<float> scale_;
+};
+
+/// Which parameters of a material come from textures (indices into SceneDesc::textures).
+struct MaterialTextures {
+    int color = -1;      ///< base_color (standard) or reflectance (diffuse, phong)
+    int roughness = -1;  ///< perceptual roughness, from the texture's first channel
+    bool any() const { return color >= 0 || roughness >= 0; }
+};
+
+}  // namespace lamina::render
