@@ -71,6 +71,29 @@ TEST(Textures, CheckerboardSetsTheReflectancePerCell) {
     EXPECT_GT(dark, 100);
 }
 
+TEST(Textures, InlineMeshUvsMatchTheRectangles) {
+    auto render = [](const std::string& shape) {
+        render::RenderOptions o;
+        o.spp = 4;
+        return render::renderScene(testing::sceneFromText(R"({
+          "camera": {"position": [0, 0, 3], "look_at": [0, 0, 0], "fov": 50},
+          "film": {"resolution": [12, 12]},
+          "textures": {"c": {"type": "checkerboard", "scale": [3, 3]}},
+          "materials": {"m": {"type": "lambert", "reflectance": {"texture": "c"}}},
+          "shapes": [)" + shape + R"(],
+          "lights": [{"type": "environment", "radiance": 1}]})"),
+                                   o);
+    };
+    const auto rect = render(R"({"type": "rectangle", "material": "m"})");
+    const auto mesh = render(R"({"type": "mesh", "material": "m",
+        "positions": [[-1, -1, 0], [1, -1, 0], [1, 1, 0], [-1, 1, 0]],
+        "uvs": [[0, 0], [1, 0], [1, 1], [0, 1]], "normals": [[0, 0, 1], [0, 0, 1], [0, 0, 1], [0, 0, 1]],
+        "faces": [[0, 1, 2, 3]]})");
+    for (int y = 0; y < 12; ++y)
+        for (int x = 0; x < 12; ++x)
+            ASSERT_EQ(rect.film->pixel(x, y)[0], mesh.film->pixel(x, y)[0]);
+}
+
 TEST(Textures, ErrorsNameTheTexture) {
     try {
         testing::sceneFromText(R"({

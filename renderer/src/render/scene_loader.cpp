@@ -375,6 +375,26 @@ class SceneParser {
                 p[c] = float(pos.checkNumber(v[std::size_t(c)], pos.indexPath(i), Range::any()));
             mesh.positions.push_back(p);
         }
+        // Optional per-vertex shading normals and uvs, one per position.
+        auto perVertex = [&](const char* key, int n, auto& out) {
+            if (!r.has(key)) return;
+            const JsonReader list = r.child(key);
+            if (!list.value().is_array() || list.value().size() != mesh.positions.size())
+                list.fail("expected one entry per position (" + std::to_string(mesh.positions.size()) + ")");
+            for (std::size_t i = 0; i < list.value().size(); ++i) {
+                const auto& v = list.value()[i];
+                if (!v.is_array() || int(v.size()) != n)
+                    list.fail("expected " + std::to_string(n) + " numbers at index " + std::to_string(i));
+                typename std::decay_t<decltype(out)>::value_type e{};
+                for (int c = 0; c < n; ++c)
+                    e[c] = float(list.checkNumber(v[std::size_t(c)], list.indexPath(i), Range::any()));
+                out.push_back(e);
+            }
+        };
+        perVertex("normals", 3, mesh.normals);
+        perVertex("uvs", 2, mesh.uvs);
+        for (const auto& n : mesh.normals)
+            if (glm::length(n) == 0) r.failAt("normals", "a normal is zero");
         const JsonReader faces = r.child("faces");
         if (!faces.value().is_array() || faces.value().empty())
             faces.fail("expected an array of faces, each [i, j, k, ...] (a polygon)");
