@@ -115,11 +115,26 @@ TEST(Textures, ErrorsNameTheTexture) {
     try {
         testing::sceneFromText(R"({
           "textures": {"img": {"type": "image", "file": "/nonexistent/tex.png"}},
-          "shapes": [{"type": "sphere", "material": {"type": "lambert"}, "emission": {"radiance": 1}}]})");
+          "shapes": [{"type": "sphere", "material": {"type": "lambert", "reflectance": {"texture": "img"}},
+                      "emission": {"radiance": 1}}]})");
         FAIL();
     } catch (const InputError& e) {
         EXPECT_THAT(e.what(), ::testing::HasSubstr("textures.img.file"));
     }
+}
+
+TEST(Textures, UnusedTexturesAndMaterialsAreNeverLoaded) {
+    // A scene pays only for what it uses: the missing image and the unknown metal are never
+    // read because no shape refers to them.
+    const auto scene = testing::sceneFromText(R"({
+      "textures": {"img": {"type": "image", "file": "/nonexistent/tex.png"}},
+      "materials": {"used": {"type": "lambert"},
+                    "gold": {"type": "conductor", "nk_file": "/nonexistent/au.yml"}},
+      "shapes": [{"type": "sphere", "material": "used", "emission": {"radiance": 1}}]})");
+    EXPECT_EQ(scene.materials.size(), 1u);
+    EXPECT_EQ(scene.textures.size(), 0u);
+    EXPECT_EQ(scene.unusedMaterialNames, std::vector<std::string>{"gold"});
+    EXPECT_EQ(scene.unusedTextureNames, std::vector<std::string>{"img"});
 }
 
 }  // namespace

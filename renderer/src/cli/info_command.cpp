@@ -74,9 +74,15 @@ void run(const std::string& file) {
         const auto bsdf = buildBxdf(scene.materials[i], context);
         std::printf("  %s: %s; lobes: %s%s\n", scene.materialNames[i].c_str(),
                     scene.materials[i].type.c_str(), lobes(bsdf->flags()).c_str(),
-                    used[i] ? "" : " (unused: never loaded for rendering)");
+                    used[i] ? "" : " (unused)");
         if (used[i]) collectSpectral(scene.materials[i], spectral);
     }
+    for (const auto& name : scene.unusedMaterialNames)
+        std::printf("  %s: unused (never loaded)\n", name.c_str());
+    std::printf("textures: %zu loaded", scene.textures.size());
+    for (const auto& name : scene.unusedTextureNames)
+        std::printf(", %s unused (never loaded)", name.c_str());
+    std::printf("\n");
     std::printf("spectral data: %s\n", spectral.empty() ? "none" : "");
     for (const auto& s : spectral)
         std::printf("  %s\n", s.c_str());

@@ -1,6 +1,7 @@
 // Scene files (docs/scene-format.md) -> SceneDesc, validated, with every error naming the file
 // and the JSON path.
 #include <glm/gtc/matrix_transform.hpp>
+#include <algorithm>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -93,6 +94,14 @@ class SceneParser {
                 readLight(JsonReader(l->value()[i], l->indexPath(i), source_));
         }
         root_.finish();
+        for (const auto& [name, reader] : pendingMaterials_)
+            if (std::find(scene_.materialNames.begin(), scene_.materialNames.end(), name) ==
+                scene_.materialNames.end())
+                scene_.unusedMaterialNames.push_back(name);
+        for (const auto& [name, reader] : pendingTextures_)
+            if (std::find(scene_.textureNames.begin(), scene_.textureNames.end(), name) ==
+                scene_.textureNames.end())
+                scene_.unusedTextureNames.push_back(name);
         bool emitter = !scene_.lights.empty();
         for (const auto& m : scene_.meshes) emitter |= m.emission.has_value();
         for (const auto& s : scene_.spheres) emitter |= s.emission.has_value();
@@ -176,10 +185,28 @@ class SceneParser {
 
     // "textures": {"name": {"type": "checkerboard", "a": colour, "b": colour, "scale": [u, v]}
     //             | {"type": "image", "file": path, "scale": [u, v], "color_space": "srgb"|"linear"}}
+    // Textures and named materials are read when a shape first refers to them, so a scene
+    // never loads what it does not use (images, n/k files, albedo tables).
     void readTextures(const JsonReader& r) {
         r.expectObject();
-        for (const auto& [name, value] : r.value().items()) {
-            const JsonReader t = r.child(name);
+        for (const auto& [name, value] : r.value().items())
+            pendingTextures_.emplace_back(name, r.child(name));
+        r.finish();
+    }
+
+    int textureIndex(const JsonReader& at, const std::string& name) {
+        for (std::size_t i = 0; i < scene_.textureNames.size(); ++i)
+            if (scene_.textureNames[i] == name) return int(i);
+        for (const auto& [pendingName, reader] : pendingTextures_)
+            if (pendingName == name) {
+                loadTexture(name, reader);
+                return int(scene_.textures.size() - 1);
+            }
+        at.failAt("texture", "unknown texture \"" + name + "\"");
+    }
+
+    void loadTexture(const std::string& name, const JsonReader& t) {
+        {
             t.expectObject();
             const std::string type = t.requiredString("type");
             Vec2<float> scale(1.0f);
@@ -210,7 +237,6 @@ class SceneParser {
             scene_.textureNames.push_back(name);
             scene_.textures.push_back(texture);
         }
-        r.finish();
     }
 
     // Replaces {"texture": name} in a material's texturable keys by a constant the material
@@ -224,11 +250,7 @@ class SceneParser {
             const JsonReader t(r.value()[key], r.childPath(key), source_);
             const std::string name = t.requiredString("texture");
             t.finish();
-            int index = -1;
-            for (std::size_t i = 0; i < scene_.textureNames.size(); ++i)
-                if (scene_.textureNames[i] == name) index = int(i);
-            if (index < 0) t.failAt("texture", "unknown texture \"" + name + "\"");
-            (std::string(key) == "roughness" ? tex.roughness : tex.color) = index;
+            (std::string(key) == "roughness" ? tex.roughness : tex.color) = textureIndex(t, name);
             copy[key] = 0.5;
         }
         const JsonReader patched(copy, r.path(), source_);
@@ -257,10 +279,8 @@ class SceneParser {
 
     void readMaterials(const JsonReader& r) {
         r.expectObject();
-        for (const auto& [name, value] : r.value().items()) {
-            scene_.materialNames.push_back(name);
-            scene_.materials.push_back(parseTexturedMaterial(r.child(name)));
-        }
+        for (const auto& [name, value] : r.value().items())
+            pendingMaterials_.emplace_back(name, r.child(name));
         r.finish();
     }
 
@@ -271,8 +291,14 @@ class SceneParser {
             const std::string name = m.value().get<std::string>();
             for (std::size_t i = 0; i < scene_.materialNames.size(); ++i)
                 if (scene_.materialNames[i] == name) return int(i);
+            for (const auto& [pendingName, reader] : pendingMaterials_)
+                if (pendingName == name) {
+                    scene_.materials.push_back(parseTexturedMaterial(reader));
+                    scene_.materialNames.push_back(name);
+                    return int(scene_.materials.size() - 1);
+                }
             std::string known;
-            for (const auto& n : scene_.materialNames)
+            for (const auto& [n, reader] : pendingMaterials_)
                 known += (known.empty() ? "" : ", ") + n;
             m.fail("unknown material \"" + name + "\"" +
                    (known.empty() ? " (the scene defines no materials)"
@@ -594,6 +620,7 @@ class SceneParser {
     JsonReader root_;
     const JsonSource& source_;
     SceneDesc scene_;
+    std::vector<std::pair<std::string, JsonReader>> pendingMaterials_, pendingTextures_;
 };
 
 }  // namespace

@@ -112,6 +112,8 @@ struct SceneDesc {
     std::vector<MaterialTextures> materialTextures;  ///< parallel to materials
     std::vector<std::shared_ptr<const Texture>> textures;
     std::vector<std::string> textureNames;
+    /// Defined in the file but used by no shape: never loaded.
+    std::vector<std::string> unusedMaterialNames, unusedTextureNames;
     std::vector<MeshDesc> meshes;
     std::vector<SphereDesc> spheres;
     std::vector<DiskDesc> disks;
