@@ -197,6 +197,24 @@ TEST(DiskLight, IrradianceBelowTheCentreIsAnalytic) {
     }
 }
 
+TEST(Camera, AMatrixEqualsTheLookAtItEncodes) {
+    // The Cornell box camera as a camera-to-world matrix (at (278, 273, -800), looking along
+    // +z, up +y) renders the same image as its look_at form.
+    auto scene = render::loadScene(testing::sharedCornellBox());
+    render::RenderOptions o;
+    o.spp = 2;
+    o.resolution = std::make_pair(16, 16);
+    const auto a = render::renderScene(scene, o);
+    const JsonSource source{"<matrix>", "."};
+    const Json j = parseJsonText(R"({"camera": {"matrix": [1, 0, 0, 278, 0, 1, 0, 273, 0, 0, 1, -800, 0, 0, 0, 1],
+        "fov": 39.3077}, "shapes": [], "lights": [{"type": "point", "position": [0, 0, 0], "intensity": 1}]})", source);
+    scene.camera = render::parseScene(j.dump(), source).camera;
+    const auto b = render::renderScene(scene, o);
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x)
+            ASSERT_EQ(a.film->pixel(x, y)[0], b.film->pixel(x, y)[0]);
+}
+
 TEST(Progressive, InterruptionFinishesThePassInFlightAndMarksThePartialImage) {
     auto scene = render::loadScene(testing::sharedCornellBox());
     render::RenderOptions o;

@@ -117,9 +117,24 @@ class SceneParser {
         const std::string type = r.string("type", "perspective");
         if (type != "perspective" && type != "thin_lens")
             r.failAt("type", "expected perspective or thin_lens, got \"" + type + "\"");
-        c.position = readVec(r, "position", c.position);
-        c.lookAt = readVec(r, "look_at", c.lookAt);
-        c.up = readVec(r, "up", c.up);
+        if (r.has("matrix")) {
+            // A camera-to-world matrix (row-major): the camera sits at its origin, looks
+            // along its +z and has its +y up.
+            if (r.has("position") || r.has("look_at") || r.has("up"))
+                r.fail("give either matrix or position / look_at / up, not both");
+            const auto a = r.requiredArray<16>("matrix");
+            Mat4 m(1.0);
+            for (int row = 0; row < 4; ++row)
+                for (int col = 0; col < 4; ++col)
+                    m[col][row] = a[std::size_t(row * 4 + col)];
+            c.position = Vec3d(m * glm::dvec4(0, 0, 0, 1));
+            c.lookAt = c.position + Vec3d(m * glm::dvec4(0, 0, 1, 0));
+            c.up = Vec3d(m * glm::dvec4(0, 1, 0, 0));
+        } else {
+            c.position = readVec(r, "position", c.position);
+            c.lookAt = readVec(r, "look_at", c.lookAt);
+            c.up = readVec(r, "up", c.up);
+        }
         if (glm::length(c.lookAt - c.position) == 0) r.failAt("look_at", "equals position");
         if (glm::length(glm::cross(c.lookAt - c.position, c.up)) == 0)
             r.failAt("up", "is parallel to the viewing direction");
