@@ -20,13 +20,17 @@ constexpr Named kMaterials[] = {
     {"burley", R"({"type":"burley","reflectance":0.5,"roughness":0.5})"},
     {"phong", R"({"type":"phong","reflectance":0.5,"roughness":0.4})"},
     {"conductor_ggx_f82", R"({"type":"conductor","f0":[0.9,0.6,0.3],"roughness":0.4})"},
-    {"conductor_beckmann", R"({"type":"conductor","distribution":"beckmann","f0":0.9,"roughness":0.4})"},
-    {"conductor_ggx_exact", R"({"type":"conductor","eta":0.2,"k":3.5,"fresnel":"exact","roughness":0.4})"},
-    {"conductor_ggx_multiscatter", R"({"type":"conductor","f0":0.9,"roughness":0.4,"multiscatter":true})"},
+    {"conductor_beckmann",
+     R"({"type":"conductor","distribution":"beckmann","f0":0.9,"roughness":0.4})"},
+    {"conductor_ggx_exact",
+     R"({"type":"conductor","eta":0.2,"k":3.5,"fresnel":"exact","roughness":0.4})"},
+    {"conductor_ggx_multiscatter",
+     R"({"type":"conductor","f0":0.9,"roughness":0.4,"multiscatter":true})"},
     {"conductor_au_spectral_exact", R"({"type":"conductor","material":"Au","roughness":0.4})"},
     {"dielectric_rough", R"({"type":"dielectric","ior":1.5,"roughness":0.3})"},
     {"standard_article", R"({"type":"standard","base_color":[0.8,0.4,0.2],"roughness":0.5})"},
-    {"standard_albedo_multiscatter", R"({"type":"standard","base_color":[0.8,0.4,0.2],"roughness":0.5,"coupling":"albedo","multiscatter":true})"},
+    {"standard_albedo_multiscatter",
+     R"({"type":"standard","base_color":[0.8,0.4,0.2],"roughness":0.5,"coupling":"albedo","multiscatter":true})"},
     {"standard_glass", R"({"type":"standard","transmission":1,"roughness":0.3})"},
 };
 
@@ -60,17 +64,18 @@ void registerAll() {
         const auto desc = std::make_shared<const MaterialDesc>(parseMaterialArgument(m.json));
         for (Op op : {Op::Eval, Op::Pdf, Op::Sample}) {
             const char* opName = op == Op::Eval ? "eval" : op == Op::Pdf ? "pdf" : "sample";
-            benchmark::RegisterBenchmark(
-                (std::string("rgb/") + m.name + "/" + opName).c_str(),
-                [desc, op](benchmark::State& s) {
-                    const auto b = buildBxdf(*desc, SpectrumContext<Rgb<float>>{});
-                    run(s, *b, op);
-                });
+            benchmark::RegisterBenchmark((std::string("rgb/") + m.name + "/" + opName).c_str(),
+                                         [desc, op](benchmark::State& s) {
+                                             const auto b =
+                                                 buildBxdf(*desc, SpectrumContext<Rgb<float>>{});
+                                             run(s, *b, op);
+                                         });
             benchmark::RegisterBenchmark(
                 (std::string("spectral/") + m.name + "/" + opName).c_str(),
                 [desc, op](benchmark::State& s) {
                     auto lambda = SampledWavelengths<float>::fixed({450, 520, 590, 660});
-                    const auto b = buildBxdf(*desc, SpectrumContext<SampledSpectrum<float>>{lambda});
+                    const auto b =
+                        buildBxdf(*desc, SpectrumContext<SampledSpectrum<float>>{lambda});
                     run(s, *b, op);
                 });
         }
@@ -78,15 +83,13 @@ void registerAll() {
     // Building a material per hit, as spectral mode does.
     for (const Named& m : kMaterials) {
         const auto desc = std::make_shared<const MaterialDesc>(parseMaterialArgument(m.json));
-        benchmark::RegisterBenchmark((std::string("spectral/") + m.name + "/build").c_str(),
-                                     [desc](benchmark::State& s) {
-                                         auto lambda = SampledWavelengths<float>::fixed(
-                                             {450, 520, 590, 660});
-                                         for (auto _ : s)
-                                             benchmark::DoNotOptimize(buildBxdf(
-                                                 *desc, SpectrumContext<SampledSpectrum<float>>{
-                                                            lambda}));
-                                     });
+        benchmark::RegisterBenchmark(
+            (std::string("spectral/") + m.name + "/build").c_str(), [desc](benchmark::State& s) {
+                auto lambda = SampledWavelengths<float>::fixed({450, 520, 590, 660});
+                for (auto _ : s)
+                    benchmark::DoNotOptimize(
+                        buildBxdf(*desc, SpectrumContext<SampledSpectrum<float>>{lambda}));
+            });
     }
 }
 

@@ -9,9 +9,9 @@ namespace lamina {
 
 namespace {
 
-constexpr const char* kTypeNames[] = {"standard",  "lambert",    "oren_nayar", "burley",
-                                      "frostbite", "conductor",  "dielectric", "phong",
-                                      "layered",   "mix",        nullptr};
+constexpr const char* kTypeNames[] = {"standard",  "lambert",   "oren_nayar", "burley",
+                                      "frostbite", "conductor", "dielectric", "phong",
+                                      "layered",   "mix",       nullptr};
 
 RgbInput toRgb(const std::array<double, 3>& a) {
     return RgbInput(a[0], a[1], a[2]);
@@ -22,8 +22,8 @@ RgbInput toRgb(const std::array<double, 3>& a) {
 // (Kulla and Conty 2017, "Revisiting Physically Based Shading at Imageworks", slide 20:
 // aspect = sqrt(1 - 0.9 anisotropy), alpha_x = alpha / aspect, alpha_y = alpha aspect).
 void readRoughness(const JsonReader& r, double defaultRoughness, MicrofacetParams& m) {
-    const int forms = int(r.has("roughness")) + int(r.has("alpha")) +
-                      int(r.has("alpha_x") || r.has("alpha_y"));
+    const int forms =
+        int(r.has("roughness")) + int(r.has("alpha")) + int(r.has("alpha_x") || r.has("alpha_y"));
     if (forms > 1) r.fail("give only one of roughness, alpha, or alpha_x and alpha_y");
     if (r.has("alpha_x") || r.has("alpha_y")) {
         m.alphaX = r.requiredNumber("alpha_x", Range::unit());
@@ -41,9 +41,9 @@ void readRoughness(const JsonReader& r, double defaultRoughness, MicrofacetParam
 }
 
 void readMicrofacetSwitches(const JsonReader& r, MicrofacetParams& m, bool allowSampling) {
-    m.g2 = r.choice("g2", G2Form::HeightCorrelated,
-                    {{"height_correlated", G2Form::HeightCorrelated},
-                     {"separable", G2Form::Separable}});
+    m.g2 = r.choice(
+        "g2", G2Form::HeightCorrelated,
+        {{"height_correlated", G2Form::HeightCorrelated}, {"separable", G2Form::Separable}});
     if (!allowSampling) return;
     m.sampling = r.choice("sampling", MicrofacetSampling::VisibleNormals,
                           {{"vndf", MicrofacetSampling::VisibleNormals},
@@ -55,14 +55,13 @@ void readMicrofacetSwitches(const JsonReader& r, MicrofacetParams& m, bool allow
 }
 
 FresnelChoice readFresnel(const JsonReader& r, FresnelChoice defaultValue, bool allowAuto) {
-    const FresnelChoice f =
-        r.choice("fresnel", defaultValue,
-                 {{"schlick", FresnelChoice::Schlick},
-                  {"schlick_shadowed", FresnelChoice::SchlickShadowed},
-                  {"schlick_sg", FresnelChoice::SchlickSphericalGaussian},
-                  {"f82", FresnelChoice::F82},
-                  {"exact", FresnelChoice::Exact},
-                  {"auto", FresnelChoice::Auto}});
+    const FresnelChoice f = r.choice("fresnel", defaultValue,
+                                     {{"schlick", FresnelChoice::Schlick},
+                                      {"schlick_shadowed", FresnelChoice::SchlickShadowed},
+                                      {"schlick_sg", FresnelChoice::SchlickSphericalGaussian},
+                                      {"f82", FresnelChoice::F82},
+                                      {"exact", FresnelChoice::Exact},
+                                      {"auto", FresnelChoice::Auto}});
     if (f == FresnelChoice::Auto && !allowAuto)
         r.failAt("fresnel", "expected one of schlick, schlick_shadowed, schlick_sg, f82, exact");
     return f;
@@ -95,16 +94,16 @@ StandardMaterial readStandard(const JsonReader& r) {
     if (const auto c = r.optionalTriple("f82", Range::unit())) s.f82 = toRgb(*c);
     if (const auto c = r.optionalTriple("f82_tint", Range::nonNegative())) s.f82Tint = toRgb(*c);
 
-    s.diffuse = r.choice<std::optional<DiffuseModel>>(
-        "diffuse_model", DiffuseModel::Lambert,
-        {{"lambert", DiffuseModel::Lambert},
-         {"oren_nayar", DiffuseModel::OrenNayar},
-         {"burley", DiffuseModel::Burley},
-         {"frostbite", DiffuseModel::Frostbite},
-         {"none", std::nullopt}});
+    s.diffuse = r.choice<std::optional<DiffuseModel>>("diffuse_model", DiffuseModel::Lambert,
+                                                      {{"lambert", DiffuseModel::Lambert},
+                                                       {"oren_nayar", DiffuseModel::OrenNayar},
+                                                       {"burley", DiffuseModel::Burley},
+                                                       {"frostbite", DiffuseModel::Frostbite},
+                                                       {"none", std::nullopt}});
     const std::string spec = r.string("specular_model", "ggx");
     if (spec != "ggx" && spec != "beckmann" && spec != "phong" && spec != "none")
-        r.failAt("specular_model", "expected one of ggx, beckmann, phong, none, got \"" + spec + "\"");
+        r.failAt("specular_model",
+                 "expected one of ggx, beckmann, phong, none, got \"" + spec + "\"");
     s.specularLobe = spec != "none";
     s.phong = spec == "phong";
     s.microfacet.ndf = spec == "beckmann" ? NdfKind::Beckmann : NdfKind::Ggx;
@@ -118,9 +117,8 @@ StandardMaterial readStandard(const JsonReader& r) {
     if ((s.f82 || s.f82Tint) && s.fresnel != FresnelChoice::F82)
         r.fail("f82 / f82_tint need \"fresnel\": \"f82\"");
     // The article sums Frostbite's renormalised diffuse and the specular lobe.
-    const LayerCoupling defaultCoupling = s.diffuse == DiffuseModel::Frostbite
-                                              ? LayerCoupling::Sum
-                                              : LayerCoupling::Fresnel;
+    const LayerCoupling defaultCoupling =
+        s.diffuse == DiffuseModel::Frostbite ? LayerCoupling::Sum : LayerCoupling::Fresnel;
     s.coupling = r.choice("coupling", defaultCoupling,
                           {{"fresnel", LayerCoupling::Fresnel},
                            {"sum", LayerCoupling::Sum},
@@ -184,12 +182,12 @@ StandardMaterial readLayered(const JsonReader& r) {
         s.diffuse.reset();
     }
     s.transmission = r.number("transmission", 0.0, Range::unit());
-    s.coupling = r.choice("coupling",
-                          s.diffuse == DiffuseModel::Frostbite ? LayerCoupling::Sum
-                                                               : LayerCoupling::Fresnel,
-                          {{"fresnel", LayerCoupling::Fresnel},
-                           {"sum", LayerCoupling::Sum},
-                           {"albedo", LayerCoupling::Albedo}});
+    s.coupling =
+        r.choice("coupling",
+                 s.diffuse == DiffuseModel::Frostbite ? LayerCoupling::Sum : LayerCoupling::Fresnel,
+                 {{"fresnel", LayerCoupling::Fresnel},
+                  {"sum", LayerCoupling::Sum},
+                  {"albedo", LayerCoupling::Albedo}});
     if (!s.specularLobe && !s.diffuse && s.transmission == 0)
         r.fail("a layered material needs an interface, a base or transmission");
     prepareEnergyTables(s);
@@ -249,7 +247,8 @@ IorSpectrum::Curve readSpectrumCurve(const JsonReader& r, Range range) {
     std::vector<double> nm, values;
     for (std::size_t i = 0; i < v.size(); ++i) {
         if (!v[i].is_array() || v[i].size() != 2)
-            r.fail("expected [nm, value] pairs, got " + v[i].dump() + " at index " + std::to_string(i));
+            r.fail("expected [nm, value] pairs, got " + v[i].dump() + " at index " +
+                   std::to_string(i));
         nm.push_back(r.checkNumber(v[i][0], r.indexPath(i) + "[0]", Range::positive()));
         values.push_back(r.checkNumber(v[i][1], r.indexPath(i) + "[1]", range));
         if (i > 0 && !(nm[i] > nm[i - 1]))
@@ -264,8 +263,9 @@ ConductorMaterial readConductor(const JsonReader& r) {
     const bool f0 = r.has("f0") || r.has("f82");
     const bool named = r.has("material"), file = r.has("nk_file");
     if (int(etaK) + int(f0) + int(named) + int(file) != 1)
-        r.fail("a conductor's optics are exactly one of {\"material\": name}, {\"eta\", \"k\"}, "
-               "{\"nk_file\": path} or {\"f0\", \"f82\"}");
+        r.fail(
+            "a conductor's optics are exactly one of {\"material\": name}, {\"eta\", \"k\"}, "
+            "{\"nk_file\": path} or {\"f0\", \"f82\"}");
     if (named || file) {
         c.optics.form = ConductorOptics::Form::Spectral;
         if (named) {
@@ -294,12 +294,13 @@ ConductorMaterial readConductor(const JsonReader& r) {
         const auto eta = curve("eta", Range::positive());
         const auto k = curve("k", Range::nonNegative());
         c.optics.form = ConductorOptics::Form::Spectral;
-        c.optics.spectrum = std::make_shared<const IorSpectrum>(r.path().empty() ? "eta/k" : r.path(), eta, k, true);
+        c.optics.spectrum = std::make_shared<const IorSpectrum>(
+            r.path().empty() ? "eta/k" : r.path(), eta, k, true);
         std::tie(c.optics.f0, c.optics.f82) = conductorF0F82(*c.optics.spectrum);
     } else if (etaK) {
         c.optics.form = ConductorOptics::Form::EtaK;
-        c.optics.eta = toRgb(r.optionalTriple("eta", Range::positive()).value_or(
-            std::array<double, 3>{}));
+        c.optics.eta =
+            toRgb(r.optionalTriple("eta", Range::positive()).value_or(std::array<double, 3>{}));
         if (!r.has("eta")) r.failAt("eta", "missing; expected a number > 0 or [r, g, b]");
         if (!r.has("k")) r.failAt("k", "missing; expected a number >= 0 or [r, g, b]");
         c.optics.k = toRgb(*r.optionalTriple("k", Range::nonNegative()));
@@ -357,11 +358,14 @@ DielectricMaterial readDielectric(const JsonReader& r) {
             const Json& c = sm.value()["c"];
             if (!sm.has("b") || !sm.has("c") || !b.is_array() || !c.is_array() ||
                 b.size() != c.size() || b.empty())
-                sm.fail("expected {\"b\": [...], \"c\": [...]} of equal, non-zero length (c in um^2)");
+                sm.fail(
+                    "expected {\"b\": [...], \"c\": [...]} of equal, non-zero length (c in um^2)");
             std::vector<double> bs, cs;
             for (std::size_t i = 0; i < b.size(); ++i) {
-                bs.push_back(sm.checkNumber(b[i], sm.childPath("b") + "[" + std::to_string(i) + "]", Range::any()));
-                cs.push_back(sm.checkNumber(c[i], sm.childPath("c") + "[" + std::to_string(i) + "]", Range::nonNegative()));
+                bs.push_back(sm.checkNumber(b[i], sm.childPath("b") + "[" + std::to_string(i) + "]",
+                                            Range::any()));
+                cs.push_back(sm.checkNumber(c[i], sm.childPath("c") + "[" + std::to_string(i) + "]",
+                                            Range::nonNegative()));
             }
             (void)sm.child("b");
             (void)sm.child("c");
@@ -440,8 +444,8 @@ void prepareEnergyTables(StandardMaterial& s) {
     interfaceOnly.coupling = LayerCoupling::Fresnel;
     MaterialDesc desc{"standard", interfaceOnly};
     const auto bsdf = buildBxdf(desc, SpectrumContext<Rgb<double>>{});
-    s.interfaceAlbedo = std::make_shared<const AlbedoTable>(AlbedoTable::compute(
-        [&](const Vec3<double>& wo, double u1, double u2, double uc) {
+    s.interfaceAlbedo = std::make_shared<const AlbedoTable>(
+        AlbedoTable::compute([&](const Vec3<double>& wo, double u1, double u2, double uc) {
             const auto r = bsdf->sample(wo, uc, {u1, u2}, TransportMode::Radiance);
             return r ? r->weight.average() : 0.0;
         }));

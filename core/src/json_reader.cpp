@@ -66,8 +66,9 @@ Json readJsonFile(const std::filesystem::path& path) {
 
 std::string Range::describe() const {
     const bool lo = std::isfinite(min), hi = std::isfinite(max);
-    if (lo && hi) return "a number in " + std::string(minOpen ? "(" : "[") + formatNumber(min) +
-                         ", " + formatNumber(max) + "]";
+    if (lo && hi)
+        return "a number in " + std::string(minOpen ? "(" : "[") + formatNumber(min) + ", " +
+               formatNumber(max) + "]";
     if (lo) return std::string("a number ") + (minOpen ? "> " : ">= ") + formatNumber(min);
     if (hi) return "a number <= " + formatNumber(max);
     return "a finite number";
@@ -124,12 +125,12 @@ std::optional<JsonReader> JsonReader::optionalChild(const std::string& key) cons
 double JsonReader::checkNumber(const Json& v, const std::string& path, Range range) const {
     // NaN and Inf cannot be written in JSON, but a string "nan" or a huge literal can.
     if (!v.is_number())
-        throw InputError(source_.name + ": " + path + ": expected " + range.describe() +
-                         ", got " + typeName(v));
+        throw InputError(source_.name + ": " + path + ": expected " + range.describe() + ", got " +
+                         typeName(v));
     const double d = v.get<double>();
     if (!std::isfinite(d) || !range.contains(d))
-        throw InputError(source_.name + ": " + path + ": expected " + range.describe() +
-                         ", got " + formatNumber(d));
+        throw InputError(source_.name + ": " + path + ": expected " + range.describe() + ", got " +
+                         formatNumber(d));
     return d;
 }
 
@@ -154,8 +155,8 @@ int JsonReader::integer(const std::string& key, int defaultValue, int min, int m
     const Json* v = find(key);
     if (!v) return defaultValue;
     if (!v->is_number_integer() || v->get<long long>() < min || v->get<long long>() > max)
-        failAt(key, "expected an integer in [" + std::to_string(min) + ", " +
-                        std::to_string(max) + "], got " + v->dump());
+        failAt(key, "expected an integer in [" + std::to_string(min) + ", " + std::to_string(max) +
+                        "], got " + v->dump());
     return int(v->get<long long>());
 }
 
@@ -194,8 +195,8 @@ std::optional<std::array<double, 3>> JsonReader::optionalTriple(const std::strin
     return out;
 }
 
-std::array<double, 3> JsonReader::triple(const std::string& key,
-                                         std::array<double, 3> defaultValue, Range range) const {
+std::array<double, 3> JsonReader::triple(const std::string& key, std::array<double, 3> defaultValue,
+                                         Range range) const {
     return optionalTriple(key, range).value_or(defaultValue);
 }
 
@@ -206,7 +207,8 @@ void JsonReader::finish() const {
         std::string known;
         for (const auto& k : used_)
             known += (known.empty() ? "" : ", ") + k;
-        failAt(key, "unknown key" + (known.empty() ? std::string() : " (expected one of: " + known + ")"));
+        failAt(key, "unknown key" +
+                        (known.empty() ? std::string() : " (expected one of: " + known + ")"));
     }
 }
 

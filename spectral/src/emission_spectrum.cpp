@@ -46,7 +46,8 @@ EmissionSpectrum EmissionSpectrum::tabulated(std::vector<double> nm, std::vector
 }
 
 Rgb<double> EmissionSpectrum::rgb() const {
-    const Vec3d xyz = integrateAgainstCmf([this](double nm) { return (*this)(nm); }) / cieYIntegral();
+    const Vec3d xyz =
+        integrateAgainstCmf([this](double nm) { return (*this)(nm); }) / cieYIntegral();
     const Vec3d rgb = RgbColorSpace::rec709().toRgb(xyz);
     return {std::max(0.0, rgb.x), std::max(0.0, rgb.y), std::max(0.0, rgb.z)};
 }

@@ -22,27 +22,28 @@ IorSpectrum::IorSpectrum(std::string name, Curve n, Curve k, bool dispersive)
     : name_(std::move(name)), n_(std::move(n)), k_(std::move(k)), dispersive_(dispersive) {}
 
 IorSpectrum IorSpectrum::constant(double n, double k) {
-    return IorSpectrum("constant", [n](double) { return n; }, [k](double) { return k; }, false);
+    return IorSpectrum(
+        "constant", [n](double) { return n; }, [k](double) { return k; }, false);
 }
 
 IorSpectrum::Curve tabulatedCurve(std::vector<double> nm, std::vector<double> values,
                                   std::string what) {
     auto warned = std::make_shared<std::atomic<bool>>(false);
-    return [nm = std::move(nm), values = std::move(values), what = std::move(what),
-            warned](double x) {
-        if (x < nm.front() || x > nm.back()) {
-            if (!warned->exchange(true))
-                std::cerr << "lamina: warning: " << what << ": data cover " << nm.front() << "-"
-                          << nm.back() << " nm; " << x
-                          << " nm and other wavelengths outside use the end values\n";
-            return x < nm.front() ? values.front() : values.back();
-        }
-        const auto it = std::upper_bound(nm.begin(), nm.end(), x);
-        const std::size_t i = std::min(std::size_t(it - nm.begin()), nm.size() - 1);
-        if (i == 0) return values.front();
-        const double t = (x - nm[i - 1]) / (nm[i] - nm[i - 1]);
-        return (1 - t) * values[i - 1] + t * values[i];
-    };
+    return
+        [nm = std::move(nm), values = std::move(values), what = std::move(what), warned](double x) {
+            if (x < nm.front() || x > nm.back()) {
+                if (!warned->exchange(true))
+                    std::cerr << "lamina: warning: " << what << ": data cover " << nm.front() << "-"
+                              << nm.back() << " nm; " << x
+                              << " nm and other wavelengths outside use the end values\n";
+                return x < nm.front() ? values.front() : values.back();
+            }
+            const auto it = std::upper_bound(nm.begin(), nm.end(), x);
+            const std::size_t i = std::min(std::size_t(it - nm.begin()), nm.size() - 1);
+            if (i == 0) return values.front();
+            const double t = (x - nm[i - 1]) / (nm[i] - nm[i - 1]);
+            return (1 - t) * values[i - 1] + t * values[i];
+        };
 }
 
 namespace {
@@ -58,28 +59,94 @@ struct LdMetal {
 };
 
 constexpr LdMetal kLdMetals[] = {
-    {"Ag", 9.01, {{{0.845, 0, 0.048}, {0.065, 0.816, 3.886}, {0.124, 4.481, 0.452},
-                   {0.011, 8.185, 0.065}, {0.84, 9.083, 0.916}, {5.646, 20.29, 2.419}}}},
-    {"Au", 9.03, {{{0.76, 0, 0.053}, {0.024, 0.415, 0.241}, {0.01, 0.83, 0.345},
-                   {0.071, 2.969, 0.87}, {0.601, 4.304, 2.494}, {4.384, 13.32, 2.214}}}},
-    {"Cu", 10.83, {{{0.575, 0, 0.03}, {0.061, 0.291, 0.378}, {0.104, 2.957, 1.056},
-                    {0.723, 5.3, 3.213}, {0.638, 11.18, 4.305}, {0, 0, 0}}}},
-    {"Al", 14.98, {{{0.523, 0, 0.047}, {0.227, 0.162, 0.333}, {0.05, 1.544, 0.312},
-                    {0.166, 1.808, 1.351}, {0.03, 3.473, 3.382}, {0, 0, 0}}}},
-    {"Be", 18.51, {{{0.084, 0, 0.035}, {0.031, 0.1, 1.664}, {0.14, 1.032, 3.395},
-                    {0.53, 3.183, 4.454}, {0.13, 4.604, 1.802}, {0, 0, 0}}}},
-    {"Cr", 10.75, {{{0.168, 0, 0.047}, {0.151, 0.121, 3.175}, {0.15, 0.543, 1.305},
-                    {1.149, 1.97, 2.676}, {0.825, 8.775, 1.335}, {0, 0, 0}}}},
-    {"Ni", 15.92, {{{0.096, 0, 0.048}, {0.1, 0.174, 4.511}, {0.135, 0.582, 1.334},
-                    {0.106, 1.597, 2.178}, {0.729, 6.089, 6.292}, {0, 0, 0}}}},
-    {"Pd", 9.72, {{{0.33, 0, 0.008}, {0.649, 0.336, 2.95}, {0.121, 0.501, 0.555},
-                   {0.638, 1.659, 4.621}, {0.453, 5.715, 3.236}, {0, 0, 0}}}},
-    {"Pt", 9.59, {{{0.333, 0, 0.08}, {0.191, 0.78, 0.517}, {0.659, 1.314, 1.838},
-                   {0.547, 3.141, 3.668}, {3.576, 9.249, 8.517}, {0, 0, 0}}}},
-    {"Ti", 7.29, {{{0.148, 0, 0.082}, {0.899, 0.777, 2.276}, {0.393, 1.545, 2.518},
-                   {0.187, 2.509, 1.663}, {0.001, 19.43, 1.762}, {0, 0, 0}}}},
-    {"W", 13.22, {{{0.206, 0, 0.064}, {0.054, 1.004, 0.53}, {0.166, 1.917, 1.281},
-                   {0.706, 3.58, 3.332}, {2.59, 7.498, 5.836}, {0, 0, 0}}}},
+    {"Ag",
+     9.01,
+     {{{0.845, 0, 0.048},
+       {0.065, 0.816, 3.886},
+       {0.124, 4.481, 0.452},
+       {0.011, 8.185, 0.065},
+       {0.84, 9.083, 0.916},
+       {5.646, 20.29, 2.419}}}},
+    {"Au",
+     9.03,
+     {{{0.76, 0, 0.053},
+       {0.024, 0.415, 0.241},
+       {0.01, 0.83, 0.345},
+       {0.071, 2.969, 0.87},
+       {0.601, 4.304, 2.494},
+       {4.384, 13.32, 2.214}}}},
+    {"Cu",
+     10.83,
+     {{{0.575, 0, 0.03},
+       {0.061, 0.291, 0.378},
+       {0.104, 2.957, 1.056},
+       {0.723, 5.3, 3.213},
+       {0.638, 11.18, 4.305},
+       {0, 0, 0}}}},
+    {"Al",
+     14.98,
+     {{{0.523, 0, 0.047},
+       {0.227, 0.162, 0.333},
+       {0.05, 1.544, 0.312},
+       {0.166, 1.808, 1.351},
+       {0.03, 3.473, 3.382},
+       {0, 0, 0}}}},
+    {"Be",
+     18.51,
+     {{{0.084, 0, 0.035},
+       {0.031, 0.1, 1.664},
+       {0.14, 1.032, 3.395},
+       {0.53, 3.183, 4.454},
+       {0.13, 4.604, 1.802},
+       {0, 0, 0}}}},
+    {"Cr",
+     10.75,
+     {{{0.168, 0, 0.047},
+       {0.151, 0.121, 3.175},
+       {0.15, 0.543, 1.305},
+       {1.149, 1.97, 2.676},
+       {0.825, 8.775, 1.335},
+       {0, 0, 0}}}},
+    {"Ni",
+     15.92,
+     {{{0.096, 0, 0.048},
+       {0.1, 0.174, 4.511},
+       {0.135, 0.582, 1.334},
+       {0.106, 1.597, 2.178},
+       {0.729, 6.089, 6.292},
+       {0, 0, 0}}}},
+    {"Pd",
+     9.72,
+     {{{0.33, 0, 0.008},
+       {0.649, 0.336, 2.95},
+       {0.121, 0.501, 0.555},
+       {0.638, 1.659, 4.621},
+       {0.453, 5.715, 3.236},
+       {0, 0, 0}}}},
+    {"Pt",
+     9.59,
+     {{{0.333, 0, 0.08},
+       {0.191, 0.78, 0.517},
+       {0.659, 1.314, 1.838},
+       {0.547, 3.141, 3.668},
+       {3.576, 9.249, 8.517},
+       {0, 0, 0}}}},
+    {"Ti",
+     7.29,
+     {{{0.148, 0, 0.082},
+       {0.899, 0.777, 2.276},
+       {0.393, 1.545, 2.518},
+       {0.187, 2.509, 1.663},
+       {0.001, 19.43, 1.762},
+       {0, 0, 0}}}},
+    {"W",
+     13.22,
+     {{{0.206, 0, 0.064},
+       {0.054, 1.004, 0.53},
+       {0.166, 1.917, 1.281},
+       {0.706, 3.58, 3.332},
+       {2.59, 7.498, 5.836},
+       {0, 0, 0}}}},
 };
 
 const LdMetal* findLdMetal(const std::string& name) {
@@ -180,8 +247,8 @@ IorSpectrum loadCsv(const std::filesystem::path& path) {
     }
     checkTable(path, nm, {n, k});
     const std::string name = path.filename().string();
-    const bool dispersive = *std::max_element(n.begin(), n.end()) !=
-                            *std::min_element(n.begin(), n.end());
+    const bool dispersive =
+        *std::max_element(n.begin(), n.end()) != *std::min_element(n.begin(), n.end());
     return IorSpectrum(name, tabulatedCurve(nm, n, name), tabulatedCurve(nm, k, name), dispersive);
 }
 
@@ -225,8 +292,8 @@ IorSpectrum loadYaml(const std::filesystem::path& path) {
             }
             checkTable(path, nm, {a, b});
             if (type == "tabulated nk" || type == "tabulated n") {
-                dispersive |= *std::max_element(a.begin(), a.end()) !=
-                              *std::min_element(a.begin(), a.end());
+                dispersive |=
+                    *std::max_element(a.begin(), a.end()) != *std::min_element(a.begin(), a.end());
                 n = tabulatedCurve(nm, a, name);
             }
             if (type == "tabulated nk") k = tabulatedCurve(nm, b, name);
@@ -242,8 +309,9 @@ IorSpectrum loadYaml(const std::filesystem::path& path) {
             n = formulaCurve(type == "formula 1" ? 1 : 2, c);
             dispersive = true;
         } else {
-            fileError(path, where + ": unsupported type (lamina reads tabulated nk, tabulated n, "
-                            "tabulated k, formula 1, formula 2)");
+            fileError(path, where +
+                                ": unsupported type (lamina reads tabulated nk, tabulated n, "
+                                "tabulated k, formula 1, formula 2)");
         }
     }
     if (!n) fileError(path, "no real index (n) in the DATA list");
@@ -279,8 +347,8 @@ std::optional<IorSpectrum> namedIor(const std::string& name) {
     }
     for (const auto& g : kGlasses)
         if (name == g.name)
-            return IorSpectrum(g.name, formulaCurve(g.formula, g.coefficients),
-                               [](double) { return 0.0; }, true);
+            return IorSpectrum(
+                g.name, formulaCurve(g.formula, g.coefficients), [](double) { return 0.0; }, true);
     return std::nullopt;
 }
 
@@ -308,11 +376,11 @@ IorSpectrum loadIorFile(const std::filesystem::path& path) {
 
 std::pair<Rgb<double>, Rgb<double>> conductorF0F82(const IorSpectrum& ior) {
     auto colour = [&](double cosTheta) {
-        const Vec3d xyz = integrateAgainstCmf([&](double nm) {
-                              return fresnelConductor(cosTheta, ior.n(nm), ior.k(nm)) *
-                                     d65Normalized(nm);
-                          }) /
-                          cieYIntegral();
+        const Vec3d xyz =
+            integrateAgainstCmf([&](double nm) {
+                return fresnelConductor(cosTheta, ior.n(nm), ior.k(nm)) * d65Normalized(nm);
+            }) /
+            cieYIntegral();
         const Vec3d rgb = RgbColorSpace::rec709().toRgb(xyz);
         return Rgb<double>(rgb.x, rgb.y, rgb.z);
     };

@@ -11,15 +11,17 @@
 // with the assembler's .incbin: no 10 MB source file to compile, nothing to find at run time.
 #define LAMINA_STRINGIFY2(x) #x
 #define LAMINA_STRINGIFY(x) LAMINA_STRINGIFY2(x)
-__asm__(".section .rodata\n"
-        ".balign 16\n"
-        ".global lamina_rgb_to_spectrum_blob\n"
-        "lamina_rgb_to_spectrum_blob:\n"
-        ".incbin \"" LAMINA_RGB_TO_SPECTRUM_FILE "\"\n"
-        ".global lamina_rgb_to_spectrum_blob_end\n"
-        "lamina_rgb_to_spectrum_blob_end:\n"
-        ".byte 0\n"
-        ".previous\n");
+__asm__(
+    ".section .rodata\n"
+    ".balign 16\n"
+    ".global lamina_rgb_to_spectrum_blob\n"
+    "lamina_rgb_to_spectrum_blob:\n"
+    ".incbin \"" LAMINA_RGB_TO_SPECTRUM_FILE
+    "\"\n"
+    ".global lamina_rgb_to_spectrum_blob_end\n"
+    "lamina_rgb_to_spectrum_blob_end:\n"
+    ".byte 0\n"
+    ".previous\n");
 extern "C" const unsigned char lamina_rgb_to_spectrum_blob[];
 extern "C" const unsigned char lamina_rgb_to_spectrum_blob_end[];
 

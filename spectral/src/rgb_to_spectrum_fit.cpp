@@ -23,8 +23,7 @@ double labFDerivative(double t) {
 }
 
 Vec3d toLab(const Vec3d& xyz, const Vec3d& white) {
-    const double fx = labF(xyz.x / white.x), fy = labF(xyz.y / white.y),
-                 fz = labF(xyz.z / white.z);
+    const double fx = labF(xyz.x / white.x), fy = labF(xyz.y / white.y), fz = labF(xyz.z / white.z);
     return {116.0 * fy - 16.0, 500.0 * (fx - fy), 200.0 * (fy - fz)};
 }
 

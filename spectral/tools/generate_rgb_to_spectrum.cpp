@@ -69,7 +69,8 @@ int main(int argc, char** argv) {
                     const auto p = lamina::RgbToSpectrumFitter::toNanometres(c);
                     const std::size_t idx =
                         ((((std::size_t(l) * res + std::size_t(k)) * res + std::size_t(j)) * res) +
-                         std::size_t(i)) * 3;
+                         std::size_t(i)) *
+                        3;
                     data[idx] = float(p.c0);
                     data[idx + 1] = float(p.c1);
                     data[idx + 2] = float(p.c2);

@@ -16,8 +16,7 @@ using testing::sceneFromText;
 
 constexpr double kZ = 3.29;  // two-sided significance 0.001
 
-render::RenderResult renderText(const std::string& json, render::RenderModeKind mode,
-                                int spp) {
+render::RenderResult renderText(const std::string& json, render::RenderModeKind mode, int spp) {
     render::RenderOptions o;
     o.mode = mode;
     o.spp = spp;
@@ -78,7 +77,7 @@ INSTANTIATE_TEST_SUITE_P(Modes, AnalyticRender,
                                            render::RenderModeKind::Spectral),
                          [](const auto& paramInfo) {
                              return paramInfo.param == render::RenderModeKind::Rgb ? "rgb"
-                                                                              : "spectral";
+                                                                                   : "spectral";
                          });
 
 TEST(ModesAgree, GreyMaterialsUnderWhiteLightRenderTheSameInRgbAndSpectral) {
@@ -193,7 +192,8 @@ TEST(DiskLight, IrradianceBelowTheCentreIsAnalytic) {
     for (double rho : {1.49, 1.51}) {
         const auto hit = g.intersect(Vec3f(float(rho), 3, 0), Vec3f(0, -1, 0));
         ASSERT_TRUE(hit);
-        EXPECT_EQ(g.shapes()[std::size_t(hit->shape)].kind == render::ShapeInfo::Kind::Disk, rho < 1.5);
+        EXPECT_EQ(g.shapes()[std::size_t(hit->shape)].kind == render::ShapeInfo::Kind::Disk,
+                  rho < 1.5);
     }
 }
 
@@ -206,8 +206,10 @@ TEST(Camera, AMatrixEqualsTheLookAtItEncodes) {
     o.resolution = std::make_pair(16, 16);
     const auto a = render::renderScene(scene, o);
     const JsonSource source{"<matrix>", "."};
-    const Json j = parseJsonText(R"({"camera": {"matrix": [1, 0, 0, 278, 0, 1, 0, 273, 0, 0, 1, -800, 0, 0, 0, 1],
-        "fov": 39.3077}, "shapes": [], "lights": [{"type": "point", "position": [0, 0, 0], "intensity": 1}]})", source);
+    const Json j = parseJsonText(
+        R"({"camera": {"matrix": [1, 0, 0, 278, 0, 1, 0, 273, 0, 0, 1, -800, 0, 0, 0, 1],
+        "fov": 39.3077}, "shapes": [], "lights": [{"type": "point", "position": [0, 0, 0], "intensity": 1}]})",
+        source);
     scene.camera = render::parseScene(j.dump(), source).camera;
     const auto b = render::renderScene(scene, o);
     for (int y = 0; y < 16; ++y)
@@ -226,7 +228,8 @@ TEST(Progressive, InterruptionFinishesThePassInFlightAndMarksThePartialImage) {
     });
     flag.store(false);
     EXPECT_TRUE(r.partial);
-    EXPECT_EQ(r.spp, 4);  // passes of 1, 1 and 2 spp; the flag raised after the third stops the loop
+    EXPECT_EQ(r.spp,
+              4);  // passes of 1, 1 and 2 spp; the flag raised after the third stops the loop
     EXPECT_GT(r.film->pixel(8, 8)[1], 0.0);
 }
 

@@ -28,7 +28,8 @@ struct CommandRun {
 CommandRun runLamina(const std::string& args, const std::string& input = "") {
     std::string redirect;
     if (!input.empty()) {
-        const fs::path in = fs::temp_directory_path() / ("lamina-cli-stdin-" + std::to_string(::getpid()));
+        const fs::path in =
+            fs::temp_directory_path() / ("lamina-cli-stdin-" + std::to_string(::getpid()));
         std::ofstream(in) << input << "\n";
         redirect = " < " + in.string();
     }
@@ -72,11 +73,14 @@ std::string scene(const std::string& material, const std::string& emission = "[1
     return R"({
   "camera": {"position": [0, 0, -4], "look_at": [0, 0, 0]},
   "film": {"resolution": [8, 8]},
-  "materials": {"m": )" + material + R"(},
-  "shapes": [)" + extraShape + R"(
+  "materials": {"m": )" +
+           material + R"(},
+  "shapes": [)" +
+           extraShape + R"(
     {"type": "sphere", "radius": 1, "material": "m"},
     {"type": "rectangle", "material": "m", "transform": [{"translate": [0, 3, 0]}],
-     "emission": {"radiance": )" + emission + R"(}}
+     "emission": {"radiance": )" +
+           emission + R"(}}
   ]
 })";
 }
@@ -110,8 +114,8 @@ TEST_F(CliTest, AovLayersHaveTheirNamesAndMeanings) {
     auto in = OIIO::ImageInput::open(out);
     ASSERT_TRUE(in);
     const auto& spec = in->spec();
-    const std::vector<std::string> expected = {"R", "G", "B", "Albedo.R", "Albedo.G", "Albedo.B",
-                                               "N.X", "N.Y", "N.Z", "Z", "Variance.Y"};
+    const std::vector<std::string> expected = {
+        "R", "G", "B", "Albedo.R", "Albedo.G", "Albedo.B", "N.X", "N.Y", "N.Z", "Z", "Variance.Y"};
     ASSERT_EQ(spec.nchannels, int(expected.size()));
     std::vector<float> px(std::size_t(spec.width) * spec.height * expected.size());
     ASSERT_TRUE(in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, px.data()));
@@ -173,8 +177,7 @@ INSTANTIATE_TEST_SUITE_P(
                        R"({"type": "obj", "file": "nowhere.obj", "material": "m"},)"),
                  "nowhere.obj: no such file"},
         BadInput{"unknown_material_name",
-                 scene(R"({"type": "lambert"})", "1",
-                       R"({"type": "sphere", "material": "gold"},)"),
+                 scene(R"({"type": "lambert"})", "1", R"({"type": "sphere", "material": "gold"},)"),
                  "shapes[0].material: unknown material \"gold\""},
         BadInput{"no_light", R"({"shapes": []})", "the scene has no light"}),
     [](const auto& paramInfo) { return std::string(paramInfo.param.name); });
@@ -195,12 +198,14 @@ TEST_F(CliTest, UsageErrorsExitWithTwo) {
 }
 
 TEST_F(CliTest, BsdfEvalMatchesTheLibraryAndSampleCountsLines) {
-    const std::string material = R"('{"type":"standard","base_color":[0.8,0.5,0.2],"roughness":0.4}')";
-    const CommandRun e = runLamina("bsdf eval " + material, R"({"wo":[0.3,0,1],"wi":[-0.2,0.1,1]})");
+    const std::string material =
+        R"('{"type":"standard","base_color":[0.8,0.5,0.2],"roughness":0.4}')";
+    const CommandRun e =
+        runLamina("bsdf eval " + material, R"({"wo":[0.3,0,1],"wi":[-0.2,0.1,1]})");
     ASSERT_EQ(e.exitCode, 0) << e.output;
     const Json j = Json::parse(e.output);
-    const auto desc = parseMaterialArgument(
-        R"({"type":"standard","base_color":[0.8,0.5,0.2],"roughness":0.4})");
+    const auto desc =
+        parseMaterialArgument(R"({"type":"standard","base_color":[0.8,0.5,0.2],"roughness":0.4})");
     const auto bsdf = buildBxdf(desc, SpectrumContext<Rgb<double>>{});
     const Vec3<double> wo = glm::normalize(Vec3<double>(0.3, 0, 1)),
                        wi = glm::normalize(Vec3<double>(-0.2, 0.1, 1));

@@ -40,7 +40,9 @@ TEST(EnvironmentMap, SamplingMatchesItsDensity) {
             // the map's.
             return Vec3d(w.x, w.z, w.y);
         },
-        [&](const Vec3d& w) { return double(map.pdf(Vec3<float>(float(w.x), float(w.z), float(w.y)))); });
+        [&](const Vec3d& w) {
+            return double(map.pdf(Vec3<float>(float(w.x), float(w.z), float(w.y))));
+        });
     EXPECT_TRUE(r.passed) << r.message;
 }
 
@@ -71,7 +73,8 @@ TEST(EnvironmentMap, ConstantImageIsAWhiteFurnace) {
       "integrator": {"max_depth": 64},
       "materials": {"white": {"type": "lambert", "reflectance": 1}},
       "shapes": [{"type": "sphere", "radius": 1, "material": "white"}],
-      "lights": [{"type": "environment", "file": ")" + file.string() + R"(", "rotate": 45}]
+      "lights": [{"type": "environment", "file": ")" +
+                              file.string() + R"(", "rotate": 45}]
     })";
     for (auto mode : {render::RenderModeKind::Rgb, render::RenderModeKind::Spectral}) {
         render::RenderOptions o;

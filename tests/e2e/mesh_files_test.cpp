@@ -51,7 +51,8 @@ std::string sceneWith(const std::string& shape) {
       "camera": {"position": [0.3, 0.2, 3], "look_at": [0, 0, 0], "fov": 60},
       "film": {"resolution": [16, 16]},
       "materials": {"m": {"type": "lambert", "reflectance": 0.7}},
-      "shapes": [)" + shape + R"(],
+      "shapes": [)" +
+           shape + R"(],
       "lights": [{"type": "environment", "radiance": 1}]
     })";
 }
@@ -69,8 +70,9 @@ TEST_F(MeshFiles, ObjAndPlyMatchTheInlineMesh) {
     auto render = [&](const std::string& shape) {
         return render::renderScene(testing::sceneFromText(sceneWith(shape)), o);
     };
-    const auto reference = render(std::string(R"({"type": "mesh", "material": "m", "positions": )") +
-                                  kPositions + R"(, "faces": [[0, 1, 2, 3]]})");
+    const auto reference =
+        render(std::string(R"({"type": "mesh", "material": "m", "positions": )") + kPositions +
+               R"(, "faces": [[0, 1, 2, 3]]})");
     for (const auto& file : {obj, ascii, binary}) {
         const std::string type = file.extension() == ".obj" ? "obj" : "ply";
         const auto r = render(R"({"type": ")" + type + R"(", "material": "m", "file": ")" +
@@ -82,10 +84,11 @@ TEST_F(MeshFiles, ObjAndPlyMatchTheInlineMesh) {
 }
 
 TEST_F(MeshFiles, BadPlyFilesAreNamed) {
-    const auto truncated = write("truncated.ply",
-                                 "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
-                                 "property float y\nproperty float z\nelement face 1\n"
-                                 "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n");
+    const auto truncated =
+        write("truncated.ply",
+              "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+              "property float y\nproperty float z\nelement face 1\n"
+              "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n");
     const auto outOfRange = write("range.ply",
                                   "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
                                   "property float y\nproperty float z\nelement face 1\n"

@@ -43,10 +43,13 @@ TEST_P(RayOffset, NoSelfIntersectionOnSpheresAndTriangles) {
     int sphereHits = 0, triangleHits = 0, failures = 0;
     for (int i = 0; i < 20000; ++i) {
         // Aim at a random point of the sphere from outside, then leave it.
-        const Vec3<double> dir = Vec3<double>(squareToUniformSphere(Vec2<double>(rng.nextDouble(), rng.nextDouble())));
+        const Vec3<double> dir =
+            Vec3<double>(squareToUniformSphere(Vec2<double>(rng.nextDouble(), rng.nextDouble())));
         const Vec3f origin = Vec3f(Vec3<double>(c) + 10 * s * dir);
-        const auto target = Vec3f(Vec3<double>(c) + 0.5 * s * Vec3<double>(squareToUniformSphere(
-                                                         Vec2<double>(rng.nextDouble(), rng.nextDouble()))));
+        const auto target =
+            Vec3f(Vec3<double>(c) + 0.5 * s *
+                                        Vec3<double>(squareToUniformSphere(
+                                            Vec2<double>(rng.nextDouble(), rng.nextDouble()))));
         const auto hit = geometry.intersect(origin, glm::normalize(target - origin));
         if (!hit || hit->shape != kSphere) continue;
         ++sphereHits;
@@ -54,7 +57,8 @@ TEST_P(RayOffset, NoSelfIntersectionOnSpheresAndTriangles) {
         const Vec3f out = render::offsetRayOrigin(hit->p, hit->ng);
         Vec3f w = squareToCosineHemisphere(Vec2f(rng.nextFloat(), rng.nextFloat()));
         w = Frame<float>::fromNormal(hit->ng).toWorld(w);
-        if (const auto again = geometry.intersect(out, w); again && again->shape == kSphere) ++failures;
+        if (const auto again = geometry.intersect(out, w); again && again->shape == kSphere)
+            ++failures;
         // Inwards (refraction): must reach the far side, at least a little away.
         const Vec3f in = render::offsetRayOrigin(hit->p, -hit->ng);
         const auto far = geometry.intersect(in, -hit->ng);
@@ -63,8 +67,10 @@ TEST_P(RayOffset, NoSelfIntersectionOnSpheresAndTriangles) {
     for (int i = 0; i < 5000; ++i) {
         const Vec2f b = squareToUniformTriangle(Vec2f(rng.nextFloat(), rng.nextFloat()));
         const auto& m = scene.meshes[0];
-        const Vec3f p = b.x * m.positions[0] + b.y * m.positions[1] + (1 - b.x - b.y) * m.positions[2];
-        const Vec3f n = glm::normalize(glm::cross(m.positions[1] - m.positions[0], m.positions[2] - m.positions[0]));
+        const Vec3f p =
+            b.x * m.positions[0] + b.y * m.positions[1] + (1 - b.x - b.y) * m.positions[2];
+        const Vec3f n = glm::normalize(
+            glm::cross(m.positions[1] - m.positions[0], m.positions[2] - m.positions[0]));
         const Vec3f origin = p + 5.0f * float(s) * n;
         const auto hit = geometry.intersect(origin, glm::normalize(p - origin));
         if (!hit || hit->shape != kTriangle) continue;
@@ -82,9 +88,11 @@ TEST_P(RayOffset, NoSelfIntersectionOnSpheresAndTriangles) {
 
 INSTANTIATE_TEST_SUITE_P(Scales, RayOffset,
                          ::testing::Values(ScaleCase{1e-4, 0}, ScaleCase{1e-4, 1.0},
-                                           ScaleCase{1, 0}, ScaleCase{1, 1e3},
-                                           ScaleCase{1e4, 0}, ScaleCase{1e4, 1e5}),
-                         [](const auto& paramInfo) { return "case" + std::to_string(paramInfo.index); });
+                                           ScaleCase{1, 0}, ScaleCase{1, 1e3}, ScaleCase{1e4, 0},
+                                           ScaleCase{1e4, 1e5}),
+                         [](const auto& paramInfo) {
+                             return "case" + std::to_string(paramInfo.index);
+                         });
 
 }  // namespace
 }  // namespace lamina

@@ -41,7 +41,8 @@ TEST(RectangleLight, SamplingMatchesItsDensity) {
                 const auto hit = geometry.intersect(ref, Vec3f(w));
                 return hit ? double(light.pdf(ref, *hit)) : 0.0;
             });
-        EXPECT_TRUE(r.passed) << "from " << ref.x << "," << ref.y << "," << ref.z << ": " << r.message;
+        EXPECT_TRUE(r.passed) << "from " << ref.x << "," << ref.y << "," << ref.z << ": "
+                              << r.message;
     }
 }
 
@@ -65,8 +66,8 @@ TEST(RectangleLight, FarAwayTheAreaFallbackIsUnbiased) {
     const Vec3<double> n0 = glm::normalize(glm::cross(ex, ey));
     const Vec3<double> centre = Vec3<double>(m.positions[0]) + 0.5 * (ex + ey);
     const Vec3<double> d = centre - Vec3<double>(ref);
-    const double expected = glm::length(glm::cross(ex, ey)) * std::abs(glm::dot(n0, glm::normalize(d))) /
-                            glm::dot(d, d);
+    const double expected = glm::length(glm::cross(ex, ey)) *
+                            std::abs(glm::dot(n0, glm::normalize(d))) / glm::dot(d, d);
     EXPECT_LT(expected, 1e-4);
     EXPECT_NEAR(sum / n, expected, 1e-3 * expected);
 }
@@ -82,7 +83,8 @@ TEST(RectangleLight, RendersTheSameAsTheQuadSampledByArea) {
             {"type": "rectangle", "material": "grey",
              "transform": [{"rotate": {"axis": [1, 0, 0], "angle": -90}}, {"scale": 4}]},
             {"type": "sphere", "center": [0, 0.5, 0], "radius": 0.5, "material": "grey"},
-            )" + light + R"(]})";
+            )" +
+               light + R"(]})";
     };
     const auto rect = render::renderScene(
         testing::sceneFromText(sceneWith(
@@ -96,17 +98,17 @@ TEST(RectangleLight, RendersTheSameAsTheQuadSampledByArea) {
         }());
     // The same quad: after the transform its corners are (x, 2, z) with x in [-0.2, 0.8],
     // z in [-0.1, 0.5], facing down.
-    const auto mesh = render::renderScene(
-        testing::sceneFromText(sceneWith(
-            R"({"type": "mesh", "material": "lamp", "emission": {"radiance": 5},
+    const auto mesh =
+        render::renderScene(testing::sceneFromText(sceneWith(
+                                R"({"type": "mesh", "material": "lamp", "emission": {"radiance": 5},
                 "positions": [[-0.2, 2, -0.1], [0.8, 2, -0.1], [0.8, 2, 0.5], [-0.2, 2, 0.5]],
                 "faces": [[0, 1, 2, 3]]})")),
-        [] {
-            render::RenderOptions o;
-            o.spp = 128;
-            o.seed = 99;
-            return o;
-        }());
+                            [] {
+                                render::RenderOptions o;
+                                o.spp = 128;
+                                o.seed = 99;
+                                return o;
+                            }());
     for (int c = 0; c < 3; ++c) {
         const auto a = testing::imageMean(*rect.film, c), b = testing::imageMean(*mesh.film, c);
         EXPECT_LT(std::abs(a.mean - b.mean), 3.29 * std::hypot(a.standardError, b.standardError))

@@ -19,7 +19,8 @@ double srgbToLinear(double v) {
 }
 
 TEST(ImageTexture, DecodesSrgbAndInterpolatesBilinearly) {
-    const fs::path file = fs::temp_directory_path() / ("lamina-tex-" + std::to_string(::getpid()) + ".png");
+    const fs::path file =
+        fs::temp_directory_path() / ("lamina-tex-" + std::to_string(::getpid()) + ".png");
     // 2 x 2 pixels: top row 0 and 255, bottom row 128 and 64 (all channels equal).
     const unsigned char px[12] = {0, 0, 0, 255, 255, 255, 128, 128, 128, 64, 64, 64};
     {
@@ -63,8 +64,10 @@ TEST(Textures, CheckerboardSetsTheReflectancePerCell) {
         for (int x = 0; x < 16; ++x) {
             const double v = r.film->pixel(x, y)[1];
             const double se = std::sqrt(r.film->varianceOfMean(x, y));
-            if (std::abs(v - 0.8) < 4 * se + 0.02) ++bright;
-            else if (std::abs(v - 0.2) < 4 * se + 0.02) ++dark;
+            if (std::abs(v - 0.8) < 4 * se + 0.02)
+                ++bright;
+            else if (std::abs(v - 0.2) < 4 * se + 0.02)
+                ++dark;
         }
     // Cell borders blur a few pixels; the rest is one of the two values, in equal shares.
     EXPECT_GT(bright, 100);
@@ -101,7 +104,8 @@ TEST(Textures, ErrorsNameTheTexture) {
           "shapes": [{"type": "sphere", "material": "m", "emission": {"radiance": 1}}]})");
         FAIL();
     } catch (const InputError& e) {
-        EXPECT_THAT(e.what(), ::testing::HasSubstr("materials.m.reflectance.texture: unknown texture \"nope\""));
+        EXPECT_THAT(e.what(), ::testing::HasSubstr(
+                                  "materials.m.reflectance.texture: unknown texture \"nope\""));
     }
     try {
         testing::sceneFromText(R"({

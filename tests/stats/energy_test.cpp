@@ -52,17 +52,28 @@ std::vector<EnergyCase> cases() {
     std::vector<EnergyCase> out;
     for (const char* r : {"0.05", "0.3", "0.6", "1"}) {
         const std::string rs = r;
-        out.push_back({"conductor_f0_1_r" + rs, R"({"type":"conductor","f0":1,"roughness":)" + rs + "}", 1});
-        out.push_back({"conductor_beckmann_r" + rs,
-                       R"({"type":"conductor","distribution":"beckmann","eta":1.5,"k":3,"roughness":)" + rs + "}", 1});
-        out.push_back({"dielectric_r" + rs, R"({"type":"dielectric","ior":1.5,"roughness":)" + rs + "}", 1});
-        out.push_back({"standard_r" + rs, R"({"type":"standard","base_color":1,"roughness":)" + rs + "}", 1.75});
-        out.push_back({"standard_glass_r" + rs,
-                       R"({"type":"standard","base_color":1,"transmission":1,"roughness":)" + rs + "}", 1});
-        out.push_back({"oren_nayar_r" + rs, R"({"type":"oren_nayar","reflectance":1,"roughness":)" + rs + "}", 1.015});
-        out.push_back({"phong_r" + rs, R"({"type":"phong","reflectance":1,"roughness":)" + rs + "}", 1});
-        out.push_back({"frostbite_r" + rs, R"({"type":"frostbite","reflectance":1,"roughness":)" + rs + "}", 1});
-        out.push_back({"burley_r" + rs, R"({"type":"burley","reflectance":1,"roughness":)" + rs + "}", 1.5});
+        out.push_back(
+            {"conductor_f0_1_r" + rs, R"({"type":"conductor","f0":1,"roughness":)" + rs + "}", 1});
+        out.push_back(
+            {"conductor_beckmann_r" + rs,
+             R"({"type":"conductor","distribution":"beckmann","eta":1.5,"k":3,"roughness":)" + rs +
+                 "}",
+             1});
+        out.push_back(
+            {"dielectric_r" + rs, R"({"type":"dielectric","ior":1.5,"roughness":)" + rs + "}", 1});
+        out.push_back({"standard_r" + rs,
+                       R"({"type":"standard","base_color":1,"roughness":)" + rs + "}", 1.75});
+        out.push_back(
+            {"standard_glass_r" + rs,
+             R"({"type":"standard","base_color":1,"transmission":1,"roughness":)" + rs + "}", 1});
+        out.push_back({"oren_nayar_r" + rs,
+                       R"({"type":"oren_nayar","reflectance":1,"roughness":)" + rs + "}", 1.015});
+        out.push_back(
+            {"phong_r" + rs, R"({"type":"phong","reflectance":1,"roughness":)" + rs + "}", 1});
+        out.push_back({"frostbite_r" + rs,
+                       R"({"type":"frostbite","reflectance":1,"roughness":)" + rs + "}", 1});
+        out.push_back(
+            {"burley_r" + rs, R"({"type":"burley","reflectance":1,"roughness":)" + rs + "}", 1.5});
     }
     out.push_back({"lambert", R"({"type":"lambert","reflectance":1})", 1});
     return out;
@@ -71,7 +82,8 @@ std::vector<EnergyCase> cases() {
 class Energy : public ::testing::TestWithParam<EnergyCase> {};
 
 TEST_P(Energy, AlbedoOfWhiteMaterialIsBounded) {
-    const auto b = buildBxdf(parseMaterialArgument(GetParam().json), SpectrumContext<Rgb<double>>{});
+    const auto b =
+        buildBxdf(parseMaterialArgument(GetParam().json), SpectrumContext<Rgb<double>>{});
     for (double c : {0.05, 0.2, 0.5, 1.0}) {
         const Albedo a = albedo(*b, c, 42);
         EXPECT_LE(a.mean, GetParam().bound + 1e-3 + 4 * a.stderrOfMean)
@@ -92,10 +104,11 @@ TEST(Energy, AlbedoCouplingWithMultiscatterPassesTheWhiteFurnace) {
     // 99% of the energy at every roughness and theta_o <= 85 degrees (and creates none),
     // where the article's coupling loses (or gains) tens of percent.
     for (const char* r : {"0.05", "0.2", "0.5", "0.8", "1"})
-        for (const std::string base :
-             {R"("type":"standard","base_color":1,"coupling":"albedo","multiscatter":true)",
-              R"("type":"standard","base_color":1,"metalness":1,"coupling":"albedo","multiscatter":true)",
-              R"("type":"conductor","f0":1,"multiscatter":true)"}) {
+        for (
+            const std::string base :
+            {R"("type":"standard","base_color":1,"coupling":"albedo","multiscatter":true)",
+             R"("type":"standard","base_color":1,"metalness":1,"coupling":"albedo","multiscatter":true)",
+             R"("type":"conductor","f0":1,"multiscatter":true)"}) {
             const std::string json = "{" + base + R"(,"roughness":)" + r + "}";
             const auto b = buildBxdf(parseMaterialArgument(json), SpectrumContext<Rgb<double>>{});
             for (double c : {std::cos(85 * kPi<double> / 180), 0.2, 0.5, 1.0}) {

@@ -162,8 +162,9 @@ inline std::vector<BsdfCase> bsdfCases() {
     cases.push_back({"conductor_multiscatter_r0p3",
                      material(R"({"type":"conductor","eta":[0.2,0.4,1.4],"k":[3.4,2.4,1.8],)"
                               R"("fresnel":"exact","roughness":0.3,"multiscatter":true})")});
-    cases.push_back({"conductor_multiscatter_r1",
-                     material(R"({"type":"conductor","f0":0.9,"roughness":1,"multiscatter":true})")});
+    cases.push_back(
+        {"conductor_multiscatter_r1",
+         material(R"({"type":"conductor","f0":0.9,"roughness":1,"multiscatter":true})")});
     cases.push_back({"standard_albedo_coupling_r0p5",
                      material(R"({"type":"standard","base_color":[0.8,0.5,0.2],"roughness":0.5,)"
                               R"("coupling":"albedo"})")});
@@ -173,8 +174,10 @@ inline std::vector<BsdfCase> bsdfCases() {
     cases.push_back({"standard_albedo_multiscatter_metal_r0p8",
                      material(R"({"type":"standard","base_color":[0.9,0.6,0.3],"metalness":1,)"
                               R"("roughness":0.8,"coupling":"albedo","multiscatter":true})")});
-    cases.push_back({"phong_r0p3", material(R"({"type":"phong","reflectance":0.9,"roughness":0.3})")});
-    cases.push_back({"phong_r0p8", material(R"({"type":"phong","reflectance":0.9,"roughness":0.8})")});
+    cases.push_back(
+        {"phong_r0p3", material(R"({"type":"phong","reflectance":0.9,"roughness":0.3})")});
+    cases.push_back(
+        {"phong_r0p8", material(R"({"type":"phong","reflectance":0.9,"roughness":0.8})")});
     cases.push_back({"standard_phong_r0p5",
                      material(R"({"type":"standard","base_color":[0.8,0.5,0.2],"roughness":0.5,)"
                               R"("specular_model":"phong"})")});

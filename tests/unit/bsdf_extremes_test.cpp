@@ -43,10 +43,10 @@ std::vector<Config> configs() {
     for (double a : alphas) {
         for (double k : {0.0, 0.1, 3.0, 10.0, 20.0})
             for (const char* ndf : {"ggx", "beckmann"})
-                out.push_back({std::string("conductor_") + ndf + "_a" + number(a) + "_k" + number(k),
-                               R"({"type":"conductor","distribution":")" + std::string(ndf) +
-                                   R"(","alpha":)" + number(a) + R"(,"eta":0.4,"k":)" + number(k) +
-                                   "}"});
+                out.push_back(
+                    {std::string("conductor_") + ndf + "_a" + number(a) + "_k" + number(k),
+                     R"({"type":"conductor","distribution":")" + std::string(ndf) +
+                         R"(","alpha":)" + number(a) + R"(,"eta":0.4,"k":)" + number(k) + "}"});
         for (double eta : {1.0, 1 + 1e-6, 1.0001, 1.33, 1.5, 2.42, 4.0})
             for (int inverse = 0; inverse < (eta == 1.0 ? 1 : 2); ++inverse) {  // 1/1 = 1
                 const double e = inverse ? 1 / eta : eta;
@@ -56,12 +56,12 @@ std::vector<Config> configs() {
             }
         out.push_back({"standard_a" + number(a),
                        R"({"type":"standard","alpha":)" + number(a) + R"(,"base_color":1})"});
-        out.push_back({"standard_metal_a" + number(a),
-                       R"({"type":"standard","metalness":1,"alpha":)" + number(a) +
-                           R"(,"base_color":[1,0.8,0.3]})"});
-        out.push_back({"standard_glass_a" + number(a),
-                       R"({"type":"standard","transmission":0.7,"alpha":)" + number(a) +
-                           R"(,"base_color":1})"});
+        out.push_back(
+            {"standard_metal_a" + number(a), R"({"type":"standard","metalness":1,"alpha":)" +
+                                                 number(a) + R"(,"base_color":[1,0.8,0.3]})"});
+        out.push_back(
+            {"standard_glass_a" + number(a), R"({"type":"standard","transmission":0.7,"alpha":)" +
+                                                 number(a) + R"(,"base_color":1})"});
     }
     for (const char* d : {"lambert", "oren_nayar", "burley", "frostbite"})
         for (double r : {0.0, 1e-5, 0.5, 1.0})
@@ -143,7 +143,8 @@ TEST_P(BsdfExtremes, FiniteNonNegativeAndFloatMatchesDouble) {
                 continue;
             }
         }
-        const Rgb<float> vf = f->eval(Vec3<float>(p.wo), Vec3<float>(p.wi), TransportMode::Radiance);
+        const Rgb<float> vf =
+            f->eval(Vec3<float>(p.wo), Vec3<float>(p.wi), TransportMode::Radiance);
         for (int c = 0; c < 3; ++c) {
             if (p.value[c] > 1e-6 * peak) {
                 EXPECT_NEAR(double(vf[c]), p.value[c], 1e-3 * p.value[c])
@@ -155,8 +156,8 @@ TEST_P(BsdfExtremes, FiniteNonNegativeAndFloatMatchesDouble) {
                 << "pdf wo " << p.wo.x << "," << p.wo.z << " wi " << p.wi.x << "," << p.wi.z;
         }
     }
-    EXPECT_LE(skipped, std::max(1, compared / 20)) << skipped << " of " << compared
-                                                    << " pairs are ill-conditioned";
+    EXPECT_LE(skipped, std::max(1, compared / 20))
+        << skipped << " of " << compared << " pairs are ill-conditioned";
     // Sampling at every direction, including the random numbers' edges (pbrt-v4 #313).
     for (const auto& wo : dirs)
         for (double uc : {0.0, 0.5, 1 - 1e-16})

@@ -22,9 +22,9 @@ fs::path nkDir() {
     return fs::path(LAMINA_SHARED_DIR) / "data" / "nk";
 }
 
-#define REQUIRE_SHARED_DATA()                                                        \
-    if (!fs::is_directory(nkDir()))                                                  \
-    GTEST_SKIP() << "../shared/data/nk is absent (" << nkDir().string()              \
+#define REQUIRE_SHARED_DATA()                                           \
+    if (!fs::is_directory(nkDir()))                                     \
+    GTEST_SKIP() << "../shared/data/nk is absent (" << nkDir().string() \
                  << "): the n/k data tests need the shared folder beside the clone"
 
 struct Row {

@@ -44,8 +44,10 @@ TEST(StandardMaterial, DefaultSwitchesReproduceTheArticle) {
         Spec base;
         double metalness, roughness;
     };
-    const Params params[] = {{Spec(0.8, 0.5, 0.2), 0.0, 0.5}, {Spec(0.9, 0.6, 0.3), 1.0, 0.3},
-                             {Spec(0.2, 0.7, 0.4), 0.4, 0.8}, {Spec(0.01, 0.02, 0.03), 0.5, 0.1},
+    const Params params[] = {{Spec(0.8, 0.5, 0.2), 0.0, 0.5},
+                             {Spec(0.9, 0.6, 0.3), 1.0, 0.3},
+                             {Spec(0.2, 0.7, 0.4), 0.4, 0.8},
+                             {Spec(0.01, 0.02, 0.03), 0.5, 0.1},
                              {Spec(1.0, 1.0, 1.0), 0.0, 1.0}};
     int checked = 0;
     for (const auto& p : params) {
@@ -67,8 +69,8 @@ TEST(StandardMaterial, DefaultSwitchesReproduceTheArticle) {
                     const Spec got = bsdf->eval(wo, wi, TransportMode::Radiance);
                     for (int c = 0; c < 3; ++c)
                         EXPECT_NEAR(got[c], ref[c], 1e-4 * std::abs(ref[c]) + 1e-12)
-                            << json << " theta_o " << thetaO << " theta_i " << thetaI
-                            << " phi " << phi;
+                            << json << " theta_o " << thetaO << " theta_i " << thetaI << " phi "
+                            << phi;
                     ++checked;
                 }
     }
@@ -86,13 +88,14 @@ TEST(StandardMaterial, PhongSpecularReproducesTheArticle) {
     for (double thetaO : {0.0, 30.0, 70.0})
         for (double thetaI : {5.0, 35.0, 80.0}) {
             const double to = thetaO * kPi<double> / 180, ti = thetaI * kPi<double> / 180;
-            const V3 v(std::sin(to), 0, std::cos(to)), l(-std::sin(ti) * 0.8, std::sin(ti) * 0.6, std::cos(ti));
+            const V3 v(std::sin(to), 0, std::cos(to)),
+                l(-std::sin(ti) * 0.8, std::sin(ti) * 0.6, std::cos(ti));
             const V3 h = glm::normalize(v + l);
             const V3 r(-l.x, -l.y, l.z);  // L reflected about N
             const double f90 = std::min(1.0, 0.04 / 0.04);
             const double F = 0.04 + (f90 - 0.04) * std::pow(1 - glm::dot(l, h), 5.0);
-            const double phong = 0.04 * (s + 1) / (2 * kPi<double>) *
-                                 std::pow(std::max(0.0, glm::dot(r, v)), s) * l.z;
+            const double phong =
+                0.04 * (s + 1) / (2 * kPi<double>)*std::pow(std::max(0.0, glm::dot(r, v)), s) * l.z;
             const Spec got = bsdf->eval(v, l, TransportMode::Radiance);
             for (int c = 0; c < 3; ++c) {
                 const double ref = (1 - F) * base[c] / kPi<double> * l.z + phong;
@@ -104,16 +107,18 @@ TEST(StandardMaterial, PhongSpecularReproducesTheArticle) {
 TEST(LayeredMaterial, SpellsOutTheSameStackAsStandard) {
     // An interface of F0 0.04 over a Lambert base of the same colour is the article's default
     // standard material.
-    const auto layered = build(
-        R"({"type":"layered","interface":{"model":"ggx","roughness":0.5,"f0":0.04},)"
-        R"("base":{"type":"lambert","reflectance":[0.8,0.5,0.2]}})");
-    const auto standard = build(R"({"type":"standard","base_color":[0.8,0.5,0.2],"roughness":0.5})");
+    const auto layered =
+        build(R"({"type":"layered","interface":{"model":"ggx","roughness":0.5,"f0":0.04},)"
+              R"("base":{"type":"lambert","reflectance":[0.8,0.5,0.2]}})");
+    const auto standard =
+        build(R"({"type":"standard","base_color":[0.8,0.5,0.2],"roughness":0.5})");
     const V3 wo = glm::normalize(V3(0.4, 0.1, 0.8)), wi = glm::normalize(V3(-0.3, 0.2, 0.6));
     for (int c = 0; c < 3; ++c)
         EXPECT_NEAR(layered->eval(wo, wi, TransportMode::Radiance)[c],
                     standard->eval(wo, wi, TransportMode::Radiance)[c], 1e-12);
     // A base with its own roughness and no interface is that diffuse model alone.
-    const auto base = build(R"({"type":"layered","base":{"type":"oren_nayar","reflectance":0.7,"roughness":0.9}})");
+    const auto base = build(
+        R"({"type":"layered","base":{"type":"oren_nayar","reflectance":0.7,"roughness":0.9}})");
     const auto on = build(R"({"type":"oren_nayar","reflectance":0.7,"roughness":0.9})");
     EXPECT_NEAR(base->eval(wo, wi, TransportMode::Radiance)[0],
                 on->eval(wo, wi, TransportMode::Radiance)[0], 1e-12);
@@ -150,15 +155,15 @@ TEST(ConductorMaterial, RgbModeF82MatchesExactFresnelAtItsTwoAngles) {
 }
 
 TEST(MixMaterial, BlendsEvalAndPdfLinearly) {
-    const auto mix = build(
-        R"({"type":"mix","weight":0.25,"a":{"type":"lambert","reflectance":0.8},)"
-        R"("b":{"type":"conductor","eta":1.5,"k":3,"roughness":0.5}})");
+    const auto mix =
+        build(R"({"type":"mix","weight":0.25,"a":{"type":"lambert","reflectance":0.8},)"
+              R"("b":{"type":"conductor","eta":1.5,"k":3,"roughness":0.5}})");
     const auto a = build(R"({"type":"lambert","reflectance":0.8})");
     const auto b = build(R"({"type":"conductor","eta":1.5,"k":3,"roughness":0.5})");
     const V3 wo = glm::normalize(V3(0.3, 0.1, 0.8)), wi = glm::normalize(V3(-0.4, 0.0, 0.7));
     const auto m = TransportMode::Radiance;
-    EXPECT_NEAR(mix->eval(wo, wi, m)[1], 0.75 * a->eval(wo, wi, m)[1] + 0.25 * b->eval(wo, wi, m)[1],
-                1e-12);
+    EXPECT_NEAR(mix->eval(wo, wi, m)[1],
+                0.75 * a->eval(wo, wi, m)[1] + 0.25 * b->eval(wo, wi, m)[1], 1e-12);
     EXPECT_NEAR(mix->pdf(wo, wi), 0.75 * a->pdf(wo, wi) + 0.25 * b->pdf(wo, wi), 1e-12);
 }
 
@@ -186,7 +191,8 @@ TEST(MaterialErrors, NameTheJsonPathAndWhatWasExpected) {
                 "diffuse_model: expected one of lambert, oren_nayar");
     expectError(R"({"type":"conductor","eta":1.5})", "k: missing");
     expectError(R"({"type":"conductor","eta":1.5,"k":3,"f0":0.9})", "exactly one of");
-    expectError(R"({"type":"layered","interface":{"model":"cook"}})", "interface.model: expected one of");
+    expectError(R"({"type":"layered","interface":{"model":"cook"}})",
+                "interface.model: expected one of");
     expectError(R"({"type":"layered"})", "needs an interface, a base or transmission");
     expectError(R"({"type":"mix","a":{"type":"lambert"},"b":{"type":"lambert","reflectance":2}})",
                 "b.reflectance: expected a number in [0, 1], got 2");
@@ -212,7 +218,8 @@ TEST(ConductorMaterial, NamedMetalIsExactInSpectralModeAndF82InRgbMode) {
     // Spectral: the exact Fresnel reflectance of the LD gold at each wavelength.
     auto lambda = SampledWavelengths<double>::fixed({450, 550, 650, 700});
     const SpectrumContext<SampledSpectrum<double>> spectral{lambda};
-    const auto s = buildBxdf(gold, spectral)->sample(normal, 0.5, {0.5, 0.5}, TransportMode::Radiance);
+    const auto s =
+        buildBxdf(gold, spectral)->sample(normal, 0.5, {0.5, 0.5}, TransportMode::Radiance);
     ASSERT_TRUE(s);
     const IorSpectrum au = *namedIor("Au");
     for (int i = 0; i < 4; ++i)
@@ -231,11 +238,13 @@ TEST(ConductorMaterial, InlineSpectraOfEtaAndK) {
         R"({"type":"conductor","eta":[[400,1.4],[700,0.2]],"k":[[400,1.9],[700,4.0]]})");
     auto lambda = SampledWavelengths<double>::fixed({400, 550, 700, 700});
     const SpectrumContext<SampledSpectrum<double>> spectral{lambda};
-    const auto s = buildBxdf(m, spectral)->sample({0, 0, 1}, 0.5, {0.5, 0.5}, TransportMode::Radiance);
+    const auto s =
+        buildBxdf(m, spectral)->sample({0, 0, 1}, 0.5, {0.5, 0.5}, TransportMode::Radiance);
     ASSERT_TRUE(s);
     EXPECT_NEAR(s->weight[0], fresnelConductor(1.0, 1.4, 1.9), 1e-12);
     EXPECT_NEAR(s->weight[1], fresnelConductor(1.0, 0.8, 2.95), 1e-12);  // linear in between
-    expectError(R"({"type":"conductor","eta":[[400,1.4],[300,0.2]],"k":2})", "wavelengths must increase");
+    expectError(R"({"type":"conductor","eta":[[400,1.4],[300,0.2]],"k":2})",
+                "wavelengths must increase");
 }
 
 TEST(DielectricMaterial, DispersiveGlassKeepsOnlyTheHeroWavelength) {
@@ -260,12 +269,14 @@ TEST(DielectricMaterial, CauchyAndSellmeierFormulas) {
     const auto& d = std::get<DielectricMaterial>(sell.model);
     EXPECT_NEAR(d.ior, 1.5168, 1e-4);
     EXPECT_NEAR(d.spectrum->n(450), namedIor("bk7")->n(450), 1e-12);
-    const auto cauchy = parseMaterialArgument(R"({"type":"dielectric","ior":{"cauchy":[1.5046,0.0042]}})");
+    const auto cauchy =
+        parseMaterialArgument(R"({"type":"dielectric","ior":{"cauchy":[1.5046,0.0042]}})");
     const auto& c = std::get<DielectricMaterial>(cauchy.model);
     EXPECT_NEAR(c.spectrum->n(500), 1.5046 + 0.0042 / 0.25, 1e-12);
     EXPECT_TRUE(c.spectrum->dispersive());
     expectError(R"({"type":"dielectric","ior":{"cauchy":[1.5]}})", "ior.cauchy: expected [A, B]");
-    expectError(R"({"type":"dielectric","ior":{"sellmeier":{"b":[1],"c":[]}}})", "equal, non-zero length");
+    expectError(R"({"type":"dielectric","ior":{"sellmeier":{"b":[1],"c":[]}}})",
+                "equal, non-zero length");
 }
 
 TEST(MaterialErrors, UnknownMetalsGlassesAndFilesAreNamed) {

@@ -82,8 +82,8 @@ TEST(EmissionSpectrum, NamedSpectraAreNormalisedToTheirLuminance) {
 
 TEST(RgbToSpectrum, OptimiserConvergesFromAColdStart) {
     const RgbToSpectrumFitter fitter;
-    for (const Rgb<double> rgb : {Rgb<double>(0.8, 0.3, 0.1), Rgb<double>(0.2, 0.5, 0.9),
-                                  Rgb<double>(0.5, 0.5, 0.2)}) {
+    for (const Rgb<double> rgb :
+         {Rgb<double>(0.8, 0.3, 0.1), Rgb<double>(0.2, 0.5, 0.9), Rgb<double>(0.5, 0.5, 0.2)}) {
         const SigmoidFit f = fitter.fit(rgb, {0, 0, 0});
         EXPECT_LT(f.residual, 1e-4);
         const Rgb<double> back = fitter.colorOf(f.coefficients);

@@ -41,8 +41,8 @@ std::vector<double> parseNumbers(const std::string& text, const std::string& wha
         char* end = nullptr;
         const double d = std::strtod(item.c_str(), &end);
         if (item.empty() || *end != '\0' || !std::isfinite(d))
-            throw CLI::ValidationError(what, "expected comma-separated numbers, got \"" + text +
-                                                 "\"");
+            throw CLI::ValidationError(what,
+                                       "expected comma-separated numbers, got \"" + text + "\"");
         v.push_back(d);
     }
     return v;
@@ -57,7 +57,9 @@ Vec3d parseDirection(const std::string& text, const std::string& what) {
 }
 
 std::string lobeName(std::uint32_t flags) {
-    std::string s = (flags & kLobeSpecular) ? "specular" : (flags & kLobeGlossy) ? "glossy" : "diffuse";
+    std::string s = (flags & kLobeSpecular) ? "specular"
+                    : (flags & kLobeGlossy) ? "glossy"
+                                            : "diffuse";
     return s + ((flags & kLobeTransmission) ? "_transmission" : "_reflection");
 }
 
@@ -91,8 +93,11 @@ template <typename S>
 class BsdfTool {
   public:
     BsdfTool(const BsdfArgs& a, std::unique_ptr<Bxdf<S>> bxdf, int channels)
-        : a_(a), bxdf_(std::move(bxdf)), channels_(channels),
-          mode_(a.transport == "importance" ? TransportMode::Importance : TransportMode::Radiance) {}
+        : a_(a),
+          bxdf_(std::move(bxdf)),
+          channels_(channels),
+          mode_(a.transport == "importance" ? TransportMode::Importance : TransportMode::Radiance) {
+    }
 
     void eval() const {
         std::string line;
@@ -166,11 +171,13 @@ class BsdfTool {
             const S mean = (reflection + transmission) / n;
             S stderrs;
             for (int k = 0; k < S::kSize; ++k)
-                stderrs[k] = std::sqrt(std::max(0.0, double(sumSq[k]) / n - sqr(double(mean[k]))) / n);
-            std::printf("{\"cos_theta_o\":%.2f,\"reflection\":%s,\"transmission\":%s,\"stderr\":%s}\n",
-                        c, jsonArray(reflection / n, channels_).c_str(),
-                        jsonArray(transmission / n, channels_).c_str(),
-                        jsonArray(stderrs, channels_).c_str());
+                stderrs[k] =
+                    std::sqrt(std::max(0.0, double(sumSq[k]) / n - sqr(double(mean[k]))) / n);
+            std::printf(
+                "{\"cos_theta_o\":%.2f,\"reflection\":%s,\"transmission\":%s,\"stderr\":%s}\n", c,
+                jsonArray(reflection / n, channels_).c_str(),
+                jsonArray(transmission / n, channels_).c_str(),
+                jsonArray(stderrs, channels_).c_str());
         }
     }
 
@@ -189,10 +196,11 @@ class BsdfTool {
                 return s->wi;
             },
             [&](const Vec3d& wi) { return bxdf_->pdf(wo, wi); });
-        std::printf("chi-square: %s (p-value %.4g, statistic %.4g, %d degrees of freedom, "
-                    "significance %.3g, %zu valid samples, pdf integral %.4f)\n",
-                    r.passed ? "accepted" : "REJECTED", r.pValue, r.statistic, r.degreesOfFreedom,
-                    r.alpha, r.validSamples, r.pdfIntegral);
+        std::printf(
+            "chi-square: %s (p-value %.4g, statistic %.4g, %d degrees of freedom, "
+            "significance %.3g, %zu valid samples, pdf integral %.4f)\n",
+            r.passed ? "accepted" : "REJECTED", r.pValue, r.statistic, r.degreesOfFreedom, r.alpha,
+            r.validSamples, r.pdfIntegral);
         if (!r.passed) std::printf("%s\n", r.message.c_str());
     }
 
@@ -207,7 +215,9 @@ class BsdfTool {
             p[1] = g;
             p[2] = b;
         };
-        auto value = [&](const Vec3d& wi) { return std::max(0.0, double(bxdf_->eval(wo, wi, mode_).average())); };
+        auto value = [&](const Vec3d& wi) {
+            return std::max(0.0, double(bxdf_->eval(wo, wi, mode_).average()));
+        };
         // Left: the plane of incidence (x-z), f cos over theta_i in [-180, 180] degrees.
         const int steps = 2000;
         std::vector<double> polar(steps);
@@ -259,8 +269,9 @@ class BsdfTool {
         if (!out->open(a_.output, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, img.data()) ||
             !out->close())
             throw InputError(a_.output + ": cannot write: " + out->geterror());
-        std::fprintf(stderr, "%s: left, f cos in the plane of incidence (wo in blue, peak %.4g); "
-                             "right, f cos over the upper hemisphere (peak %.4g)\n",
+        std::fprintf(stderr,
+                     "%s: left, f cos in the plane of incidence (wo in blue, peak %.4g); "
+                     "right, f cos over the upper hemisphere (peak %.4g)\n",
                      a_.output.c_str(), peak, peak2);
     }
 
@@ -288,7 +299,8 @@ void withTool(const BsdfArgs& a, Action action) {
         for (std::size_t i = 0; i < 4; ++i) {
             l[i] = nm[std::min(i, nm.size() - 1)];
             if (l[i] < kLambdaMin || l[i] > kLambdaMax)
-                throw CLI::ValidationError("--wavelengths", "wavelengths must lie in [360, 830] nm");
+                throw CLI::ValidationError("--wavelengths",
+                                           "wavelengths must lie in [360, 830] nm");
         }
         auto lambda = SampledWavelengths<double>::fixed(l);
         const SpectrumContext<SampledSpectrum<double>> context{lambda};
@@ -319,11 +331,13 @@ void addCommon(CLI::App* cmd, BsdfArgs& a) {
 
 void registerBsdfCommand(CLI::App& app) {
     auto a = std::make_shared<BsdfArgs>();
-    CLI::App* bsdf = app.add_subcommand("bsdf", "Inspect a material: eval, sample, albedo, chi2, plot");
+    CLI::App* bsdf =
+        app.add_subcommand("bsdf", "Inspect a material: eval, sample, albedo, chi2, plot");
     bsdf->require_subcommand(1);
 
-    CLI::App* eval = bsdf->add_subcommand(
-        "eval", "Read JSON Lines {\"wo\":[x,y,z],\"wi\":[x,y,z]} on stdin; print f*|cos_i|, pdf, pdf_reverse");
+    CLI::App* eval = bsdf->add_subcommand("eval",
+                                          "Read JSON Lines {\"wo\":[x,y,z],\"wi\":[x,y,z]} on "
+                                          "stdin; print f*|cos_i|, pdf, pdf_reverse");
     addCommon(eval, *a);
     eval->callback([a] { withTool(*a, [](auto& t) { t.eval(); }); });
 

@@ -61,10 +61,11 @@ void run(const std::string& file) {
                 scene.film.height, scene.settings.spp, scene.settings.maxDepth,
                 scene.settings.sampler == render::SamplerKind::Sobol ? "sobol" : "independent",
                 static_cast<unsigned long long>(scene.settings.seed));
-    std::printf("geometry: %zu meshes (%zu triangles, %zu vertices), %zu spheres, %zu disks, "
-                "~%.1f MiB\n",
-                scene.meshes.size(), triangles, vertices, scene.spheres.size(), scene.disks.size(),
-                double(bytes) / (1 << 20));
+    std::printf(
+        "geometry: %zu meshes (%zu triangles, %zu vertices), %zu spheres, %zu disks, "
+        "~%.1f MiB\n",
+        scene.meshes.size(), triangles, vertices, scene.spheres.size(), scene.disks.size(),
+        double(bytes) / (1 << 20));
     std::printf("lights: %zu emitting primitives, %zu other lights\n", emitters,
                 scene.lights.size());
     std::printf("materials:\n");
@@ -92,8 +93,9 @@ void run(const std::string& file) {
 
 void registerInfoCommand(CLI::App& app) {
     auto file = std::make_shared<std::string>();
-    CLI::App* cmd = app.add_subcommand("info", "Print what a scene needs: geometry, materials "
-                                               "and their lobes, lights, spectral data, memory");
+    CLI::App* cmd = app.add_subcommand("info",
+                                       "Print what a scene needs: geometry, materials "
+                                       "and their lobes, lights, spectral data, memory");
     cmd->add_option("scene", *file, "Scene file")->required()->check(CLI::ExistingFile);
     cmd->callback([file] { run(*file); });
 }

@@ -1,6 +1,6 @@
 // `lamina render SCENE`: renders a scene file to OpenEXR (and optionally a PNG preview).
-#include <CLI/CLI.hpp>
 #include <unistd.h>
+#include <CLI/CLI.hpp>
 
 #include <csignal>
 #include <cstdio>
@@ -66,8 +66,8 @@ class ProgressPrinter {
             const int width = 40, filled = int(p.fraction * width + 0.5);
             std::fprintf(stderr, "\r[%s%s] %5.1f%%  %d spp  %.1fs  ETA %.1fs ",
                          std::string(std::size_t(filled), '#').c_str(),
-                         std::string(std::size_t(width - filled), '.').c_str(),
-                         100 * p.fraction, p.sppDone, p.seconds, eta);
+                         std::string(std::size_t(width - filled), '.').c_str(), 100 * p.fraction,
+                         p.sppDone, p.seconds, eta);
             std::fflush(stderr);
             lastLineOpen_ = true;
         } else {
@@ -93,8 +93,7 @@ void runRender(const RenderArgs& a) {
     std::filesystem::path output = a.output;
     if (output.empty()) output = std::filesystem::path(a.scene).stem().string() + ".exr";
     render::checkOutputPath(output);
-    const std::filesystem::path preview =
-        std::filesystem::path(output).replace_extension(".png");
+    const std::filesystem::path preview = std::filesystem::path(output).replace_extension(".png");
 
     render::RenderOptions o;
     o.mode = a.mode == "spectral" ? render::RenderModeKind::Spectral : render::RenderModeKind::Rgb;
@@ -135,7 +134,8 @@ void runRender(const RenderArgs& a) {
     meta.ints["seed"] = int(r.settings.seed);
     meta.ints["max_depth"] = r.settings.maxDepth;
     meta.ints["partial"] = r.partial ? 1 : 0;
-    meta.ints["rejected_samples"] = int(std::min<std::uint64_t>(r.film->rejectedSamples(), 1u << 30));
+    meta.ints["rejected_samples"] =
+        int(std::min<std::uint64_t>(r.film->rejectedSamples(), 1u << 30));
     meta.floats["seconds"] = float(r.seconds);
     render::writeExr(output, *r.film, a.aovs, meta);
     if (a.preview) render::writePngPreview(preview, *r.film, a.exposure);

@@ -34,14 +34,17 @@ struct Curves {
 };
 
 Curves resolve(const std::string& name) {
-    if (auto ior = namedIor(name); !ior && (name.find('.') != std::string::npos || name.find('/') != std::string::npos)) {
+    if (auto ior = namedIor(name);
+        !ior && (name.find('.') != std::string::npos || name.find('/') != std::string::npos)) {
         auto loaded = std::make_shared<IorSpectrum>(loadIorFile(name));
-        return {loaded->name(), {"n", "k"},
+        return {loaded->name(),
+                {"n", "k"},
                 {[loaded](double nm) { return loaded->n(nm); },
                  [loaded](double nm) { return loaded->k(nm); }}};
     } else if (ior) {
         auto s = std::make_shared<IorSpectrum>(*ior);
-        return {s->name(), {"n", "k"},
+        return {s->name(),
+                {"n", "k"},
                 {[s](double nm) { return s->n(nm); }, [s](double nm) { return s->k(nm); }}};
     }
     if (name.rfind("blackbody:", 0) == 0) {
@@ -49,8 +52,9 @@ Curves resolve(const std::string& name) {
         const double t = std::strtod(name.c_str() + 10, &end);
         if (*end != '\0' || !(t > 0) || !std::isfinite(t))
             throw InputError("spectrum \"" + name + "\": expected blackbody:T with T in kelvin");
-        return {name + " K (normalised to 1 at its peak)", {"value"},
-                {[t](double nm) { return blackbodyNormalized(nm, t); }}};
+        return {name + " K (normalised to 1 at its peak)", {"value"}, {[t](double nm) {
+                    return blackbodyNormalized(nm, t);
+                }}};
     }
     if (const TabulatedCurve* c = findCieIlluminant(name))
         return {"CIE illuminant " + name, {"value"}, {[c](double nm) { return (*c)(nm); }}};
@@ -61,8 +65,10 @@ Curves resolve(const std::string& name) {
         names += n + " ";
     for (const auto& n : cieIlluminantNames())
         names += n + " ";
-    throw InputError("unknown spectrum \"" + name + "\"; expected an n/k file (.yml, .csv), "
-                     "blackbody:T, or one of: " + names);
+    throw InputError("unknown spectrum \"" + name +
+                     "\"; expected an n/k file (.yml, .csv), "
+                     "blackbody:T, or one of: " +
+                     names);
 }
 
 void writePlot(const std::string& path, const Curves& c) {
@@ -90,13 +96,15 @@ void writePlot(const std::string& path, const Curves& c) {
         put(w - margin, y, grey);
     }
     for (int tick = 400; tick <= 800; tick += 100) {  // wavelength ticks every 100 nm
-        const int x = margin + int((tick - kLambdaMin) / (kLambdaMax - kLambdaMin) * (w - 2 * margin));
+        const int x =
+            margin + int((tick - kLambdaMin) / (kLambdaMax - kLambdaMin) * (w - 2 * margin));
         for (int y = h - margin; y < h - margin + 6; ++y)
             put(x, y, grey);
     }
     for (std::size_t i = 0; i < c.f.size(); ++i)
         for (int x = margin; x < w - margin; ++x) {
-            const double nm = kLambdaMin + (x - margin) / double(w - 2 * margin) * (kLambdaMax - kLambdaMin);
+            const double nm =
+                kLambdaMin + (x - margin) / double(w - 2 * margin) * (kLambdaMax - kLambdaMin);
             const int y = h - margin - int(c.f[i](nm) / top * (h - 2 * margin));
             put(x, y, colours[i % 2]);
             put(x, y + 1, colours[i % 2]);
@@ -107,9 +115,9 @@ void writePlot(const std::string& path, const Curves& c) {
     if (!out->open(path, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, img.data()) ||
         !out->close())
         throw InputError(path + ": cannot write: " + out->geterror());
-    std::fprintf(stderr, "%s: %s over 360-830 nm (ticks every 100 nm from 400), y from 0 to %.4g; %s\n",
-                 path.c_str(), c.title.c_str(), top,
-                 c.f.size() == 2 ? "n red, k blue" : "value red");
+    std::fprintf(
+        stderr, "%s: %s over 360-830 nm (ticks every 100 nm from 400), y from 0 to %.4g; %s\n",
+        path.c_str(), c.title.c_str(), top, c.f.size() == 2 ? "n red, k blue" : "value red");
 }
 
 void run(const SpectrumArgs& a) {
@@ -141,9 +149,10 @@ void run(const SpectrumArgs& a) {
             const IorSpectrum s = ior ? *ior : loadIorFile(a.name);
             if (s.k(550) > 0.5) {
                 const auto [f0, f82] = conductorF0F82(s);
-                std::printf("{\"rgb_mode\":\"conductor\",\"f0\":[%.6f,%.6f,%.6f],"
-                            "\"f82\":[%.6f,%.6f,%.6f]}\n",
-                            f0[0], f0[1], f0[2], f82[0], f82[1], f82[2]);
+                std::printf(
+                    "{\"rgb_mode\":\"conductor\",\"f0\":[%.6f,%.6f,%.6f],"
+                    "\"f82\":[%.6f,%.6f,%.6f]}\n",
+                    f0[0], f0[1], f0[2], f82[0], f82[1], f82[2]);
             } else {
                 std::printf("{\"rgb_mode\":\"dielectric\",\"ior\":%.6f,\"at_nm\":%g}\n",
                             s.n(kDLineNm), kDLineNm);

@@ -41,7 +41,8 @@ double PiecewiseConstant1D::pdf(double x) const {
 
 EnvironmentMap::EnvironmentMap(const std::filesystem::path& file, double rotationDegrees) {
     auto in = OIIO::ImageInput::open(file.string());
-    if (!in) throw InputError(file.string() + ": cannot read the environment map: " + OIIO::geterror());
+    if (!in)
+        throw InputError(file.string() + ": cannot read the environment map: " + OIIO::geterror());
     const OIIO::ImageSpec& spec = in->spec();
     width_ = spec.width;
     height_ = spec.height;
@@ -53,7 +54,8 @@ EnvironmentMap::EnvironmentMap(const std::filesystem::path& file, double rotatio
     pixels_.resize(std::size_t(width_) * height_);
     for (std::size_t i = 0; i < pixels_.size(); ++i)
         for (int c = 0; c < 3; ++c) {
-            const float v = data[i * std::size_t(channels) + std::size_t(std::min(c, channels - 1))];
+            const float v =
+                data[i * std::size_t(channels) + std::size_t(std::min(c, channels - 1))];
             if (!std::isfinite(v) || v < 0)
                 throw InputError(file.string() + ": pixel " + std::to_string(i) +
                                  " is negative or not finite");
@@ -106,7 +108,8 @@ Vec3<float> EnvironmentMap::fromUv(double u, double v) const {
 
 Rgb<float> EnvironmentMap::lookup(const Vec3<float>& w) const {
     const Vec2<double> uv = toUv(w);
-    const int x = std::min(int(uv.x * width_), width_ - 1), y = std::min(int(uv.y * height_), height_ - 1);
+    const int x = std::min(int(uv.x * width_), width_ - 1),
+              y = std::min(int(uv.y * height_), height_ - 1);
     return pixels_[std::size_t(y) * width_ + x];
 }
 

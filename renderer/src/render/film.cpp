@@ -7,7 +7,9 @@
 namespace lamina::render {
 
 Film::Film(int width, int height, FilmSpace space)
-    : width_(width), height_(height), space_(space),
+    : width_(width),
+      height_(height),
+      space_(space),
       pixels_(std::size_t(width) * std::size_t(height)),
       splats_(std::size_t(width) * std::size_t(height), Rgb<double>(0.0)) {}
 

@@ -16,8 +16,9 @@ Geometry::Geometry(const SceneDesc& scene) : scene_(scene) {
     for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
         const MeshDesc& m = scene.meshes[i];
         RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
-        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
-            g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), m.positions.size()));
+        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                              RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+                                                              m.positions.size()));
         for (std::size_t k = 0; k < m.positions.size(); ++k) {
             for (int c = 0; c < 3; ++c)
                 v[3 * k + std::size_t(c)] = m.positions[k][c];
@@ -38,8 +39,8 @@ Geometry::Geometry(const SceneDesc& scene) : scene_(scene) {
     for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
         const SphereDesc& s = scene.spheres[i];
         RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_SPHERE_POINT);
-        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
-                                                             RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1));
+        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
+            g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1));
         v[0] = float(s.center.x);
         v[1] = float(s.center.y);
         v[2] = float(s.center.z);
@@ -55,14 +56,14 @@ Geometry::Geometry(const SceneDesc& scene) : scene_(scene) {
         // Embree's normal-oriented disc points are exact disks.
         const DiskDesc& d = scene.disks[i];
         RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_ORIENTED_DISC_POINT);
-        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
-                                                             RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1));
+        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
+            g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1));
         v[0] = float(d.center.x);
         v[1] = float(d.center.y);
         v[2] = float(d.center.z);
         v[3] = float(d.radius);
-        auto* n = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_NORMAL, 0,
-                                                             RTC_FORMAT_FLOAT3, 3 * sizeof(float), 1));
+        auto* n = static_cast<float*>(rtcSetNewGeometryBuffer(
+            g, RTC_BUFFER_TYPE_NORMAL, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 1));
         n[0] = float(d.normal.x);
         n[1] = float(d.normal.y);
         n[2] = float(d.normal.z);
@@ -143,7 +144,7 @@ std::optional<SurfaceHit> Geometry::intersect(const Vec3f& origin, const Vec3f& 
         const Frame<double> frame = Frame<double>::fromNormal(n);
         const Vec3<double> local = frame.toLocal(p - dk.center);
         hit.uv = Vec2f(float(glm::length(Vec2<double>(local.x, local.y)) / dk.radius),
-                       float(std::atan2(local.y, local.x) / (2 * kPi<double>) + 0.5));
+                       float(std::atan2(local.y, local.x) / (2 * kPi<double>)+0.5));
     } else {
         const SphereDesc& s = scene_.spheres[std::size_t(info.index)];
         const Vec3<double> c = s.center;
@@ -151,7 +152,7 @@ std::optional<SurfaceHit> Geometry::intersect(const Vec3f& origin, const Vec3f& 
         Vec3<double> n = glm::normalize(p - c);
         // Reproject onto the sphere (pbrt-v4's refinement): the error is then ~1 ULP.
         hit.p = Vec3f(c + s.radius * n);
-        hit.uv = Vec2f(float(std::atan2(n.y, n.x) / (2 * kPi<double>) + 0.5),
+        hit.uv = Vec2f(float(std::atan2(n.y, n.x) / (2 * kPi<double>)+0.5),
                        float(std::acos(std::clamp(n.z, -1.0, 1.0)) / kPi<double>));
         if (s.flipNormals) n = -n;
         hit.ng = hit.ns = Vec3f(n);

@@ -77,8 +77,8 @@ void writeExr(const std::filesystem::path& path, const Film& film, bool aovs,
     const RgbColorSpace& cs = RgbColorSpace::rec709();
     const Vec3d white = cs.whiteXyz();
     const double sum = white.x + white.y + white.z;
-    const float chroma[8] = {float(cs.red().x),   float(cs.red().y),  float(cs.green().x),
-                             float(cs.green().y), float(cs.blue().x), float(cs.blue().y),
+    const float chroma[8] = {float(cs.red().x),    float(cs.red().y),   float(cs.green().x),
+                             float(cs.green().y),  float(cs.blue().x),  float(cs.blue().y),
                              float(white.x / sum), float(white.y / sum)};
     spec.attribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8), chroma);
 

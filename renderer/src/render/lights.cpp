@@ -12,7 +12,6 @@ namespace {
 
 using Vec3d = Vec3<double>;
 
-
 // Converts an area density at a light point to solid angle at `ref`.
 float areaToSolidAngle(float pdfArea, const Vec3f& ref, const Vec3f& p, const Vec3f& n) {
     const Vec3f d = p - ref;
@@ -81,22 +80,24 @@ class RectangleLight final : public Light {
     RectangleLight(const MeshDesc& mesh)
         : emission_(*mesh.emission), color_(mesh.emission->radiance, mesh.emission->spectrum) {
         corner_ = Vec3d(mesh.positions[0]);
-        const Vec3d ex = Vec3d(mesh.positions[1]) - corner_, ey = Vec3d(mesh.positions[3]) - corner_;
+        const Vec3d ex = Vec3d(mesh.positions[1]) - corner_,
+                    ey = Vec3d(mesh.positions[3]) - corner_;
         lx_ = glm::length(ex);
         ly_ = glm::length(ey);
         x_ = ex / lx_;
         y_ = ey / ly_;
         n_ = glm::normalize(glm::cross(ex, ey));
         // The winding of (0, 1, 2) gives the front side, as for the triangles.
-        const Vec3d winding = glm::cross(Vec3d(mesh.positions[1]) - corner_,
-                                         Vec3d(mesh.positions[2]) - corner_);
+        const Vec3d winding =
+            glm::cross(Vec3d(mesh.positions[1]) - corner_, Vec3d(mesh.positions[2]) - corner_);
         if (glm::dot(winding, n_) < 0) n_ = -n_;
         area_ = lx_ * ly_;
     }
 
     static bool isRectangle(const MeshDesc& m) {
         if (!m.isRectangle || m.positions.size() != 4) return false;
-        const Vec3d ex = Vec3d(m.positions[1] - m.positions[0]), ey = Vec3d(m.positions[3] - m.positions[0]);
+        const Vec3d ex = Vec3d(m.positions[1] - m.positions[0]),
+                    ey = Vec3d(m.positions[3] - m.positions[0]);
         return std::abs(glm::dot(ex, ey)) <= 1e-6 * glm::length(ex) * glm::length(ey);
     }
 
@@ -135,8 +136,8 @@ class RectangleLight final : public Light {
         const Vec3f wi = Vec3f(d / dist);
         const bool front = glm::dot(n_, -d) > 0;
         if (!front && !emission_.twoSided) return std::nullopt;
-        return LightSample{wi, float(dist), {&color_, 1.0f}, float(pdf), false, Vec3f(p),
-                           Vec3f(front ? n_ : -n_)};
+        return LightSample{wi,    float(dist), {&color_, 1.0f},        float(pdf),
+                           false, Vec3f(p),    Vec3f(front ? n_ : -n_)};
     }
 
     float pdf(const Vec3f& refF, const SurfaceHit& hit) const override {
@@ -151,7 +152,8 @@ class RectangleLight final : public Light {
     }
 
     double power() const override {
-        return (emission_.twoSided ? 2.0 : 1.0) * kPi<double> * area_ * luminance(color_.rgbDouble());
+        return (emission_.twoSided ? 2.0 : 1.0) * kPi<double> * area_ *
+               luminance(color_.rgbDouble());
     }
 
   private:
@@ -207,8 +209,10 @@ class RectangleLight final : public Light {
 class DiskLight final : public Light {
   public:
     explicit DiskLight(const DiskDesc& d)
-        : disk_(d), color_(d.emission->radiance, d.emission->spectrum),
-          frame_(Frame<double>::fromNormal(d.normal)), area_(kPi<double> * d.radius * d.radius) {}
+        : disk_(d),
+          color_(d.emission->radiance, d.emission->spectrum),
+          frame_(Frame<double>::fromNormal(d.normal)),
+          area_(kPi<double> * d.radius * d.radius) {}
 
     std::optional<LightSample> sample(const Vec3f& refF, const Vec2f& u) const override {
         const Vec2<double> q = squareToUniformDiskConcentric(Vec2<double>(u)) * disk_.radius;
@@ -222,8 +226,8 @@ class DiskLight final : public Light {
         const double pdf = dist * dist / (std::abs(cosL) * area_);
         if (!std::isfinite(pdf)) return std::nullopt;
         const Vec3f n = Vec3f(cosL > 0 ? disk_.normal : -disk_.normal);
-        return LightSample{Vec3f(d / dist), float(dist), {&color_, 1.0f}, float(pdf), false,
-                           Vec3f(p), n};
+        return LightSample{
+            Vec3f(d / dist), float(dist), {&color_, 1.0f}, float(pdf), false, Vec3f(p), n};
     }
     float pdf(const Vec3f& ref, const SurfaceHit& hit) const override {
         return areaToSolidAngle(float(1.0 / area_), ref, hit.p, hit.ng);
@@ -293,7 +297,12 @@ class SphereLight final : public Light {
         const Vec3f wi = Vec3f(d / dist);
         const bool front = glm::dot(Vec3f(n), -wi) > 0.0f;
         if (!front && !sphere_.emission->twoSided) return std::nullopt;
-        return LightSample{wi, float(dist), {&color_, 1.0f}, float(pdf), false, Vec3f(p),
+        return LightSample{wi,
+                           float(dist),
+                           {&color_, 1.0f},
+                           float(pdf),
+                           false,
+                           Vec3f(p),
                            front ? Vec3f(n) : -Vec3f(n)};
     }
 
@@ -340,7 +349,8 @@ class PointLight final : public Light {
         const float dist2 = glm::dot(d, d);
         if (!(dist2 > 0.0f)) return std::nullopt;
         const float dist = std::sqrt(dist2);
-        return LightSample{d / dist, dist, {&color_, 1.0f / dist2}, 1.0f, true, position_, -d / dist};
+        return LightSample{d / dist,  dist,     {&color_, 1.0f / dist2}, 1.0f, true,
+                           position_, -d / dist};
     }
     float pdf(const Vec3f&, const SurfaceHit&) const override { return 0.0f; }
     Emission radiance(const SurfaceHit&, const Vec3f&) const override { return {}; }
@@ -357,7 +367,9 @@ class PointLight final : public Light {
 class SpotLight final : public Light {
   public:
     explicit SpotLight(const LightDesc& d)
-        : position_(Vec3f(d.position)), axis_(Vec3f(d.direction)), color_(d.intensity, d.spectrum),
+        : position_(Vec3f(d.position)),
+          axis_(Vec3f(d.direction)),
+          color_(d.intensity, d.spectrum),
           cosEdge_(float(std::cos(radians(d.coneAngle)))),
           cosStart_(float(std::cos(radians(d.falloffStart)))) {}
 
@@ -368,7 +380,8 @@ class SpotLight final : public Light {
         const float dist = std::sqrt(dist2);
         const float falloff = this->falloff(glm::dot(-d / dist, axis_));
         if (!(falloff > 0.0f)) return std::nullopt;
-        return LightSample{d / dist, dist, {&color_, falloff / dist2}, 1.0f, true, position_, -d / dist};
+        return LightSample{d / dist,  dist,     {&color_, falloff / dist2}, 1.0f, true,
+                           position_, -d / dist};
     }
     float pdf(const Vec3f&, const SurfaceHit&) const override { return 0.0f; }
     Emission radiance(const SurfaceHit&, const Vec3f&) const override { return {}; }
@@ -396,12 +409,18 @@ class SpotLight final : public Light {
 class DirectionalLight final : public Light {
   public:
     DirectionalLight(const LightDesc& d, const Geometry& g)
-        : direction_(Vec3f(d.direction)), color_(d.intensity, d.spectrum),
+        : direction_(Vec3f(d.direction)),
+          color_(d.intensity, d.spectrum),
           radius_(g.boundsRadius()) {}
 
     std::optional<LightSample> sample(const Vec3f&, const Vec2f&) const override {
-        return LightSample{-direction_, std::numeric_limits<float>::infinity(), {&color_, 1.0f},
-                           1.0f, true, Vec3f(0.0f), direction_};
+        return LightSample{-direction_,
+                           std::numeric_limits<float>::infinity(),
+                           {&color_, 1.0f},
+                           1.0f,
+                           true,
+                           Vec3f(0.0f),
+                           direction_};
     }
     float pdf(const Vec3f&, const SurfaceHit&) const override { return 0.0f; }
     Emission radiance(const SurfaceHit&, const Vec3f&) const override { return {}; }
@@ -425,8 +444,13 @@ class ConstantEnvironment final : public Light {
 
     std::optional<LightSample> sample(const Vec3f&, const Vec2f& u) const override {
         const Vec3f wi = squareToUniformSphere(u);
-        return LightSample{wi, std::numeric_limits<float>::infinity(), {&color_, 1.0f},
-                           uniformSpherePdf<float>(), false, Vec3f(0.0f), -wi};
+        return LightSample{wi,
+                           std::numeric_limits<float>::infinity(),
+                           {&color_, 1.0f},
+                           uniformSpherePdf<float>(),
+                           false,
+                           Vec3f(0.0f),
+                           -wi};
     }
     float pdf(const Vec3f&, const SurfaceHit&) const override { return 0.0f; }
     Emission radiance(const SurfaceHit&, const Vec3f&) const override { return {}; }
@@ -454,8 +478,9 @@ class ImageEnvironment final : public Light {
         float pdf;
         const Vec3f wi = map_.sample(u, pdf);
         if (!(pdf > 0.0f)) return std::nullopt;
-        return LightSample{wi, std::numeric_limits<float>::infinity(), environment(wi), pdf,
-                           false, Vec3f(0.0f), -wi};
+        return LightSample{
+            wi, std::numeric_limits<float>::infinity(), environment(wi), pdf, false, Vec3f(0.0f),
+            -wi};
     }
     float pdf(const Vec3f&, const SurfaceHit&) const override { return 0.0f; }
     Emission radiance(const SurfaceHit&, const Vec3f&) const override { return {}; }
@@ -484,7 +509,8 @@ LightSet::LightSet(const SceneDesc& scene, Geometry& geometry, bool uniformSelec
         const ShapeInfo& info = shapes[s];
         if (info.kind == ShapeInfo::Kind::Mesh) {
             const MeshDesc& m = scene.meshes[std::size_t(info.index)];
-            if (!m.emission || (m.emission->radiance.maxValue() <= 0.0 && !m.emission->spectrum)) continue;
+            if (!m.emission || (m.emission->radiance.maxValue() <= 0.0 && !m.emission->spectrum))
+                continue;
             if (RectangleLight::isRectangle(m)) {
                 geometry.setFirstLight(int(s), int(lights_.size()), false);
                 lights_.push_back(std::make_unique<RectangleLight>(m));
@@ -495,12 +521,14 @@ LightSet::LightSet(const SceneDesc& scene, Geometry& geometry, bool uniformSelec
                 lights_.push_back(std::make_unique<TriangleLight>(m, t));
         } else if (info.kind == ShapeInfo::Kind::Disk) {
             const DiskDesc& dk = scene.disks[std::size_t(info.index)];
-            if (!dk.emission || (dk.emission->radiance.maxValue() <= 0.0 && !dk.emission->spectrum)) continue;
+            if (!dk.emission || (dk.emission->radiance.maxValue() <= 0.0 && !dk.emission->spectrum))
+                continue;
             geometry.setFirstLight(int(s), int(lights_.size()), false);
             lights_.push_back(std::make_unique<DiskLight>(dk));
         } else {
             const SphereDesc& sp = scene.spheres[std::size_t(info.index)];
-            if (!sp.emission || (sp.emission->radiance.maxValue() <= 0.0 && !sp.emission->spectrum)) continue;
+            if (!sp.emission || (sp.emission->radiance.maxValue() <= 0.0 && !sp.emission->spectrum))
+                continue;
             geometry.setFirstLight(int(s), int(lights_.size()));
             lights_.push_back(std::make_unique<SphereLight>(sp));
         }

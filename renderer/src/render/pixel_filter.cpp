@@ -37,8 +37,8 @@ float PixelFilter::evaluate1D(float x) const {
             return 1.0f;
         case FilterKind::Gaussian: {
             const float s = radius_ / 3.0f;
-            return std::max(0.0f, std::exp(-x * x / (2 * s * s)) -
-                                      std::exp(-radius_ * radius_ / (2 * s * s)));
+            return std::max(
+                0.0f, std::exp(-x * x / (2 * s * s)) - std::exp(-radius_ * radius_ / (2 * s * s)));
         }
         case FilterKind::BlackmanHarris: {
             const float t = 2.0f * kPi<float> * (x + radius_) / (2.0f * radius_);
@@ -67,8 +67,7 @@ PixelFilter::Sample PixelFilter::sample(const Vec2<float>& u) const {
     // Normalised so that a constant image stays constant: f / pdf / (integral of f)^2 = 1
     // wherever the table matches f.
     const float weight =
-        px > 0 && py > 0 ? evaluate1D(x) * evaluate1D(y) / (px * py * integral_ * integral_)
-                         : 0.0f;
+        px > 0 && py > 0 ? evaluate1D(x) * evaluate1D(y) / (px * py * integral_ * integral_) : 0.0f;
     return {Vec2<float>(x, y), weight};
 }
 

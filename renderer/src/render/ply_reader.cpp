@@ -28,7 +28,8 @@ struct Element {
 std::size_t typeSize(const std::string& t) {
     if (t == "char" || t == "uchar" || t == "int8" || t == "uint8") return 1;
     if (t == "short" || t == "ushort" || t == "int16" || t == "uint16") return 2;
-    if (t == "int" || t == "uint" || t == "int32" || t == "uint32" || t == "float" || t == "float32")
+    if (t == "int" || t == "uint" || t == "int32" || t == "uint32" || t == "float" ||
+        t == "float32")
         return 4;
     if (t == "double" || t == "float64") return 8;
     return 0;
@@ -36,7 +37,8 @@ std::size_t typeSize(const std::string& t) {
 
 class PlyReader {
   public:
-    explicit PlyReader(const std::filesystem::path& file) : file_(file), in_(file, std::ios::binary) {
+    explicit PlyReader(const std::filesystem::path& file)
+        : file_(file), in_(file, std::ios::binary) {
         if (!in_) fail("cannot open the PLY file");
     }
 
@@ -46,7 +48,8 @@ class PlyReader {
 
     void readHeader() {
         std::string line;
-        if (!std::getline(in_, line) || line.substr(0, 3) != "ply") fail("not a PLY file (no 'ply' magic)");
+        if (!std::getline(in_, line) || line.substr(0, 3) != "ply")
+            fail("not a PLY file (no 'ply' magic)");
         while (std::getline(in_, line)) {
             if (!line.empty() && line.back() == '\r') line.pop_back();
             std::istringstream s(line);
@@ -55,10 +58,14 @@ class PlyReader {
             if (word == "format") {
                 std::string f;
                 s >> f;
-                if (f == "ascii") format_ = Format::Ascii;
-                else if (f == "binary_little_endian") format_ = Format::BinaryLittle;
-                else if (f == "binary_big_endian") format_ = Format::BinaryBig;
-                else fail("unknown format \"" + f + "\"");
+                if (f == "ascii")
+                    format_ = Format::Ascii;
+                else if (f == "binary_little_endian")
+                    format_ = Format::BinaryLittle;
+                else if (f == "binary_big_endian")
+                    format_ = Format::BinaryBig;
+                else
+                    fail("unknown format \"" + f + "\"");
             } else if (word == "element") {
                 Element e;
                 s >> e.name >> e.count;
@@ -69,12 +76,14 @@ class PlyReader {
                 Property p;
                 std::string t;
                 s >> t;
-                if (t == "list") s >> p.countType >> p.type >> p.name;
+                if (t == "list")
+                    s >> p.countType >> p.type >> p.name;
                 else {
                     p.type = t;
                     s >> p.name;
                 }
-                if (!s || typeSize(p.type) == 0 || (!p.countType.empty() && typeSize(p.countType) == 0))
+                if (!s || typeSize(p.type) == 0 ||
+                    (!p.countType.empty() && typeSize(p.countType) == 0))
                     fail("malformed or unsupported property line: " + line);
                 elements_.back().properties.push_back(p);
             } else if (word == "end_header") {
@@ -92,8 +101,10 @@ class PlyReader {
         }
         unsigned char buf[8];
         const std::size_t n = typeSize(type);
-        if (!in_.read(reinterpret_cast<char*>(buf), std::streamsize(n))) fail("unexpected end of data");
-        const bool swap = (format_ == Format::BinaryBig) == (std::endian::native == std::endian::little);
+        if (!in_.read(reinterpret_cast<char*>(buf), std::streamsize(n)))
+            fail("unexpected end of data");
+        const bool swap =
+            (format_ == Format::BinaryBig) == (std::endian::native == std::endian::little);
         if (swap) std::reverse(buf, buf + n);
         auto as = [&](auto v) {
             std::memcpy(&v, buf, sizeof v);
@@ -116,7 +127,8 @@ class PlyReader {
             const bool vertex = e.name == "vertex", face = e.name == "face";
             auto index = [&](const char* a, const char* b = nullptr) {
                 for (std::size_t i = 0; i < e.properties.size(); ++i)
-                    if (e.properties[i].name == a || (b && e.properties[i].name == b)) return int(i);
+                    if (e.properties[i].name == a || (b && e.properties[i].name == b))
+                        return int(i);
                 return -1;
             };
             const int px = index("x"), py = index("y"), pz = index("z");
@@ -147,15 +159,20 @@ class PlyReader {
                     }
                 }
                 if (vertex) {
-                    mesh.positions.emplace_back(float(values[std::size_t(px)]), float(values[std::size_t(py)]),
+                    mesh.positions.emplace_back(float(values[std::size_t(px)]),
+                                                float(values[std::size_t(py)]),
                                                 float(values[std::size_t(pz)]));
                     if (normals)
-                        mesh.normals.emplace_back(float(values[std::size_t(nx)]), float(values[std::size_t(ny)]),
+                        mesh.normals.emplace_back(float(values[std::size_t(nx)]),
+                                                  float(values[std::size_t(ny)]),
                                                   float(values[std::size_t(nz)]));
-                    if (uvs) mesh.uvs.emplace_back(float(values[std::size_t(tu)]), float(values[std::size_t(tv)]));
+                    if (uvs)
+                        mesh.uvs.emplace_back(float(values[std::size_t(tu)]),
+                                              float(values[std::size_t(tv)]));
                 }
                 if (face) {
-                    if (polygon.size() < 3) fail("face " + std::to_string(k) + " has fewer than 3 vertices");
+                    if (polygon.size() < 3)
+                        fail("face " + std::to_string(k) + " has fewer than 3 vertices");
                     for (std::size_t i = 1; i + 1 < polygon.size(); ++i)
                         mesh.triangles.push_back({polygon[0], polygon[i], polygon[i + 1]});
                 }

@@ -61,7 +61,8 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
             PathStatistics stats;
             for (int tile = range.begin(); tile != range.end(); ++tile) {
                 const int x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
-                const int x1 = std::min(x0 + kTileSize, width), y1 = std::min(y0 + kTileSize, height);
+                const int x1 = std::min(x0 + kTileSize, width),
+                          y1 = std::min(y0 + kTileSize, height);
                 for (int y = y0; y < y1; ++y)
                     for (int x = x0; x < x1; ++x) {
                         for (int s = first; s < first + passSpp; ++s) {
@@ -70,11 +71,12 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
                             auto path = mode.startPath(sampler);
                             const auto fs = filter.sample(sampler.get2D());
                             const Vec2f lens = sampler.get2D();
-                            const auto ray = camera.generateRay(float(x) + 0.5f + fs.offset.x,
-                                                                float(y) + 0.5f + fs.offset.y, lens);
+                            const auto ray = camera.generateRay(
+                                float(x) + 0.5f + fs.offset.x, float(y) + 0.5f + fs.offset.y, lens);
                             PixelAovs aovs;
-                            const S L = integrator.radiance(ray.origin, ray.direction, sampler,
-                                                            path, stats, options.aovs ? &aovs : nullptr);
+                            const S L =
+                                integrator.radiance(ray.origin, ray.direction, sampler, path, stats,
+                                                    options.aovs ? &aovs : nullptr);
                             film.addSample(x, y, mode.filmValue(L, path), fs.weight);
                             if (options.aovs) film.addAovs(x, y, aovs);
                         }

@@ -1,11 +1,11 @@
 // Scene files (docs/scene-format.md) -> SceneDesc, validated, with every error naming the file
 // and the JSON path.
-#include <glm/gtc/matrix_transform.hpp>
+#include <tiny_obj_loader.h>
 #include <algorithm>
 #include <fstream>
+#include <glm/gtc/matrix_transform.hpp>
 #include <map>
 #include <sstream>
-#include <tiny_obj_loader.h>
 
 #include "lamina/bsdf/phong.h"
 #include "lamina/render/ply_reader.h"
@@ -103,9 +103,12 @@ class SceneParser {
                 scene_.textureNames.end())
                 scene_.unusedTextureNames.push_back(name);
         bool emitter = !scene_.lights.empty();
-        for (const auto& m : scene_.meshes) emitter |= m.emission.has_value();
-        for (const auto& s : scene_.spheres) emitter |= s.emission.has_value();
-        for (const auto& d : scene_.disks) emitter |= d.emission.has_value();
+        for (const auto& m : scene_.meshes)
+            emitter |= m.emission.has_value();
+        for (const auto& s : scene_.spheres)
+            emitter |= s.emission.has_value();
+        for (const auto& d : scene_.disks)
+            emitter |= d.emission.has_value();
         if (!emitter) root_.fail("the scene has no light: add an emitting shape or a light");
         return std::move(scene_);
     }
@@ -190,16 +193,17 @@ class SceneParser {
 
     void readSampler(const JsonReader& r) {
         r.expectObject();
-        scene_.settings.sampler = r.choice("type", SamplerKind::Sobol,
-                                           {{"sobol", SamplerKind::Sobol},
-                                            {"independent", SamplerKind::Independent}});
+        scene_.settings.sampler =
+            r.choice("type", SamplerKind::Sobol,
+                     {{"sobol", SamplerKind::Sobol}, {"independent", SamplerKind::Independent}});
         scene_.settings.spp = r.integer("spp", 16, 1, 1 << 24);
         scene_.settings.seed = std::uint64_t(r.integer("seed", 0, 0, 2147483647));
         r.finish();
     }
 
     // "textures": {"name": {"type": "checkerboard", "a": colour, "b": colour, "scale": [u, v]}
-    //             | {"type": "image", "file": path, "scale": [u, v], "color_space": "srgb"|"linear"}}
+    //             | {"type": "image", "file": path, "scale": [u, v], "color_space":
+    //             "srgb"|"linear"}}
     // Textures and named materials are read when a shape first refers to them, so a scene
     // never loads what it does not use (images, n/k files, albedo tables).
     void readTextures(const JsonReader& r) {
@@ -239,7 +243,8 @@ class SceneParser {
                     Rgb<float>(float(b[0]), float(b[1]), float(b[2])), scale);
             } else if (type == "image") {
                 const std::filesystem::path file = resolve(t, "file");
-                const bool srgb = t.choice("color_space", true, {{"srgb", true}, {"linear", false}});
+                const bool srgb =
+                    t.choice("color_space", true, {{"srgb", true}, {"linear", false}});
                 try {
                     texture = std::make_shared<ImageTexture>(file, scale, srgb);
                 } catch (const InputError& e) {
@@ -273,21 +278,24 @@ class SceneParser {
         if (tex.roughness >= 0) {
             const bool energy = std::visit(
                 [](const auto& m) {
-                    if constexpr (requires { m.microfacet; })
-                        return m.microfacet.multiscatter;
+                    if constexpr (requires { m.microfacet; }) return m.microfacet.multiscatter;
                     return false;
                 },
                 desc.model);
             const auto* st = std::get_if<StandardMaterial>(&desc.model);
             if (energy || (st && st->coupling == LayerCoupling::Albedo))
-                r.failAt("roughness", "a textured roughness cannot use the albedo tables of "
-                                      "multiscatter or the albedo coupling");
-            if (copy.contains("anisotropy")) r.failAt("roughness", "a textured roughness is isotropic");
+                r.failAt("roughness",
+                         "a textured roughness cannot use the albedo tables of "
+                         "multiscatter or the albedo coupling");
+            if (copy.contains("anisotropy"))
+                r.failAt("roughness", "a textured roughness is isotropic");
         }
-        if (tex.any() && (desc.type == "mix" || desc.type == "layered" ||
-                          (tex.color >= 0 && (desc.type == "conductor" || desc.type == "dielectric"))))
-            r.fail("textures apply to base_color / reflectance / roughness of standard, diffuse "
-                   "and phong materials, and to the roughness of conductors and dielectrics");
+        if (tex.any() &&
+            (desc.type == "mix" || desc.type == "layered" ||
+             (tex.color >= 0 && (desc.type == "conductor" || desc.type == "dielectric"))))
+            r.fail(
+                "textures apply to base_color / reflectance / roughness of standard, diffuse "
+                "and phong materials, and to the roughness of conductors and dielectrics");
         scene_.materialTextures.push_back(tex);
         return desc;
     }
@@ -316,8 +324,7 @@ class SceneParser {
             for (const auto& [n, reader] : pendingMaterials_)
                 known += (known.empty() ? "" : ", ") + n;
             m.fail("unknown material \"" + name + "\"" +
-                   (known.empty() ? " (the scene defines no materials)"
-                                  : "; defined: " + known));
+                   (known.empty() ? " (the scene defines no materials)" : "; defined: " + known));
         }
         scene_.materialNames.push_back(m.path());
         scene_.materials.push_back(parseTexturedMaterial(m));
@@ -338,7 +345,8 @@ class SceneParser {
         }
         const double scale = v.number("scale", 1.0, Range::nonNegative());
         std::shared_ptr<const EmissionSpectrum> spectrum;
-        const int forms = int(v.has("illuminant")) + int(v.has("blackbody")) + int(v.has("spectrum"));
+        const int forms =
+            int(v.has("illuminant")) + int(v.has("blackbody")) + int(v.has("spectrum"));
         if (forms != 1) v.fail("expected exactly one of illuminant, blackbody, spectrum");
         try {
             if (v.has("illuminant")) {
@@ -360,14 +368,15 @@ class SceneParser {
                 const auto& pair = list.value()[i];
                 if (!pair.is_array() || pair.size() != 2)
                     list.fail("expected [nm, value] pairs, got " + pair.dump());
-                nm.push_back(list.checkNumber(pair[0], list.indexPath(i) + "[0]", Range::positive()));
+                nm.push_back(
+                    list.checkNumber(pair[0], list.indexPath(i) + "[0]", Range::positive()));
                 values.push_back(
                     list.checkNumber(pair[1], list.indexPath(i) + "[1]", Range::nonNegative()));
                 if (i > 0 && !(nm[i] > nm[i - 1]))
                     list.fail("wavelengths must increase (index " + std::to_string(i) + ")");
             }
-            spectrum = std::make_shared<const EmissionSpectrum>(EmissionSpectrum::tabulated(
-                nm, values, scale, source_.name + ": " + list.path()));
+            spectrum = std::make_shared<const EmissionSpectrum>(
+                EmissionSpectrum::tabulated(nm, values, scale, source_.name + ": " + list.path()));
         }
         v.finish();
         return {spectrum->rgb(), spectrum};
@@ -396,10 +405,10 @@ class SceneParser {
                 std::swap(t[1], t[2]);
         double area = 0;
         for (const auto& t : mesh.triangles)
-            area += 0.5 * glm::length(glm::cross(Vec3d(mesh.positions[t[1]] - mesh.positions[t[0]]),
-                                                 Vec3d(mesh.positions[t[2]] - mesh.positions[t[0]])));
-        if (mesh.emission && !(area > 0))
-            r.failAt("emission", "the emitting shape has zero area");
+            area +=
+                0.5 * glm::length(glm::cross(Vec3d(mesh.positions[t[1]] - mesh.positions[t[0]]),
+                                             Vec3d(mesh.positions[t[2]] - mesh.positions[t[0]])));
+        if (mesh.emission && !(area > 0)) r.failAt("emission", "the emitting shape has zero area");
         scene_.meshes.push_back(std::move(mesh));
     }
 
@@ -409,8 +418,8 @@ class SceneParser {
             pos.fail("expected an array of at least 3 [x, y, z] positions");
         for (std::size_t i = 0; i < pos.value().size(); ++i) {
             const auto& v = pos.value()[i];
-            if (!v.is_array() || v.size() != 3) pos.fail("expected [x, y, z] at index " +
-                                                         std::to_string(i));
+            if (!v.is_array() || v.size() != 3)
+                pos.fail("expected [x, y, z] at index " + std::to_string(i));
             Vec3<float> p;
             for (int c = 0; c < 3; ++c)
                 p[c] = float(pos.checkNumber(v[std::size_t(c)], pos.indexPath(i), Range::any()));
@@ -421,14 +430,17 @@ class SceneParser {
             if (!r.has(key)) return;
             const JsonReader list = r.child(key);
             if (!list.value().is_array() || list.value().size() != mesh.positions.size())
-                list.fail("expected one entry per position (" + std::to_string(mesh.positions.size()) + ")");
+                list.fail("expected one entry per position (" +
+                          std::to_string(mesh.positions.size()) + ")");
             for (std::size_t i = 0; i < list.value().size(); ++i) {
                 const auto& v = list.value()[i];
                 if (!v.is_array() || int(v.size()) != n)
-                    list.fail("expected " + std::to_string(n) + " numbers at index " + std::to_string(i));
+                    list.fail("expected " + std::to_string(n) + " numbers at index " +
+                              std::to_string(i));
                 typename std::decay_t<decltype(out)>::value_type e{};
                 for (int c = 0; c < n; ++c)
-                    e[c] = float(list.checkNumber(v[std::size_t(c)], list.indexPath(i), Range::any()));
+                    e[c] =
+                        float(list.checkNumber(v[std::size_t(c)], list.indexPath(i), Range::any()));
                 out.push_back(e);
             }
         };
@@ -464,9 +476,9 @@ class SceneParser {
         config.vertex_color = false;
         tinyobj::ObjReader reader;
         if (!reader.ParseFromFile(file.string(), config))
-            r.failAt("file", file.string() + ": " +
-                                 (reader.Error().empty() ? "cannot read the OBJ file"
-                                                         : reader.Error()));
+            r.failAt("file",
+                     file.string() + ": " +
+                         (reader.Error().empty() ? "cannot read the OBJ file" : reader.Error()));
         const auto& attrib = reader.GetAttrib();
         std::map<std::array<int, 3>, std::uint32_t> unique;
         bool hasNormals = !attrib.normals.empty(), hasUvs = !attrib.texcoords.empty();
@@ -584,7 +596,8 @@ class SceneParser {
             mesh.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
             mesh.isRectangle = true;
         } else {
-            r.failAt("type", "expected one of sphere, disk, rectangle, mesh, obj, ply; got \"" + type + "\"");
+            r.failAt("type", "expected one of sphere, disk, rectangle, mesh, obj, ply; got \"" +
+                                 type + "\"");
         }
         mesh.material = materialOf(r);
         mesh.emission = emissionOf(r);
@@ -602,8 +615,8 @@ class SceneParser {
                            {"directional", LightKind::Directional},
                            {"environment", LightKind::Environment}});
         const char* key = l.kind == LightKind::Point || l.kind == LightKind::Spot ? "intensity"
-                          : l.kind == LightKind::Directional ? "irradiance"
-                                                             : "radiance";
+                          : l.kind == LightKind::Directional                      ? "irradiance"
+                                                                                  : "radiance";
         if (l.kind == LightKind::Environment && r.has("file")) {
             // An image: "scale" multiplies it, "rotate" turns it about +y.
             if (r.has("radiance")) r.fail("give either radiance or file, not both");
@@ -650,9 +663,12 @@ MaterialDesc texturedMaterial(const SceneDesc& scene, int material, const Vec2<f
     };
     const double roughness =
         t.roughness >= 0
-            ? std::clamp(double(scene.textures[std::size_t(t.roughness)]->evaluate(uv)[0]), 0.0, 1.0)
+            ? std::clamp(double(scene.textures[std::size_t(t.roughness)]->evaluate(uv)[0]), 0.0,
+                         1.0)
             : 0.0;
-    const auto setRoughness = [&](MicrofacetParams& m) { m.alphaX = m.alphaY = roughness * roughness; };
+    const auto setRoughness = [&](MicrofacetParams& m) {
+        m.alphaX = m.alphaY = roughness * roughness;
+    };
     std::visit(
         [&](auto& m) {
             using M = std::decay_t<decltype(m)>;

@@ -19,7 +19,8 @@ ImageTexture::ImageTexture(const std::filesystem::path& file, const Vec2<float>&
     std::vector<float> data(std::size_t(width_) * height_ * std::size_t(channels));
     if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, data.data()))
         throw InputError(file.string() + ": cannot read the texture: " + in->geterror());
-    const bool decode = srgb && (spec.format == OIIO::TypeDesc::UINT8 || spec.format == OIIO::TypeDesc::UINT16);
+    const bool decode =
+        srgb && (spec.format == OIIO::TypeDesc::UINT8 || spec.format == OIIO::TypeDesc::UINT16);
     pixels_.resize(std::size_t(width_) * height_);
     for (std::size_t i = 0; i < pixels_.size(); ++i)
         for (int c = 0; c < 3; ++c) {

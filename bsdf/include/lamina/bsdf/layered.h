@@ -156,8 +156,8 @@ class LayeredBxdf final : public Bxdf<S> {
             if (l_.coupling == LayerCoupling::Sum) coupling = Float(1);
             if (l_.coupling == LayerCoupling::Albedo)
                 coupling = Float(1) - (*l_.interfaceAlbedo)(mu);
-            w[1] = (Float(1) - t) * std::max(l_.diffuse->reflectance().average(), Float(0)) *
-                   coupling;
+            w[1] =
+                (Float(1) - t) * std::max(l_.diffuse->reflectance().average(), Float(0)) * coupling;
         }
         if (l_.interfaceMultiscatter)
             w[1] += std::max(l_.interfaceMultiscatter->albedo(mu).average(), Float(0));
@@ -181,9 +181,7 @@ class LayeredBxdf final : public Bxdf<S> {
         return l_.diffuse.has_value() || l_.interfaceMultiscatter.has_value();
     }
 
-    bool interfaceSmooth() const {
-        return l_.interface && l_.interface->isSmooth();
-    }
+    bool interfaceSmooth() const { return l_.interface && l_.interface->isSmooth(); }
 
     S evalReflection(const V3& wo, const V3& wi, TransportMode mode) const {
         S result(Float(0));

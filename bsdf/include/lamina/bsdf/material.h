@@ -42,10 +42,10 @@ enum class FresnelChoice { Auto, Schlick, SchlickShadowed, SchlickSphericalGauss
 struct StandardMaterial {
     RgbInput baseColor{0.8};
     double metalness = 0;
-    double specular = 0.04;                  ///< F0 of the dielectric part
-    std::optional<RgbInput> specularColor;   ///< specular workflow: F0 directly
-    std::optional<RgbInput> f82;             ///< absolute reflectance at cos = 1/7
-    std::optional<RgbInput> f82Tint;         ///< multiplier of Schlick at cos = 1/7
+    double specular = 0.04;                 ///< F0 of the dielectric part
+    std::optional<RgbInput> specularColor;  ///< specular workflow: F0 directly
+    std::optional<RgbInput> f82;            ///< absolute reflectance at cos = 1/7
+    std::optional<RgbInput> f82Tint;        ///< multiplier of Schlick at cos = 1/7
     double transmission = 0;
     double ior = 1.5;
     std::optional<DiffuseModel> diffuse = DiffuseModel::Lambert;  ///< nullopt: none
@@ -74,9 +74,9 @@ struct ConductorOptics {
     /// wavelength (a named metal or an n/k file), with its RGB-mode reductions precomputed.
     enum class Form { EtaK, F0F82, Spectral };
     Form form = Form::EtaK;
-    RgbInput eta{0.2};     ///< EtaK: real part of the relative index (per channel)
-    RgbInput k{3.9};       ///< EtaK: imaginary part
-    RgbInput f0{0.9};      ///< F0F82: normal-incidence reflectance
+    RgbInput eta{0.2};            ///< EtaK: real part of the relative index (per channel)
+    RgbInput k{3.9};              ///< EtaK: imaginary part
+    RgbInput f0{0.9};             ///< F0F82: normal-incidence reflectance
     std::optional<RgbInput> f82;  ///< F0F82: reflectance at cos = 1/7 (absent: plain Schlick)
     std::shared_ptr<const IorSpectrum> spectrum;  ///< Spectral (f0 and f82 hold its reductions)
     bool etaKIsGrey() const;

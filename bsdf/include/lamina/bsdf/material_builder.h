@@ -129,8 +129,8 @@ class MaterialBuilder {
         if (c.microfacet.multiscatter && c.microfacet.energyF1)
             ms.emplace(c.microfacet.energyF1, fresnel);
         return std::make_unique<ConductorBxdf<S>>(
-            MicrofacetReflectionLobe<S>(distribution(c.microfacet), fresnel,
-                                        c.microfacet.sampling, c.microfacet.g2),
+            MicrofacetReflectionLobe<S>(distribution(c.microfacet), fresnel, c.microfacet.sampling,
+                                        c.microfacet.g2),
             std::move(ms));
     }
 
@@ -142,10 +142,9 @@ class MaterialBuilder {
     std::unique_ptr<Bxdf<S>> buildModel(const StandardMaterial& s) const {
         // Article, section 5: F0 = lerp(0.04, base_color, metalness) (with `specular` in
         // place of 0.04), diffuse reflectance = base_color (1 - metalness).
-        const RgbInput f0rgb = s.specularColor
-                                   ? *s.specularColor
-                                   : RgbInput(s.specular) * (1.0 - s.metalness) +
-                                         s.baseColor * s.metalness;
+        const RgbInput f0rgb = s.specularColor ? *s.specularColor
+                                               : RgbInput(s.specular) * (1.0 - s.metalness) +
+                                                     s.baseColor * s.metalness;
         const RgbInput diffuseRgb =
             s.specularColor ? s.baseColor : s.baseColor * (1.0 - s.metalness);
 
@@ -189,9 +188,9 @@ class MaterialBuilder {
         }
         layers.interfaceAlbedo = s.interfaceAlbedo;
         if (s.diffuse && s.transmission < 1.0 && diffuseRgb.maxValue() > 0.0)
-            layers.diffuse.emplace(ctx_.reflectance(diffuseRgb), *s.diffuse,
-                                   Float(s.diffuseRoughness.value_or(
-                                       s.microfacet.perceptualRoughness())));
+            layers.diffuse.emplace(
+                ctx_.reflectance(diffuseRgb), *s.diffuse,
+                Float(s.diffuseRoughness.value_or(s.microfacet.perceptualRoughness())));
         if (s.transmission > 0.0) {
             layers.transmission.emplace(Float(s.ior), dist, s.microfacet.g2);
             layers.transmissionWeight = Float(s.transmission);
@@ -210,8 +209,8 @@ inline std::shared_ptr<const AlbedoTable> microfacetEnergyTable(const Microfacet
         MicrofacetDistribution<double>(m.ndf, std::max(m.alphaX, kSmoothAlpha),
                                        std::max(m.alphaY, kSmoothAlpha)),
         Fresnel<S>::schlick(S(1.0)), MicrofacetSampling::VisibleNormals, m.g2);
-    return std::make_shared<const AlbedoTable>(AlbedoTable::compute(
-        [&](const Vec3<double>& wo, double u1, double u2, double) {
+    return std::make_shared<const AlbedoTable>(
+        AlbedoTable::compute([&](const Vec3<double>& wo, double u1, double u2, double) {
             const auto r = lobe.sample(wo, {u1, u2});
             return r ? r->weight.average() : 0.0;
         }));

@@ -70,7 +70,7 @@ class PhongLobe {
     Float lobe(const V3& wo, const V3& wi) const {
         const Float c = glm::dot(mirror(wo), wi);
         if (!(c > Float(0))) return Float(0);
-        return (s_ + Float(1)) / (Float(2) * kPi<Float>) * std::pow(std::min(c, Float(1)), s_);
+        return (s_ + Float(1)) / (Float(2) * kPi<Float>)*std::pow(std::min(c, Float(1)), s_);
     }
 
     S rho_;

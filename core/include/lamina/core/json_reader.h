@@ -43,9 +43,7 @@ struct Range {
     static Range nonNegative() { return {0.0}; }
     static Range positive() { return {0.0, std::numeric_limits<double>::infinity(), true}; }
     static Range unit() { return {0.0, 1.0}; }
-    bool contains(double v) const {
-        return (minOpen ? v > min : v >= min) && v <= max;
-    }
+    bool contains(double v) const { return (minOpen ? v > min : v >= min) && v <= max; }
     std::string describe() const;
 };
 

@@ -16,7 +16,8 @@ class EmitterColor {
     EmitterColor() = default;
     EmitterColor(const Rgb<double>& rgb, std::shared_ptr<const EmissionSpectrum> spectrum)
         : rgbD_(spectrum ? spectrum->rgb() : rgb),
-          rgb_(float(rgbD_[0]), float(rgbD_[1]), float(rgbD_[2])), spectrum_(std::move(spectrum)) {
+          rgb_(float(rgbD_[0]), float(rgbD_[1]), float(rgbD_[2])),
+          spectrum_(std::move(spectrum)) {
         if (!spectrum_) upsampled_.emplace(rgb, RgbSpectrumKind::Illuminant);
     }
 

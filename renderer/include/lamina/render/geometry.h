@@ -19,12 +19,12 @@ using Vec2f = Vec2<float>;
 
 /// A point on a surface hit by a ray.
 struct SurfaceHit {
-    Vec3f p;            ///< on the surface (recomputed from the primitive, not o + t d)
-    Vec3f ng;           ///< geometric normal, unit, outward (winding / sphere orientation)
-    Vec3f ns;           ///< shading normal, unit, on the same side as ng
+    Vec3f p;   ///< on the surface (recomputed from the primitive, not o + t d)
+    Vec3f ng;  ///< geometric normal, unit, outward (winding / sphere orientation)
+    Vec3f ns;  ///< shading normal, unit, on the same side as ng
     Vec2f uv{0.0f};
     float t = 0;
-    int shape = -1;      ///< index into Geometry::shapes()
+    int shape = -1;  ///< index into Geometry::shapes()
     std::uint32_t primitive = 0;
 };
 
@@ -33,7 +33,7 @@ struct ShapeInfo {
     enum class Kind { Mesh, Sphere, Disk } kind = Kind::Mesh;
     int index = -1;  ///< into SceneDesc::meshes, ::spheres or ::disks
     int material = -1;
-    int firstLight = -1;  ///< the area light of its first primitive, -1 if not emissive
+    int firstLight = -1;            ///< the area light of its first primitive, -1 if not emissive
     bool lightPerPrimitive = true;  ///< false: one light for the whole shape (a rectangle)
 };
 

@@ -16,10 +16,10 @@ namespace lamina::render {
 using Rgbf = Rgb<float>;
 
 struct LightSample {
-    Vec3f wi;          ///< unit, from the reference point towards the light
-    float distance;    ///< to the sampled point; infinity for infinite lights
+    Vec3f wi;           ///< unit, from the reference point towards the light
+    float distance;     ///< to the sampled point; infinity for infinite lights
     Emission radiance;  ///< arriving along -wi (intensity / d^2 for a point light)
-    float pdf;         ///< solid angle density at the reference point; 1 for delta lights
+    float pdf;          ///< solid angle density at the reference point; 1 for delta lights
     bool delta;
     Vec3f point;   ///< the sampled point (finite lights), for the shadow ray's far end
     Vec3f normal;  ///< the light's surface normal there, facing the reference point

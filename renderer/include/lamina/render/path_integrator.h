@@ -54,10 +54,10 @@ class PathIntegrator {
                     const Light& light = c_.lights.light(i);
                     const Emission Le = light.environment(-d);
                     if (Le.isZero()) continue;
-                    const float w = specularBounce ? 1.0f
-                                                   : powerHeuristic(prevPdf,
-                                                                    c_.lights.probability(i) *
-                                                                        light.environmentPdf(-d));
+                    const float w = specularBounce
+                                        ? 1.0f
+                                        : powerHeuristic(prevPdf, c_.lights.probability(i) *
+                                                                      light.environmentPdf(-d));
                     L += beta * mode_.emission(Le, path) * w;
                 }
                 break;
@@ -126,8 +126,8 @@ class PathIntegrator {
 
   private:
     S directLight(const SurfaceHit& hit, const Frame<float>& frame, const Vec3f& wo,
-                  const Bxdf<S>& bsdf, float uLight, const Vec2f& uPoint,
-                  typename Mode::Path& path, PathStatistics& stats) const {
+                  const Bxdf<S>& bsdf, float uLight, const Vec2f& uPoint, typename Mode::Path& path,
+                  PathStatistics& stats) const {
         const auto [index, pmf] = c_.lights.choose(uLight);
         const Light& light = c_.lights.light(index);
         const auto ls = light.sample(hit.p, uPoint);
@@ -135,7 +135,8 @@ class PathIntegrator {
         const Vec3f wi = frame.toLocal(ls->wi);
         const S f = bsdf.eval(wo, wi, TransportMode::Radiance);
         if (f.maxValue() <= 0.0f) return S(0.0f);
-        const Vec3f origin = offsetRayOrigin(hit.p, glm::dot(ls->wi, hit.ng) > 0 ? hit.ng : -hit.ng);
+        const Vec3f origin =
+            offsetRayOrigin(hit.p, glm::dot(ls->wi, hit.ng) > 0 ? hit.ng : -hit.ng);
         ++stats.rays;
         if (std::isinf(ls->distance)) {
             if (c_.geometry.occluded(origin, ls->wi, std::numeric_limits<float>::infinity()))

@@ -17,8 +17,8 @@ enum class RenderModeKind { Rgb, Spectral };
 
 struct RenderOptions {
     RenderModeKind mode = RenderModeKind::Rgb;
-    std::optional<int> spp;          ///< overrides the scene's
-    std::optional<double> seconds;   ///< progressive passes until this much time has passed
+    std::optional<int> spp;         ///< overrides the scene's
+    std::optional<double> seconds;  ///< progressive passes until this much time has passed
     std::optional<std::uint64_t> seed;
     std::optional<int> maxDepth;
     std::optional<std::pair<int, int>> resolution;
@@ -36,7 +36,7 @@ struct RenderProgress {
 
 struct RenderResult {
     std::unique_ptr<Film> film;
-    int spp = 0;           ///< samples per pixel rendered
+    int spp = 0;  ///< samples per pixel rendered
     double seconds = 0;
     std::uint64_t rays = 0;
     std::uint64_t paths = 0;

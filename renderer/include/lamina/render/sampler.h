@@ -56,7 +56,8 @@ inline std::uint32_t nestedUniformScramble(std::uint32_t x, std::uint32_t seed) 
 class PixelSampler {
   public:
     PixelSampler(SamplerKind kind, std::uint64_t seed, int x, int y, std::uint32_t sampleIndex)
-        : kind_(kind), index_(sampleIndex),
+        : kind_(kind),
+          index_(sampleIndex),
           pixelSeed_(hashValues({seed, std::uint64_t(x), std::uint64_t(y)})),
           rng_(hashValues({pixelSeed_, sampleIndex}), pixelSeed_) {}
 

@@ -39,7 +39,7 @@ struct FilmDesc {
 enum class SamplerKind { Sobol, Independent };
 
 struct RenderSettings {
-    int maxDepth = 16;          ///< scattering events along a path
+    int maxDepth = 16;  ///< scattering events along a path
     int russianRouletteDepth = 5;
     int spp = 16;
     std::uint64_t seed = 0;
@@ -92,10 +92,10 @@ enum class LightKind { Point, Spot, Directional, Environment };
 /// Lights that are not shapes.
 struct LightDesc {
     LightKind kind = LightKind::Point;
-    Vec3d position{0.0};    ///< point
-    Vec3d direction{0, -1, 0};  ///< directional: the direction light travels; spot: its axis
-    double coneAngle = 30;      ///< spot: half-angle of the cone, degrees
-    double falloffStart = 25;   ///< spot: half-angle where the smooth falloff begins, degrees
+    Vec3d position{0.0};         ///< point
+    Vec3d direction{0, -1, 0};   ///< directional: the direction light travels; spot: its axis
+    double coneAngle = 30;       ///< spot: half-angle of the cone, degrees
+    double falloffStart = 25;    ///< spot: half-angle where the smooth falloff begins, degrees
     Rgb<double> intensity{1.0};  ///< point: W/sr; directional: irradiance; environment: radiance
     std::shared_ptr<const EmissionSpectrum> spectrum;  ///< set: the intensity is this spectrum
     std::filesystem::path file;  ///< environment: an equirectangular image (intensity scales it)

@@ -23,9 +23,12 @@ struct SigmoidPolynomial {
     /// The constant spectrum v in [0, 1] (c0 = c1 = 0, S(c2) = v).
     static SigmoidPolynomial constant(double v) {
         SigmoidPolynomial p;
-        if (v <= 0.0) p.c2 = -std::numeric_limits<double>::infinity();
-        else if (v >= 1.0) p.c2 = std::numeric_limits<double>::infinity();
-        else p.c2 = (v - 0.5) / std::sqrt(v * (1.0 - v));
+        if (v <= 0.0)
+            p.c2 = -std::numeric_limits<double>::infinity();
+        else if (v >= 1.0)
+            p.c2 = std::numeric_limits<double>::infinity();
+        else
+            p.c2 = (v - 0.5) / std::sqrt(v * (1.0 - v));
         return p;
     }
 
