@@ -17,6 +17,32 @@ RgbInput toRgb(const std::array<double, 3>& a) {
     return RgbInput(a[0], a[1], a[2]);
 }
 
+// A colour: a number, [r, g, b], or {"spectrum": [[nm, reflectance], ...]} (a measured
+// reflectance; RGB mode uses its colour under D65).
+ColorInput readColor(const JsonReader& r, const std::string& key, double defaultValue) {
+    if (!r.has(key) || !r.value()[key].is_object())
+        return toRgb(r.triple(key, {defaultValue, defaultValue, defaultValue}, Range::unit()));
+    const JsonReader c = r.child(key);
+    const JsonReader list = c.child("spectrum");
+    const Json& v = list.value();
+    if (!v.is_array() || v.size() < 2) list.fail("expected at least two [nm, reflectance] pairs");
+    std::vector<double> nm, values;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        if (!v[i].is_array() || v[i].size() != 2)
+            list.fail("expected [nm, reflectance] pairs, got " + v[i].dump());
+        nm.push_back(list.checkNumber(v[i][0], list.indexPath(i) + "[0]", Range::positive()));
+        values.push_back(list.checkNumber(v[i][1], list.indexPath(i) + "[1]", Range::unit()));
+        if (i > 0 && !(nm[i] > nm[i - 1]))
+            list.fail("wavelengths must increase (index " + std::to_string(i) + ")");
+    }
+    c.finish();
+    ColorInput out;
+    out.spectrum = std::make_shared<const std::function<double(double)>>(
+        tabulatedCurve(nm, values, r.source().name + ": " + list.path()));
+    out.rgb = reflectanceColor(*out.spectrum);
+    return out;
+}
+
 // Roughness in one of three forms: perceptual `roughness` (alpha = roughness^2), `alpha`, or
 // `alpha_x` and `alpha_y`; `anisotropy` in [0, 1) stretches the first two along the tangent
 // (Kulla and Conty 2017, "Revisiting Physically Based Shading at Imageworks", slide 20:
@@ -69,7 +95,7 @@ FresnelChoice readFresnel(const JsonReader& r, FresnelChoice defaultValue, bool 
 
 StandardMaterial readStandard(const JsonReader& r) {
     StandardMaterial s;
-    s.baseColor = toRgb(r.triple("base_color", {0.8, 0.8, 0.8}, Range::unit()));
+    s.baseColor = readColor(r, "base_color", 0.8);
     s.metalness = r.number("metalness", 0.0, Range::unit());
     s.transmission = r.number("transmission", 0.0, Range::unit());
     const auto ior = r.optionalNumber("ior", Range::positive());
@@ -171,7 +197,7 @@ StandardMaterial readLayered(const JsonReader& r) {
                                {"oren_nayar", DiffuseModel::OrenNayar},
                                {"burley", DiffuseModel::Burley},
                                {"frostbite", DiffuseModel::Frostbite}});
-        s.baseColor = toRgb(b->triple("reflectance", {0.5, 0.5, 0.5}, Range::unit()));
+        s.baseColor = readColor(*b, "reflectance", 0.5);
         if (s.diffuse != DiffuseModel::Lambert) {
             MicrofacetParams m;
             readRoughness(*b, 0.5, m);
@@ -197,7 +223,7 @@ StandardMaterial readLayered(const JsonReader& r) {
 DiffuseMaterial readDiffuse(const JsonReader& r, DiffuseModel model) {
     DiffuseMaterial d;
     d.model = model;
-    d.reflectance = toRgb(r.triple("reflectance", {0.5, 0.5, 0.5}, Range::unit()));
+    d.reflectance = readColor(r, "reflectance", 0.5);
     if (model != DiffuseModel::Lambert) {
         MicrofacetParams m;
         readRoughness(r, 0.5, m);
@@ -405,7 +431,7 @@ DielectricMaterial readDielectric(const JsonReader& r) {
 
 PhongMaterial readPhong(const JsonReader& r) {
     PhongMaterial p;
-    p.reflectance = toRgb(r.triple("reflectance", {0.5, 0.5, 0.5}, Range::unit()));
+    p.reflectance = readColor(r, "reflectance", 0.5);
     if (r.has("shininess")) {
         if (r.has("roughness") || r.has("alpha"))
             r.fail("give either shininess or a roughness (roughness or alpha), not both");

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "lamina/spectral/cie.h"
+#include "lamina/spectral/color_space.h"
 
 // The table generated at build time (tools/generate_rgb_to_spectrum.cpp), embedded as bytes
 // with the assembler's .incbin: no 10 MB source file to compile, nothing to find at run time.
@@ -73,6 +74,14 @@ SigmoidPolynomial RgbToSpectrumTable::lookup(Rgb<double> rgb) const {
             c[k] += w * double(data_[idx + std::size_t(k)]);
     }
     return {c[0], c[1], c[2]};
+}
+
+Rgb<double> reflectanceColor(const std::function<double(double)>& reflectance) {
+    const Vec3d xyz =
+        integrateAgainstCmf([&](double nm) { return reflectance(nm) * d65Normalized(nm); }) /
+        cieYIntegral();
+    const Vec3d rgb = RgbColorSpace::rec709().toRgb(xyz);
+    return {std::clamp(rgb.x, 0.0, 1.0), std::clamp(rgb.y, 0.0, 1.0), std::clamp(rgb.z, 0.0, 1.0)};
 }
 
 double d65Normalized(double nm) {

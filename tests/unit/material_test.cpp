@@ -260,6 +260,28 @@ TEST(DielectricMaterial, DispersiveGlassKeepsOnlyTheHeroWavelength) {
     EXPECT_FALSE(lambda2.secondaryTerminated());
 }
 
+TEST(DiffuseMaterial, ReflectanceSpectraInBothModes) {
+    // A measured reflectance: spectral mode evaluates it at the path's wavelengths, RGB mode
+    // uses its colour under D65 (a flat spectrum is grey).
+    const MaterialDesc m = parseMaterialArgument(
+        R"({"type":"lambert","reflectance":{"spectrum":[[400,0.1],[500,0.9],[700,0.5]]}})");
+    auto lambda = SampledWavelengths<double>::fixed({400, 450, 600, 700});
+    const SpectrumContext<SampledSpectrum<double>> spectral{lambda};
+    const auto s = buildBxdf(m, spectral)->sample({0, 0, 1}, 0.5, {0.3, 0.3}, TransportMode::Radiance);
+    ASSERT_TRUE(s);
+    EXPECT_NEAR(s->weight[0], 0.1, 1e-12);
+    EXPECT_NEAR(s->weight[1], 0.5, 1e-12);
+    EXPECT_NEAR(s->weight[2], 0.7, 1e-12);
+    const MaterialDesc flat =
+        parseMaterialArgument(R"({"type":"lambert","reflectance":{"spectrum":[[360,0.5],[830,0.5]]}})");
+    const auto r = buildBxdf(flat, SpectrumContext<Rgb<double>>{})
+                       ->sample({0, 0, 1}, 0.5, {0.3, 0.3}, TransportMode::Radiance);
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(r->weight[c], 0.5, 1e-6);
+    expectError(R"({"type":"lambert","reflectance":{"spectrum":[[400,1.5],[500,0.2]]}})",
+                "reflectance.spectrum[0][1]: expected a number in [0, 1], got 1.5");
+}
+
 TEST(DielectricMaterial, CauchyAndSellmeierFormulas) {
     // BK7 by its Sellmeier coefficients (SCHOTT) equals the named preset; Cauchy follows its
     // formula; both are dispersive.

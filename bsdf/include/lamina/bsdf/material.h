@@ -4,6 +4,7 @@
 // mode is decided by the builder's SpectrumContext.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -20,6 +21,16 @@
 namespace lamina {
 
 using RgbInput = Rgb<double>;
+
+/// A reflectance input: a linear Rec.709 colour, or a reflectance spectrum (values in [0, 1]
+/// per nm) with its colour under D65 as the RGB-mode value.
+struct ColorInput {
+    RgbInput rgb{0.0};
+    std::shared_ptr<const std::function<double(double)>> spectrum;
+
+    ColorInput() = default;
+    ColorInput(const RgbInput& c) : rgb(c) {}  // NOLINT: a colour is a colour input
+};
 
 /// The microfacet switches shared by every rough lobe.
 struct MicrofacetParams {
@@ -40,7 +51,7 @@ enum class FresnelChoice { Auto, Schlick, SchlickShadowed, SchlickSphericalGauss
 
 /// `standard`: the article's material (and its generalisations); see docs/bsdf.md.
 struct StandardMaterial {
-    RgbInput baseColor{0.8};
+    ColorInput baseColor{RgbInput(0.8)};
     double metalness = 0;
     double specular = 0.04;                 ///< F0 of the dielectric part
     std::optional<RgbInput> specularColor;  ///< specular workflow: F0 directly
@@ -64,7 +75,7 @@ struct StandardMaterial {
 /// `lambert`, `oren_nayar`, `burley`, `frostbite`.
 struct DiffuseMaterial {
     DiffuseModel model = DiffuseModel::Lambert;
-    RgbInput reflectance{0.5};
+    ColorInput reflectance{RgbInput(0.5)};
     double roughness = 0;  ///< perceptual
 };
 
@@ -98,7 +109,7 @@ struct DielectricMaterial {
 
 /// `phong`: the article's Phong lobe alone.
 struct PhongMaterial {
-    RgbInput reflectance{0.5};
+    ColorInput reflectance{RgbInput(0.5)};
     double shininess = 0;
 };
 

@@ -44,7 +44,7 @@ class MaterialBuilder {
 
     std::unique_ptr<Bxdf<S>> buildModel(const DiffuseMaterial& d) const {
         // A black diffuse surface (an emitter's back, say) has no lobe at all.
-        if (d.reflectance.maxValue() <= 0.0)
+        if (d.reflectance.rgb.maxValue() <= 0.0 && !d.reflectance.spectrum)
             return std::make_unique<LayeredBxdf<S>>(typename LayeredBxdf<S>::Layers{});
         return std::make_unique<DiffuseBxdf<S>>(ctx_.reflectance(d.reflectance), d.model,
                                                 Float(d.roughness));
@@ -144,15 +144,28 @@ class MaterialBuilder {
         // place of 0.04), diffuse reflectance = base_color (1 - metalness).
         const RgbInput f0rgb = s.specularColor ? *s.specularColor
                                                : RgbInput(s.specular) * (1.0 - s.metalness) +
-                                                     s.baseColor * s.metalness;
+                                                     s.baseColor.rgb * s.metalness;
         const RgbInput diffuseRgb =
-            s.specularColor ? s.baseColor : s.baseColor * (1.0 - s.metalness);
+            s.specularColor ? s.baseColor.rgb : s.baseColor.rgb * (1.0 - s.metalness);
+        // A spectral base colour mixes in the spectral domain; an RGB one is mixed in RGB
+        // first (so RGB inputs are upsampled once, as they always were).
+        const bool spectralBase = s.baseColor.spectrum != nullptr;
+        const auto f0Spectrum = [&]() -> S {
+            if (!spectralBase || s.specularColor) return ctx_.reflectance(f0rgb);
+            return S(Float(s.specular * (1.0 - s.metalness))) +
+                   ctx_.reflectance(s.baseColor) * Float(s.metalness);
+        };
+        const auto diffuseSpectrum = [&]() -> S {
+            if (!spectralBase) return ctx_.reflectance(diffuseRgb);
+            return ctx_.reflectance(s.baseColor) *
+                   Float(s.specularColor ? 1.0 : 1.0 - s.metalness);
+        };
 
         typename LayeredBxdf<S>::Layers layers;
         layers.coupling = s.coupling;
         const Distribution dist = distribution(s.microfacet);
         if (s.specularLobe) {
-            const S f0 = ctx_.reflectance(f0rgb);
+            const S f0 = f0Spectrum();
             Fresnel<S> fresnel;
             switch (s.fresnel) {
                 case FresnelChoice::Schlick:
@@ -187,9 +200,9 @@ class MaterialBuilder {
                 layers.interfaceMultiscatter.emplace(s.microfacet.energyF1, fresnel);
         }
         layers.interfaceAlbedo = s.interfaceAlbedo;
-        if (s.diffuse && s.transmission < 1.0 && diffuseRgb.maxValue() > 0.0)
+        if (s.diffuse && s.transmission < 1.0 && (diffuseRgb.maxValue() > 0.0 || spectralBase))
             layers.diffuse.emplace(
-                ctx_.reflectance(diffuseRgb), *s.diffuse,
+                diffuseSpectrum(), *s.diffuse,
                 Float(s.diffuseRoughness.value_or(s.microfacet.perceptualRoughness())));
         if (s.transmission > 0.0) {
             layers.transmission.emplace(Float(s.ior), dist, s.microfacet.g2);

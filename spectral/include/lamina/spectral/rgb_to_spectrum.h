@@ -8,6 +8,7 @@
 //                white and stays white (PITFALLS.md: pbrt-v4 #54, #82).
 #pragma once
 
+#include <functional>
 #include <span>
 
 #include "lamina/core/spectrum.h"
@@ -45,6 +46,10 @@ class RgbSpectrum {
     double scale_ = 1;
     bool illuminant_ = false;
 };
+
+/// The linear Rec.709 colour of a reflectance spectrum under D65 (components clamped to
+/// [0, 1]): what RGB mode uses for a measured reflectance.
+Rgb<double> reflectanceColor(const std::function<double(double)>& reflectance);
 
 /// D65 relative spectral power normalised so that its luminance Y is 1 (CIE convention
 /// Y = integral of S y-bar / integral of y-bar).
