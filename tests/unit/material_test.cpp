@@ -267,13 +267,14 @@ TEST(DiffuseMaterial, ReflectanceSpectraInBothModes) {
         R"({"type":"lambert","reflectance":{"spectrum":[[400,0.1],[500,0.9],[700,0.5]]}})");
     auto lambda = SampledWavelengths<double>::fixed({400, 450, 600, 700});
     const SpectrumContext<SampledSpectrum<double>> spectral{lambda};
-    const auto s = buildBxdf(m, spectral)->sample({0, 0, 1}, 0.5, {0.3, 0.3}, TransportMode::Radiance);
+    const auto s =
+        buildBxdf(m, spectral)->sample({0, 0, 1}, 0.5, {0.3, 0.3}, TransportMode::Radiance);
     ASSERT_TRUE(s);
     EXPECT_NEAR(s->weight[0], 0.1, 1e-12);
     EXPECT_NEAR(s->weight[1], 0.5, 1e-12);
     EXPECT_NEAR(s->weight[2], 0.7, 1e-12);
-    const MaterialDesc flat =
-        parseMaterialArgument(R"({"type":"lambert","reflectance":{"spectrum":[[360,0.5],[830,0.5]]}})");
+    const MaterialDesc flat = parseMaterialArgument(
+        R"({"type":"lambert","reflectance":{"spectrum":[[360,0.5],[830,0.5]]}})");
     const auto r = buildBxdf(flat, SpectrumContext<Rgb<double>>{})
                        ->sample({0, 0, 1}, 0.5, {0.3, 0.3}, TransportMode::Radiance);
     for (int c = 0; c < 3; ++c)

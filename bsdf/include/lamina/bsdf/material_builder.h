@@ -157,8 +157,7 @@ class MaterialBuilder {
         };
         const auto diffuseSpectrum = [&]() -> S {
             if (!spectralBase) return ctx_.reflectance(diffuseRgb);
-            return ctx_.reflectance(s.baseColor) *
-                   Float(s.specularColor ? 1.0 : 1.0 - s.metalness);
+            return ctx_.reflectance(s.baseColor) * Float(s.specularColor ? 1.0 : 1.0 - s.metalness);
         };
 
         typename LayeredBxdf<S>::Layers layers;

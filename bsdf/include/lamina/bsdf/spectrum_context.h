@@ -26,7 +26,10 @@ struct SpectrumContext<Rgb<T>> {
     Rgb<T> reflectance(const Rgb<double>& c) const { return convert(c); }
     /// A colour input: its colour (a spectrum's reduction under D65).
     template <typename C>
-    requires requires(const C& c) { c.rgb; c.spectrum; }
+    requires requires(const C& c) {
+        c.rgb;
+        c.spectrum;
+    }
     Rgb<T> reflectance(const C& c) const { return convert(c.rgb); }
     /// A value that varies per channel without bound (a conductor's eta or k per channel).
     Rgb<T> unbounded(const Rgb<double>& c) const { return convert(c); }
@@ -60,7 +63,10 @@ struct SpectrumContext<SampledSpectrum<T>> {
     }
     /// A colour input: its spectrum if it has one, else the upsampled colour.
     template <typename C>
-    requires requires(const C& c) { c.rgb; c.spectrum; }
+    requires requires(const C& c) {
+        c.rgb;
+        c.spectrum;
+    }
     SampledSpectrum<T> reflectance(const C& c) const {
         return c.spectrum ? evaluate(*c.spectrum) : reflectance(c.rgb);
     }
