@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <sstream>
 
 #include <OpenImageIO/imageio.h>
 #include <fstream>
@@ -130,6 +131,39 @@ TEST_F(CliTest, AovLayersHaveTheirNamesAndMeanings) {
     EXPECT_NEAR(centre["N.Z"], -1.0f, 1e-2f);
     EXPECT_NEAR(centre["Z"], 4.0f, 1e-2f);
     EXPECT_GE(centre["Variance.Y"], 0.0f);
+}
+
+TEST_F(CliTest, CompareReportsKnownDifferences) {
+    // A = B + 0.1 everywhere, B = 0.5: mse 0.01, rmse 0.1, mae 0.1, max 0.1,
+    // relmse 0.01 / (0.25 + 0.01).
+    auto writeExr = [&](const std::string& name, int w, int h, float v) {
+        const std::string path = (dir_ / name).string();
+        std::vector<float> data(std::size_t(w) * h * 3, v);
+        auto out = OIIO::ImageOutput::create(path);
+        out->open(path, OIIO::ImageSpec(w, h, 3, OIIO::TypeDesc::FLOAT));
+        out->write_image(OIIO::TypeDesc::FLOAT, data.data());
+        out->close();
+        return path;
+    };
+    const auto a = writeExr("a.exr", 4, 4, 0.6f), b = writeExr("b.exr", 4, 4, 0.5f);
+    const auto diff = (dir_ / "diff.png").string();
+    const CommandRun r = runLamina("compare " + a + " " + b + " --diff " + diff);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    std::map<std::string, double> m;
+    std::istringstream lines(r.output);
+    for (std::string name; lines >> name;)
+        lines >> m[name];
+    EXPECT_NEAR(m["mse"], 0.01, 1e-6);
+    EXPECT_NEAR(m["rmse"], 0.1, 1e-6);
+    EXPECT_NEAR(m["mae"], 0.1, 1e-6);
+    EXPECT_NEAR(m["max"], 0.1, 1e-6);
+    EXPECT_NEAR(m["relmse"], 0.01 / 0.26, 1e-6);
+    EXPECT_TRUE(fs::exists(diff));
+    const auto small = writeExr("small.exr", 2, 4, 0.5f);
+    const CommandRun mismatch = runLamina("compare " + a + " " + small);
+    EXPECT_EQ(mismatch.exitCode, 1);
+    EXPECT_THAT(mismatch.output, ::testing::HasSubstr("is 4x4 but"));
+    EXPECT_EQ(runLamina("compare " + a + " " + b + " --metric psnr").exitCode, 2);
 }
 
 struct BadInput {

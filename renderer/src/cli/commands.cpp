@@ -9,6 +9,7 @@ void registerBsdfCommand(CLI::App& app);
 void registerSpectrumCommand(CLI::App& app);
 void registerInfoCommand(CLI::App& app);
 void registerBenchCommand(CLI::App& app);
+void registerCompareCommand(CLI::App& app);
 
 // Every subcommand is registered here, in the order `lamina --help` lists them.
 void registerCommands(CLI::App& app) {
@@ -16,6 +17,7 @@ void registerCommands(CLI::App& app) {
     registerBsdfCommand(app);
     registerInfoCommand(app);
     registerBenchCommand(app);
+    registerCompareCommand(app);
     registerSpectrumCommand(app);
 }
 
