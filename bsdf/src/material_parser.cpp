@@ -24,21 +24,11 @@ ColorInput readColor(const JsonReader& r, const std::string& key, double default
         return toRgb(r.triple(key, {defaultValue, defaultValue, defaultValue}, Range::unit()));
     const JsonReader c = r.child(key);
     const JsonReader list = c.child("spectrum");
-    const Json& v = list.value();
-    if (!v.is_array() || v.size() < 2) list.fail("expected at least two [nm, reflectance] pairs");
-    std::vector<double> nm, values;
-    for (std::size_t i = 0; i < v.size(); ++i) {
-        if (!v[i].is_array() || v[i].size() != 2)
-            list.fail("expected [nm, reflectance] pairs, got " + v[i].dump());
-        nm.push_back(list.checkNumber(v[i][0], list.indexPath(i) + "[0]", Range::positive()));
-        values.push_back(list.checkNumber(v[i][1], list.indexPath(i) + "[1]", Range::unit()));
-        if (i > 0 && !(nm[i] > nm[i - 1]))
-            list.fail("wavelengths must increase (index " + std::to_string(i) + ")");
-    }
+    auto [nm, values] = list.wavelengthTable(Range::unit());
     c.finish();
     ColorInput out;
     out.spectrum = std::make_shared<const std::function<double(double)>>(
-        tabulatedCurve(nm, values, r.source().name + ": " + list.path()));
+        tabulatedCurve(std::move(nm), std::move(values), r.source().name + ": " + list.path()));
     out.rgb = reflectanceColor(*out.spectrum);
     return out;
 }
@@ -268,19 +258,8 @@ bool isSpectrum(const JsonReader& r, const std::string& key) {
 }
 
 IorSpectrum::Curve readSpectrumCurve(const JsonReader& r, Range range) {
-    const Json& v = r.value();
-    if (v.size() < 2) r.fail("a spectrum needs at least two [nm, value] pairs");
-    std::vector<double> nm, values;
-    for (std::size_t i = 0; i < v.size(); ++i) {
-        if (!v[i].is_array() || v[i].size() != 2)
-            r.fail("expected [nm, value] pairs, got " + v[i].dump() + " at index " +
-                   std::to_string(i));
-        nm.push_back(r.checkNumber(v[i][0], r.indexPath(i) + "[0]", Range::positive()));
-        values.push_back(r.checkNumber(v[i][1], r.indexPath(i) + "[1]", range));
-        if (i > 0 && !(nm[i] > nm[i - 1]))
-            r.fail("wavelengths must increase (index " + std::to_string(i) + ")");
-    }
-    return tabulatedCurve(nm, values, r.source().name + ": " + r.path());
+    auto [nm, values] = r.wavelengthTable(range);
+    return tabulatedCurve(std::move(nm), std::move(values), r.source().name + ": " + r.path());
 }
 
 ConductorMaterial readConductor(const JsonReader& r) {

@@ -200,6 +200,22 @@ std::array<double, 3> JsonReader::triple(const std::string& key, std::array<doub
     return optionalTriple(key, range).value_or(defaultValue);
 }
 
+std::pair<std::vector<double>, std::vector<double>> JsonReader::wavelengthTable(Range range) const {
+    if (!value_.is_array() || value_.size() < 2) fail("expected at least two [nm, value] pairs");
+    std::vector<double> nm, values;
+    for (std::size_t i = 0; i < value_.size(); ++i) {
+        const Json& pair = value_[i];
+        if (!pair.is_array() || pair.size() != 2)
+            fail("expected [nm, value] pairs, got " + pair.dump() + " at index " +
+                 std::to_string(i));
+        nm.push_back(checkNumber(pair[0], indexPath(i) + "[0]", Range::positive()));
+        values.push_back(checkNumber(pair[1], indexPath(i) + "[1]", range));
+        if (i > 0 && !(nm[i] > nm[i - 1]))
+            fail("wavelengths must increase (index " + std::to_string(i) + ")");
+    }
+    return {std::move(nm), std::move(values)};
+}
+
 void JsonReader::finish() const {
     if (!value_.is_object()) return;
     for (const auto& [key, v] : value_.items()) {

@@ -21,11 +21,32 @@ float areaToSolidAngle(float pdfArea, const Vec3f& ref, const Vec3f& p, const Ve
     return pdfArea * dist2 / cosLight;
 }
 
-/// One emitting triangle of a mesh, sampled uniformly by area.
-class TriangleLight final : public Light {
+/// What every emitting surface shares: its colour, one- or two-sided emission, and a power
+/// of (1 or 2) pi A L for area A and radiance L.
+class AreaLight : public Light {
   public:
-    TriangleLight(const MeshDesc& mesh, std::size_t triangle)
-        : emission_(*mesh.emission), color_(mesh.emission->radiance, mesh.emission->spectrum) {
+    Emission radiance(const SurfaceHit& hit, const Vec3f& w) const override {
+        if (twoSided_ || glm::dot(hit.ng, w) > 0.0f) return {&color_, 1.0f};
+        return {};
+    }
+
+    double power() const override {
+        return (twoSided_ ? 2.0 : 1.0) * kPi<double> * area_ * luminance(color_.rgbDouble());
+    }
+
+  protected:
+    AreaLight(const EmissionDesc& e, double area)
+        : twoSided_(e.twoSided), color_(e.radiance, e.spectrum), area_(area) {}
+
+    bool twoSided_;
+    EmitterColor color_;
+    double area_;
+};
+
+/// One emitting triangle of a mesh, sampled uniformly by area.
+class TriangleLight final : public AreaLight {
+  public:
+    TriangleLight(const MeshDesc& mesh, std::size_t triangle) : AreaLight(*mesh.emission, 0.0) {
         const auto& t = mesh.triangles[triangle];
         p0_ = mesh.positions[t[0]];
         p1_ = mesh.positions[t[1]];
@@ -44,7 +65,7 @@ class TriangleLight final : public Light {
         if (!(dist > 0.0f)) return std::nullopt;
         const Vec3f wi = d / dist;
         const float cosLight = glm::dot(n_, -wi);
-        if (!emission_.twoSided && !(cosLight > 0.0f)) return std::nullopt;
+        if (!twoSided_ && !(cosLight > 0.0f)) return std::nullopt;
         const float pdf = areaToSolidAngle(float(1.0 / area_), ref, p, n_);
         if (!(pdf > 0.0f) || !std::isfinite(pdf)) return std::nullopt;
         return LightSample{wi, dist, {&color_, 1.0f}, pdf, false, p, cosLight > 0 ? n_ : -n_};
@@ -54,31 +75,17 @@ class TriangleLight final : public Light {
         return areaToSolidAngle(float(1.0 / area_), ref, hit.p, hit.ng);
     }
 
-    Emission radiance(const SurfaceHit& hit, const Vec3f& w) const override {
-        if (emission_.twoSided || glm::dot(hit.ng, w) > 0.0f) return {&color_, 1.0f};
-        return {};
-    }
-
-    double power() const override {
-        return (emission_.twoSided ? 2.0 : 1.0) * kPi<double> * area_ *
-               luminance(color_.rgbDouble());
-    }
-
   private:
-    EmissionDesc emission_;
-    EmitterColor color_;
     Vec3f p0_, p1_, p2_, n_;
-    double area_ = 0;
 };
 
 /// An emitting rectangle, sampled uniformly in the solid angle it subtends (Urena, Fajardo
 /// and King 2013, "An Area-Preserving Parametrization for Spherical Rectangles", EGSR; the
 /// algorithm of their section 4, in double precision), or by area when the solid angle is
 /// too small for that to be accurate (below 1e-4 sr the spherical quantities cancel).
-class RectangleLight final : public Light {
+class RectangleLight final : public AreaLight {
   public:
-    RectangleLight(const MeshDesc& mesh)
-        : emission_(*mesh.emission), color_(mesh.emission->radiance, mesh.emission->spectrum) {
+    explicit RectangleLight(const MeshDesc& mesh) : AreaLight(*mesh.emission, 0.0) {
         corner_ = Vec3d(mesh.positions[0]);
         const Vec3d ex = Vec3d(mesh.positions[1]) - corner_,
                     ey = Vec3d(mesh.positions[3]) - corner_;
@@ -135,7 +142,7 @@ class RectangleLight final : public Light {
         if (!(dist > 0) || !(pdf > 0) || !std::isfinite(pdf)) return std::nullopt;
         const Vec3f wi = Vec3f(d / dist);
         const bool front = glm::dot(n_, -d) > 0;
-        if (!front && !emission_.twoSided) return std::nullopt;
+        if (!front && !twoSided_) return std::nullopt;
         return LightSample{wi,    float(dist), {&color_, 1.0f},        float(pdf),
                            false, Vec3f(p),    Vec3f(front ? n_ : -n_)};
     }
@@ -144,16 +151,6 @@ class RectangleLight final : public Light {
         const Spherical sph = spherical(Vec3d(refF));
         if (sph.solidAngle > kMinSolidAngle) return float(1.0 / sph.solidAngle);
         return areaToSolidAngle(float(1.0 / area_), refF, hit.p, hit.ng);
-    }
-
-    Emission radiance(const SurfaceHit& hit, const Vec3f& w) const override {
-        if (emission_.twoSided || glm::dot(hit.ng, w) > 0.0f) return {&color_, 1.0f};
-        return {};
-    }
-
-    double power() const override {
-        return (emission_.twoSided ? 2.0 : 1.0) * kPi<double> * area_ *
-               luminance(color_.rgbDouble());
     }
 
   private:
@@ -199,20 +196,17 @@ class RectangleLight final : public Light {
         return s;
     }
 
-    EmissionDesc emission_;
-    EmitterColor color_;
     Vec3d corner_, x_, y_, n_;
-    double lx_ = 0, ly_ = 0, area_ = 0;
+    double lx_ = 0, ly_ = 0;
 };
 
 /// An emitting disk, sampled uniformly by area (the concentric mapping).
-class DiskLight final : public Light {
+class DiskLight final : public AreaLight {
   public:
     explicit DiskLight(const DiskDesc& d)
-        : disk_(d),
-          color_(d.emission->radiance, d.emission->spectrum),
-          frame_(Frame<double>::fromNormal(d.normal)),
-          area_(kPi<double> * d.radius * d.radius) {}
+        : AreaLight(*d.emission, kPi<double> * d.radius * d.radius),
+          disk_(d),
+          frame_(Frame<double>::fromNormal(d.normal)) {}
 
     std::optional<LightSample> sample(const Vec3f& refF, const Vec2f& u) const override {
         const Vec2<double> q = squareToUniformDiskConcentric(Vec2<double>(u)) * disk_.radius;
@@ -221,7 +215,7 @@ class DiskLight final : public Light {
         const double dist = glm::length(d);
         if (!(dist > 0)) return std::nullopt;
         const double cosL = glm::dot(disk_.normal, -d) / dist;
-        if (!disk_.emission->twoSided && !(cosL > 0)) return std::nullopt;
+        if (!twoSided_ && !(cosL > 0)) return std::nullopt;
         if (cosL == 0) return std::nullopt;
         const double pdf = dist * dist / (std::abs(cosL) * area_);
         if (!std::isfinite(pdf)) return std::nullopt;
@@ -232,28 +226,18 @@ class DiskLight final : public Light {
     float pdf(const Vec3f& ref, const SurfaceHit& hit) const override {
         return areaToSolidAngle(float(1.0 / area_), ref, hit.p, hit.ng);
     }
-    Emission radiance(const SurfaceHit& hit, const Vec3f& w) const override {
-        if (disk_.emission->twoSided || glm::dot(hit.ng, w) > 0.0f) return {&color_, 1.0f};
-        return {};
-    }
-    double power() const override {
-        return (disk_.emission->twoSided ? 2.0 : 1.0) * kPi<double> * area_ *
-               luminance(color_.rgbDouble());
-    }
 
   private:
     DiskDesc disk_;
-    EmitterColor color_;
     Frame<double> frame_;
-    double area_;
 };
 
 /// An emitting sphere: sampled uniformly in the cone it subtends when seen from outside
 /// (emitting outwards), uniformly by area otherwise.
-class SphereLight final : public Light {
+class SphereLight final : public AreaLight {
   public:
     explicit SphereLight(const SphereDesc& s)
-        : sphere_(s), color_(s.emission->radiance, s.emission->spectrum) {}
+        : AreaLight(*s.emission, 4.0 * kPi<double> * s.radius * s.radius), sphere_(s) {}
 
     std::optional<LightSample> sample(const Vec3f& refF, const Vec2f& u) const override {
         const Vec3d ref(refF), c = sphere_.center;
@@ -287,7 +271,7 @@ class SphereLight final : public Light {
             const double dist2 = glm::dot(d, d);
             const double cosL = std::abs(glm::dot(n, d)) / std::sqrt(dist2);
             if (!(cosL > 0.0)) return std::nullopt;
-            pdf = dist2 / (cosL * 4.0 * kPi<double> * r * r);
+            pdf = dist2 / (cosL * area_);
         }
         Vec3d n = glm::normalize(p - c);
         if (sphere_.flipNormals) n = -n;
@@ -296,7 +280,7 @@ class SphereLight final : public Light {
         if (!(dist > 0.0) || !(pdf > 0.0) || !std::isfinite(pdf)) return std::nullopt;
         const Vec3f wi = Vec3f(d / dist);
         const bool front = glm::dot(Vec3f(n), -wi) > 0.0f;
-        if (!front && !sphere_.emission->twoSided) return std::nullopt;
+        if (!front && !twoSided_) return std::nullopt;
         return LightSample{wi,
                            float(dist),
                            {&color_, 1.0f},
@@ -315,17 +299,7 @@ class SphereLight final : public Light {
             const double cosMax = std::sqrt(std::max(0.0, 1.0 - sin2Max));
             return float(1.0 / (2.0 * kPi<double> * sin2Max / (1.0 + cosMax)));
         }
-        return areaToSolidAngle(float(1.0 / (4.0 * kPi<double> * r * r)), refF, hit.p, hit.ng);
-    }
-
-    Emission radiance(const SurfaceHit& hit, const Vec3f& w) const override {
-        if (sphere_.emission->twoSided || glm::dot(hit.ng, w) > 0.0f) return {&color_, 1.0f};
-        return {};
-    }
-
-    double power() const override {
-        return (sphere_.emission->twoSided ? 2.0 : 1.0) * kPi<double> * 4.0 * kPi<double> *
-               sphere_.radius * sphere_.radius * luminance(color_.rgbDouble());
+        return areaToSolidAngle(float(1.0 / area_), refF, hit.p, hit.ng);
     }
 
   private:
@@ -336,7 +310,6 @@ class SphereLight final : public Light {
     }
 
     SphereDesc sphere_;
-    EmitterColor color_;
 };
 
 class PointLight final : public Light {

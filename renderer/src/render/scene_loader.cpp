@@ -2,10 +2,8 @@
 // and the JSON path.
 #include <tiny_obj_loader.h>
 #include <algorithm>
-#include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
 #include <map>
-#include <sstream>
 
 #include "lamina/bsdf/phong.h"
 #include "lamina/render/ply_reader.h"
@@ -361,20 +359,7 @@ class SceneParser {
         }
         if (v.has("spectrum")) {
             const JsonReader list = v.child("spectrum");
-            if (!list.value().is_array() || list.value().size() < 2)
-                list.fail("expected at least two [nm, value] pairs");
-            std::vector<double> nm, values;
-            for (std::size_t i = 0; i < list.value().size(); ++i) {
-                const auto& pair = list.value()[i];
-                if (!pair.is_array() || pair.size() != 2)
-                    list.fail("expected [nm, value] pairs, got " + pair.dump());
-                nm.push_back(
-                    list.checkNumber(pair[0], list.indexPath(i) + "[0]", Range::positive()));
-                values.push_back(
-                    list.checkNumber(pair[1], list.indexPath(i) + "[1]", Range::nonNegative()));
-                if (i > 0 && !(nm[i] > nm[i - 1]))
-                    list.fail("wavelengths must increase (index " + std::to_string(i) + ")");
-            }
+            const auto [nm, values] = list.wavelengthTable(Range::nonNegative());
             spectrum = std::make_shared<const EmissionSpectrum>(
                 EmissionSpectrum::tabulated(nm, values, scale, source_.name + ": " + list.path()));
         }
@@ -528,6 +513,15 @@ class SceneParser {
         return p;
     }
 
+    // Analytic shapes take similarity transforms only: returns the uniform scale.
+    static double uniformScale(const JsonReader& r, const Mat4& m, const std::string& what) {
+        const double sx = glm::length(Vec3d(m[0])), sy = glm::length(Vec3d(m[1])),
+                     sz = glm::length(Vec3d(m[2]));
+        if (std::abs(sx - sy) > 1e-9 * sx || std::abs(sx - sz) > 1e-9 * sx)
+            r.failAt("transform", what + " takes translate, rotate and uniform scale only");
+        return sx;
+    }
+
     void readShape(const JsonReader& r) {
         r.expectObject();
         const std::string type = r.requiredString("type");
@@ -541,11 +535,7 @@ class SceneParser {
             s.material = materialOf(r);
             s.emission = emissionOf(r);
             const Mat4 m = readTransform(r);
-            // Analytic spheres take similarity transforms only.
-            const double sx = glm::length(Vec3d(m[0])), sy = glm::length(Vec3d(m[1])),
-                         sz = glm::length(Vec3d(m[2]));
-            if (std::abs(sx - sy) > 1e-9 * sx || std::abs(sx - sz) > 1e-9 * sx)
-                r.failAt("transform", "a sphere takes translate, rotate and uniform scale only");
+            const double sx = uniformScale(r, m, "a sphere");
             s.center = Vec3d(m * glm::dvec4(s.center, 1.0));
             s.radius *= sx;
             r.finish();
@@ -564,10 +554,7 @@ class SceneParser {
             d.material = materialOf(r);
             d.emission = emissionOf(r);
             const Mat4 m = readTransform(r);
-            const double sx = glm::length(Vec3d(m[0])), sy = glm::length(Vec3d(m[1])),
-                         sz = glm::length(Vec3d(m[2]));
-            if (std::abs(sx - sy) > 1e-9 * sx || std::abs(sx - sz) > 1e-9 * sx)
-                r.failAt("transform", "a disk takes translate, rotate and uniform scale only");
+            const double sx = uniformScale(r, m, "a disk");
             d.center = Vec3d(m * glm::dvec4(d.center, 1.0));
             d.normal = glm::normalize(glm::dmat3(m) * d.normal) *
                        (glm::determinant(glm::dmat3(m)) < 0 ? -1.0 : 1.0);
@@ -697,12 +684,9 @@ SceneDesc parseScene(const std::string& text, const JsonSource& source) {
 }
 
 SceneDesc loadScene(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw InputError(file.string() + ": cannot open the scene file");
-    std::stringstream buffer;
-    buffer << in.rdbuf();
+    const Json root = readJsonFile(file);
     const JsonSource source{file.string(), file.parent_path()};
-    return parseScene(buffer.str(), source);
+    return SceneParser(root, source).parse();
 }
 
 }  // namespace lamina::render

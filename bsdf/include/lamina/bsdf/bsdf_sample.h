@@ -60,4 +60,13 @@ struct BsdfSample {
     bool isTransmission() const { return lamina::isTransmission(flags); }
 };
 
+/// What a single reflection lobe's sampler returns (microfacet, Phong): the direction, the
+/// lobe's own eval / pdf, and its density. The BSDFs combine these into BsdfSample.
+template <SpectrumType S>
+struct LobeSample {
+    Vec3<typename S::Float> wi;
+    S weight;
+    typename S::Float pdf;
+};
+
 }  // namespace lamina

@@ -7,6 +7,7 @@
 
 #include <optional>
 
+#include "lamina/bsdf/bsdf_sample.h"
 #include "lamina/bsdf/fresnel.h"
 #include "lamina/bsdf/microfacet_distribution.h"
 
@@ -20,11 +21,7 @@ class MicrofacetReflectionLobe {
     using V2 = Vec2<Float>;
     using Distribution = MicrofacetDistribution<Float>;
 
-    struct Sample {
-        V3 wi;
-        S weight;
-        Float pdf;
-    };
+    using Sample = LobeSample<S>;
 
     MicrofacetReflectionLobe(const Distribution& d, const Fresnel<S>& f,
                              MicrofacetSampling sampling = MicrofacetSampling::VisibleNormals,

@@ -12,6 +12,7 @@
 
 #include <optional>
 
+#include "lamina/bsdf/bsdf_sample.h"
 #include "lamina/bsdf/fresnel.h"
 #include "lamina/core/frame.h"
 
@@ -24,11 +25,7 @@ class PhongLobe {
     using V3 = Vec3<Float>;
     using V2 = Vec2<Float>;
 
-    struct Sample {
-        V3 wi;
-        S weight;
-        Float pdf;
-    };
+    using Sample = LobeSample<S>;
 
     static Float shininessFromAlpha(Float alpha) {
         return Float(2) / clamp(alpha * alpha, Float(2e-4), Float(0.9999)) - Float(2);

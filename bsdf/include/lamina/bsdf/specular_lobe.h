@@ -15,11 +15,7 @@ class SpecularLobe {
     using Float = typename S::Float;
     using V3 = Vec3<Float>;
     using V2 = Vec2<Float>;
-    struct Sample {
-        V3 wi;
-        S weight;
-        Float pdf;
-    };
+    using Sample = LobeSample<S>;
 
     SpecularLobe(const MicrofacetDistribution<Float>& d, const Fresnel<S>& f,
                  MicrofacetSampling sampling = MicrofacetSampling::VisibleNormals,
@@ -34,13 +30,7 @@ class SpecularLobe {
         return std::visit([&](const auto& l) { return l.pdf(wo, wi); }, lobe_);
     }
     std::optional<Sample> sample(const V3& wo, const V2& u) const {
-        return std::visit(
-            [&](const auto& l) -> std::optional<Sample> {
-                const auto r = l.sample(wo, u);
-                if (!r) return std::nullopt;
-                return Sample{r->wi, r->weight, r->pdf};
-            },
-            lobe_);
+        return std::visit([&](const auto& l) { return l.sample(wo, u); }, lobe_);
     }
     const Fresnel<S>& fresnel() const {
         return std::visit([](const auto& l) -> const Fresnel<S>& { return l.fresnel(); }, lobe_);

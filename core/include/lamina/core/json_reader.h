@@ -98,6 +98,10 @@ class JsonReader {
         failAt(key, "expected one of " + list + ", got \"" + s + "\"");
     }
 
+    /// This value as a table [[nm, value], ...]: at least two pairs, wavelengths > 0 and
+    /// strictly increasing, values in `range`.
+    std::pair<std::vector<double>, std::vector<double>> wavelengthTable(Range range) const;
+
     /// Fails on any key that was not read (misspelt or unsupported parameters).
     void finish() const;
 

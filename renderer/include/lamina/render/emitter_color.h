@@ -35,7 +35,7 @@ class EmitterColor {
 
 /// Emitted radiance (or intensity / d^2, or irradiance): a colour times a scale. Image-based
 /// emitters (environment maps) give a texel instead of a colour: its RGB is used as it is in
-/// RGB mode and upsampled as an illuminant in spectral mode.
+/// RGB mode and upsampled as an illuminant in spectral mode (render_mode.h).
 struct Emission {
     const EmitterColor* color = nullptr;
     float scale = 0;
@@ -46,10 +46,6 @@ struct Emission {
         return color ? color->isBlack() : texel.maxValue() <= 0.0f;
     }
     Rgb<float> rgb() const { return (color ? color->rgb() : texel) * scale; }
-    double spectral(double nm) const {
-        if (color) return color->spectral(nm) * scale;
-        return RgbSpectrum(Rgb<double>(texel), RgbSpectrumKind::Illuminant)(nm) * scale;
-    }
 };
 
 }  // namespace lamina::render
