@@ -80,6 +80,18 @@ INSTANTIATE_TEST_SUITE_P(Modes, AnalyticRender,
                                                                                    : "spectral";
                          });
 
+// Renders a scene in both modes and z-tests the image mean of each channel (|z| < 3.29).
+void expectModesAgree(const char* scene, int spp) {
+    const auto rgb = renderText(scene, render::RenderModeKind::Rgb, spp);
+    const auto spectral = renderText(scene, render::RenderModeKind::Spectral, spp);
+    for (int c = 0; c < 3; ++c) {
+        const auto a = imageMean(*rgb.film, c), b = imageMean(*spectral.film, c);
+        const double se = std::hypot(a.standardError, b.standardError);
+        EXPECT_LT(std::abs(a.mean - b.mean), kZ * se)
+            << "channel " << c << ": rgb " << a.mean << " spectral " << b.mean << " se " << se;
+    }
+}
+
 TEST(ModesAgree, GreyMaterialsUnderWhiteLightRenderTheSameInRgbAndSpectral) {
     // Grey reflectances and white (1, 1, 1) light mean the same spectrum-free thing in both
     // modes: the images agree within statistical error (z-test on the mean of each channel
@@ -101,14 +113,7 @@ TEST(ModesAgree, GreyMaterialsUnderWhiteLightRenderTheSameInRgbAndSpectral) {
       ],
       "lights": [{"type": "environment", "radiance": 0.2}]
     })";
-    const auto rgb = renderText(scene, render::RenderModeKind::Rgb, 128);
-    const auto spectral = renderText(scene, render::RenderModeKind::Spectral, 128);
-    for (int c = 0; c < 3; ++c) {
-        const auto a = imageMean(*rgb.film, c), b = imageMean(*spectral.film, c);
-        const double se = std::hypot(a.standardError, b.standardError);
-        EXPECT_LT(std::abs(a.mean - b.mean), kZ * se)
-            << "channel " << c << ": rgb " << a.mean << " spectral " << b.mean << " se " << se;
-    }
+    expectModesAgree(scene, 128);
 }
 
 TEST(ModesAgree, SpectralEmittersUnderGreyMaterials) {
@@ -125,14 +130,7 @@ TEST(ModesAgree, SpectralEmittersUnderGreyMaterials) {
       ],
       "lights": [{"type": "environment", "radiance": {"blackbody": 6000, "scale": 0.5}}]
     })";
-    const auto rgb = renderText(scene, render::RenderModeKind::Rgb, 128);
-    const auto spectral = renderText(scene, render::RenderModeKind::Spectral, 128);
-    for (int c = 0; c < 3; ++c) {
-        const auto a = imageMean(*rgb.film, c), b = imageMean(*spectral.film, c);
-        const double se = std::hypot(a.standardError, b.standardError);
-        EXPECT_LT(std::abs(a.mean - b.mean), kZ * se)
-            << "channel " << c << ": rgb " << a.mean << " spectral " << b.mean << " se " << se;
-    }
+    expectModesAgree(scene, 128);
 }
 
 TEST(DeltaLights, PointAndSpotLightsGiveTheInverseSquareLaw) {
