@@ -22,7 +22,9 @@ struct RenderArgs {
     std::string scene;
     std::string output;
     std::string mode = "rgb";
-    std::string integrator = "path";
+    std::string integrator;
+    std::string mis;
+    std::string strategies;
     std::string sampler;
     int spp = 0;
     double seconds = 0;
@@ -88,6 +90,37 @@ class ProgressPrinter {
     int lastDecile_ = -1;
 };
 
+render::IntegratorKind parseIntegrator(const std::string& name) {
+    if (name == "light") return render::IntegratorKind::Light;
+    if (name == "bdpt") return render::IntegratorKind::Bdpt;
+    return render::IntegratorKind::Path;
+}
+
+// One EXR per strategy: s<S>_t<T>_weighted.exr (its share of the image) and
+// s<S>_t<T>_unweighted.exr (what the strategy alone estimates).
+void writeStrategyImages(const std::string& directory, const render::StrategyImages& images,
+                         const render::Film& like, int spp, const render::ImageMetadata& meta) {
+    std::filesystem::create_directories(directory);
+    const double particles = double(images.width()) * images.height() * spp;
+    for (std::size_t i = 0; i < images.strategies().size(); ++i) {
+        const auto [s, t] = images.strategies()[i];
+        for (const bool weighted : {true, false}) {
+            render::Film film(images.width(), images.height(), like.space());
+            const auto pixels = images.image(int(i), weighted, particles);
+            for (int y = 0; y < film.height(); ++y)
+                for (int x = 0; x < film.width(); ++x)
+                    film.addSample(x, y, pixels[std::size_t(y) * film.width() + x], 1.0);
+            render::ImageMetadata m = meta;
+            m.ints["s"] = s;
+            m.ints["t"] = t;
+            m.ints["mis_weighted"] = weighted ? 1 : 0;
+            const std::string name = "s" + std::to_string(s) + "_t" + std::to_string(t) +
+                                     (weighted ? "_weighted.exr" : "_unweighted.exr");
+            render::writeExr(std::filesystem::path(directory) / name, film, false, m);
+        }
+    }
+}
+
 void runRender(const RenderArgs& a) {
     const render::SceneDesc scene = render::loadScene(a.scene);
     std::filesystem::path output = a.output;
@@ -104,6 +137,13 @@ void runRender(const RenderArgs& a) {
     if (!a.sampler.empty())
         o.sampler = a.sampler == "independent" ? render::SamplerKind::Independent
                                                : render::SamplerKind::Sobol;
+    if (!a.integrator.empty()) o.integrator = parseIntegrator(a.integrator);
+    if (!a.mis.empty())
+        o.mis = a.mis == "balance" ? render::MisHeuristic::Balance : render::MisHeuristic::Power;
+    o.strategies = !a.strategies.empty();
+    if (o.strategies && o.integrator.value_or(scene.settings.integrator) !=
+                            render::IntegratorKind::Bdpt)
+        throw CLI::ValidationError("--strategies", "needs the bdpt integrator");
     o.threads = a.threads;
     o.aovs = a.aovs;
     if (!a.resolution.empty()) {
@@ -125,7 +165,7 @@ void runRender(const RenderArgs& a) {
     render::ImageMetadata meta;
     meta.strings["version"] = LAMINA_VERSION_STRING;
     meta.strings["mode"] = r.modeName;
-    meta.strings["integrator"] = a.integrator;
+    meta.strings["integrator"] = render::integratorName(r.settings.integrator);
     meta.strings["scene"] = a.scene;
     meta.strings["scene_hash"] = fileHash(a.scene);
     meta.strings["sampler"] =
@@ -138,14 +178,17 @@ void runRender(const RenderArgs& a) {
         int(std::min<std::uint64_t>(r.film->rejectedSamples(), 1u << 30));
     meta.floats["seconds"] = float(r.seconds);
     render::writeExr(output, *r.film, a.aovs, meta);
+    if (r.strategies) writeStrategyImages(a.strategies, *r.strategies, *r.film, r.spp, meta);
     if (a.preview) render::writePngPreview(preview, *r.film, a.exposure);
 
     if (!a.quiet) {
         std::fprintf(stderr,
-                     "%s: %dx%d, %d spp, %s mode, %.2f s, %.3g paths/s, %.3g rays/s, "
+                     "%s: %dx%d, %d spp, %s, %.2f s, %.3g paths/s, %.3g rays/s, "
                      "%llu rejected samples%s\n",
                      output.string().c_str(), r.film->width(), r.film->height(), r.spp,
-                     r.modeName.c_str(), r.seconds, double(r.paths) / r.seconds,
+                     (r.modeName + " mode, " + render::integratorName(r.settings.integrator) +
+                      " integrator")
+                         .c_str(), r.seconds, double(r.paths) / r.seconds,
                      double(r.rays) / r.seconds,
                      static_cast<unsigned long long>(r.film->rejectedSamples()),
                      r.partial ? " (interrupted: partial image)" : "");
@@ -166,9 +209,14 @@ void registerRenderCommand(CLI::App& app) {
     cmd->add_option("--mode", args->mode, "Render mode")
         ->check(CLI::IsMember({"rgb", "spectral"}))
         ->capture_default_str();
-    cmd->add_option("--integrator", args->integrator, "Light transport algorithm")
-        ->check(CLI::IsMember({"path"}))
-        ->capture_default_str();
+    cmd->add_option("--integrator", args->integrator,
+                    "Light transport algorithm: path, light or bdpt (overrides the scene's)")
+        ->check(CLI::IsMember({"path", "light", "bdpt"}));
+    cmd->add_option("--mis", args->mis, "BDPT's MIS heuristic (overrides the scene's)")
+        ->check(CLI::IsMember({"power", "balance"}));
+    cmd->add_option("--strategies", args->strategies,
+                    "bdpt: also write one EXR per (s, t) strategy, MIS-weighted and "
+                    "unweighted, path depth <= 4, into this directory");
     auto* spp = cmd->add_option("--spp", args->spp, "Samples per pixel (overrides the scene's)")
                     ->check(CLI::Range(1, 1 << 24));
     cmd->add_option("--time", args->seconds, "Render progressive passes for this many seconds")

@@ -11,7 +11,7 @@ Film::Film(int width, int height, FilmSpace space)
       height_(height),
       space_(space),
       pixels_(std::size_t(width) * std::size_t(height)),
-      splats_(std::size_t(width) * std::size_t(height), Rgb<double>(0.0)) {}
+      splatIteration_(std::size_t(width) * std::size_t(height), Rgb<double>(0.0)) {}
 
 bool Film::addSample(int x, int y, const Rgb<double>& value, double weight) {
     // XYZ may legitimately have no negative components either: reject both the same way.
@@ -36,15 +36,29 @@ void Film::addAovs(int x, int y, const PixelAovs& a) {
     p.aovSum.depth += a.depth;
 }
 
-void Film::addSplat(float x, float y, const Rgb<double>& value) {
-    const int px = int(std::floor(x)), py = int(std::floor(y));
-    if (px < 0 || py < 0 || px >= width_ || py >= height_) return;
+bool Film::addSplat(int x, int y, const Rgb<double>& value) {
+    if (x < 0 || y < 0 || x >= width_ || y >= height_) return false;
     if (!value.isFinite() || value.hasNegative()) {
         rejected_.fetch_add(1, std::memory_order_relaxed);
-        return;
+        return false;
     }
-    const std::lock_guard<std::mutex> lock(splatMutex_);
-    splats_[std::size_t(py) * width_ + px] += value;
+    Rgb<double>& target = splatIteration_[std::size_t(y) * width_ + x];
+    for (int c = 0; c < 3; ++c)
+        std::atomic_ref<double>(target[c]).fetch_add(value[c], std::memory_order_relaxed);
+    return true;
+}
+
+void Film::endSplatIteration(double scale) {
+    for (std::size_t i = 0; i < pixels_.size(); ++i) {
+        const Rgb<double> v = splatIteration_[i] * scale;
+        splatIteration_[i] = Rgb<double>(0.0);
+        const double lum = space_ == FilmSpace::Xyz ? v[1] : luminance(v);
+        Pixel& p = pixels_[i];
+        p.splatSum += v;
+        p.splatYSum += lum;
+        p.splatYSqSum += lum * lum;
+    }
+    ++splatIterations_;
 }
 
 Rgb<double> Film::toRec709(const Rgb<double>& v) const {
@@ -53,19 +67,28 @@ Rgb<double> Film::toRec709(const Rgb<double>& v) const {
     return Rgb<double>(rgb.x, rgb.y, rgb.z);
 }
 
-Rgb<double> Film::pixel(int x, int y, double splatScale) const {
+Rgb<double> Film::pixel(int x, int y) const {
     const Pixel& p = at(x, y);
     Rgb<double> v = p.weightSum > 0 ? p.sum / p.weightSum : Rgb<double>(0.0);
-    v += splats_[std::size_t(y) * width_ + x] * splatScale;
+    if (splatIterations_ > 0) v += p.splatSum / double(splatIterations_);
     return toRec709(v);
 }
 
+namespace {
+/// Variance of the mean of n samples from their (weighted) sums of values and squares.
+double varianceOfMeanFromSums(double sum, double sqSum, double weightSum, double n) {
+    if (n < 2 || !(weightSum > 0)) return 0.0;
+    const double mean = sum / weightSum;
+    const double var = std::max(0.0, sqSum / weightSum - mean * mean);
+    return var * n / (n - 1) / n;
+}
+}  // namespace
+
 double Film::varianceOfMean(int x, int y) const {
     const Pixel& p = at(x, y);
-    if (p.count < 2 || !(p.weightSum > 0)) return 0.0;
-    const double mean = p.ySum / p.weightSum;
-    const double var = std::max(0.0, p.ySqSum / p.weightSum - mean * mean);
-    return var * double(p.count) / double(p.count - 1) / double(p.count);
+    const double n = double(splatIterations_);
+    return varianceOfMeanFromSums(p.ySum, p.ySqSum, p.weightSum, double(p.count)) +
+           varianceOfMeanFromSums(p.splatYSum, p.splatYSqSum, n, n);
 }
 
 PixelAovs Film::aovs(int x, int y) const {

@@ -83,11 +83,10 @@ void writeExr(const std::filesystem::path& path, const Film& film, bool aovs,
     spec.attribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8), chroma);
 
     std::vector<float> data(std::size_t(w) * h * nc);
-    const double splatScale = 0.0;
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             float* p = &data[(std::size_t(y) * w + x) * nc];
-            const Rgb<double> v = film.pixel(x, y, splatScale);
+            const Rgb<double> v = film.pixel(x, y);
             for (int c = 0; c < 3; ++c)
                 p[c] = float(v[c]);
             if (!aovs) continue;

@@ -21,6 +21,20 @@ float areaToSolidAngle(float pdfArea, const Vec3f& ref, const Vec3f& p, const Ve
     return pdfArea * dist2 / cosLight;
 }
 
+/// Particles from infinite lights start on a disk of the scene's bounding radius, centred
+/// on the bounding sphere's tangent plane on the light's side and perpendicular to their
+/// direction, so every one of them crosses the scene's bounds (pbrt-v4 section 12.5).
+struct SceneDisk {
+    Vec3f center;
+    float radius;
+    Vec3f pointFacing(const Vec3f& direction, const Vec2f& u) const {
+        const Vec2f d = squareToUniformDiskConcentric(u) * radius;
+        return center - radius * direction +
+               Frame<float>::fromNormal(direction).toWorld(Vec3f(d.x, d.y, 0.0f));
+    }
+    float pdf() const { return 1.0f / (kPi<float> * radius * radius); }
+};
+
 /// What every emitting surface shares: its colour, one- or two-sided emission, and a power
 /// of (1 or 2) pi A L for area A and radiance L.
 class AreaLight : public Light {
@@ -34,7 +48,45 @@ class AreaLight : public Light {
         return (twoSided_ ? 2.0 : 1.0) * kPi<double> * area_ * luminance(color_.rgbDouble());
     }
 
+    // Particles: a point uniform by area, a cosine-distributed direction about the normal
+    // (on a side chosen with probability 1/2 when two-sided).
+    std::optional<EmissionSample> sampleEmission(const Vec2f& uPosition,
+                                                 const Vec2f& uDirection) const override {
+        if (!(area_ > 0)) return std::nullopt;
+        const auto [p, n] = samplePoint(uPosition);
+        Vec2f u = uDirection;
+        Vec3f normal = n;
+        if (twoSided_) {
+            const bool back = u.x >= 0.5f;
+            u.x = std::min(2.0f * (back ? u.x - 0.5f : u.x), kOneMinusEpsilon<float>);
+            if (back) normal = -n;
+        }
+        const Vec3f local = squareToCosineHemisphere(u);
+        if (!(local.z > 0.0f)) return std::nullopt;
+        EmissionSample e;
+        e.point = p;
+        e.normal = normal;
+        e.direction = Frame<float>::fromNormal(normal).toWorld(local);
+        e.radiance = {&color_, 1.0f};
+        e.pdfPosition = float(1.0 / area_);
+        e.pdfDirection = local.z * kInvPi<float> * (twoSided_ ? 0.5f : 1.0f);
+        return e;
+    }
+
+    EmissionPdf emissionPdf(const Vec3f&, const Vec3f& normal,
+                            const Vec3f& direction) const override {
+        const float c = glm::dot(normal, direction);
+        if (!twoSided_ && !(c > 0.0f)) return {float(1.0 / area_), 0.0f};
+        return {float(1.0 / area_), std::abs(c) * kInvPi<float> * (twoSided_ ? 0.5f : 1.0f)};
+    }
+
   protected:
+    struct AreaPoint {
+        Vec3f p, n;  ///< the point and the front normal
+    };
+    /// A point uniform by area.
+    virtual AreaPoint samplePoint(const Vec2f& u) const = 0;
+
     AreaLight(const EmissionDesc& e, double area)
         : twoSided_(e.twoSided), color_(e.radiance, e.spectrum), area_(area) {}
 
@@ -76,6 +128,11 @@ class TriangleLight final : public AreaLight {
     }
 
   private:
+    AreaPoint samplePoint(const Vec2f& u) const override {
+        const Vec2f b = squareToUniformTriangle(u);
+        return {b.x * p0_ + b.y * p1_ + (1.0f - b.x - b.y) * p2_, n_};
+    }
+
     Vec3f p0_, p1_, p2_, n_;
 };
 
@@ -154,6 +211,10 @@ class RectangleLight final : public AreaLight {
     }
 
   private:
+    AreaPoint samplePoint(const Vec2f& u) const override {
+        return {Vec3f(corner_ + double(u.x) * lx_ * x_ + double(u.y) * ly_ * y_), Vec3f(n_)};
+    }
+
     static constexpr double kMinSolidAngle = 1e-4;
 
     // The rectangle seen from `ref`, in the local frame of the paper (z towards the plane).
@@ -228,6 +289,12 @@ class DiskLight final : public AreaLight {
     }
 
   private:
+    AreaPoint samplePoint(const Vec2f& u) const override {
+        const Vec2<double> q = squareToUniformDiskConcentric(Vec2<double>(u)) * disk_.radius;
+        return {Vec3f(disk_.center + frame_.toWorld(Vec3<double>(q.x, q.y, 0.0))),
+                Vec3f(disk_.normal)};
+    }
+
     DiskDesc disk_;
     Frame<double> frame_;
 };
@@ -303,6 +370,11 @@ class SphereLight final : public AreaLight {
     }
 
   private:
+    AreaPoint samplePoint(const Vec2f& u) const override {
+        const Vec3d n = Vec3d(squareToUniformSphere(Vec2<double>(u)));
+        return {Vec3f(sphere_.center + sphere_.radius * n), Vec3f(sphere_.flipNormals ? -n : n)};
+    }
+
     // The cone is only valid for points outside; an inward-emitting sphere is seen from
     // inside, where its whole surface is visible.
     bool useCone(double dc2) const {
@@ -329,6 +401,19 @@ class PointLight final : public Light {
     Emission radiance(const SurfaceHit&, const Vec3f&) const override { return {}; }
     double power() const override { return 4.0 * kPi<double> * luminance(color_.rgbDouble()); }
     bool isDelta() const override { return true; }
+
+    std::optional<EmissionSample> sampleEmission(const Vec2f&, const Vec2f& u) const override {
+        EmissionSample e;
+        e.point = position_;
+        e.direction = e.normal = squareToUniformSphere(u);
+        e.radiance = {&color_, 1.0f};
+        e.pdfDirection = uniformSpherePdf<float>();
+        e.deltaPosition = true;
+        return e;
+    }
+    EmissionPdf emissionPdf(const Vec3f&, const Vec3f&, const Vec3f&) const override {
+        return {1.0f, uniformSpherePdf<float>()};
+    }
 
   private:
     Vec3f position_;
@@ -366,6 +451,24 @@ class SpotLight final : public Light {
     }
     bool isDelta() const override { return true; }
 
+    // Directions uniform in the cone (the falloff is in the weight).
+    std::optional<EmissionSample> sampleEmission(const Vec2f&, const Vec2f& u) const override {
+        const Vec3f local = squareToUniformCone(u, cosEdge_);
+        EmissionSample e;
+        e.point = position_;
+        e.direction = e.normal = Frame<float>::fromNormal(axis_).toWorld(local);
+        const float f = falloff(local.z);
+        if (!(f > 0.0f)) return std::nullopt;
+        e.radiance = {&color_, f};
+        e.pdfDirection = uniformConePdf(local, cosEdge_);
+        e.deltaPosition = true;
+        return e;
+    }
+    EmissionPdf emissionPdf(const Vec3f&, const Vec3f&, const Vec3f& direction) const override {
+        const float c = glm::dot(direction, axis_);
+        return {1.0f, c > cosEdge_ ? uniformConePdf(Vec3f(0, 0, c), cosEdge_) : 0.0f};
+    }
+
   private:
     float falloff(float cosTheta) const {
         if (cosTheta >= cosStart_) return 1.0f;
@@ -384,7 +487,8 @@ class DirectionalLight final : public Light {
     DirectionalLight(const LightDesc& d, const Geometry& g)
         : direction_(Vec3f(d.direction)),
           color_(d.intensity, d.spectrum),
-          radius_(g.boundsRadius()) {}
+          radius_(g.boundsRadius()),
+          disk_{g.boundsCenter(), g.boundsRadius()} {}
 
     std::optional<LightSample> sample(const Vec3f&, const Vec2f&) const override {
         return LightSample{-direction_,
@@ -403,17 +507,33 @@ class DirectionalLight final : public Light {
     bool isDelta() const override { return true; }
     bool isInfinite() const override { return true; }
 
+    std::optional<EmissionSample> sampleEmission(const Vec2f& u, const Vec2f&) const override {
+        EmissionSample e;
+        e.point = disk_.pointFacing(direction_, u);
+        e.direction = e.normal = direction_;
+        e.radiance = {&color_, 1.0f};
+        e.pdfPosition = disk_.pdf();
+        e.deltaDirection = true;
+        return e;
+    }
+    EmissionPdf emissionPdf(const Vec3f&, const Vec3f&, const Vec3f&) const override {
+        return {disk_.pdf(), 1.0f};
+    }
+
   private:
     Vec3f direction_;
     EmitterColor color_;
     float radius_;
+    SceneDisk disk_;
 };
 
 /// A constant environment: radiance L from every direction, sampled uniformly on the sphere.
 class ConstantEnvironment final : public Light {
   public:
     ConstantEnvironment(const LightDesc& d, const Geometry& g)
-        : color_(d.intensity, d.spectrum), radius_(g.boundsRadius()) {}
+        : color_(d.intensity, d.spectrum),
+          radius_(g.boundsRadius()),
+          disk_{g.boundsCenter(), g.boundsRadius()} {}
 
     std::optional<LightSample> sample(const Vec3f&, const Vec2f& u) const override {
         const Vec3f wi = squareToUniformSphere(u);
@@ -436,16 +556,35 @@ class ConstantEnvironment final : public Light {
     Emission environment(const Vec3f&) const override { return {&color_, 1.0f}; }
     float environmentPdf(const Vec3f&) const override { return uniformSpherePdf<float>(); }
 
+    std::optional<EmissionSample> sampleEmission(const Vec2f& uPosition,
+                                                 const Vec2f& uDirection) const override {
+        const Vec3f toward = -squareToUniformSphere(uDirection);
+        EmissionSample e;
+        e.point = disk_.pointFacing(toward, uPosition);
+        e.direction = e.normal = toward;
+        e.radiance = {&color_, 1.0f};
+        e.pdfPosition = disk_.pdf();
+        e.pdfDirection = uniformSpherePdf<float>();
+        return e;
+    }
+    EmissionPdf emissionPdf(const Vec3f&, const Vec3f&, const Vec3f&) const override {
+        return {disk_.pdf(), uniformSpherePdf<float>()};
+    }
+
   private:
     EmitterColor color_;
     float radius_;
+    SceneDisk disk_;
 };
 
 /// An image around the scene (environment_map.h), importance-sampled.
 class ImageEnvironment final : public Light {
   public:
     ImageEnvironment(const LightDesc& d, const Geometry& g)
-        : map_(d.file, d.rotation), scale_(float(d.intensity[0])), radius_(g.boundsRadius()) {}
+        : map_(d.file, d.rotation),
+          scale_(float(d.intensity[0])),
+          radius_(g.boundsRadius()),
+          disk_{g.boundsCenter(), g.boundsRadius()} {}
 
     std::optional<LightSample> sample(const Vec3f&, const Vec2f& u) const override {
         float pdf;
@@ -467,10 +606,28 @@ class ImageEnvironment final : public Light {
     }
     float environmentPdf(const Vec3f& w) const override { return map_.pdf(w); }
 
+    std::optional<EmissionSample> sampleEmission(const Vec2f& uPosition,
+                                                 const Vec2f& uDirection) const override {
+        float pdf;
+        const Vec3f w = map_.sample(uDirection, pdf);
+        if (!(pdf > 0.0f)) return std::nullopt;
+        EmissionSample e;
+        e.point = disk_.pointFacing(-w, uPosition);
+        e.direction = e.normal = -w;
+        e.radiance = environment(w);
+        e.pdfPosition = disk_.pdf();
+        e.pdfDirection = pdf;
+        return e;
+    }
+    EmissionPdf emissionPdf(const Vec3f&, const Vec3f&, const Vec3f& direction) const override {
+        return {disk_.pdf(), map_.pdf(-direction)};
+    }
+
   private:
     EnvironmentMap map_;
     float scale_;
     float radius_;
+    SceneDisk disk_;
 };
 
 }  // namespace

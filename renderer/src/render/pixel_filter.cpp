@@ -49,6 +49,11 @@ float PixelFilter::evaluate1D(float x) const {
     return 0.0f;
 }
 
+float PixelFilter::normalizedWeight(const Vec2<float>& offset) const {
+    const float integral = kind_ == FilterKind::Box ? 2.0f * radius_ : integral_;
+    return evaluate1D(offset.x) * evaluate1D(offset.y) / (integral * integral);
+}
+
 float PixelFilter::sample1D(float u, float& pdf) const {
     const auto it = std::upper_bound(cdf_.begin(), cdf_.end(), u);
     const int i = std::clamp(int(it - cdf_.begin()) - 1, 0, kBins - 1);

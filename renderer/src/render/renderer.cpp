@@ -6,6 +6,8 @@
 
 #include <chrono>
 
+#include "lamina/core/error.h"
+#include "lamina/render/light_integrator.h"
 #include "lamina/render/path_integrator.h"
 #include "lamina/render/pixel_filter.h"
 
@@ -14,6 +16,18 @@ namespace lamina::render {
 std::atomic<bool>& renderInterruptFlag() {
     static std::atomic<bool> flag{false};
     return flag;
+}
+
+const char* integratorName(IntegratorKind kind) {
+    switch (kind) {
+        case IntegratorKind::Path:
+            return "path";
+        case IntegratorKind::Light:
+            return "light";
+        case IntegratorKind::Bdpt:
+            return "bdpt";
+    }
+    return "?";
 }
 
 namespace {
@@ -29,6 +43,8 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
     RenderResult result;
     result.settings = settings;
     result.modeName = RenderMode<S>::kName;
+    if (settings.integrator != IntegratorKind::Path && options.aovs)
+        throw InputError("AOVs are written by the path integrator only");
     result.film = std::make_unique<Film>(width, height, RenderMode<S>::kFilmSpace);
     Film& film = *result.film;
 
@@ -38,7 +54,13 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
     const PixelFilter filter(scene.film);
     const RenderMode<S> mode(scene);
     const SceneContext context{scene, geometry, lights, camera};
-    const PathIntegrator<S> integrator(context, mode, settings);
+    const PathIntegrator<S> pathIntegrator(context, mode, settings);
+    const LightIntegrator<S> lightIntegrator(context, mode, settings, filter, options.ablations);
+    const BdptIntegrator<S> bdptIntegrator(context, mode, settings, filter, options.ablations,
+                                           settings.mis);
+    if (options.strategies && settings.integrator == IntegratorKind::Bdpt)
+        result.strategies = std::make_unique<StrategyImages>(width, height);
+    StrategyImages* strategies = result.strategies.get();
 
     const int tilesX = (width + kTileSize - 1) / kTileSize;
     const int tilesY = (height + kTileSize - 1) / kTileSize;
@@ -50,13 +72,33 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
         return std::chrono::duration<double>(Clock::now() - start).count();
     };
 
-    int done = 0, passes = 0;
-    auto& interrupted = renderInterruptFlag();
-    while (done < targetSpp && !interrupted.load()) {
-        // Passes double in size (1, 1, 2, 4, ... up to 64 spp), so early progress is quick
-        // and an interruption or a time limit loses little work.
-        const int passSpp = std::min({targetSpp - done, std::max(1, std::min(done, 64))});
-        const int first = done;
+    // One sample of pixel (x, y): a camera path (path), a particle (light: one per pixel and
+    // iteration, seeded by the pixel), or a camera and a light subpath (bdpt).
+    const auto renderSample = [&](int x, int y, int s, PathStatistics& stats) {
+        PixelSampler sampler(settings.sampler, settings.seed, x, y, std::uint32_t(s));
+        auto path = mode.startPath(sampler);
+        if (settings.integrator == IntegratorKind::Light) {
+            lightIntegrator.traceParticle(sampler, path, film, stats);
+            return;
+        }
+        const auto fs = filter.sample(sampler.get2D());
+        const Vec2f lens = sampler.get2D();
+        const Vec2f raster(float(x) + 0.5f + fs.offset.x, float(y) + 0.5f + fs.offset.y);
+        if (settings.integrator == IntegratorKind::Bdpt) {
+            const S L = bdptIntegrator.sample(raster, lens, sampler, path, film, stats, strategies,
+                                              x, y, fs.weight);
+            film.addSample(x, y, mode.filmValue(L, path), fs.weight);
+            return;
+        }
+        const auto ray = camera.generateRay(raster.x, raster.y, lens);
+        PixelAovs aovs;
+        const S L = pathIntegrator.radiance(ray.origin, ray.direction, sampler, path, stats,
+                                            options.aovs ? &aovs : nullptr);
+        film.addSample(x, y, mode.filmValue(L, path), fs.weight);
+        if (options.aovs) film.addAovs(x, y, aovs);
+    };
+    // Samples [first, first + count) of every pixel, tile by tile in parallel.
+    const auto renderSamples = [&](int first, int count) {
         tbb::parallel_for(tbb::blocked_range<int>(0, tilesX * tilesY), [&](const auto& range) {
             PathStatistics stats;
             for (int tile = range.begin(); tile != range.end(); ++tile) {
@@ -64,27 +106,32 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
                 const int x1 = std::min(x0 + kTileSize, width),
                           y1 = std::min(y0 + kTileSize, height);
                 for (int y = y0; y < y1; ++y)
-                    for (int x = x0; x < x1; ++x) {
-                        for (int s = first; s < first + passSpp; ++s) {
-                            PixelSampler sampler(settings.sampler, settings.seed, x, y,
-                                                 std::uint32_t(s));
-                            auto path = mode.startPath(sampler);
-                            const auto fs = filter.sample(sampler.get2D());
-                            const Vec2f lens = sampler.get2D();
-                            const auto ray = camera.generateRay(
-                                float(x) + 0.5f + fs.offset.x, float(y) + 0.5f + fs.offset.y, lens);
-                            PixelAovs aovs;
-                            const S L =
-                                integrator.radiance(ray.origin, ray.direction, sampler, path, stats,
-                                                    options.aovs ? &aovs : nullptr);
-                            film.addSample(x, y, mode.filmValue(L, path), fs.weight);
-                            if (options.aovs) film.addAovs(x, y, aovs);
-                        }
-                    }
-                pixelsDone.fetch_add(std::uint64_t((x1 - x0) * (y1 - y0)) * passSpp);
+                    for (int x = x0; x < x1; ++x)
+                        for (int s = first; s < first + count; ++s) renderSample(x, y, s, stats);
+                pixelsDone.fetch_add(std::uint64_t((x1 - x0) * (y1 - y0)) * count);
             }
             rays.fetch_add(stats.rays);
         });
+    };
+    const bool splats = settings.integrator != IntegratorKind::Path;
+
+    int done = 0, passes = 0;
+    auto& interrupted = renderInterruptFlag();
+    while (done < targetSpp && !interrupted.load()) {
+        // Passes double in size (1, 1, 2, 4, ... up to 64 spp), so early progress is quick
+        // and an interruption or a time limit loses little work.
+        const int passSpp = std::min({targetSpp - done, std::max(1, std::min(done, 64))});
+        if (!splats) {
+            renderSamples(done, passSpp);
+        } else {
+            // Splatting integrators run one sample per pixel at a time: each such iteration
+            // (width x height light paths) is one sample of the splat layer's per-pixel
+            // variance.
+            for (int s = done; s < done + passSpp; ++s) {
+                renderSamples(s, 1);
+                film.endSplatIteration(1.0 / (double(width) * double(height)));
+            }
+        }
         done += passSpp;
         ++passes;
         if (progress) {
@@ -115,6 +162,8 @@ RenderResult renderScene(const SceneDesc& scene, const RenderOptions& options,
     if (options.seed) settings.seed = *options.seed;
     if (options.maxDepth) settings.maxDepth = *options.maxDepth;
     if (options.sampler) settings.sampler = *options.sampler;
+    if (options.integrator) settings.integrator = *options.integrator;
+    if (options.mis) settings.mis = *options.mis;
     int width = scene.film.width, height = scene.film.height;
     if (options.resolution) std::tie(width, height) = *options.resolution;
 

@@ -180,8 +180,13 @@ class SceneParser {
 
     void readIntegrator(const JsonReader& r) {
         r.expectObject();
-        const std::string type = r.string("type", "path");
-        if (type != "path") r.failAt("type", "expected path, got \"" + type + "\"");
+        scene_.settings.integrator = r.choice("type", IntegratorKind::Path,
+                                              {{"path", IntegratorKind::Path},
+                                               {"light", IntegratorKind::Light},
+                                               {"bdpt", IntegratorKind::Bdpt}});
+        scene_.settings.mis = r.choice("mis", MisHeuristic::Power,
+                                       {{"power", MisHeuristic::Power},
+                                        {"balance", MisHeuristic::Balance}});
         scene_.settings.maxDepth = r.integer("max_depth", 16, 1, 1024);
         scene_.settings.russianRouletteDepth = r.integer("rr_depth", 5, 1, 1024);
         scene_.settings.uniformLightSelection =

@@ -1,12 +1,14 @@
 // The film: per pixel, the weighted sum of sample values (linear Rec.709 in RGB mode, CIE XYZ
 // in spectral mode), the sum of weights, and the sums a per-pixel variance estimate needs
-// (of the luminance Y); optional first-hit AOVs; a splat buffer for estimators that land
-// anywhere on the image (light tracing). A sample with NaN, Inf or a negative value is never
-// added: it is counted and reported.
+// (of the luminance Y); optional first-hit AOVs; and a splat layer for estimators that land
+// anywhere on the image (light tracing, BDPT's t = 1 strategy). Splats arrive in iterations (one
+// light path per pixel each): an iteration's splat image is accumulated with atomic adds, then
+// folded into a running mean and sum of squares, so the splat layer has a per-pixel variance
+// estimate too (iterations are independent). A sample or splat with NaN, Inf or a negative
+// value is never added: it is counted and reported.
 #pragma once
 
 #include <atomic>
-#include <mutex>
 #include <string>
 #include <vector>
 
@@ -34,12 +36,20 @@ class Film {
     /// Adds a camera sample to pixel (x, y). Returns false (and counts it) if rejected.
     bool addSample(int x, int y, const Rgb<double>& value, double weight);
     void addAovs(int x, int y, const PixelAovs& aovs);
-    /// Adds to the splat buffer at a continuous film position (thread-safe).
-    void addSplat(float x, float y, const Rgb<double>& value);
+    /// Adds a value to pixel (x, y) of the current splat iteration (thread-safe). Returns
+    /// false (and counts it) if rejected.
+    bool addSplat(int x, int y, const Rgb<double>& value);
+    /// Ends a splat iteration: its image times `scale` becomes one more sample of the splat
+    /// layer's per-pixel mean and variance. Not thread-safe (call between iterations).
+    void endSplatIteration(double scale);
+    int splatIterations() const { return splatIterations_; }
 
-    /// Linear Rec.709 value of a pixel: weighted mean plus splats / samplesPerPixel.
-    Rgb<double> pixel(int x, int y, double splatScale = 0.0) const;
-    /// The variance of the pixel's mean luminance (sample variance / n).
+    /// Linear Rec.709 value of a pixel: the camera samples' weighted mean plus the splat
+    /// layer's mean.
+    Rgb<double> pixel(int x, int y) const;
+    /// The variance of the pixel's mean luminance: sample variance / n of the camera samples
+    /// plus that of the splat iterations (the two are independent but for the one light path
+    /// BDPT traces for the pixel's own sample, whose covariance this neglects).
     double varianceOfMean(int x, int y) const;
     PixelAovs aovs(int x, int y) const;
     std::uint64_t samples(int x, int y) const { return at(x, y).count; }
@@ -53,6 +63,8 @@ class Film {
         double ySum = 0, ySqSum = 0;
         std::uint64_t count = 0;
         PixelAovs aovSum;
+        Rgb<double> splatSum{0.0};
+        double splatYSum = 0, splatYSqSum = 0;
     };
     const Pixel& at(int x, int y) const { return pixels_[std::size_t(y) * width_ + x]; }
     Pixel& at(int x, int y) { return pixels_[std::size_t(y) * width_ + x]; }
@@ -61,8 +73,8 @@ class Film {
     int width_, height_;
     FilmSpace space_;
     std::vector<Pixel> pixels_;
-    std::vector<Rgb<double>> splats_;
-    std::mutex splatMutex_;
+    std::vector<Rgb<double>> splatIteration_;
+    int splatIterations_ = 0;
     std::atomic<std::uint64_t> rejected_{0};
 };
 

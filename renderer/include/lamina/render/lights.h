@@ -25,6 +25,23 @@ struct LightSample {
     Vec3f normal;  ///< the light's surface normal there, facing the reference point
 };
 
+/// A particle leaving a light (light tracing, BDPT's light subpaths).
+struct EmissionSample {
+    Vec3f point;      ///< where it starts (on a disk outside the scene for infinite lights)
+    Vec3f normal;     ///< the emitting side's normal (the direction itself for point lights
+                      ///< and infinite lights, so that |cos| = 1)
+    Vec3f direction;  ///< unit, away from the light
+    Emission radiance;       ///< radiance, intensity (point, spot) or irradiance (directional)
+    float pdfPosition = 1;   ///< per unit area (1 for a delta position)
+    float pdfDirection = 1;  ///< per solid angle (1 for a delta direction)
+    bool deltaPosition = false, deltaDirection = false;
+};
+
+/// The densities of sampleEmission producing a given particle.
+struct EmissionPdf {
+    float position = 0, direction = 0;
+};
+
 class Light {
   public:
     virtual ~Light() = default;
@@ -41,6 +58,16 @@ class Light {
     /// Infinite lights: radiance arriving along -w (w points away from the scene) and density.
     virtual Emission environment(const Vec3f&) const { return {}; }
     virtual float environmentPdf(const Vec3f&) const { return 0.0f; }
+
+    /// Samples a particle: `uPosition` chooses the point, `uDirection` the direction. Its
+    /// weight is radiance |cos(normal, direction)| / (pdfPosition pdfDirection).
+    virtual std::optional<EmissionSample> sampleEmission(const Vec2f& uPosition,
+                                                         const Vec2f& uDirection) const = 0;
+    /// Densities of sampleEmission producing a particle at `point` (surface normal `normal`,
+    /// as the surface was hit) leaving along `direction`. For infinite lights only the
+    /// direction matters and the position density is that of the disk.
+    virtual EmissionPdf emissionPdf(const Vec3f& point, const Vec3f& normal,
+                                    const Vec3f& direction) const = 0;
 };
 
 /// Lights of the scene and the distribution they are chosen with.

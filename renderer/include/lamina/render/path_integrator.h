@@ -4,30 +4,9 @@
 // delta lights handled. The same code runs in every render mode.
 #pragma once
 
-#include "lamina/render/camera.h"
-#include "lamina/render/lights.h"
-#include "lamina/render/ray_offset.h"
-#include "lamina/render/render_mode.h"
+#include "lamina/render/integrator_common.h"
 
 namespace lamina::render {
-
-/// The power heuristic with beta = 2 (Veach 1997, eq. 9.13) for one sample of each strategy.
-inline float powerHeuristic(float a, float b) {
-    const float a2 = a * a, b2 = b * b;
-    if (!std::isfinite(a2)) return 1.0f;
-    return a2 + b2 > 0.0f ? a2 / (a2 + b2) : 0.0f;
-}
-
-struct SceneContext {
-    const SceneDesc& scene;
-    const Geometry& geometry;
-    const LightSet& lights;
-    const Camera& camera;
-};
-
-struct PathStatistics {
-    std::uint64_t rays = 0;  ///< closest-hit and shadow rays traced
-};
 
 template <SpectrumType S>
 class PathIntegrator {
@@ -101,8 +80,7 @@ class PathIntegrator {
             const Vec3f wi = frame.toWorld(s->wi);
             // A direction on the wrong side of the geometric surface for its lobe (possible
             // with shading normals) would leak light through the surface.
-            const float sideI = glm::dot(wi, hit->ng), sideO = glm::dot(-d, hit->ng);
-            if (s->isTransmission() ? sideI * sideO > 0.0f : sideI * sideO <= 0.0f) break;
+            if (!sidesAgree(-d, wi, hit->ng, hit->ns)) break;
             beta *= s->weight;
             if (s->isTransmission()) etaScale *= sqr(s->eta);
             specularBounce = s->isSpecular();
@@ -118,7 +96,7 @@ class PathIntegrator {
                 beta /= 1.0f - q;
             }
             if (!beta.isFinite() || beta.maxValue() <= 0.0f) break;
-            o = offsetRayOrigin(hit->p, sideI > 0.0f ? hit->ng : -hit->ng);
+            o = offsetRayOrigin(hit->p, facing(hit->ng, wi));
             d = wi;
         }
         return L;
@@ -132,6 +110,7 @@ class PathIntegrator {
         const Light& light = c_.lights.light(index);
         const auto ls = light.sample(hit.p, uPoint);
         if (!ls || !(ls->pdf > 0.0f) || ls->radiance.isZero()) return S(0.0f);
+        if (!sidesAgree(frame.toWorld(wo), ls->wi, hit.ng, hit.ns)) return S(0.0f);
         const Vec3f wi = frame.toLocal(ls->wi);
         const S f = bsdf.eval(wo, wi, TransportMode::Radiance);
         if (f.maxValue() <= 0.0f) return S(0.0f);

@@ -28,6 +28,9 @@ class PixelFilter {
     };
     Sample sample(const Vec2<float>& u) const;
     float evaluate1D(float x) const;
+    /// The filter normalised to integral 1 at an offset from a pixel centre: the weight with
+    /// which a splat at that offset counts for the pixel (light tracing).
+    float normalizedWeight(const Vec2<float>& offset) const;
     float radius() const { return radius_; }
 
   private:

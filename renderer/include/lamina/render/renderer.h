@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "lamina/render/bdpt_integrator.h"
 #include "lamina/render/film.h"
 #include "lamina/render/scene_description.h"
 
@@ -23,8 +24,12 @@ struct RenderOptions {
     std::optional<int> maxDepth;
     std::optional<std::pair<int, int>> resolution;
     std::optional<SamplerKind> sampler;
+    std::optional<IntegratorKind> integrator;
+    std::optional<MisHeuristic> mis;
     int threads = 0;  ///< 0: all cores
-    bool aovs = false;
+    bool aovs = false;  ///< path integrator only
+    TransportAblations ablations;
+    bool strategies = false;  ///< bdpt: keep per-(s, t) images (RenderResult::strategies)
 };
 
 struct RenderProgress {
@@ -43,7 +48,10 @@ struct RenderResult {
     bool partial = false;  ///< interrupted before the requested spp or time
     std::string modeName;
     RenderSettings settings;  ///< after command-line overrides
+    std::unique_ptr<StrategyImages> strategies;  ///< with RenderOptions::strategies (bdpt)
 };
+
+const char* integratorName(IntegratorKind kind);
 
 /// Set (from a signal handler) to stop after the pass in flight.
 std::atomic<bool>& renderInterruptFlag();

@@ -38,7 +38,14 @@ struct FilmDesc {
 
 enum class SamplerKind { Sobol, Independent };
 
+/// The light transport algorithm: camera path tracing, light tracing, bidirectional.
+enum class IntegratorKind { Path, Light, Bdpt };
+/// How BDPT weights its strategies (Veach 1997, section 9.2).
+enum class MisHeuristic { Power, Balance };
+
 struct RenderSettings {
+    IntegratorKind integrator = IntegratorKind::Path;
+    MisHeuristic mis = MisHeuristic::Power;  ///< bdpt only
     int maxDepth = 16;  ///< scattering events along a path
     int russianRouletteDepth = 5;
     int spp = 16;

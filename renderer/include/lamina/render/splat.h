@@ -1,0 +1,28 @@
+// Splatting a light-subpath contribution at a continuous film position: every pixel whose
+// filter covers the position receives the value times the filter normalised to integral 1
+// there, so a splat estimates the same filtered measurement as the camera samples do.
+#pragma once
+
+#include <cmath>
+
+#include "lamina/render/film.h"
+#include "lamina/render/pixel_filter.h"
+
+namespace lamina::render {
+
+inline void splatFiltered(Film& film, const PixelFilter& filter, const Vec2<float>& raster,
+                          const Rgb<double>& value) {
+    const float r = filter.radius();
+    const int x0 = std::max(0, int(std::ceil(raster.x - 0.5f - r)));
+    const int x1 = std::min(film.width() - 1, int(std::floor(raster.x - 0.5f + r)));
+    const int y0 = std::max(0, int(std::ceil(raster.y - 0.5f - r)));
+    const int y1 = std::min(film.height() - 1, int(std::floor(raster.y - 0.5f + r)));
+    for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x) {
+            const float w = filter.normalizedWeight(
+                Vec2<float>(raster.x - (float(x) + 0.5f), raster.y - (float(y) + 0.5f)));
+            if (w > 0.0f) film.addSplat(x, y, value * double(w));
+        }
+}
+
+}  // namespace lamina::render
