@@ -10,6 +10,7 @@ void registerSpectrumCommand(CLI::App& app);
 void registerInfoCommand(CLI::App& app);
 void registerBenchCommand(CLI::App& app);
 void registerCompareCommand(CLI::App& app);
+void registerReciprocityCommand(CLI::App& app);
 
 // Every subcommand is registered here, in the order `lamina --help` lists them.
 void registerCommands(CLI::App& app) {
@@ -18,6 +19,7 @@ void registerCommands(CLI::App& app) {
     registerInfoCommand(app);
     registerBenchCommand(app);
     registerCompareCommand(app);
+    registerReciprocityCommand(app);
     registerSpectrumCommand(app);
 }
 

@@ -25,6 +25,8 @@ int main(int argc, char** argv) {
         return app.exit(e);
     } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
+    } catch (const CLI::RuntimeError& e) {
+        return e.get_exit_code();  // a command's own verdict (e.g. reciprocity: 2)
     } catch (const CLI::ParseError& e) {
         std::cerr << "lamina: error: " << e.what() << "\n"
                   << "Run `lamina --help` for usage.\n";

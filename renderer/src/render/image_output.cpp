@@ -101,6 +101,28 @@ void writeExr(const std::filesystem::path& path, const Film& film, bool aovs,
     writeAtomically(path, spec, data);
 }
 
+void writeFloatExr(const std::filesystem::path& path, int width, int height,
+                   const std::vector<std::string>& channels, const std::vector<float>& data,
+                   const ImageMetadata& metadata) {
+    OIIO::ImageSpec spec(width, height, int(channels.size()), OIIO::TypeDesc::FLOAT);
+    spec.channelnames = channels;
+    for (const auto& [k, v] : metadata.strings) spec.attribute("lamina:" + k, v);
+    for (const auto& [k, v] : metadata.floats) spec.attribute("lamina:" + k, v);
+    for (const auto& [k, v] : metadata.ints) spec.attribute("lamina:" + k, v);
+    writeAtomically(path, spec, data);
+}
+
+void writeSignedHeatMap(const std::filesystem::path& path, int width, int height,
+                        const std::vector<float>& values, double limit) {
+    OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
+    std::vector<float> data(std::size_t(width) * height * 3, 0.0f);
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        const double t = std::clamp(double(values[i]) / limit, -1.0, 1.0);
+        data[3 * i + (t > 0 ? 0 : 2)] = float(std::sqrt(std::abs(t)));
+    }
+    writeAtomically(path, spec, data);
+}
+
 void writePngPreview(const std::filesystem::path& path, const Film& film, double exposure) {
     const int w = film.width(), h = film.height();
     OIIO::ImageSpec spec(w, h, 3, OIIO::TypeDesc::UINT8);

@@ -26,6 +26,14 @@ void writeExr(const std::filesystem::path& path, const Film& film, bool aovs,
               const ImageMetadata& metadata);
 void writePngPreview(const std::filesystem::path& path, const Film& film, double exposure);
 
+/// An EXR of named float channels (interleaved `data`, width x height x channels.size()).
+void writeFloatExr(const std::filesystem::path& path, int width, int height,
+                   const std::vector<std::string>& channels, const std::vector<float>& data,
+                   const ImageMetadata& metadata = {});
+/// A PNG heat map of a signed quantity: blue for -limit, black for 0, red for +limit.
+void writeSignedHeatMap(const std::filesystem::path& path, int width, int height,
+                        const std::vector<float>& values, double limit);
+
 /// A float RGB image read back (tests, comparisons).
 struct RgbImage {
     int width = 0, height = 0;
