@@ -47,8 +47,8 @@ double regularizedIncompleteBeta(double a, double b, double x) {
     if (!(x < 1.0)) return 1.0;
     // x^a (1 - x)^b / (a B(a, b)) times the continued fraction, using the symmetry
     // I_x(a, b) = 1 - I_{1-x}(b, a) where the fraction converges slowly.
-    const double logFront = std::lgamma(a + b) - std::lgamma(a) - std::lgamma(b) +
-                            a * std::log(x) + b * std::log1p(-x);
+    const double logFront =
+        std::lgamma(a + b) - std::lgamma(a) - std::lgamma(b) + a * std::log(x) + b * std::log1p(-x);
     const double front = std::exp(logFront);
     if (x < (a + 1.0) / (a + b + 2.0)) return front * betaContinuedFraction(a, b, x) / a;
     return 1.0 - front * betaContinuedFraction(b, a, 1.0 - x) / b;

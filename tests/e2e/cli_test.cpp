@@ -13,6 +13,7 @@
 #include <OpenImageIO/imageio.h>
 #include <fstream>
 
+#include "cli_helpers.h"
 #include "lamina/bsdf/material_builder.h"
 #include "lamina/render/image_output.h"
 
@@ -20,53 +21,6 @@ namespace lamina {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct CommandRun {
-    int exitCode;
-    std::string output;  // stdout and stderr
-};
-
-CommandRun runLamina(const std::string& args, const std::string& input = "") {
-    std::string redirect;
-    if (!input.empty()) {
-        const fs::path in =
-            fs::temp_directory_path() / ("lamina-cli-stdin-" + std::to_string(::getpid()));
-        std::ofstream(in) << input << "\n";
-        redirect = " < " + in.string();
-    }
-    const std::string cmd =
-        std::string(LAMINA_BINARY_DIR) + "/renderer/lamina " + args + redirect + " 2>&1";
-    FILE* pipe = ::popen(cmd.c_str(), "r");
-    std::string out;
-    std::array<char, 4096> buf{};
-    while (pipe && std::fgets(buf.data(), int(buf.size()), pipe))
-        out += buf.data();
-    const int status = pipe ? ::pclose(pipe) : -1;
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
-
-class CliTest : public ::testing::Test {
-  protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("lamina-cli-" + std::to_string(::getpid()) + "-" +
-                ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
-    std::string write(const std::string& name, const std::string& text) {
-        const fs::path p = dir_ / name;
-        std::ofstream(p) << text;
-        return p.string();
-    }
-    std::size_t filesIn() const {
-        return std::size_t(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()));
-    }
-
-    fs::path dir_;
-};
 
 // A valid small scene whose parts the bad-input cases replace.
 std::string scene(const std::string& material, const std::string& emission = "[1, 1, 1]",

@@ -56,8 +56,7 @@ void expectAgreement(const AgreementResult& r, const std::string& pair) {
     EXPECT_EQ(r.blocksTested, 256) << pair;
     EXPECT_LE(r.blockRejectionRate(), kMaxBlockRejection) << pair;
     EXPECT_GE(r.meanPValue, kMeanPValue)
-        << pair << ": relative difference " << r.relativeDifference << " +- "
-        << r.standardError;
+        << pair << ": relative difference " << r.relativeDifference << " +- " << r.standardError;
 }
 
 class IntegratorsAgree : public ::testing::TestWithParam<AgreementCase> {};
@@ -96,8 +95,7 @@ TEST(IntegratorsAgreeBreakIt, WithoutTheAdjointCorrectionLightTracingDisagrees) 
     TransportAblations broken;
     broken.noAdjointCorrection = true;
     const BatchImages path = render(scene, IntegratorKind::Path, RenderModeKind::Rgb, 11);
-    const BatchImages light =
-        render(scene, IntegratorKind::Light, RenderModeKind::Rgb, 22, broken);
+    const BatchImages light = render(scene, IntegratorKind::Light, RenderModeKind::Rgb, 22, broken);
     const AgreementResult r = compare(path, light);
     EXPECT_TRUE(r.blockRejectionRate() > kMaxBlockRejection || r.meanPValue < kMeanPValue)
         << "blocks " << r.blockRejectionRate() << ", mean p " << r.meanPValue;

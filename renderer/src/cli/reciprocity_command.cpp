@@ -80,7 +80,8 @@ void writeMean(const std::filesystem::path& path, const render::BatchImages& ima
     std::vector<float> data;
     data.reserve(images.meanImage().size() * 3);
     for (const Rgb<double>& v : images.meanImage())
-        for (int c = 0; c < 3; ++c) data.push_back(float(v[c]));
+        for (int c = 0; c < 3; ++c)
+            data.push_back(float(v[c]));
     render::writeFloatExr(path, images.width(), images.height(), {"R", "G", "B"}, data, meta);
 }
 
@@ -92,12 +93,12 @@ bool comparePair(const std::filesystem::path& dir, const std::string& nameA,
     test.blockSize = args.block;
     const render::AgreementResult r = render::testAgreement(a, b, test);
     const bool agree = r.agree(args.alpha);
-    std::printf("%-6s vs %-9s  pixels rejected %6.2f%% of %d  blocks rejected %6.2f%% of %d "
-                "(p %.2g)  mean rel. diff %+.4f +- %.4f (p %.2g)  %s\n",
-                nameA.c_str(), nameB.c_str(), 100 * r.pixelRejectionRate(), r.pixelsTested,
-                100 * r.blockRejectionRate(), r.blocksTested, r.blockRejectionPValue(args.alpha),
-                r.relativeDifference, r.standardError, r.meanPValue,
-                agree ? "agree" : "DISAGREE");
+    std::printf(
+        "%-6s vs %-9s  pixels rejected %6.2f%% of %d  blocks rejected %6.2f%% of %d "
+        "(p %.2g)  mean rel. diff %+.4f +- %.4f (p %.2g)  %s\n",
+        nameA.c_str(), nameB.c_str(), 100 * r.pixelRejectionRate(), r.pixelsTested,
+        100 * r.blockRejectionRate(), r.blocksTested, r.blockRejectionPValue(args.alpha),
+        r.relativeDifference, r.standardError, r.meanPValue, agree ? "agree" : "DISAGREE");
     const std::string stem = "t_" + nameA + "_vs_" + nameB;
     std::vector<float> data;
     data.reserve(r.pixelT.size() * 2);
@@ -113,10 +114,8 @@ bool comparePair(const std::filesystem::path& dir, const std::string& nameA,
     meta.floats["relative_difference_se"] = float(r.standardError);
     render::writeFloatExr(dir / (stem + ".exr"), a.width(), a.height(), {"T.pixel", "T.block"},
                           data, meta);
-    render::writeSignedHeatMap(dir / (stem + "_pixels.png"), a.width(), a.height(), r.pixelT,
-                               4.0);
-    render::writeSignedHeatMap(dir / (stem + "_blocks.png"), a.width(), a.height(), r.blockT,
-                               4.0);
+    render::writeSignedHeatMap(dir / (stem + "_pixels.png"), a.width(), a.height(), r.pixelT, 4.0);
+    render::writeSignedHeatMap(dir / (stem + "_blocks.png"), a.width(), a.height(), r.blockT, 4.0);
     return agree;
 }
 
@@ -129,7 +128,7 @@ void checkMaterials(const render::SceneDesc& scene, const SpectrumContext<S>& co
         std::printf("  %-20s %-8s  reciprocity (reflection) %9.2e   adjoint %9.2e%s\n",
                     scene.materialNames[m].c_str(), modeName, r.maxReciprocityError,
                     r.maxAdjointError,
-                    r.maxAdjointError > 1e-3 ? "  ADJOINT BROKEN"
+                    r.maxAdjointError > 1e-3       ? "  ADJOINT BROKEN"
                     : r.maxReciprocityError > 1e-3 ? "  (not reciprocal)"
                                                    : "");
     }
@@ -141,8 +140,8 @@ int run(const ReciprocityArgs& args) {
     std::filesystem::create_directories(dir);
 
     render::RenderOptions o;
-    o.mode = args.mode == "spectral" ? render::RenderModeKind::Spectral
-                                     : render::RenderModeKind::Rgb;
+    o.mode =
+        args.mode == "spectral" ? render::RenderModeKind::Spectral : render::RenderModeKind::Rgb;
     o.threads = args.threads;
     if (args.maxDepth > 0) o.maxDepth = args.maxDepth;
     if (!args.resolution.empty()) {
@@ -164,18 +163,19 @@ int run(const ReciprocityArgs& args) {
                                                        "transport-mode");
     }
 
-    std::printf("reciprocity: %s, %s mode, %d spp in %d independent batches per integrator, "
-                "alpha %.3g, %dx%d blocks\n",
-                args.scene.c_str(), args.mode.c_str(), args.spp, args.batches, args.alpha,
-                args.block, args.block);
+    std::printf(
+        "reciprocity: %s, %s mode, %d spp in %d independent batches per integrator, "
+        "alpha %.3g, %dx%d blocks\n",
+        args.scene.c_str(), args.mode.c_str(), args.spp, args.batches, args.alpha, args.block,
+        args.block);
     std::vector<Rendered> renders;
     const auto names = splitList(args.integrators);
     for (std::size_t i = 0; i < names.size(); ++i) {
         o.integrator = integratorKind(names[i]);
         o.seed = hashValues({std::uint64_t(args.seed), i, 0x7265636970ull}) & 0x7fffffffull;
         const auto start = std::chrono::steady_clock::now();
-        render::BatchImages images = render::renderBatches(
-            scene, o, args.spp, args.batches, [&](int k) {
+        render::BatchImages images =
+            render::renderBatches(scene, o, args.spp, args.batches, [&](int k) {
                 std::fprintf(stderr, "\r%s: batch %d/%d", names[i].c_str(), k + 1, args.batches);
             });
         const double seconds =
@@ -196,9 +196,8 @@ int run(const ReciprocityArgs& args) {
             allAgree &= comparePair(dir, renders[i].name, renders[i].images, renders[j].name,
                                     renders[j].images, args);
     if (!args.reference.empty()) {
-        const render::BatchImages ref =
-            referenceImages(args.reference, renders.front().images.width(),
-                            renders.front().images.height());
+        const render::BatchImages ref = referenceImages(
+            args.reference, renders.front().images.width(), renders.front().images.height());
         for (const Rendered& r : renders)
             allAgree &= comparePair(dir, r.name, r.images, "reference", ref, args);
     }
@@ -226,8 +225,7 @@ void registerReciprocityCommand(CLI::App& app) {
     cmd->add_option("scene", a->scene, "Scene file")->required()->check(CLI::ExistingFile);
     cmd->add_option("-o,--output", a->output, "Directory for the images and t-statistic maps")
         ->required();
-    cmd->add_option("--integrators", a->integrators, "Comma-separated list")
-        ->capture_default_str();
+    cmd->add_option("--integrators", a->integrators, "Comma-separated list")->capture_default_str();
     cmd->add_option("--spp", a->spp, "Samples per pixel per integrator (over all batches)")
         ->check(CLI::Range(2, 1 << 24))
         ->capture_default_str();

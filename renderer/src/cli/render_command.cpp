@@ -141,8 +141,8 @@ void runRender(const RenderArgs& a) {
     if (!a.mis.empty())
         o.mis = a.mis == "balance" ? render::MisHeuristic::Balance : render::MisHeuristic::Power;
     o.strategies = !a.strategies.empty();
-    if (o.strategies && o.integrator.value_or(scene.settings.integrator) !=
-                            render::IntegratorKind::Bdpt)
+    if (o.strategies &&
+        o.integrator.value_or(scene.settings.integrator) != render::IntegratorKind::Bdpt)
         throw CLI::ValidationError("--strategies", "needs the bdpt integrator");
     o.threads = a.threads;
     o.aovs = a.aovs;
@@ -182,16 +182,16 @@ void runRender(const RenderArgs& a) {
     if (a.preview) render::writePngPreview(preview, *r.film, a.exposure);
 
     if (!a.quiet) {
-        std::fprintf(stderr,
-                     "%s: %dx%d, %d spp, %s, %.2f s, %.3g paths/s, %.3g rays/s, "
-                     "%llu rejected samples%s\n",
-                     output.string().c_str(), r.film->width(), r.film->height(), r.spp,
-                     (r.modeName + " mode, " + render::integratorName(r.settings.integrator) +
-                      " integrator")
-                         .c_str(), r.seconds, double(r.paths) / r.seconds,
-                     double(r.rays) / r.seconds,
-                     static_cast<unsigned long long>(r.film->rejectedSamples()),
-                     r.partial ? " (interrupted: partial image)" : "");
+        std::fprintf(
+            stderr,
+            "%s: %dx%d, %d spp, %s, %.2f s, %.3g paths/s, %.3g rays/s, "
+            "%llu rejected samples%s\n",
+            output.string().c_str(), r.film->width(), r.film->height(), r.spp,
+            (r.modeName + " mode, " + render::integratorName(r.settings.integrator) + " integrator")
+                .c_str(),
+            r.seconds, double(r.paths) / r.seconds, double(r.rays) / r.seconds,
+            static_cast<unsigned long long>(r.film->rejectedSamples()),
+            r.partial ? " (interrupted: partial image)" : "");
         if (a.preview) std::fprintf(stderr, "preview: %s\n", preview.string().c_str());
     }
 }

@@ -32,7 +32,8 @@ double BatchImages::regionMean(std::size_t batch, int x0, int y0, int x1, int y1
 
 double BatchImages::mean(int x0, int y0, int x1, int y1) const {
     double sum = 0;
-    for (std::size_t b = 0; b < batches_.size(); ++b) sum += regionMean(b, x0, y0, x1, y1);
+    for (std::size_t b = 0; b < batches_.size(); ++b)
+        sum += regionMean(b, x0, y0, x1, y1);
     return batches_.empty() ? 0.0 : sum / double(batches_.size());
 }
 
@@ -41,7 +42,8 @@ double BatchImages::varianceOfMean(int x0, int y0, int x1, int y1) const {
     if (k < 2) return 0.0;
     const double m = mean(x0, y0, x1, y1);
     double ss = 0;
-    for (std::size_t b = 0; b < k; ++b) ss += sqr(regionMean(b, x0, y0, x1, y1) - m);
+    for (std::size_t b = 0; b < k; ++b)
+        ss += sqr(regionMean(b, x0, y0, x1, y1) - m);
     return ss / double(k - 1) / double(k);
 }
 
@@ -102,7 +104,8 @@ AgreementResult testAgreement(const BatchImages& a, const BatchImages& b,
         for (int x0 = 0; x0 + bs <= w; x0 += bs) {
             const TTest t = welch(a, b, x0, y0, x0 + bs, y0 + bs, test.alpha);
             for (int y = y0; y < y0 + bs; ++y)
-                for (int x = x0; x < x0 + bs; ++x) r.blockT[std::size_t(y) * w + x] = float(t.t);
+                for (int x = x0; x < x0 + bs; ++x)
+                    r.blockT[std::size_t(y) * w + x] = float(t.t);
             r.blocksTested += t.tested;
             r.blocksRejected += t.rejected;
         }
@@ -113,13 +116,12 @@ AgreementResult testAgreement(const BatchImages& a, const BatchImages& b,
     const double va = a.varianceOfMean(0, 0, w, h), vb = b.varianceOfMean(0, 0, w, h);
     if (r.meanB > 0) {
         r.relativeDifference = r.meanA / r.meanB - 1.0;
-        r.standardError =
-            std::sqrt(va / sqr(r.meanB) + vb * sqr(r.meanA) / sqr(sqr(r.meanB)));
+        r.standardError = std::sqrt(va / sqr(r.meanB) + vb * sqr(r.meanA) / sqr(sqr(r.meanB)));
     }
     if (va + vb > 0)
-        r.meanPValue = studentTTwoSidedPValue(
-            (r.meanA - r.meanB) / std::sqrt(va + vb),
-            welchDegreesOfFreedom(va, a.batches(), vb, b.batches()));
+        r.meanPValue =
+            studentTTwoSidedPValue((r.meanA - r.meanB) / std::sqrt(va + vb),
+                                   welchDegreesOfFreedom(va, a.batches(), vb, b.batches()));
     else
         r.meanPValue = r.meanA == r.meanB ? 1.0 : 0.0;
     return r;

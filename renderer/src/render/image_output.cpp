@@ -106,9 +106,12 @@ void writeFloatExr(const std::filesystem::path& path, int width, int height,
                    const ImageMetadata& metadata) {
     OIIO::ImageSpec spec(width, height, int(channels.size()), OIIO::TypeDesc::FLOAT);
     spec.channelnames = channels;
-    for (const auto& [k, v] : metadata.strings) spec.attribute("lamina:" + k, v);
-    for (const auto& [k, v] : metadata.floats) spec.attribute("lamina:" + k, v);
-    for (const auto& [k, v] : metadata.ints) spec.attribute("lamina:" + k, v);
+    for (const auto& [k, v] : metadata.strings)
+        spec.attribute("lamina:" + k, v);
+    for (const auto& [k, v] : metadata.floats)
+        spec.attribute("lamina:" + k, v);
+    for (const auto& [k, v] : metadata.ints)
+        spec.attribute("lamina:" + k, v);
     writeAtomically(path, spec, data);
 }
 

@@ -107,7 +107,8 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
                           y1 = std::min(y0 + kTileSize, height);
                 for (int y = y0; y < y1; ++y)
                     for (int x = x0; x < x1; ++x)
-                        for (int s = first; s < first + count; ++s) renderSample(x, y, s, stats);
+                        for (int s = first; s < first + count; ++s)
+                            renderSample(x, y, s, stats);
                 pixelsDone.fetch_add(std::uint64_t((x1 - x0) * (y1 - y0)) * count);
             }
             rays.fetch_add(stats.rays);

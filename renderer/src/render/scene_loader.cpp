@@ -184,9 +184,9 @@ class SceneParser {
                                               {{"path", IntegratorKind::Path},
                                                {"light", IntegratorKind::Light},
                                                {"bdpt", IntegratorKind::Bdpt}});
-        scene_.settings.mis = r.choice("mis", MisHeuristic::Power,
-                                       {{"power", MisHeuristic::Power},
-                                        {"balance", MisHeuristic::Balance}});
+        scene_.settings.mis =
+            r.choice("mis", MisHeuristic::Power,
+                     {{"power", MisHeuristic::Power}, {"balance", MisHeuristic::Balance}});
         scene_.settings.maxDepth = r.integer("max_depth", 16, 1, 1024);
         scene_.settings.russianRouletteDepth = r.integer("rr_depth", 5, 1, 1024);
         scene_.settings.uniformLightSelection =

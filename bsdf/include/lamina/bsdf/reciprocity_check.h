@@ -38,8 +38,10 @@ ReciprocityReport checkBsdfReciprocity(const Bxdf<S>& bsdf, int pairs, std::uint
     };
     ReciprocityReport r;
     for (int k = 0; k < pairs; ++k) {
-        const V3 wo(squareToUniformSphere(Vec2<Float>(Float(rng.nextDouble()), Float(rng.nextDouble()))));
-        const V3 wi(squareToUniformSphere(Vec2<Float>(Float(rng.nextDouble()), Float(rng.nextDouble()))));
+        const V3 wo(
+            squareToUniformSphere(Vec2<Float>(Float(rng.nextDouble()), Float(rng.nextDouble()))));
+        const V3 wi(
+            squareToUniformSphere(Vec2<Float>(Float(rng.nextDouble()), Float(rng.nextDouble()))));
         if (std::abs(wo.z) < Float(1e-3) || std::abs(wi.z) < Float(1e-3)) continue;
         // f without the built-in cosine of its second argument.
         const S fRad = bsdf.eval(wo, wi, TransportMode::Radiance) / std::abs(wi.z);

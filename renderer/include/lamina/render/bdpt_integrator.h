@@ -32,9 +32,12 @@ class StrategyImages {
         for (int depth = 0; depth <= kMaxDepth; ++depth)
             for (int t = 1; t <= depth + 2; ++t)
                 if (!(depth == 0 && t == 1)) strategies_.push_back({depth + 2 - t, t});
-        for (auto& b : buffers_) b.resize(2 * strategies_.size());
-        for (auto& b : buffers_[0]) b.assign(std::size_t(width) * height, Rgb<double>(0.0));
-        for (auto& b : buffers_[1]) b.assign(std::size_t(width) * height, Rgb<double>(0.0));
+        for (auto& b : buffers_)
+            b.resize(2 * strategies_.size());
+        for (auto& b : buffers_[0])
+            b.assign(std::size_t(width) * height, Rgb<double>(0.0));
+        for (auto& b : buffers_[1])
+            b.assign(std::size_t(width) * height, Rgb<double>(0.0));
     }
     /// The strategy's slot, or -1 beyond kMaxDepth.
     int slot(int s, int t) const {
@@ -120,8 +123,8 @@ class BdptIntegrator {
                 if (depth < 0 || depth > settings_.maxDepth || (s == 1 && t == 1)) continue;
                 Vec2f splatAt(0.0f);
                 float weight = 0.0f;
-                const S c = connect(lightPath, s, cameraPath, t, sampler, path, stats, splatAt,
-                                    weight);
+                const S c =
+                    connect(lightPath, s, cameraPath, t, sampler, path, stats, splatAt, weight);
                 if (c.maxValue() <= 0.0f || !c.isFinite()) continue;
                 const S weighted = c * weight;
                 if (t == 1)
@@ -136,8 +139,10 @@ class BdptIntegrator {
                 if (!wv.isFinite() || !uv.isFinite() || wv.hasNegative() || uv.hasNegative())
                     continue;
                 if (t == 1) {
-                    const int sx = int(splatAt.x), sy = int(splatAt.y);
-                    strategies->addSplat(slot, sx, sy, wv, uv);
+                    forEachFilteredPixel(filter_, splatAt, strategies->width(),
+                                         strategies->height(), [&](int x, int y, double w) {
+                                             strategies->addSplat(slot, x, y, wv * w, uv * w);
+                                         });
                 } else {
                     strategies->addCamera(slot, px, py, wv, uv, filterWeight);
                 }
@@ -217,8 +222,9 @@ class BdptIntegrator {
         float pdf = 0.0f;
         for (std::size_t i : c_.lights.infiniteLights())
             if (!c_.lights.light(i).isDelta())
-                pdf += c_.lights.probability(i) *
-                   c_.lights.light(i).emissionPdf(Vec3f(0.0f), Vec3f(0.0f), direction).direction;
+                pdf +=
+                    c_.lights.probability(i) *
+                    c_.lights.light(i).emissionPdf(Vec3f(0.0f), Vec3f(0.0f), direction).direction;
         return pdf;
     }
 
@@ -272,9 +278,8 @@ class BdptIntegrator {
         out.push_back(v);
 
         const S Le = mode_.emission(e->radiance, path);
-        const S beta =
-            Le * (std::abs(glm::dot(e->normal, e->direction)) /
-                  (pmf * e->pdfPosition * e->pdfDirection));
+        const S beta = Le * (std::abs(glm::dot(e->normal, e->direction)) /
+                             (pmf * e->pdfPosition * e->pdfDirection));
         const bool onSurface = !e->deltaPosition && !v.infinite;
         const Vec3f origin =
             onSurface ? offsetRayOrigin(e->point, facing(e->normal, e->direction)) : e->point;
@@ -296,9 +301,8 @@ class BdptIntegrator {
         const float beta0 = beta.maxValue();
         if (!(beta0 > 0.0f)) return;
         const bool lightPath = mode == TransportMode::Importance;
-        const TransportMode bsdfMode = lightPath && ablations_.radianceOnLightPaths
-                                           ? TransportMode::Radiance
-                                           : mode;
+        const TransportMode bsdfMode =
+            lightPath && ablations_.radianceOnLightPaths ? TransportMode::Radiance : mode;
         for (int surfaces = 0; surfaces < maxSurfaces; ++surfaces) {
             ++stats.rays;
             const auto hit = c_.geometry.intersect(o, d);
@@ -455,8 +459,8 @@ class BdptIntegrator {
             sampled.infinite = light.isInfinite();
             sampled.deltaLight = light.isDelta();
             sampled.p = sampled.infinite ? ls->wi : ls->point;
-            sampled.ng = sampled.ns = (light.isDelta() || sampled.infinite) ? Vec3f(0.0f)
-                                                                            : ls->normal;
+            sampled.ng = sampled.ns =
+                (light.isDelta() || sampled.infinite) ? Vec3f(0.0f) : ls->normal;
             sampled.pdfFwd = pdfLightOrigin(sampled);
             const Vec3f wPrev = directionTo(cv, cameraPath[std::size_t(t - 2)]);
             const S f = evalAt(cv, wPrev, ls->wi, false, path);
@@ -466,8 +470,8 @@ class BdptIntegrator {
             const bool visible =
                 sampled.infinite
                     ? !(++stats.rays,
-                        c_.geometry.occluded(offsetRayOrigin(cv.p, facing(cv.ng, ls->wi)),
-                                             ls->wi, std::numeric_limits<float>::infinity()))
+                        c_.geometry.occluded(offsetRayOrigin(cv.p, facing(cv.ng, ls->wi)), ls->wi,
+                                             std::numeric_limits<float>::infinity()))
                     : unoccluded(cv, sampled, stats);
             if (!visible) return S(0.0f);
         } else {
@@ -483,8 +487,7 @@ class BdptIntegrator {
             const S fc =
                 evalAt(cv, directionTo(cv, cameraPath[std::size_t(t - 2)]), w, false, path);
             if (fc.maxValue() <= 0.0f) return value;
-            const S fl =
-                evalAt(lv, directionTo(lv, lightPath[std::size_t(s - 2)]), -w, true, path);
+            const S fl = evalAt(lv, directionTo(lv, lightPath[std::size_t(s - 2)]), -w, true, path);
             if (fl.maxValue() <= 0.0f) return value;
             value = cv.beta * fc * fl * lv.beta * (1.0f / dist2);
             if (!unoccluded(cv, lv, stats)) return S(0.0f);

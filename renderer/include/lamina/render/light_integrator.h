@@ -44,9 +44,8 @@ class LightIntegrator {
                 at.p = e->point;
                 at.ng = at.ns = facing(e->normal, e->normal);
                 const Emission toCamera = light.radiance(at, cc->wi);
-                if (!toCamera.isZero() &&
-                    segmentUnoccluded(c_.geometry, e->point, e->normal, cc->lensPoint,
-                                      Vec3f(0.0f), stats)) {
+                if (!toCamera.isZero() && segmentUnoccluded(c_.geometry, e->point, e->normal,
+                                                            cc->lensPoint, Vec3f(0.0f), stats)) {
                     const float cosLight = std::abs(glm::dot(e->normal, cc->wi));
                     const S value = mode_.emission(toCamera, path) *
                                     (cosLight * cc->importance / (cc->pdf * pmf * e->pdfPosition));
@@ -59,8 +58,7 @@ class LightIntegrator {
         S beta = Le * (cosEmit / (pmf * e->pdfPosition * e->pdfDirection));
         const float beta0 = beta.maxValue();
         if (!(beta0 > 0.0f) || !beta.isFinite()) return;
-        Vec3f o = onSurface ? offsetRayOrigin(e->point, facing(e->normal, e->direction))
-                            : e->point;
+        Vec3f o = onSurface ? offsetRayOrigin(e->point, facing(e->normal, e->direction)) : e->point;
         Vec3f d = e->direction;
         const TransportMode mode =
             ablations_.radianceOnLightPaths ? TransportMode::Radiance : TransportMode::Importance;
@@ -82,8 +80,8 @@ class LightIntegrator {
                     const S f = bsdf.eval(wo, frame.toLocal(cc->wi), mode) *
                                 correction(woWorld, cc->wi, *hit);
                     if (f.maxValue() > 0.0f &&
-                        segmentUnoccluded(c_.geometry, hit->p, hit->ng, cc->lensPoint,
-                                          Vec3f(0.0f), stats)) {
+                        segmentUnoccluded(c_.geometry, hit->p, hit->ng, cc->lensPoint, Vec3f(0.0f),
+                                          stats)) {
                         const S value = beta * f * (cc->importance / cc->pdf);
                         splatFiltered(film, filter_, cc->raster, mode_.filmValue(value, path));
                     }

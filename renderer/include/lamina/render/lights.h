@@ -27,10 +27,10 @@ struct LightSample {
 
 /// A particle leaving a light (light tracing, BDPT's light subpaths).
 struct EmissionSample {
-    Vec3f point;      ///< where it starts (on a disk outside the scene for infinite lights)
-    Vec3f normal;     ///< the emitting side's normal (the direction itself for point lights
-                      ///< and infinite lights, so that |cos| = 1)
-    Vec3f direction;  ///< unit, away from the light
+    Vec3f point;             ///< where it starts (on a disk outside the scene for infinite lights)
+    Vec3f normal;            ///< the emitting side's normal (the direction itself for point lights
+                             ///< and infinite lights, so that |cos| = 1)
+    Vec3f direction;         ///< unit, away from the light
     Emission radiance;       ///< radiance, intensity (point, spot) or irradiance (directional)
     float pdfPosition = 1;   ///< per unit area (1 for a delta position)
     float pdfDirection = 1;  ///< per solid angle (1 for a delta direction)

@@ -26,7 +26,7 @@ struct RenderOptions {
     std::optional<SamplerKind> sampler;
     std::optional<IntegratorKind> integrator;
     std::optional<MisHeuristic> mis;
-    int threads = 0;  ///< 0: all cores
+    int threads = 0;    ///< 0: all cores
     bool aovs = false;  ///< path integrator only
     TransportAblations ablations;
     bool strategies = false;  ///< bdpt: keep per-(s, t) images (RenderResult::strategies)
@@ -47,7 +47,7 @@ struct RenderResult {
     std::uint64_t paths = 0;
     bool partial = false;  ///< interrupted before the requested spp or time
     std::string modeName;
-    RenderSettings settings;  ///< after command-line overrides
+    RenderSettings settings;                     ///< after command-line overrides
     std::unique_ptr<StrategyImages> strategies;  ///< with RenderOptions::strategies (bdpt)
 };
 

@@ -46,7 +46,7 @@ enum class MisHeuristic { Power, Balance };
 struct RenderSettings {
     IntegratorKind integrator = IntegratorKind::Path;
     MisHeuristic mis = MisHeuristic::Power;  ///< bdpt only
-    int maxDepth = 16;  ///< scattering events along a path
+    int maxDepth = 16;                       ///< scattering events along a path
     int russianRouletteDepth = 5;
     int spp = 16;
     std::uint64_t seed = 0;

@@ -10,19 +10,28 @@
 
 namespace lamina::render {
 
-inline void splatFiltered(Film& film, const PixelFilter& filter, const Vec2<float>& raster,
-                          const Rgb<double>& value) {
+/// Calls add(x, y, weight) for every pixel of a width x height film whose filter covers
+/// `raster`, with the filter normalised to integral 1 there.
+template <typename Add>
+void forEachFilteredPixel(const PixelFilter& filter, const Vec2<float>& raster, int width,
+                          int height, Add&& add) {
     const float r = filter.radius();
     const int x0 = std::max(0, int(std::ceil(raster.x - 0.5f - r)));
-    const int x1 = std::min(film.width() - 1, int(std::floor(raster.x - 0.5f + r)));
+    const int x1 = std::min(width - 1, int(std::floor(raster.x - 0.5f + r)));
     const int y0 = std::max(0, int(std::ceil(raster.y - 0.5f - r)));
-    const int y1 = std::min(film.height() - 1, int(std::floor(raster.y - 0.5f + r)));
+    const int y1 = std::min(height - 1, int(std::floor(raster.y - 0.5f + r)));
     for (int y = y0; y <= y1; ++y)
         for (int x = x0; x <= x1; ++x) {
             const float w = filter.normalizedWeight(
                 Vec2<float>(raster.x - (float(x) + 0.5f), raster.y - (float(y) + 0.5f)));
-            if (w > 0.0f) film.addSplat(x, y, value * double(w));
+            if (w > 0.0f) add(x, y, double(w));
         }
+}
+
+inline void splatFiltered(Film& film, const PixelFilter& filter, const Vec2<float>& raster,
+                          const Rgb<double>& value) {
+    forEachFilteredPixel(filter, raster, film.width(), film.height(),
+                         [&](int x, int y, double w) { film.addSplat(x, y, value * w); });
 }
 
 }  // namespace lamina::render

@@ -1,0 +1,65 @@
+// Running the `lamina` binary from tests, and a fixture with a scratch directory.
+#pragma once
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace lamina {
+
+namespace fs = std::filesystem;
+
+struct CommandRun {
+    int exitCode;
+    std::string output;  // stdout and stderr
+};
+
+inline CommandRun runLamina(const std::string& args, const std::string& input = "") {
+    std::string redirect;
+    if (!input.empty()) {
+        const fs::path in =
+            fs::temp_directory_path() / ("lamina-cli-stdin-" + std::to_string(::getpid()));
+        std::ofstream(in) << input << "\n";
+        redirect = " < " + in.string();
+    }
+    const std::string cmd =
+        std::string(LAMINA_BINARY_DIR) + "/renderer/lamina " + args + redirect + " 2>&1";
+    FILE* pipe = ::popen(cmd.c_str(), "r");
+    std::string out;
+    std::array<char, 4096> buf{};
+    while (pipe && std::fgets(buf.data(), int(buf.size()), pipe))
+        out += buf.data();
+    const int status = pipe ? ::pclose(pipe) : -1;
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+class CliTest : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() /
+               ("lamina-cli-" + std::to_string(::getpid()) + "-" +
+                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    std::string write(const std::string& name, const std::string& text) {
+        const fs::path p = dir_ / name;
+        std::ofstream(p) << text;
+        return p.string();
+    }
+    std::size_t filesIn() const {
+        return std::size_t(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()));
+    }
+
+    fs::path dir_;
+};
+
+}  // namespace lamina
