@@ -11,6 +11,7 @@ void registerInfoCommand(CLI::App& app);
 void registerBenchCommand(CLI::App& app);
 void registerCompareCommand(CLI::App& app);
 void registerReciprocityCommand(CLI::App& app);
+void registerConvergenceCommand(CLI::App& app);
 
 // Every subcommand is registered here, in the order `lamina --help` lists them.
 void registerCommands(CLI::App& app) {
@@ -20,6 +21,7 @@ void registerCommands(CLI::App& app) {
     registerBenchCommand(app);
     registerCompareCommand(app);
     registerReciprocityCommand(app);
+    registerConvergenceCommand(app);
     registerSpectrumCommand(app);
 }
 

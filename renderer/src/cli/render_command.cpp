@@ -10,6 +10,7 @@
 
 #include "lamina/cli/commands.h"
 #include "lamina/core/error.h"
+#include "lamina/render/image_metrics.h"
 #include "lamina/render/image_output.h"
 #include "lamina/render/renderer.h"
 #include "lamina/version.h"
@@ -25,6 +26,8 @@ struct RenderArgs {
     std::string integrator;
     std::string mis;
     std::string strategies;
+    std::string reference;
+    std::string errorLog;
     std::string sampler;
     int spp = 0;
     double seconds = 0;
@@ -155,10 +158,24 @@ void runRender(const RenderArgs& a) {
         o.resolution = std::make_pair(w, h);
     }
 
+    std::optional<render::ErrorLog> errors;
+    if (!a.reference.empty()) errors.emplace(render::readRgbImage(a.reference));
+    if (errors) {
+        const int w = o.resolution ? o.resolution->first : scene.film.width;
+        const int h = o.resolution ? o.resolution->second : scene.film.height;
+        if (errors->reference().width != w || errors->reference().height != h)
+            throw InputError(a.reference + " is " + std::to_string(errors->reference().width) +
+                             "x" + std::to_string(errors->reference().height) +
+                             " but the render is " + std::to_string(w) + "x" + std::to_string(h));
+    }
+
     ProgressPrinter printer(a.quiet);
     std::signal(SIGINT, onInterrupt);
     const render::RenderResult r =
-        render::renderScene(scene, o, [&](const render::RenderProgress& p) { printer(p); });
+        render::renderScene(scene, o, [&](const render::RenderProgress& p) {
+            if (errors) errors->record(p.seconds, p.sppDone, *p.film);
+            printer(p);
+        });
     std::signal(SIGINT, SIG_DFL);
     printer.finish();
 
@@ -178,6 +195,11 @@ void runRender(const RenderArgs& a) {
         int(std::min<std::uint64_t>(r.film->rejectedSamples(), 1u << 30));
     meta.floats["seconds"] = float(r.seconds);
     render::writeExr(output, *r.film, a.aovs, meta);
+    if (errors) {
+        std::ofstream csv(a.errorLog);
+        csv << render::ErrorLog::csvHeader() << errors->csvRows();
+        if (!csv) throw InputError(a.errorLog + ": cannot write");
+    }
     if (r.strategies) writeStrategyImages(a.strategies, *r.strategies, *r.film, r.spp, meta);
     if (a.preview) render::writePngPreview(preview, *r.film, a.exposure);
 
@@ -214,6 +236,13 @@ void registerRenderCommand(CLI::App& app) {
         ->check(CLI::IsMember({"path", "light", "bdpt"}));
     cmd->add_option("--mis", args->mis, "BDPT's MIS heuristic (overrides the scene's)")
         ->check(CLI::IsMember({"power", "balance"}));
+    auto* reference =
+        cmd->add_option("--reference", args->reference, "Reference image for --error-log")
+            ->check(CLI::ExistingFile);
+    cmd->add_option("--error-log", args->errorLog,
+                    "CSV of seconds, spp, MSE, relMSE, MAE against --reference after every pass")
+        ->needs(reference);
+    reference->needs(cmd->get_option("--error-log"));
     cmd->add_option("--strategies", args->strategies,
                     "bdpt: also write one EXR per (s, t) strategy, MIS-weighted and "
                     "unweighted, path depth <= 4, into this directory");

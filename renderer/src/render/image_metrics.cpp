@@ -1,6 +1,7 @@
 #include "lamina/render/image_metrics.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include "lamina/core/error.h"
 
@@ -27,6 +28,39 @@ ImageMetrics compareImages(const RgbImage& a, const RgbImage& b) {
     }
     m.rmse = std::sqrt(m.mse);
     return m;
+}
+
+RgbImage filmImage(const Film& film) {
+    RgbImage img;
+    img.width = film.width();
+    img.height = film.height();
+    img.pixels.resize(std::size_t(img.width) * img.height * 3);
+    for (int y = 0; y < img.height; ++y)
+        for (int x = 0; x < img.width; ++x) {
+            const Rgb<double> v = film.pixel(x, y);
+            for (int c = 0; c < 3; ++c)
+                img.pixels[(std::size_t(y) * img.width + x) * 3 + std::size_t(c)] = float(v[c]);
+        }
+    return img;
+}
+
+void ErrorLog::record(double seconds, int spp, const Film& film) {
+    rows_.push_back({seconds, spp, compareImages(filmImage(film), reference_)});
+}
+
+std::string ErrorLog::csvHeader(const std::string& columns) {
+    return (columns.empty() ? "" : columns + ",") + "seconds,spp,mse,relmse,mae\n";
+}
+
+std::string ErrorLog::csvRows(const std::string& prefix) const {
+    std::string out;
+    char line[256];
+    for (const Row& r : rows_) {
+        std::snprintf(line, sizeof line, "%.6g,%d,%.9g,%.9g,%.9g\n", r.seconds, r.spp,
+                      r.metrics.mse, r.metrics.relmse, r.metrics.mae);
+        out += (prefix.empty() ? "" : prefix + ",") + line;
+    }
+    return out;
 }
 
 }  // namespace lamina::render

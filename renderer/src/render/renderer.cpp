@@ -68,8 +68,11 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
     std::atomic<std::uint64_t> pixelsDone{0};
     const bool timed = options.seconds.has_value();
     const int targetSpp = timed ? std::numeric_limits<int>::max() : settings.spp;
+    // Render time excludes the time spent in the progress callback (which may, for example,
+    // measure the error of the image so far).
+    double callbackSeconds = 0;
     const auto elapsed = [&] {
-        return std::chrono::duration<double>(Clock::now() - start).count();
+        return std::chrono::duration<double>(Clock::now() - start).count() - callbackSeconds;
     };
 
     // One sample of pixel (x, y): a camera path (path), a particle (light: one per pixel and
@@ -142,7 +145,10 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
             p.sppDone = done;
             p.fraction = timed ? std::min(1.0, p.seconds / *options.seconds)
                                : double(done) / double(targetSpp);
+            p.film = &film;
+            const auto before = Clock::now();
             progress(p);
+            callbackSeconds += std::chrono::duration<double>(Clock::now() - before).count();
         }
         if (timed && elapsed() >= *options.seconds) break;
     }

@@ -19,4 +19,30 @@ struct ImageMetrics {
 /// InputError if the sizes differ.
 ImageMetrics compareImages(const RgbImage& a, const RgbImage& reference);
 
+/// The film's current image (linear Rec.709) as an RgbImage.
+RgbImage filmImage(const Film& film);
+
+/// Error against a reference after every pass of a render (render --error-log, convergence):
+/// one row per pass of seconds, samples per pixel, MSE, relMSE and MAE.
+class ErrorLog {
+  public:
+    struct Row {
+        double seconds;
+        int spp;
+        ImageMetrics metrics;
+    };
+    explicit ErrorLog(RgbImage reference) : reference_(std::move(reference)) {}
+    /// Measures the film; InputError if its size differs from the reference's.
+    void record(double seconds, int spp, const Film& film);
+    const std::vector<Row>& rows() const { return rows_; }
+    const RgbImage& reference() const { return reference_; }
+    /// CSV with a header: seconds,spp,mse,relmse,mae (prefixed by `columns` when given).
+    static std::string csvHeader(const std::string& columns = "");
+    std::string csvRows(const std::string& prefix = "") const;
+
+  private:
+    RgbImage reference_;
+    std::vector<Row> rows_;
+};
+
 }  // namespace lamina::render

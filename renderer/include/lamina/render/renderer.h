@@ -34,9 +34,10 @@ struct RenderOptions {
 
 struct RenderProgress {
     double fraction = 0;  ///< of the planned work (of the time budget with --time)
-    double seconds = 0;
+    double seconds = 0;   ///< rendering time, without the time spent in progress callbacks
     int passesDone = 0;
     int sppDone = 0;
+    const Film* film = nullptr;  ///< the image so far (valid during the call)
 };
 
 struct RenderResult {

@@ -1,0 +1,92 @@
+// The experiment commands end to end on tiny scenes, with their numbers checked against
+// something known: `render --reference --error-log` and `convergence` on a white furnace,
+// whose exact image is 1 everywhere (a white Lambertian sphere in a uniform environment of
+// radiance 1 reflects exactly the radiance it receives).
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "cli_helpers.h"
+#include "lamina/render/image_output.h"
+
+namespace lamina {
+namespace {
+
+const char* kFurnace = R"({
+  "camera": {"position": [0, 0, -4], "look_at": [0, 0, 0], "fov": 30},
+  "film": {"resolution": [32, 32]},
+  "integrator": {"max_depth": 64, "rr_depth": 64},
+  "materials": {"white": {"type": "lambert", "reflectance": 1}},
+  "shapes": [{"type": "sphere", "radius": 1, "material": "white"}],
+  "lights": [{"type": "environment", "radiance": 1}]
+})";
+
+class ExperimentCli : public CliTest {
+  protected:
+    std::string exactReference() {
+        const std::string path = (dir_ / "ones.exr").string();
+        render::writeFloatExr(path, 32, 32, {"R", "G", "B"}, std::vector<float>(32 * 32 * 3, 1.0f));
+        return path;
+    }
+};
+
+TEST_F(ExperimentCli, ErrorLogHasOneRowPerPassAndTheErrorFalls) {
+    const std::string scene = write("furnace.json", kFurnace);
+    const std::string log = (dir_ / "err.csv").string();
+    const CommandRun r = runLamina("render " + scene + " -q --spp 64 --sampler independent -o " +
+                                   (dir_ / "f.exr").string() + " --reference " + exactReference() +
+                                   " --error-log " + log);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    std::ifstream in(log);
+    std::string line;
+    std::getline(in, line);
+    EXPECT_EQ(line, "seconds,spp,mse,relmse,mae");
+    std::vector<std::pair<int, double>> rows;  // spp, mse
+    while (std::getline(in, line)) {
+        std::stringstream s(line);
+        std::string field;
+        std::vector<double> v;
+        while (std::getline(s, field, ','))
+            v.push_back(std::stod(field));
+        ASSERT_EQ(v.size(), 5u) << line;
+        rows.emplace_back(int(v[1]), v[2]);
+    }
+    // Passes of 1, 1, 2, 4, 8, 16, 32 spp: 64 spp in 7 rows.
+    ASSERT_EQ(rows.size(), 7u);
+    EXPECT_EQ(rows.back().first, 64);
+    // MSE ~ 1/spp: from 1 to 64 spp it falls by far more than 10 (64 expected).
+    EXPECT_LT(rows.back().second * 10, rows.front().second);
+    // The reference must match the render's size.
+    const std::string small = (dir_ / "small.exr").string();
+    render::writeFloatExr(small, 8, 8, {"R", "G", "B"}, std::vector<float>(8 * 8 * 3, 1.0f));
+    const CommandRun bad = runLamina("render " + scene + " -q -o " + (dir_ / "g.exr").string() +
+                                     " --reference " + small + " --error-log " + log);
+    EXPECT_EQ(bad.exitCode, 1);
+    EXPECT_NE(bad.output.find("8x8"), std::string::npos) << bad.output;
+}
+
+TEST_F(ExperimentCli, ConvergenceSlopeOfAnUnbiasedEstimatorIsMinusOne) {
+    const std::string scene = write("furnace.json", kFurnace);
+    const CommandRun r = runLamina("convergence " + scene + " --integrators path,bdpt --time 3 " +
+                                   "--sampler independent --reference " + exactReference() +
+                                   " -o " + (dir_ / "conv").string() + " 2>/dev/null");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    for (const char* f : {"convergence.csv", "convergence.svg", "summary.md"})
+        EXPECT_TRUE(fs::exists(dir_ / "conv" / f)) << f;
+    // | path | rgb | samples/s | spp | relMSE | MSE | slope | ...
+    const std::regex row(
+        R"(\| (path|bdpt) \| rgb \| [^|]+ \| [^|]+ \| [^|]+ \| [^|]+ \| ([-0-9.]+) \|)");
+    int found = 0;
+    for (std::sregex_iterator it(r.output.begin(), r.output.end(), row), end; it != end; ++it) {
+        const double slope = std::stod((*it)[2]);
+        EXPECT_GE(slope, -1.2) << (*it)[1];
+        EXPECT_LE(slope, -0.8) << (*it)[1];
+        ++found;
+    }
+    EXPECT_EQ(found, 2) << r.output;
+}
+
+}  // namespace
+}  // namespace lamina
