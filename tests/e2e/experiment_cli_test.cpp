@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "cli_helpers.h"
+#include "lamina/bsdf/material_builder.h"
 #include "lamina/render/image_output.h"
 
 namespace lamina {
@@ -86,6 +87,63 @@ TEST_F(ExperimentCli, ConvergenceSlopeOfAnUnbiasedEstimatorIsMinusOne) {
         ++found;
     }
     EXPECT_EQ(found, 2) << r.output;
+}
+
+std::vector<std::vector<double>> readCsv(const fs::path& path) {
+    std::ifstream in(path);
+    std::string line;
+    std::getline(in, line);  // header
+    std::vector<std::vector<double>> rows;
+    while (std::getline(in, line)) {
+        std::stringstream s(line);
+        std::vector<double> row;
+        for (std::string f; std::getline(s, f, ',');)
+            row.push_back(std::stod(f));
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+// The exact curve of `lamina fresnel` is the conductor Fresnel the BSDF uses in spectral mode:
+// a smooth gold mirror's reflection weight at each wavelength and angle.
+TEST_F(ExperimentCli, FresnelExactCurveIsTheBsdfsConductorFresnel) {
+    const CommandRun r = runLamina("fresnel Au bk7 -o " + dir_.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("Hoffman F82"), std::string::npos);
+    for (const char* f : {"Au.csv", "Au.svg", "Au_swatches.png", "bk7_spectral.csv", "summary.md"})
+        EXPECT_TRUE(fs::exists(dir_ / f)) << f;
+    const auto rows = readCsv(dir_ / "Au_spectral.csv");  // degrees, 380, 400, ..., 780 nm
+    ASSERT_EQ(rows.size(), 91u);
+    const MaterialDesc gold =
+        parseMaterialArgument(R"({"type":"conductor","material":"Au","alpha":0})");
+    for (int degrees : {0, 30, 60, 80, 89})
+        for (int column : {2, 6, 10, 14, 18}) {  // 400, 480, 560, 640, 720 nm
+            const double nm = 380 + 20 * (column - 1);
+            auto lambda = SampledWavelengths<double>::fixed(std::array<double, 4>{nm, nm, nm, nm});
+            const auto bsdf = buildBxdf(gold, SpectrumContext<SampledSpectrum<double>>{lambda});
+            const double t = degrees * kPi<double> / 180;
+            const auto s = bsdf->sample({std::sin(t), 0.0, std::cos(t)}, 0.5, {0.5, 0.5},
+                                        TransportMode::Radiance);
+            ASSERT_TRUE(s.has_value());
+            EXPECT_NEAR(rows[std::size_t(degrees)][std::size_t(column)], s->weight[0], 1e-6)
+                << degrees << " degrees, " << nm << " nm";
+        }
+    EXPECT_EQ(runLamina("fresnel unobtainium -o " + dir_.string()).exitCode, 1);
+}
+
+TEST_F(ExperimentCli, StabilityReportsAHealthyModelCleanAndRendersStressScenes) {
+    const std::string stress = std::string(LAMINA_SOURCE_DIR) + "/scenes/stress/ior-4.json";
+    const CommandRun r =
+        runLamina(R"(stability '{"type":"lambert","reflectance":1}' --samples 256 )"
+                  R"(--spp 4 --scenes )" +
+                  stress + " -o " + dir_.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find(R"(| `{"type":"lambert","reflectance":1}` | 0 | 0 | 0 | 0 | 0 |)"),
+              std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("| ior-4.json | 0 |"), std::string::npos) << r.output;
+    EXPECT_TRUE(fs::exists(dir_ / "model1_issues.png"));
+    EXPECT_TRUE(fs::exists(dir_ / "model1_float_error.png"));
 }
 
 }  // namespace

@@ -12,6 +12,8 @@ void registerBenchCommand(CLI::App& app);
 void registerCompareCommand(CLI::App& app);
 void registerReciprocityCommand(CLI::App& app);
 void registerConvergenceCommand(CLI::App& app);
+void registerFresnelCommand(CLI::App& app);
+void registerStabilityCommand(CLI::App& app);
 
 // Every subcommand is registered here, in the order `lamina --help` lists them.
 void registerCommands(CLI::App& app) {
@@ -22,6 +24,8 @@ void registerCommands(CLI::App& app) {
     registerCompareCommand(app);
     registerReciprocityCommand(app);
     registerConvergenceCommand(app);
+    registerFresnelCommand(app);
+    registerStabilityCommand(app);
     registerSpectrumCommand(app);
 }
 

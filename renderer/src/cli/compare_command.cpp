@@ -1,7 +1,5 @@
 // `lamina compare A.exr B.exr`: error metrics of A against the reference B (image_metrics.h)
 // and, optionally, a false-colour picture of |A - B|.
-#include <OpenImageIO/imageio.h>
-
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <sstream>
@@ -18,27 +16,6 @@ struct CompareArgs {
     std::string metrics = "mse,rmse,relmse,mae,max";
     std::string diff;
 };
-
-void writeDiff(const std::string& path, const render::RgbImage& a, const render::RgbImage& b,
-               double scale) {
-    std::vector<float> img(std::size_t(a.width) * a.height * 3);
-    for (std::size_t p = 0; p < std::size_t(a.width) * a.height; ++p) {
-        double d = 0;
-        for (int c = 0; c < 3; ++c)
-            d += std::abs(double(a.pixels[p * 3 + c]) - double(b.pixels[p * 3 + c])) / 3;
-        // Black - blue - red - yellow by |A - B| relative to the largest difference.
-        const double t = scale > 0 ? std::clamp(d / scale, 0.0, 1.0) : 0.0;
-        img[p * 3 + 0] = float(std::clamp(2 * t - 0.5, 0.0, 1.0));
-        img[p * 3 + 1] = float(std::clamp(2 * t - 1.0, 0.0, 1.0));
-        img[p * 3 + 2] = float(t < 0.5 ? 2 * t : 2 - 2 * t);
-    }
-    auto out = OIIO::ImageOutput::create(path);
-    if (!out) throw InputError(path + ": cannot write this image format (use .png)");
-    OIIO::ImageSpec spec(a.width, a.height, 3, OIIO::TypeDesc::UINT8);
-    if (!out->open(path, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, img.data()) ||
-        !out->close())
-        throw InputError(path + ": cannot write: " + out->geterror());
-}
 
 void run(const CompareArgs& args) {
     const render::RgbImage a = render::readRgbImage(args.a);
@@ -66,7 +43,7 @@ void run(const CompareArgs& args) {
                                                        "\"; expected mse, rmse, relmse, mae, max");
         std::printf("%s %.9g\n", name.c_str(), v);
     }
-    if (!args.diff.empty()) writeDiff(args.diff, a, b, m.max);
+    if (!args.diff.empty()) render::writeDifferenceImage(args.diff, a, b, m.max);
 }
 
 }  // namespace

@@ -30,6 +30,7 @@ struct ConvergenceArgs {
     std::string levels = "1e-2,1e-3";
     std::string resolution;
     std::string sampler;
+    std::string referenceIntegrator = "path";
     double seconds = 10;
     double referenceSeconds = 0;
     int maxDepth = 0;
@@ -157,19 +158,19 @@ void run(const ConvergenceArgs& a) {
         for (const auto& m : modes) {
             render::RenderOptions o = base;
             o.mode = modeOf(m);
-            o.integrator = render::IntegratorKind::Path;
+            o.integrator = integratorOf(a.referenceIntegrator);
             o.sampler = render::SamplerKind::Sobol;
             o.seconds = refSeconds;
-            std::fprintf(stderr, "rendering the %s reference (path integrator, %.0f s)...\n",
-                         m.c_str(), refSeconds);
+            std::fprintf(stderr, "rendering the %s reference (%s integrator, %.0f s)...\n",
+                         m.c_str(), a.referenceIntegrator.c_str(), refSeconds);
             const render::RenderResult r = render::renderScene(scene, o);
             references[m] = render::filmImage(*r.film);
             char note[256];
             std::snprintf(note, sizeof note,
-                          "reference_%s.exr: path integrator, %s mode, %d spp (Sobol) in %.1f s",
-                          m.c_str(), m.c_str(), r.spp, r.seconds);
+                          "reference_%s.exr: %s integrator, %s mode, %d spp (Sobol) in %.1f s",
+                          m.c_str(), a.referenceIntegrator.c_str(), m.c_str(), r.spp, r.seconds);
             render::ImageMetadata meta;
-            meta.strings["integrator"] = "path";
+            meta.strings["integrator"] = a.referenceIntegrator;
             meta.strings["mode"] = m;
             meta.ints["spp"] = r.spp;
             render::writeExr(dir / ("reference_" + m + ".exr"), *r.film, false, meta);
@@ -274,6 +275,10 @@ void registerConvergenceCommand(CLI::App& app) {
     cmd->add_option("--reference-time", a->referenceSeconds,
                     "Render time of each rendered reference (default: 20 x --time)")
         ->check(CLI::PositiveNumber);
+    cmd->add_option("--reference-integrator", a->referenceIntegrator,
+                    "Integrator of the rendered references (bdpt for caustics)")
+        ->check(CLI::IsMember({"path", "light", "bdpt"}))
+        ->capture_default_str();
     cmd->add_option("--levels", a->levels, "relMSE levels for the time-to-error columns")
         ->capture_default_str();
     cmd->add_option("--resolution", a->resolution, "Image size WIDTHxHEIGHT (overrides)");

@@ -1,5 +1,6 @@
 #include "lamina/render/film.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "lamina/spectral/color_space.h"
@@ -25,8 +26,16 @@ bool Film::addSample(int x, int y, const Rgb<double>& value, double weight) {
     const double lum = space_ == FilmSpace::Xyz ? value[1] : luminance(value);
     p.ySum += lum * weight;
     p.ySqSum += lum * lum * weight;
+    p.yMax = std::max(p.yMax, lum);
     ++p.count;
     return true;
+}
+
+double Film::largestSampleLuminance() const {
+    double m = 0;
+    for (const Pixel& p : pixels_)
+        m = std::max(m, p.yMax);
+    return m;
 }
 
 void Film::addAovs(int x, int y, const PixelAovs& a) {

@@ -1,5 +1,6 @@
 #include "lamina/render/image_metrics.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -28,6 +29,21 @@ ImageMetrics compareImages(const RgbImage& a, const RgbImage& b) {
     }
     m.rmse = std::sqrt(m.mse);
     return m;
+}
+
+void writeDifferenceImage(const std::filesystem::path& path, const RgbImage& a, const RgbImage& b,
+                          double scale) {
+    std::vector<float> img(std::size_t(a.width) * a.height * 3);
+    for (std::size_t p = 0; p < std::size_t(a.width) * a.height; ++p) {
+        double d = 0;
+        for (int c = 0; c < 3; ++c)
+            d += std::abs(double(a.pixels[p * 3 + c]) - double(b.pixels[p * 3 + c])) / 3;
+        const double t = scale > 0 ? std::clamp(d / scale, 0.0, 1.0) : 0.0;
+        img[p * 3 + 0] = float(std::clamp(2 * t - 0.5, 0.0, 1.0));
+        img[p * 3 + 1] = float(std::clamp(2 * t - 1.0, 0.0, 1.0));
+        img[p * 3 + 2] = float(t < 0.5 ? 2 * t : 2 - 2 * t);
+    }
+    writeRgb8(path, a.width, a.height, img);
 }
 
 RgbImage filmImage(const Film& film) {

@@ -115,6 +115,11 @@ void writeFloatExr(const std::filesystem::path& path, int width, int height,
     writeAtomically(path, spec, data);
 }
 
+void writeRgb8(const std::filesystem::path& path, int width, int height,
+               const std::vector<float>& rgb) {
+    writeAtomically(path, OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::UINT8), rgb);
+}
+
 void writeSignedHeatMap(const std::filesystem::path& path, int width, int height,
                         const std::vector<float>& values, double limit) {
     OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);

@@ -55,12 +55,14 @@ class Film {
     std::uint64_t samples(int x, int y) const { return at(x, y).count; }
 
     std::uint64_t rejectedSamples() const { return rejected_.load(); }
+    /// The largest luminance (Y) of any camera sample added (fireflies).
+    double largestSampleLuminance() const;
 
   private:
     struct Pixel {
         Rgb<double> sum{0.0};
         double weightSum = 0;
-        double ySum = 0, ySqSum = 0;
+        double ySum = 0, ySqSum = 0, yMax = 0;
         std::uint64_t count = 0;
         PixelAovs aovSum;
         Rgb<double> splatSum{0.0};

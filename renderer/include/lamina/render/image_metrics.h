@@ -19,6 +19,11 @@ struct ImageMetrics {
 /// InputError if the sizes differ.
 ImageMetrics compareImages(const RgbImage& a, const RgbImage& reference);
 
+/// A false-colour PNG of the mean absolute channel difference |a - b| (black, blue, red,
+/// yellow as it grows to `scale`).
+void writeDifferenceImage(const std::filesystem::path& path, const RgbImage& a, const RgbImage& b,
+                          double scale);
+
 /// The film's current image (linear Rec.709) as an RgbImage.
 RgbImage filmImage(const Film& film);
 

@@ -30,6 +30,9 @@ void writePngPreview(const std::filesystem::path& path, const Film& film, double
 void writeFloatExr(const std::filesystem::path& path, int width, int height,
                    const std::vector<std::string>& channels, const std::vector<float>& data,
                    const ImageMetadata& metadata = {});
+/// An 8-bit image (PNG, ...) of display-ready RGB values in [0, 1] (no transfer function).
+void writeRgb8(const std::filesystem::path& path, int width, int height,
+               const std::vector<float>& rgb);
 /// A PNG heat map of a signed quantity: blue for -limit, black for 0, red for +limit.
 void writeSignedHeatMap(const std::filesystem::path& path, int width, int height,
                         const std::vector<float>& values, double limit);

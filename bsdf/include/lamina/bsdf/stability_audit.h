@@ -1,0 +1,184 @@
+// The numerical-stability audit of a BSDF model (lamina stability): over a grid of roughness
+// (alpha) and viewing angle, the model built in double and in float is evaluated on a fixed
+// set of directions (random ones plus the special cases: wo itself, its mirror image, -wo,
+// the horizon) in both transport modes and sampled with random numbers including the edges of
+// [0, 1). Counted per cell:
+//   nan, inf, negative     eval, pdf or a sample's weight (either precision)
+//   weightMismatch         a non-delta sample whose weight differs from eval / pdf by more
+//                          than 1e-3 relative (double precision)
+//   energyGain             the mean sample weight (the directional albedo) exceeds 1 by more
+//                          than three standard errors plus 1e-3, in some channel
+// and the worst relative difference between float and double eval where the double value is
+// above 1e-6 of the cell's peak (ill-conditioned points included: near the critical angle a
+// one-ulp change of direction changes rough refraction by ~1%).
+#pragma once
+
+#include <cmath>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "lamina/bsdf/bxdf.h"
+#include "lamina/core/pcg32.h"
+#include "lamina/core/warp.h"
+
+namespace lamina {
+
+struct StabilityCell {
+    int evaluations = 0, samples = 0;
+    int nan = 0, inf = 0, negative = 0, weightMismatch = 0, energyGain = 0;
+    double worstFloatError = 0;
+    int issues() const { return nan + inf + negative + weightMismatch + energyGain; }
+};
+
+struct StabilityReport {
+    std::vector<double> alphas, cosines;
+    std::vector<StabilityCell> cells;  ///< alphas.size() x cosines.size(), alpha-major
+    const StabilityCell& at(std::size_t a, std::size_t c) const {
+        return cells[a * cosines.size() + c];
+    }
+    StabilityCell total() const {
+        StabilityCell t;
+        for (const StabilityCell& c : cells) {
+            t.evaluations += c.evaluations;
+            t.samples += c.samples;
+            t.nan += c.nan;
+            t.inf += c.inf;
+            t.negative += c.negative;
+            t.weightMismatch += c.weightMismatch;
+            t.energyGain += c.energyGain;
+            t.worstFloatError = std::max(t.worstFloatError, c.worstFloatError);
+        }
+        return t;
+    }
+};
+
+/// Builds the model at a given alpha, in both precisions.
+struct StabilityModel {
+    std::function<std::unique_ptr<Bxdf<Rgb<double>>>(double alpha)> makeDouble;
+    std::function<std::unique_ptr<Bxdf<Rgb<float>>>(double alpha)> makeFloat;
+};
+
+namespace stability_detail {
+
+template <typename S>
+void classify(const S& v, StabilityCell& cell) {
+    for (int i = 0; i < S::kSize; ++i) {
+        const double x = double(v[i]);
+        if (std::isnan(x))
+            ++cell.nan;
+        else if (std::isinf(x))
+            ++cell.inf;
+        else if (x < 0)
+            ++cell.negative;
+    }
+}
+
+inline void classifyScalar(double x, StabilityCell& cell) {
+    if (std::isnan(x))
+        ++cell.nan;
+    else if (std::isinf(x))
+        ++cell.inf;
+    else if (x < 0)
+        ++cell.negative;
+}
+
+}  // namespace stability_detail
+
+inline StabilityReport auditStability(const StabilityModel& model, std::vector<double> alphas,
+                                      std::vector<double> cosines, int directions = 64,
+                                      int samples = 4096) {
+    using namespace stability_detail;
+    using V3 = Vec3<double>;
+    StabilityReport report;
+    report.alphas = std::move(alphas);
+    report.cosines = std::move(cosines);
+    report.cells.resize(report.alphas.size() * report.cosines.size());
+    for (std::size_t ai = 0; ai < report.alphas.size(); ++ai) {
+        const auto d = model.makeDouble(report.alphas[ai]);
+        const auto f = model.makeFloat(report.alphas[ai]);
+        for (std::size_t ci = 0; ci < report.cosines.size(); ++ci) {
+            StabilityCell& cell = report.cells[ai * report.cosines.size() + ci];
+            const double c = report.cosines[ci];
+            // Rounded to float first, so both precisions see the same input.
+            const V3 wo(Vec3<float>(V3(std::sqrt(std::max(0.0, 1 - c * c)), 0.0, c)));
+            std::vector<V3> wis = {
+                wo,          V3(-wo.x, -wo.y, wo.z), -wo, V3(1, 0, 0), V3(0, 1, 0), V3(0, 0, 1),
+                V3(0, 0, -1)};
+            Pcg32 rng(1 + ai * 131 + ci, 7);
+            for (int k = 0; k < directions; ++k)
+                wis.emplace_back(Vec3<float>(
+                    squareToUniformSphere(Vec2<double>(rng.nextDouble(), rng.nextDouble()))));
+            double peak = 0;
+            std::vector<Rgb<double>> values;
+            for (const V3& wi : wis)
+                for (auto mode : {TransportMode::Radiance, TransportMode::Importance}) {
+                    const Rgb<double> v = d->eval(wo, wi, mode);
+                    const Rgb<float> vf = f->eval(Vec3<float>(wo), Vec3<float>(wi), mode);
+                    classify(v, cell);
+                    classify(vf, cell);
+                    classifyScalar(d->pdf(wo, wi), cell);
+                    classifyScalar(double(f->pdf(Vec3<float>(wo), Vec3<float>(wi))), cell);
+                    cell.evaluations += 2;
+                    if (mode == TransportMode::Radiance) values.push_back(v);
+                    if (v.isFinite()) peak = std::max(peak, v.maxValue());
+                }
+            for (std::size_t k = 0; k < wis.size(); ++k) {
+                const Rgb<double>& v = values[k];
+                const Rgb<float> vf =
+                    f->eval(Vec3<float>(wo), Vec3<float>(wis[k]), TransportMode::Radiance);
+                for (int ch = 0; ch < 3; ++ch)
+                    if (std::isfinite(v[ch]) && v[ch] > 1e-6 * peak && std::isfinite(vf[ch]))
+                        cell.worstFloatError = std::max(cell.worstFloatError,
+                                                        std::abs(double(vf[ch]) - v[ch]) / v[ch]);
+            }
+            // Sampling, including the random numbers' edges (pbrt-v4 #313).
+            Rgb<double> sum(0.0), sumSq(0.0);
+            for (int k = 0; k < samples; ++k) {
+                const bool edge = k < 8;
+                const double uc = edge ? (k & 1 ? 1 - 1e-16 : 0.0) : rng.nextDouble();
+                const Vec2<double> u =
+                    edge ? Vec2<double>(k & 2 ? 1 - 1e-16 : 0.0, k & 4 ? 1 - 1e-16 : 0.0)
+                         : Vec2<double>(rng.nextDouble(), rng.nextDouble());
+                ++cell.samples;
+                const auto s = d->sample(wo, uc, u, TransportMode::Radiance);
+                const auto sf =
+                    f->sample(Vec3<float>(wo), float(uc), Vec2<float>(u), TransportMode::Radiance);
+                if (sf) {
+                    classify(sf->weight, cell);
+                    classifyScalar(double(sf->pdf), cell);
+                }
+                if (!s) continue;
+                classify(s->weight, cell);
+                classifyScalar(s->pdf, cell);
+                if (!s->weight.isFinite()) continue;
+                if (!edge) {
+                    sum += s->weight;
+                    sumSq += s->weight * s->weight;
+                }
+                if (!s->isSpecular() && s->pdf > 0) {
+                    const Rgb<double> expected =
+                        d->eval(wo, s->wi, TransportMode::Radiance) / d->pdf(wo, s->wi);
+                    for (int ch = 0; ch < 3; ++ch)
+                        if (std::abs(expected[ch] - s->weight[ch]) >
+                            1e-3 * std::max(std::abs(expected[ch]), 1e-6)) {
+                            ++cell.weightMismatch;
+                            break;
+                        }
+                }
+            }
+            const double n = double(samples - 8);
+            for (int ch = 0; ch < 3; ++ch) {
+                const double mean = sum[ch] / n;
+                const double se = std::sqrt(std::max(0.0, sumSq[ch] / n - mean * mean) / n);
+                if (mean > 1 + 3 * se + 1e-3) {
+                    ++cell.energyGain;
+                    break;
+                }
+            }
+        }
+    }
+    return report;
+}
+
+}  // namespace lamina
