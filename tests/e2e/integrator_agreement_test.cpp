@@ -59,6 +59,12 @@ void expectAgreement(const AgreementResult& r, const std::string& pair) {
         << pair << ": relative difference " << r.relativeDifference << " +- " << r.standardError;
 }
 
+void expectDisagreement(const AgreementResult& r) {
+    EXPECT_TRUE(r.blockRejectionRate() > kMaxBlockRejection || r.meanPValue < kMeanPValue)
+        << "blocks " << r.blockRejectionRate() << ", mean p " << r.meanPValue;
+    EXPECT_FALSE(r.agree(0.01));
+}
+
 class IntegratorsAgree : public ::testing::TestWithParam<AgreementCase> {};
 
 TEST_P(IntegratorsAgree, PathLightAndBdptConvergeToTheSameImage) {
@@ -96,10 +102,7 @@ TEST(IntegratorsAgreeBreakIt, WithoutTheAdjointCorrectionLightTracingDisagrees) 
     broken.noAdjointCorrection = true;
     const BatchImages path = render(scene, IntegratorKind::Path, RenderModeKind::Rgb, 11);
     const BatchImages light = render(scene, IntegratorKind::Light, RenderModeKind::Rgb, 22, broken);
-    const AgreementResult r = compare(path, light);
-    EXPECT_TRUE(r.blockRejectionRate() > kMaxBlockRejection || r.meanPValue < kMeanPValue)
-        << "blocks " << r.blockRejectionRate() << ", mean p " << r.meanPValue;
-    EXPECT_FALSE(r.agree(0.01));
+    expectDisagreement(compare(path, light));
 }
 
 // ... and with radiance's 1/eta^2 on light subpaths BDPT disagrees on the rough glass
@@ -111,10 +114,7 @@ TEST(IntegratorsAgreeBreakIt, WithTheRadianceEtaRuleOnLightPathsBdptDisagrees) {
     broken.radianceOnLightPaths = true;
     const BatchImages path = render(scene, IntegratorKind::Path, RenderModeKind::Rgb, 11);
     const BatchImages bdpt = render(scene, IntegratorKind::Bdpt, RenderModeKind::Rgb, 33, broken);
-    const AgreementResult r = compare(path, bdpt);
-    EXPECT_TRUE(r.blockRejectionRate() > kMaxBlockRejection || r.meanPValue < kMeanPValue)
-        << "blocks " << r.blockRejectionRate() << ", mean p " << r.meanPValue;
-    EXPECT_FALSE(r.agree(0.01));
+    expectDisagreement(compare(path, bdpt));
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include <map>
 #include <sstream>
 
+#include "lamina/cli/option_parsing.h"
 #include "lamina/cli/svg_plot.h"
 #include "lamina/core/error.h"
 #include "lamina/render/image_metrics.h"
@@ -36,28 +37,6 @@ struct ConvergenceArgs {
     int maxDepth = 0;
     int threads = 0;
 };
-
-std::vector<std::string> split(const std::string& list) {
-    std::vector<std::string> out;
-    std::stringstream in(list);
-    for (std::string item; std::getline(in, item, ',');)
-        if (!item.empty()) out.push_back(item);
-    return out;
-}
-
-render::IntegratorKind integratorOf(const std::string& name) {
-    if (name == "path") return render::IntegratorKind::Path;
-    if (name == "light") return render::IntegratorKind::Light;
-    if (name == "bdpt") return render::IntegratorKind::Bdpt;
-    throw CLI::ValidationError("--integrators",
-                               "unknown integrator \"" + name + "\"; expected path, light, bdpt");
-}
-
-render::RenderModeKind modeOf(const std::string& name) {
-    if (name == "rgb") return render::RenderModeKind::Rgb;
-    if (name == "spectral") return render::RenderModeKind::Spectral;
-    throw CLI::ValidationError("--modes", "unknown mode \"" + name + "\"; expected rgb, spectral");
-}
 
 /// Least-squares slope of log(relMSE) against log(seconds) over the passes after the first
 /// tenth of the time (the first passes are dominated by start-up costs).
@@ -113,9 +92,9 @@ void run(const ConvergenceArgs& a) {
     const render::SceneDesc scene = render::loadScene(a.scene);
     const std::filesystem::path dir = a.output;
     std::filesystem::create_directories(dir);
-    const auto integrators = split(a.integrators);
-    const auto modes = split(a.modes);
-    const auto levelNames = split(a.levels);
+    const auto integrators = splitList(a.integrators);
+    const auto modes = splitList(a.modes);
+    const auto levelNames = splitList(a.levels);
     std::vector<double> levels;
     for (const auto& l : levelNames) {
         try {
@@ -125,9 +104,9 @@ void run(const ConvergenceArgs& a) {
         }
     }
     for (const auto& i : integrators)
-        integratorOf(i);
+        integratorByName(i, "--integrators");
     for (const auto& m : modes)
-        modeOf(m);
+        modeByName(m, "--modes");
 
     render::RenderOptions base;
     base.threads = a.threads;
@@ -135,14 +114,7 @@ void run(const ConvergenceArgs& a) {
         base.sampler = a.sampler == "independent" ? render::SamplerKind::Independent
                                                   : render::SamplerKind::Sobol;
     if (a.maxDepth > 0) base.maxDepth = a.maxDepth;
-    if (!a.resolution.empty()) {
-        int w = 0, h = 0;
-        char x = 0;
-        std::istringstream in(a.resolution);
-        if (!(in >> w >> x >> h) || x != 'x' || w < 1 || h < 1)
-            throw CLI::ValidationError("--resolution", "expected WIDTHxHEIGHT, e.g. 128x128");
-        base.resolution = std::make_pair(w, h);
-    }
+    if (!a.resolution.empty()) base.resolution = parseResolution(a.resolution);
 
     // One reference per mode (the two modes converge to slightly different images), unless
     // the user gives one.
@@ -157,17 +129,21 @@ void run(const ConvergenceArgs& a) {
         const double refSeconds = a.referenceSeconds > 0 ? a.referenceSeconds : 20 * a.seconds;
         for (const auto& m : modes) {
             render::RenderOptions o = base;
-            o.mode = modeOf(m);
-            o.integrator = integratorOf(a.referenceIntegrator);
+            o.mode = modeByName(m, "--modes");
+            o.integrator = integratorByName(a.referenceIntegrator, "--reference-integrator");
             o.sampler = render::SamplerKind::Sobol;
             o.seconds = refSeconds;
+            // Its own seed: with the measured renders' seed, their first samples would be the
+            // reference's and their error would look smaller than it is.
+            o.seed = (scene.settings.seed + 0x5eed) & 0x7fffffffu;
             std::fprintf(stderr, "rendering the %s reference (%s integrator, %.0f s)...\n",
                          m.c_str(), a.referenceIntegrator.c_str(), refSeconds);
             const render::RenderResult r = render::renderScene(scene, o);
             references[m] = render::filmImage(*r.film);
             char note[256];
             std::snprintf(note, sizeof note,
-                          "reference_%s.exr: %s integrator, %s mode, %d spp (Sobol) in %.1f s",
+                          "reference_%s.exr: %s integrator, %s mode, %d spp (Sobol, its own "
+                          "seed) in %.1f s",
                           m.c_str(), a.referenceIntegrator.c_str(), m.c_str(), r.spp, r.seconds);
             render::ImageMetadata meta;
             meta.strings["integrator"] = a.referenceIntegrator;
@@ -182,8 +158,8 @@ void run(const ConvergenceArgs& a) {
     for (const auto& m : modes)
         for (const auto& i : integrators) {
             render::RenderOptions o = base;
-            o.mode = modeOf(m);
-            o.integrator = integratorOf(i);
+            o.mode = modeByName(m, "--modes");
+            o.integrator = integratorByName(i, "--integrators");
             o.seconds = a.seconds;
             render::ErrorLog log(references[m]);
             std::fprintf(stderr, "%s, %s mode: %.3g s...\n", i.c_str(), m.c_str(), a.seconds);

@@ -11,6 +11,7 @@
 
 #include "lamina/bsdf/material_builder.h"
 #include "lamina/bsdf/reciprocity_check.h"
+#include "lamina/cli/option_parsing.h"
 #include "lamina/core/error.h"
 #include "lamina/core/hash.h"
 #include "lamina/render/estimator_agreement.h"
@@ -42,22 +43,6 @@ struct Rendered {
     render::BatchImages images;
     double seconds;
 };
-
-render::IntegratorKind integratorKind(const std::string& name) {
-    if (name == "path") return render::IntegratorKind::Path;
-    if (name == "light") return render::IntegratorKind::Light;
-    if (name == "bdpt") return render::IntegratorKind::Bdpt;
-    throw CLI::ValidationError("--integrators",
-                               "unknown integrator \"" + name + "\"; expected path, light, bdpt");
-}
-
-std::vector<std::string> splitList(const std::string& list) {
-    std::vector<std::string> out;
-    std::stringstream in(list);
-    for (std::string item; std::getline(in, item, ',');)
-        if (!item.empty()) out.push_back(item);
-    return out;
-}
 
 render::BatchImages referenceImages(const std::string& path, int width, int height) {
     const render::RgbImage img = render::readRgbImage(path);
@@ -144,14 +129,7 @@ int run(const ReciprocityArgs& args) {
         args.mode == "spectral" ? render::RenderModeKind::Spectral : render::RenderModeKind::Rgb;
     o.threads = args.threads;
     if (args.maxDepth > 0) o.maxDepth = args.maxDepth;
-    if (!args.resolution.empty()) {
-        int w = 0, h = 0;
-        char x = 0;
-        std::istringstream in(args.resolution);
-        if (!(in >> w >> x >> h) || x != 'x' || w < 1 || h < 1)
-            throw CLI::ValidationError("--resolution", "expected WIDTHxHEIGHT, e.g. 64x64");
-        o.resolution = std::make_pair(w, h);
-    }
+    if (!args.resolution.empty()) o.resolution = parseResolution(args.resolution);
     for (const std::string& a : splitList(args.ablate)) {
         if (a == "adjoint-correction")
             o.ablations.noAdjointCorrection = true;
@@ -171,7 +149,7 @@ int run(const ReciprocityArgs& args) {
     std::vector<Rendered> renders;
     const auto names = splitList(args.integrators);
     for (std::size_t i = 0; i < names.size(); ++i) {
-        o.integrator = integratorKind(names[i]);
+        o.integrator = integratorByName(names[i], "--integrators");
         o.seed = hashValues({std::uint64_t(args.seed), i, 0x7265636970ull}) & 0x7fffffffull;
         const auto start = std::chrono::steady_clock::now();
         render::BatchImages images =

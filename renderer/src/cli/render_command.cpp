@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "lamina/cli/commands.h"
+#include "lamina/cli/option_parsing.h"
 #include "lamina/core/error.h"
 #include "lamina/render/image_metrics.h"
 #include "lamina/render/image_output.h"
@@ -93,12 +94,6 @@ class ProgressPrinter {
     int lastDecile_ = -1;
 };
 
-render::IntegratorKind parseIntegrator(const std::string& name) {
-    if (name == "light") return render::IntegratorKind::Light;
-    if (name == "bdpt") return render::IntegratorKind::Bdpt;
-    return render::IntegratorKind::Path;
-}
-
 // One EXR per strategy: s<S>_t<T>_weighted.exr (its share of the image) and
 // s<S>_t<T>_unweighted.exr (what the strategy alone estimates).
 void writeStrategyImages(const std::string& directory, const render::StrategyImages& images,
@@ -140,7 +135,7 @@ void runRender(const RenderArgs& a) {
     if (!a.sampler.empty())
         o.sampler = a.sampler == "independent" ? render::SamplerKind::Independent
                                                : render::SamplerKind::Sobol;
-    if (!a.integrator.empty()) o.integrator = parseIntegrator(a.integrator);
+    if (!a.integrator.empty()) o.integrator = integratorByName(a.integrator);
     if (!a.mis.empty())
         o.mis = a.mis == "balance" ? render::MisHeuristic::Balance : render::MisHeuristic::Power;
     o.strategies = !a.strategies.empty();
@@ -149,14 +144,7 @@ void runRender(const RenderArgs& a) {
         throw CLI::ValidationError("--strategies", "needs the bdpt integrator");
     o.threads = a.threads;
     o.aovs = a.aovs;
-    if (!a.resolution.empty()) {
-        int w = 0, h = 0;
-        char x = 0;
-        std::istringstream in(a.resolution);
-        if (!(in >> w >> x >> h) || x != 'x' || w < 1 || h < 1 || !in.eof())
-            throw CLI::ValidationError("--resolution", "expected WIDTHxHEIGHT, e.g. 512x512");
-        o.resolution = std::make_pair(w, h);
-    }
+    if (!a.resolution.empty()) o.resolution = parseResolution(a.resolution);
 
     std::optional<render::ErrorLog> errors;
     if (!a.reference.empty()) errors.emplace(render::readRgbImage(a.reference));

@@ -42,6 +42,15 @@ void writeAtomically(const std::filesystem::path& path, const OIIO::ImageSpec& s
     std::filesystem::rename(tmp, path);
 }
 
+void addMetadata(OIIO::ImageSpec& spec, const ImageMetadata& metadata) {
+    for (const auto& [k, v] : metadata.strings)
+        spec.attribute("lamina:" + k, v);
+    for (const auto& [k, v] : metadata.floats)
+        spec.attribute("lamina:" + k, v);
+    for (const auto& [k, v] : metadata.ints)
+        spec.attribute("lamina:" + k, v);
+}
+
 }  // namespace
 
 void checkOutputPath(const std::filesystem::path& path) {
@@ -67,12 +76,7 @@ void writeExr(const std::filesystem::path& path, const Film& film, bool aovs,
     OIIO::ImageSpec spec(w, h, int(nc), OIIO::TypeDesc::FLOAT);
     spec.channelnames = channels;
     spec.attribute("compression", "zip");
-    for (const auto& [k, v] : metadata.strings)
-        spec.attribute("lamina:" + k, v);
-    for (const auto& [k, v] : metadata.floats)
-        spec.attribute("lamina:" + k, v);
-    for (const auto& [k, v] : metadata.ints)
-        spec.attribute("lamina:" + k, v);
+    addMetadata(spec, metadata);
     // The primaries and white of lamina's linear Rec.709 (the EXR "chromaticities" attribute).
     const RgbColorSpace& cs = RgbColorSpace::rec709();
     const Vec3d white = cs.whiteXyz();
@@ -106,12 +110,7 @@ void writeFloatExr(const std::filesystem::path& path, int width, int height,
                    const ImageMetadata& metadata) {
     OIIO::ImageSpec spec(width, height, int(channels.size()), OIIO::TypeDesc::FLOAT);
     spec.channelnames = channels;
-    for (const auto& [k, v] : metadata.strings)
-        spec.attribute("lamina:" + k, v);
-    for (const auto& [k, v] : metadata.floats)
-        spec.attribute("lamina:" + k, v);
-    for (const auto& [k, v] : metadata.ints)
-        spec.attribute("lamina:" + k, v);
+    addMetadata(spec, metadata);
     writeAtomically(path, spec, data);
 }
 

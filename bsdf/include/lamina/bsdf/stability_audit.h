@@ -61,19 +61,6 @@ struct StabilityModel {
 
 namespace stability_detail {
 
-template <typename S>
-void classify(const S& v, StabilityCell& cell) {
-    for (int i = 0; i < S::kSize; ++i) {
-        const double x = double(v[i]);
-        if (std::isnan(x))
-            ++cell.nan;
-        else if (std::isinf(x))
-            ++cell.inf;
-        else if (x < 0)
-            ++cell.negative;
-    }
-}
-
 inline void classifyScalar(double x, StabilityCell& cell) {
     if (std::isnan(x))
         ++cell.nan;
@@ -81,6 +68,12 @@ inline void classifyScalar(double x, StabilityCell& cell) {
         ++cell.inf;
     else if (x < 0)
         ++cell.negative;
+}
+
+template <typename S>
+void classify(const S& v, StabilityCell& cell) {
+    for (int i = 0; i < S::kSize; ++i)
+        classifyScalar(double(v[i]), cell);
 }
 
 }  // namespace stability_detail

@@ -356,12 +356,9 @@ class BdptIntegrator {
             before.pdfRev = toArea(pdfRev, cur, before);
 
             const float uRoulette = sampler.get1D();
-            const float rrBeta = beta.maxValue() / beta0;
-            if (surfaces + 1 >= settings_.russianRouletteDepth && rrBeta < 1.0f) {
-                const float q = std::max(0.0f, 1.0f - rrBeta);
-                if (uRoulette < q) return;
-                beta /= 1.0f - q;
-            }
+            if (!russianRoulette(beta, beta.maxValue() / beta0, surfaces + 1,
+                                 settings_.russianRouletteDepth, uRoulette))
+                return;
             if (!beta.isFinite() || beta.maxValue() <= 0.0f) return;
             o = offsetRayOrigin(cur.p, facing(cur.ng, wi));
             d = wi;

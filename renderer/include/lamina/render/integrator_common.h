@@ -35,6 +35,18 @@ struct PathStatistics {
     std::uint64_t rays = 0;  ///< closest-hit and shadow rays traced
 };
 
+/// Russian roulette once `bounces` reaches `rrDepth`: the path survives with probability
+/// min(1, rrBeta) (rrBeta: its throughput relative to its start) and its throughput is divided
+/// by that probability. Returns false when the path ends.
+template <SpectrumType S>
+bool russianRoulette(S& beta, float rrBeta, int bounces, int rrDepth, float u) {
+    if (bounces < rrDepth || rrBeta >= 1.0f) return true;
+    const float q = std::max(0.0f, 1.0f - rrBeta);
+    if (u < q) return false;
+    beta /= 1.0f - q;
+    return true;
+}
+
 /// The side of a surface a direction leaves on: the normal flipped to face `w`.
 inline Vec3f facing(const Vec3f& n, const Vec3f& w) {
     return glm::dot(n, w) >= 0.0f ? n : -n;

@@ -99,12 +99,9 @@ class LightIntegrator {
 
             // Russian roulette on the throughput relative to the particle's start.
             const float uRoulette = sampler.get1D();
-            const float rrBeta = beta.maxValue() / beta0;
-            if (bounces >= settings_.russianRouletteDepth && rrBeta < 1.0f) {
-                const float q = std::max(0.0f, 1.0f - rrBeta);
-                if (uRoulette < q) break;
-                beta /= 1.0f - q;
-            }
+            if (!russianRoulette(beta, beta.maxValue() / beta0, bounces,
+                                 settings_.russianRouletteDepth, uRoulette))
+                break;
             if (!beta.isFinite() || beta.maxValue() <= 0.0f) break;
             o = offsetRayOrigin(hit->p, facing(hit->ng, wi));
             d = wi;

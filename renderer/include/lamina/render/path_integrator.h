@@ -88,13 +88,10 @@ class PathIntegrator {
             prevPoint = hit->p;
 
             // Russian roulette on the throughput without the radiance eta^2 factors (pbrt-v4).
-            const float rrBeta = beta.maxValue() * etaScale;
             const float uRoulette = sampler.get1D();
-            if (depth + 1 >= settings_.russianRouletteDepth && rrBeta < 1.0f) {
-                const float q = std::max(0.0f, 1.0f - rrBeta);
-                if (uRoulette < q) break;
-                beta /= 1.0f - q;
-            }
+            if (!russianRoulette(beta, beta.maxValue() * etaScale, depth + 1,
+                                 settings_.russianRouletteDepth, uRoulette))
+                break;
             if (!beta.isFinite() || beta.maxValue() <= 0.0f) break;
             o = offsetRayOrigin(hit->p, facing(hit->ng, wi));
             d = wi;

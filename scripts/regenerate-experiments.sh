@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Regenerates the reports in docs/experiments/ (about 10 minutes on 2 cores). Run from the
+# repository root after building: bash scripts/regenerate-experiments.sh [build/renderer/lamina]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+lamina=${1:-build/renderer/lamina}
+out=docs/experiments
+
+# Error against time: the Cornell box, every integrator, both modes.
+rm -rf "$out/convergence"
+"$lamina" convergence scenes/cornell-box.json --resolution 128x128 --integrators path,light,bdpt \
+  --modes rgb,spectral --time 10 --reference-time 150 --levels 1e-2,3e-3,1e-3 \
+  -o "$out/convergence"
+
+# Spectral against RGB Fresnel: the measured metals and two glasses, and a scene of them in
+# both modes.
+rm -rf "$out/fresnel"
+"$lamina" fresnel Au Ag Cu Al Cr bk7 diamond --scene scenes/fresnel-spheres.json --spp 256 \
+  -o "$out/fresnel"
+
+# Numerical stability: the default model set and the stiff scenes.
+rm -rf "$out/stability"
+"$lamina" stability --scenes scenes/stress/*.json --spp 256 -o "$out/stability"
