@@ -76,6 +76,7 @@ Axis makeAxis(bool log, double lo, double hi) {
 }
 
 std::string format(double v) {
+    if (std::abs(v) < 1e-12) v = 0;  // no "-0" from accumulated steps
     char buf[32];
     std::snprintf(buf, sizeof buf, "%g", v);
     return buf;

@@ -6,8 +6,10 @@
 //   nan, inf, negative     eval, pdf or a sample's weight (either precision)
 //   weightMismatch         a non-delta sample whose weight differs from eval / pdf by more
 //                          than 1e-3 relative (double precision)
-//   energyGain             the mean sample weight (the directional albedo) exceeds 1 by more
-//                          than three standard errors plus 1e-3, in some channel
+//   energyGain             the mean sample weight in importance mode (the directional albedo:
+//                          radiance mode's 1/eta^2 is not energy) exceeds 1 by more than
+//                          three standard errors plus 1e-3, in some channel
+// Samples alternate between the two transport modes; eval / pdf is checked in the mode drawn.
 // and the worst relative difference between float and double eval where the double value is
 // above 1e-6 of the cell's peak (ill-conditioned points included: near the critical angle a
 // one-ulp change of direction changes rough refraction by ~1%).
@@ -134,9 +136,10 @@ inline StabilityReport auditStability(const StabilityModel& model, std::vector<d
                     edge ? Vec2<double>(k & 2 ? 1 - 1e-16 : 0.0, k & 4 ? 1 - 1e-16 : 0.0)
                          : Vec2<double>(rng.nextDouble(), rng.nextDouble());
                 ++cell.samples;
-                const auto s = d->sample(wo, uc, u, TransportMode::Radiance);
-                const auto sf =
-                    f->sample(Vec3<float>(wo), float(uc), Vec2<float>(u), TransportMode::Radiance);
+                const TransportMode mode =
+                    k % 2 ? TransportMode::Importance : TransportMode::Radiance;
+                const auto s = d->sample(wo, uc, u, mode);
+                const auto sf = f->sample(Vec3<float>(wo), float(uc), Vec2<float>(u), mode);
                 if (sf) {
                     classify(sf->weight, cell);
                     classifyScalar(double(sf->pdf), cell);
@@ -145,13 +148,12 @@ inline StabilityReport auditStability(const StabilityModel& model, std::vector<d
                 classify(s->weight, cell);
                 classifyScalar(s->pdf, cell);
                 if (!s->weight.isFinite()) continue;
-                if (!edge) {
+                if (!edge && mode == TransportMode::Importance) {
                     sum += s->weight;
                     sumSq += s->weight * s->weight;
                 }
                 if (!s->isSpecular() && s->pdf > 0) {
-                    const Rgb<double> expected =
-                        d->eval(wo, s->wi, TransportMode::Radiance) / d->pdf(wo, s->wi);
+                    const Rgb<double> expected = d->eval(wo, s->wi, mode) / d->pdf(wo, s->wi);
                     for (int ch = 0; ch < 3; ++ch)
                         if (std::abs(expected[ch] - s->weight[ch]) >
                             1e-3 * std::max(std::abs(expected[ch]), 1e-6)) {
@@ -160,7 +162,7 @@ inline StabilityReport auditStability(const StabilityModel& model, std::vector<d
                         }
                 }
             }
-            const double n = double(samples - 8);
+            const double n = double(samples - 8) / 2;  // importance-mode samples
             for (int ch = 0; ch < 3; ++ch) {
                 const double mean = sum[ch] / n;
                 const double se = std::sqrt(std::max(0.0, sumSq[ch] / n - mean * mean) / n);
