@@ -8,9 +8,12 @@
 // p >= 0.0027). The per-pixel rejection rate is printed, not asserted: light tracing of glossy
 // surfaces seen directly is heavy-tailed, which a t-test of one pixel over 32 batches does not
 // tolerate (blocks of 16 pixels do).
-// The break-it tests switch off the adjoint shading-normal correction and the transport-mode
-// rule for refraction, and the same check fails.
+// The break-it tests switch off the adjoint shading-normal correction, the transport-mode rule
+// for refraction and the order of the BSDF's arguments at connections, and the check fails.
 #include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
 
 #include "lamina/render/estimator_agreement.h"
 #include "render_helpers.h"
@@ -115,6 +118,34 @@ TEST(IntegratorsAgreeBreakIt, WithTheRadianceEtaRuleOnLightPathsBdptDisagrees) {
     const BatchImages path = render(scene, IntegratorKind::Path, RenderModeKind::Rgb, 11);
     const BatchImages bdpt = render(scene, IntegratorKind::Bdpt, RenderModeKind::Rgb, 33, broken);
     expectDisagreement(compare(path, bdpt));
+}
+
+// ... and with the BSDF's arguments swapped at light-path connections, light tracing disagrees
+// on the rough glass (refraction is lamina's one non-symmetric BSDF; pbrt-v4 issue 395).
+TEST(IntegratorsAgreeBreakIt, WithSwappedDirectionsAtConnectionsLightTracingDisagrees) {
+    const SceneDesc scene = loadScene(sourcePath("scenes/reciprocity/rough-glass.json"));
+    TransportAblations broken;
+    broken.swappedConnections = true;
+    const BatchImages path = render(scene, IntegratorKind::Path, RenderModeKind::Rgb, 11);
+    const BatchImages light = render(scene, IntegratorKind::Light, RenderModeKind::Rgb, 22, broken);
+    expectDisagreement(compare(path, light));
+}
+
+// A mirroring transform of a mesh with vertex normals must flip its shading normals with its
+// geometric ones in every integrator (pbrt-v3 issue 229): the faceted sphere, mirrored.
+TEST(IntegratorsAgree, OnAMirroredMeshWithVertexNormals) {
+    std::ifstream in(sourcePath("scenes/reciprocity/smooth-normals.json"));
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string json = text.str();
+    const std::string anchor = R"("name": "faceted sphere", "material": "clay",)";
+    const auto at = json.find(anchor);
+    ASSERT_NE(at, std::string::npos);
+    json.insert(at + anchor.size(), R"( "transform": [{ "scale": [-1, 1, 1] }],)");
+    const SceneDesc scene = testing::sceneFromText(json);
+    const BatchImages path = render(scene, IntegratorKind::Path, RenderModeKind::Rgb, 11);
+    const BatchImages light = render(scene, IntegratorKind::Light, RenderModeKind::Rgb, 22);
+    expectAgreement(compare(path, light), "path vs light");
 }
 
 }  // namespace

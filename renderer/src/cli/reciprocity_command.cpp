@@ -135,10 +135,12 @@ int run(const ReciprocityArgs& args) {
             o.ablations.noAdjointCorrection = true;
         else if (a == "transport-mode")
             o.ablations.radianceOnLightPaths = true;
+        else if (a == "swapped-directions")
+            o.ablations.swappedConnections = true;
         else
             throw CLI::ValidationError("--ablate", "unknown \"" + a +
                                                        "\"; expected adjoint-correction, "
-                                                       "transport-mode");
+                                                       "transport-mode, swapped-directions");
     }
 
     std::printf(
@@ -230,7 +232,8 @@ void registerReciprocityCommand(CLI::App& app) {
         ->check(CLI::Range(1, 1024));
     cmd->add_option("--ablate", a->ablate,
                     "Reproduce a known bug on purpose: adjoint-correction (drop the shading-normal "
-                    "factor on light paths), transport-mode (radiance's 1/eta^2 on light paths)");
+                    "factor on light paths), transport-mode (radiance's 1/eta^2 on light paths), "
+                    "swapped-directions (f(wi, wo) at light-path connections)");
     cmd->callback([a] {
         const int status = run(*a);
         if (status != 0) throw CLI::RuntimeError(status);

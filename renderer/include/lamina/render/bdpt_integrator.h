@@ -384,7 +384,9 @@ class BdptIntegrator {
         const TransportMode m = lightSubpath && !ablations_.radianceOnLightPaths
                                     ? TransportMode::Importance
                                     : TransportMode::Radiance;
-        S f = bsdf.eval(frame.toLocal(wPrev), frame.toLocal(wNext), m);
+        const Vec3f prev = frame.toLocal(wPrev), next = frame.toLocal(wNext);
+        S f = lightSubpath && ablations_.swappedConnections ? bsdf.eval(next, prev, m)
+                                                            : bsdf.eval(prev, next, m);
         if (lightSubpath) f *= correction(wPrev, wNext, v);
         return f;
     }

@@ -29,6 +29,7 @@ struct SceneContext {
 struct TransportAblations {
     bool noAdjointCorrection = false;   ///< drop the shading-normal factor (pbrt-v3 #73)
     bool radianceOnLightPaths = false;  ///< the 1/eta^2 rule on light paths (pbrt-v4 #30)
+    bool swappedConnections = false;    ///< f(wi, wo) at light-path connections (pbrt-v4 #395)
 };
 
 struct PathStatistics {

@@ -77,7 +77,9 @@ class LightIntegrator {
             if ((bsdf.flags() & (kLobeDiffuse | kLobeGlossy)) != 0) {
                 if (const auto cc = c_.camera.sampleConnection(hit->p, uCamera);
                     cc && sidesAgree(woWorld, cc->wi, hit->ng, hit->ns)) {
-                    const S f = bsdf.eval(wo, frame.toLocal(cc->wi), mode) *
+                    const Vec3f toCamera = frame.toLocal(cc->wi);
+                    const S f = (ablations_.swappedConnections ? bsdf.eval(toCamera, wo, mode)
+                                                               : bsdf.eval(wo, toCamera, mode)) *
                                 correction(woWorld, cc->wi, *hit);
                     if (f.maxValue() > 0.0f &&
                         segmentUnoccluded(c_.geometry, hit->p, hit->ng, cc->lensPoint, Vec3f(0.0f),
