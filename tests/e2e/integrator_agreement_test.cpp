@@ -97,38 +97,37 @@ INSTANTIATE_TEST_SUITE_P(
                       RenderModeKind::Rgb}),
     [](const ::testing::TestParamInfo<AgreementCase>& p) { return std::string(p.param.name); });
 
+/// Path tracing against `integrator` with one deliberate mistake switched on: must disagree.
+void expectBrokenDisagrees(const char* scenePath, IntegratorKind integrator,
+                           bool TransportAblations::*mistake) {
+    const SceneDesc scene = loadScene(sourcePath(scenePath));
+    TransportAblations broken;
+    broken.*mistake = true;
+    const BatchImages path = render(scene, IntegratorKind::Path, RenderModeKind::Rgb, 11);
+    const BatchImages other = render(scene, integrator, RenderModeKind::Rgb, 22, broken);
+    expectDisagreement(compare(path, other));
+}
+
 // Break it once: without the adjoint correction light tracing disagrees with path tracing on
 // the faceted sphere with smooth normals (pbrt-v3 issue 73).
 TEST(IntegratorsAgreeBreakIt, WithoutTheAdjointCorrectionLightTracingDisagrees) {
-    const SceneDesc scene = loadScene(sourcePath("scenes/reciprocity/smooth-normals.json"));
-    TransportAblations broken;
-    broken.noAdjointCorrection = true;
-    const BatchImages path = render(scene, IntegratorKind::Path, RenderModeKind::Rgb, 11);
-    const BatchImages light = render(scene, IntegratorKind::Light, RenderModeKind::Rgb, 22, broken);
-    expectDisagreement(compare(path, light));
+    expectBrokenDisagrees("scenes/reciprocity/smooth-normals.json", IntegratorKind::Light,
+                          &TransportAblations::noAdjointCorrection);
 }
 
 // ... and with radiance's 1/eta^2 on light subpaths BDPT disagrees on the rough glass
 // (pbrt-v4 issue 30). (Light tracing alone hides it there: for a closed object the factors of
 // entering and leaving cancel.)
 TEST(IntegratorsAgreeBreakIt, WithTheRadianceEtaRuleOnLightPathsBdptDisagrees) {
-    const SceneDesc scene = loadScene(sourcePath("scenes/reciprocity/rough-glass.json"));
-    TransportAblations broken;
-    broken.radianceOnLightPaths = true;
-    const BatchImages path = render(scene, IntegratorKind::Path, RenderModeKind::Rgb, 11);
-    const BatchImages bdpt = render(scene, IntegratorKind::Bdpt, RenderModeKind::Rgb, 33, broken);
-    expectDisagreement(compare(path, bdpt));
+    expectBrokenDisagrees("scenes/reciprocity/rough-glass.json", IntegratorKind::Bdpt,
+                          &TransportAblations::radianceOnLightPaths);
 }
 
 // ... and with the BSDF's arguments swapped at light-path connections, light tracing disagrees
 // on the rough glass (refraction is lamina's one non-symmetric BSDF; pbrt-v4 issue 395).
 TEST(IntegratorsAgreeBreakIt, WithSwappedDirectionsAtConnectionsLightTracingDisagrees) {
-    const SceneDesc scene = loadScene(sourcePath("scenes/reciprocity/rough-glass.json"));
-    TransportAblations broken;
-    broken.swappedConnections = true;
-    const BatchImages path = render(scene, IntegratorKind::Path, RenderModeKind::Rgb, 11);
-    const BatchImages light = render(scene, IntegratorKind::Light, RenderModeKind::Rgb, 22, broken);
-    expectDisagreement(compare(path, light));
+    expectBrokenDisagrees("scenes/reciprocity/rough-glass.json", IntegratorKind::Light,
+                          &TransportAblations::swappedConnections);
 }
 
 // A mirroring transform of a mesh with vertex normals must flip its shading normals with its
