@@ -30,21 +30,19 @@ double BatchImages::regionMean(std::size_t batch, int x0, int y0, int x1, int y1
     return sum / (double(x1 - x0) * double(y1 - y0));
 }
 
-double BatchImages::mean(int x0, int y0, int x1, int y1) const {
-    double sum = 0;
-    for (std::size_t b = 0; b < batches_.size(); ++b)
-        sum += regionMean(b, x0, y0, x1, y1);
-    return batches_.empty() ? 0.0 : sum / double(batches_.size());
-}
-
-double BatchImages::varianceOfMean(int x0, int y0, int x1, int y1) const {
+BatchImages::RegionStatistics BatchImages::region(int x0, int y0, int x1, int y1) const {
     const std::size_t k = batches_.size();
-    if (k < 2) return 0.0;
-    const double m = mean(x0, y0, x1, y1);
-    double ss = 0;
+    if (k == 0) return {0.0, 0.0};
+    std::vector<double> means(k);
+    double sum = 0;
     for (std::size_t b = 0; b < k; ++b)
-        ss += sqr(regionMean(b, x0, y0, x1, y1) - m);
-    return ss / double(k - 1) / double(k);
+        sum += means[b] = regionMean(b, x0, y0, x1, y1);
+    const double mean = sum / double(k);
+    if (k < 2) return {mean, 0.0};
+    double ss = 0;
+    for (double m : means)
+        ss += sqr(m - mean);
+    return {mean, ss / double(k - 1) / double(k)};
 }
 
 double AgreementResult::blockRejectionPValue(double alpha) const {
@@ -68,8 +66,8 @@ struct TTest {
 
 TTest welch(const BatchImages& a, const BatchImages& b, int x0, int y0, int x1, int y1,
             double alpha) {
-    const double ma = a.mean(x0, y0, x1, y1), mb = b.mean(x0, y0, x1, y1);
-    const double va = a.varianceOfMean(x0, y0, x1, y1), vb = b.varianceOfMean(x0, y0, x1, y1);
+    const auto [ma, va] = a.region(x0, y0, x1, y1);
+    const auto [mb, vb] = b.region(x0, y0, x1, y1);
     TTest r;
     if (!(va + vb > 0.0)) {
         // No variance on either side (black, or constant): testable only by equality.
@@ -111,9 +109,10 @@ AgreementResult testAgreement(const BatchImages& a, const BatchImages& b,
         }
     // The whole image: relative difference of the means, its standard error by the delta
     // method (the two estimates are independent).
-    r.meanA = a.mean(0, 0, w, h);
-    r.meanB = b.mean(0, 0, w, h);
-    const double va = a.varianceOfMean(0, 0, w, h), vb = b.varianceOfMean(0, 0, w, h);
+    const auto [meanA, va] = a.region(0, 0, w, h);
+    const auto [meanB, vb] = b.region(0, 0, w, h);
+    r.meanA = meanA;
+    r.meanB = meanB;
     if (r.meanB > 0) {
         r.relativeDifference = r.meanA / r.meanB - 1.0;
         r.standardError = std::sqrt(va / sqr(r.meanB) + vb * sqr(r.meanA) / sqr(sqr(r.meanB)));

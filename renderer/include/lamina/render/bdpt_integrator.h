@@ -423,23 +423,17 @@ class BdptIntegrator {
             const Vertex& prev = cameraPath[std::size_t(t - 2)];
             value = cv.beta * emitted(cv, cv.infinite ? -cv.p : directionTo(cv, prev), path);
         } else if (t == 1) {
-            // Light vertex s-1 seen by the camera (light tracing).
+            // Light vertex s-1 (a surface: s >= 2, since (1, 1) is skipped) seen by the camera.
             const Vertex& lv = lightPath[std::size_t(s - 1)];
-            if (lv.infinite || lv.delta || (lv.type == VertexType::Light && lv.ng == Vec3f(0.0f)))
-                return value;
+            if (lv.delta) return value;
             const auto cc = c_.camera.sampleConnection(lv.p, sampler.get2D());
             if (!cc) return value;
             sampled.type = VertexType::Camera;
             sampled.p = cc->lensPoint;
             sampled.beta = S(cc->importance / cc->pdf);
             raster = cc->raster;
-            S f;
-            if (lv.type == VertexType::Light) {
-                f = emitted(lv, cc->wi, path) * std::abs(glm::dot(lv.ng, cc->wi));
-            } else {
-                const Vec3f wPrev = directionTo(lv, lightPath[std::size_t(s - 2)]);
-                f = evalAt(lv, wPrev, cc->wi, true, path);
-            }
+            const Vec3f wPrev = directionTo(lv, lightPath[std::size_t(s - 2)]);
+            const S f = evalAt(lv, wPrev, cc->wi, true, path);
             if (f.maxValue() <= 0.0f) return value;
             value = lv.beta * f * sampled.beta;
             if (!unoccluded(lv, sampled, stats)) return S(0.0f);
@@ -466,12 +460,9 @@ class BdptIntegrator {
             if (f.maxValue() <= 0.0f) return value;
             sampled.beta = mode_.emission(ls->radiance, path) / (pmf * ls->pdf);
             value = cv.beta * f * sampled.beta;
-            const bool visible =
-                sampled.infinite
-                    ? !(++stats.rays,
-                        c_.geometry.occluded(offsetRayOrigin(cv.p, facing(cv.ng, ls->wi)), ls->wi,
-                                             std::numeric_limits<float>::infinity()))
-                    : unoccluded(cv, sampled, stats);
+            const bool visible = sampled.infinite
+                                     ? directionUnoccluded(c_.geometry, cv.p, cv.ng, ls->wi, stats)
+                                     : unoccluded(cv, sampled, stats);
             if (!visible) return S(0.0f);
         } else {
             // Both ends are surface vertices: connect them.

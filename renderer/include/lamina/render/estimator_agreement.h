@@ -22,10 +22,12 @@ class BatchImages {
     int width() const { return width_; }
     int height() const { return height_; }
     int batches() const { return int(batches_.size()); }
-    /// Mean over the batches of the luminance averaged over the pixel rectangle.
-    double mean(int x0, int y0, int x1, int y1) const;
-    /// Variance of that mean (between-batch variance / K).
-    double varianceOfMean(int x0, int y0, int x1, int y1) const;
+    struct RegionStatistics {
+        double mean;            ///< over the batches, of the luminance averaged over the region
+        double varianceOfMean;  ///< between-batch variance / K (0 for a single batch)
+    };
+    /// Statistics of the pixel rectangle [x0, x1) x [y0, y1).
+    RegionStatistics region(int x0, int y0, int x1, int y1) const;
     /// A Rec.709 image of the mean over the batches.
     const std::vector<Rgb<double>>& meanImage() const { return meanRgb_; }
 

@@ -53,6 +53,15 @@ inline Vec3f facing(const Vec3f& n, const Vec3f& w) {
     return glm::dot(n, w) >= 0.0f ? n : -n;
 }
 
+/// True when nothing blocks the ray from surface point `p` (normal `n`) along `direction` to
+/// infinity (an infinite light).
+inline bool directionUnoccluded(const Geometry& geometry, const Vec3f& p, const Vec3f& n,
+                                const Vec3f& direction, PathStatistics& stats) {
+    ++stats.rays;
+    return !geometry.occluded(offsetRayOrigin(p, facing(n, direction)), direction,
+                              std::numeric_limits<float>::infinity());
+}
+
 /// True when nothing blocks the segment between two points, each moved off its surface along
 /// its normal on the side facing the other (a zero normal: a point not on a surface, such as
 /// a lens or a point light, is not moved).

@@ -111,20 +111,11 @@ class PathIntegrator {
         const Vec3f wi = frame.toLocal(ls->wi);
         const S f = bsdf.eval(wo, wi, TransportMode::Radiance);
         if (f.maxValue() <= 0.0f) return S(0.0f);
-        const Vec3f origin =
-            offsetRayOrigin(hit.p, glm::dot(ls->wi, hit.ng) > 0 ? hit.ng : -hit.ng);
-        ++stats.rays;
-        if (std::isinf(ls->distance)) {
-            if (c_.geometry.occluded(origin, ls->wi, std::numeric_limits<float>::infinity()))
-                return S(0.0f);
-        } else {
-            const Vec3f target = offsetRayOrigin(ls->point, ls->normal);
-            const Vec3f segment = target - origin;
-            const float length = glm::length(segment);
-            if (length > 0.0f &&
-                c_.geometry.occluded(origin, segment / length, length * (1.0f - 1e-4f)))
-                return S(0.0f);
-        }
+        const bool visible =
+            std::isinf(ls->distance)
+                ? directionUnoccluded(c_.geometry, hit.p, hit.ng, ls->wi, stats)
+                : segmentUnoccluded(c_.geometry, hit.p, hit.ng, ls->point, ls->normal, stats);
+        if (!visible) return S(0.0f);
         const float lightPdf = pmf * ls->pdf;
         const float w = ls->delta ? 1.0f : powerHeuristic(lightPdf, bsdf.pdf(wo, wi));
         return f * mode_.emission(ls->radiance, path) * (w / lightPdf);
