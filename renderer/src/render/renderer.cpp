@@ -49,7 +49,7 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
     Film& film = *result.film;
 
     Geometry geometry(scene);
-    const LightSet lights(scene, geometry, settings.uniformLightSelection);
+    const LightSet lights(scene, geometry, settings.lightSelection == LightSelection::Uniform);
     const Camera camera(scene.camera, width, height);
     const PixelFilter filter(scene.film);
     const RenderMode<S> mode(scene);

@@ -189,8 +189,8 @@ class SceneParser {
                      {{"power", MisHeuristic::Power}, {"balance", MisHeuristic::Balance}});
         scene_.settings.maxDepth = r.integer("max_depth", 16, 1, 1024);
         scene_.settings.russianRouletteDepth = r.integer("rr_depth", 5, 1, 1024);
-        scene_.settings.uniformLightSelection =
-            r.choice("light_selection", false, {{"power", false}, {"uniform", true}});
+        scene_.settings.lightSelection =
+            r.choice("light_selection", LightSelection::Power, kLightSelectionNames);
         r.finish();
     }
 

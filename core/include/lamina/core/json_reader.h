@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "lamina/core/error.h"
+#include "lamina/core/name_table.h"
 
 namespace lamina {
 
@@ -83,6 +84,15 @@ class JsonReader {
     /// Exactly N numbers in an array.
     template <std::size_t N>
     std::array<double, N> requiredArray(const std::string& key, Range range = Range::any()) const;
+
+    /// One of the names of an enumeration's table (name_table.h).
+    template <typename E, std::size_t N>
+    E choice(const std::string& key, E defaultValue, const NameTable<E, N>& names) const {
+        if (!has(key)) return defaultValue;
+        const std::string s = string(key, "");
+        if (const auto e = names.find(s)) return *e;
+        failAt(key, "expected one of " + names.list() + ", got \"" + s + "\"");
+    }
 
     /// One of a fixed set of names.
     template <typename E>

@@ -15,6 +15,8 @@
 namespace lamina::render {
 
 enum class RenderModeKind { Rgb, Spectral };
+inline constexpr NameTable kRenderModeNames{std::array{
+    NameEntry{RenderModeKind::Rgb, "rgb"}, NameEntry{RenderModeKind::Spectral, "spectral"}}};
 
 struct RenderOptions {
     RenderModeKind mode = RenderModeKind::Rgb;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "lamina/bsdf/material.h"
+#include "lamina/core/name_table.h"
 #include "lamina/core/vector.h"
 #include "lamina/render/texture.h"
 #include "lamina/spectral/emission_spectrum.h"
@@ -29,6 +30,9 @@ struct CameraDesc {
 };
 
 enum class FilterKind { Box, Gaussian, BlackmanHarris };
+inline constexpr NameTable kFilterNames{std::array{
+    NameEntry{FilterKind::Box, "box"}, NameEntry{FilterKind::Gaussian, "gaussian"},
+    NameEntry{FilterKind::BlackmanHarris, "blackman_harris"}}};
 
 struct FilmDesc {
     int width = 256, height = 256;
@@ -37,11 +41,24 @@ struct FilmDesc {
 };
 
 enum class SamplerKind { Sobol, Independent };
+inline constexpr NameTable kSamplerNames{std::array{
+    NameEntry{SamplerKind::Sobol, "sobol"}, NameEntry{SamplerKind::Independent, "independent"}}};
 
 /// The light transport algorithm: camera path tracing, light tracing, bidirectional.
 enum class IntegratorKind { Path, Light, Bdpt };
+inline constexpr NameTable kIntegratorNames{
+    std::array{NameEntry{IntegratorKind::Path, "path"}, NameEntry{IntegratorKind::Light, "light"},
+               NameEntry{IntegratorKind::Bdpt, "bdpt"}}};
+
 /// How BDPT weights its strategies (Veach 1997, section 9.2).
 enum class MisHeuristic { Power, Balance };
+inline constexpr NameTable kMisHeuristicNames{std::array{
+    NameEntry{MisHeuristic::Power, "power"}, NameEntry{MisHeuristic::Balance, "balance"}}};
+
+/// How next-event estimation picks a light: proportional to its power, or uniformly.
+enum class LightSelection { Power, Uniform };
+inline constexpr NameTable kLightSelectionNames{std::array{
+    NameEntry{LightSelection::Power, "power"}, NameEntry{LightSelection::Uniform, "uniform"}}};
 
 struct RenderSettings {
     IntegratorKind integrator = IntegratorKind::Path;
@@ -51,7 +68,7 @@ struct RenderSettings {
     int spp = 16;
     std::uint64_t seed = 0;
     SamplerKind sampler = SamplerKind::Sobol;
-    bool uniformLightSelection = false;  ///< default: proportional to power
+    LightSelection lightSelection = LightSelection::Power;
 };
 
 /// Emission of an area light: RGB radiance (linear Rec.709) or a spectrum, one- or two-sided.
@@ -95,6 +112,10 @@ struct DiskDesc {
 };
 
 enum class LightKind { Point, Spot, Directional, Environment };
+inline constexpr NameTable kLightKindNames{
+    std::array{NameEntry{LightKind::Point, "point"}, NameEntry{LightKind::Spot, "spot"},
+               NameEntry{LightKind::Directional, "directional"},
+               NameEntry{LightKind::Environment, "environment"}}};
 
 /// Lights that are not shapes.
 struct LightDesc {
