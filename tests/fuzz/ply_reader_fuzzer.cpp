@@ -1,0 +1,18 @@
+// libFuzzer target: the PLY reader (ASCII and binary) on arbitrary bytes.
+#include <cstddef>
+#include <cstdint>
+
+#include "fuzz_input_file.h"
+#include "lamina/core/error.h"
+#include "lamina/render/ply_reader.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    const lamina::fuzz::InputFile file(data, size, ".ply");
+    try {
+        lamina::render::MeshDesc mesh;
+        lamina::render::readPly(file.path(), mesh);
+    } catch (const lamina::InputError&) {
+        // Refused with a message: what bad input must get.
+    }
+    return 0;
+}
