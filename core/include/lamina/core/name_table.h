@@ -24,6 +24,9 @@ struct NameEntry {
     E value;
     std::string_view name;
 };
+// Spelt out: clang before 17 does not deduce the arguments of an aggregate template.
+template <typename E>
+NameEntry(E, const char*) -> NameEntry<E>;
 
 template <typename E, std::size_t N>
 class NameTable {
