@@ -1,8 +1,9 @@
+#include "lamina/render/lights.h"
+
 #include <algorithm>
 
 #include "lamina/render/area_lights.h"
 #include "lamina/render/infinite_lights.h"
-#include "lamina/render/lights.h"
 #include "lamina/render/point_lights.h"
 
 namespace lamina::render {

@@ -90,7 +90,7 @@ class RectangleLight final : public AreaLight {
     double lx_ = 0, ly_ = 0;
 };
 
-/// An emitting disk, sampled uniformly by area (the concentric mapping).
+/// An emitting disk, sampled uniformly by area (the concentric mapping) in double precision.
 class DiskLight final : public AreaLight {
   public:
     explicit DiskLight(const DiskDesc& d);

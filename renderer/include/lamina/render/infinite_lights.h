@@ -61,6 +61,8 @@ class EnvironmentLight : public InfiniteLight {
                                                  const Vec2f& uDirection) const final;
     EmissionPdf emissionPdf(const Vec3f& point, const Vec3f& normal,
                             const Vec3f& direction) const final;
+    Emission environment(const Vec3f& w) const override = 0;
+    float environmentPdf(const Vec3f& w) const override = 0;
 
   protected:
     using InfiniteLight::InfiniteLight;
