@@ -179,6 +179,16 @@ std::string JsonReader::requiredString(const std::string& key) const {
     return string(key, "");
 }
 
+std::filesystem::path JsonReader::filePath(const std::string& key) const {
+    std::filesystem::path p = requiredString(key);
+    if (p.is_relative()) {
+        const auto beside = (source_.directory / p).lexically_normal();
+        if (std::filesystem::exists(beside) || !std::filesystem::exists(p)) p = beside;
+    }
+    if (!std::filesystem::exists(p)) failAt(key, p.string() + ": no such file");
+    return p;
+}
+
 std::optional<std::array<double, 3>> JsonReader::optionalTriple(const std::string& key,
                                                                 Range range) const {
     const Json* v = find(key);

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "lamina/render/ply_reader.h"
+#include "lamina/render/mesh_files.h"
 #include "render_helpers.h"
 
 namespace lamina {

@@ -34,7 +34,7 @@ Geometry::Geometry(const SceneDesc& scene) : scene_(scene) {
         rtcCommitGeometry(g);
         rtcAttachGeometryByID(scene3_, g, unsigned(shapes_.size()));
         rtcReleaseGeometry(g);
-        shapes_.push_back({ShapeInfo::Kind::Mesh, int(i), m.material, -1});
+        shapes_.push_back({ShapeInfo::Kind::Mesh, int(i), m.material});
     }
     for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
         const SphereDesc& s = scene.spheres[i];
@@ -50,7 +50,7 @@ Geometry::Geometry(const SceneDesc& scene) : scene_(scene) {
         rtcCommitGeometry(g);
         rtcAttachGeometryByID(scene3_, g, unsigned(shapes_.size()));
         rtcReleaseGeometry(g);
-        shapes_.push_back({ShapeInfo::Kind::Sphere, int(i), s.material, -1});
+        shapes_.push_back({ShapeInfo::Kind::Sphere, int(i), s.material});
     }
     for (std::size_t i = 0; i < scene.disks.size(); ++i) {
         // Embree's normal-oriented disc points are exact disks.
@@ -72,7 +72,7 @@ Geometry::Geometry(const SceneDesc& scene) : scene_(scene) {
         rtcCommitGeometry(g);
         rtcAttachGeometryByID(scene3_, g, unsigned(shapes_.size()));
         rtcReleaseGeometry(g);
-        shapes_.push_back({ShapeInfo::Kind::Disk, int(i), d.material, -1});
+        shapes_.push_back({ShapeInfo::Kind::Disk, int(i), d.material});
     }
     rtcCommitScene(scene3_);
     if (const RTCError e = rtcGetDeviceError(device_); e != RTC_ERROR_NONE)

@@ -1,4 +1,4 @@
-#include "lamina/render/ply_reader.h"
+#include "lamina/render/mesh_files.h"
 
 #include <bit>
 #include <cstring>

@@ -76,6 +76,10 @@ class JsonReader {
     bool boolean(const std::string& key, bool defaultValue) const;
     std::string string(const std::string& key, const std::string& defaultValue) const;
     std::string requiredString(const std::string& key) const;
+    /// The file named by the string at `key`. A relative path is taken beside the JSON file
+    /// (JsonSource::directory) when it exists there or nowhere else, otherwise relative to the
+    /// working directory; fails with "<path>: no such file" when the file does not exist.
+    std::filesystem::path filePath(const std::string& key) const;
     /// A number given alone (grey) or as [r, g, b].
     std::array<double, 3> triple(const std::string& key, std::array<double, 3> defaultValue,
                                  Range range = Range::any()) const;

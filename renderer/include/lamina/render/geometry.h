@@ -1,6 +1,7 @@
-// The scene's geometry in Embree 3: triangle meshes and analytic spheres, one Embree
+// The scene's geometry in Embree 3: triangle meshes, analytic spheres and disks, one Embree
 // geometry per shape, and the surface interaction at a hit (position recomputed from the
-// primitive for accuracy, geometric and shading normals, uv).
+// primitive for accuracy, geometric and shading normals, uv). Which shapes emit is the light
+// set's business (lights.h).
 #pragma once
 
 #include <embree3/rtcore.h>
@@ -33,8 +34,6 @@ struct ShapeInfo {
     enum class Kind { Mesh, Sphere, Disk } kind = Kind::Mesh;
     int index = -1;  ///< into SceneDesc::meshes, ::spheres or ::disks
     int material = -1;
-    int firstLight = -1;            ///< the area light of its first primitive, -1 if not emissive
-    bool lightPerPrimitive = true;  ///< false: one light for the whole shape (a rectangle)
 };
 
 class Geometry {
@@ -51,10 +50,6 @@ class Geometry {
     bool occluded(const Vec3f& origin, const Vec3f& direction, float tMax) const;
 
     const std::vector<ShapeInfo>& shapes() const { return shapes_; }
-    void setFirstLight(int shape, int light, bool perPrimitive = true) {
-        shapes_[std::size_t(shape)].firstLight = light;
-        shapes_[std::size_t(shape)].lightPerPrimitive = perPrimitive;
-    }
     /// Bounding sphere of everything (for environment and directional lights).
     Vec3f boundsCenter() const { return boundsCenter_; }
     float boundsRadius() const { return boundsRadius_; }

@@ -1,7 +1,10 @@
-// Lights: area lights on triangles and spheres, point, directional and constant environment
-// lights, and the light selection distribution. Every sampling routine has its density for
-// MIS. Radiance is returned as an Emission (the emitter's colour in both modes times a
-// scale); the render mode turns it into its spectrum.
+// Lights: the interface every light implements and the scene's set of lights with the
+// distribution next-event estimation and particles choose them by. The lights themselves:
+//   area_lights.h      emitting shapes: mesh triangles, rectangles, disks, spheres
+//   point_lights.h     point and spot lights
+//   infinite_lights.h  directional light, constant and image (environment map) environments
+// Every sampling routine has its density for MIS. Radiance is returned as an Emission (the
+// emitter's colour in both modes times a scale); the render mode turns it into its spectrum.
 #pragma once
 
 #include <memory>
@@ -70,10 +73,11 @@ class Light {
                                     const Vec3f& direction) const = 0;
 };
 
-/// Lights of the scene and the distribution they are chosen with.
+/// Lights of the scene and the distribution they are chosen with (light_set.cpp). The set
+/// also knows which area light each shape of the geometry carries.
 class LightSet {
   public:
-    LightSet(const SceneDesc& scene, Geometry& geometry, bool uniformSelection);
+    LightSet(const SceneDesc& scene, const Geometry& geometry, bool uniformSelection);
 
     bool empty() const { return lights_.empty(); }
     std::size_t size() const { return lights_.size(); }
@@ -86,10 +90,16 @@ class LightSet {
     int lightAt(const SurfaceHit& hit) const;
 
   private:
+    /// The area lights of one shape of the geometry.
+    struct ShapeLights {
+        int first = -1;             ///< the light of its first primitive; -1: not emissive
+        bool perPrimitive = false;  ///< one light per triangle (meshes other than rectangles)
+    };
+
     std::vector<std::unique_ptr<Light>> lights_;
     std::vector<float> pmf_, cdf_;
     std::vector<std::size_t> infinite_;
-    const Geometry& geometry_;
+    std::vector<ShapeLights> shapeLights_;  ///< indexed like Geometry::shapes()
 };
 
 }  // namespace lamina::render

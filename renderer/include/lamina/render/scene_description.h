@@ -13,12 +13,18 @@
 #include "lamina/bsdf/material.h"
 #include "lamina/core/name_table.h"
 #include "lamina/core/vector.h"
-#include "lamina/render/texture.h"
+#include "lamina/render/material_textures.h"
 #include "lamina/spectral/emission_spectrum.h"
 
 namespace lamina::render {
 
 using Vec3d = Vec3<double>;
+
+/// The `type` of a scene file's camera: a pinhole or a thin lens (a pinhole with an aperture).
+enum class CameraKind { Perspective, ThinLens };
+inline constexpr NameTable kCameraKindNames{
+    std::array{NameEntry{CameraKind::Perspective, "perspective"},
+               NameEntry{CameraKind::ThinLens, "thin_lens"}}};
 
 struct CameraDesc {
     Vec3d position{0, 0, 0};
@@ -30,9 +36,9 @@ struct CameraDesc {
 };
 
 enum class FilterKind { Box, Gaussian, BlackmanHarris };
-inline constexpr NameTable kFilterNames{std::array{
-    NameEntry{FilterKind::Box, "box"}, NameEntry{FilterKind::Gaussian, "gaussian"},
-    NameEntry{FilterKind::BlackmanHarris, "blackman_harris"}}};
+inline constexpr NameTable kFilterNames{
+    std::array{NameEntry{FilterKind::Box, "box"}, NameEntry{FilterKind::Gaussian, "gaussian"},
+               NameEntry{FilterKind::BlackmanHarris, "blackman_harris"}}};
 
 struct FilmDesc {
     int width = 256, height = 256;
@@ -46,9 +52,9 @@ inline constexpr NameTable kSamplerNames{std::array{
 
 /// The light transport algorithm: camera path tracing, light tracing, bidirectional.
 enum class IntegratorKind { Path, Light, Bdpt };
-inline constexpr NameTable kIntegratorNames{
-    std::array{NameEntry{IntegratorKind::Path, "path"}, NameEntry{IntegratorKind::Light, "light"},
-               NameEntry{IntegratorKind::Bdpt, "bdpt"}}};
+inline constexpr NameTable kIntegratorNames{std::array{NameEntry{IntegratorKind::Path, "path"},
+                                                       NameEntry{IntegratorKind::Light, "light"},
+                                                       NameEntry{IntegratorKind::Bdpt, "bdpt"}}};
 
 /// How BDPT weights its strategies (Veach 1997, section 9.2).
 enum class MisHeuristic { Power, Balance };
@@ -77,6 +83,14 @@ struct EmissionDesc {
     std::shared_ptr<const EmissionSpectrum> spectrum;  ///< set: the radiance is this spectrum
     bool twoSided = false;
 };
+
+/// The `type` of a scene file's shape: analytic spheres and disks become SphereDesc and
+/// DiskDesc, the others triangle meshes.
+enum class ShapeKind { Sphere, Disk, Rectangle, Mesh, Obj, Ply };
+inline constexpr NameTable kShapeKindNames{
+    std::array{NameEntry{ShapeKind::Sphere, "sphere"}, NameEntry{ShapeKind::Disk, "disk"},
+               NameEntry{ShapeKind::Rectangle, "rectangle"}, NameEntry{ShapeKind::Mesh, "mesh"},
+               NameEntry{ShapeKind::Obj, "obj"}, NameEntry{ShapeKind::Ply, "ply"}}};
 
 /// A triangle mesh in world space. Quads and polygons from files are already split.
 struct MeshDesc {
@@ -148,10 +162,8 @@ struct SceneDesc {
     std::vector<LightDesc> lights;
 };
 
-/// The material with its textured parameters looked up at `uv`.
-MaterialDesc texturedMaterial(const SceneDesc& scene, int material, const Vec2<float>& uv);
-
-/// Reads and validates a scene file. Errors name the file and the JSON path.
+/// Reads and validates a scene file (scene_loader.cpp, with the readers of scene_readers.h).
+/// Errors name the file and the JSON path.
 SceneDesc loadScene(const std::filesystem::path& file);
 /// The same from text already in memory (tests); relative paths resolve against `directory`.
 SceneDesc parseScene(const std::string& text, const JsonSource& source);

@@ -1,17 +1,29 @@
 // Textures for material parameters (colours and roughness), looked up by the surface's uv:
 // a checkerboard and images through OpenImageIO (bilinear, repeating; 8-bit images are
 // decoded from sRGB unless declared linear). Only the renderer knows textures: the BSDF
-// library receives the looked-up values (render_mode.h rebuilds a textured material per hit).
+// library receives the looked-up values (material_textures.h reads them from a scene file
+// and looks them up; render_mode.h rebuilds a textured material per hit).
 #pragma once
 
 #include <filesystem>
 #include <memory>
 #include <vector>
 
+#include "lamina/core/name_table.h"
 #include "lamina/core/spectrum.h"
 #include "lamina/core/vector.h"
 
 namespace lamina::render {
+
+/// The `type` of a texture in a scene file.
+enum class TextureKind { Checkerboard, Image };
+inline constexpr NameTable kTextureKindNames{std::array{
+    NameEntry{TextureKind::Checkerboard, "checkerboard"}, NameEntry{TextureKind::Image, "image"}}};
+
+/// How an image texture's integer texels are decoded: sRGB or linear.
+enum class TextureColorSpace { Srgb, Linear };
+inline constexpr NameTable kTextureColorSpaceNames{std::array{
+    NameEntry{TextureColorSpace::Srgb, "srgb"}, NameEntry{TextureColorSpace::Linear, "linear"}}};
 
 class Texture {
   public:
@@ -44,13 +56,6 @@ class ImageTexture final : public Texture {
     int width_ = 0, height_ = 0;
     std::vector<Rgb<float>> pixels_;
     Vec2<float> scale_;
-};
-
-/// Which parameters of a material come from textures (indices into SceneDesc::textures).
-struct MaterialTextures {
-    int color = -1;      ///< base_color (standard) or reflectance (diffuse, phong)
-    int roughness = -1;  ///< perceptual roughness, from the texture's first channel
-    bool any() const { return color >= 0 || roughness >= 0; }
 };
 
 }  // namespace lamina::render
