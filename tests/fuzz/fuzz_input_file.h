@@ -12,7 +12,20 @@
 #include <fstream>
 #include <string>
 
+#include "lamina/core/error.h"
+
 namespace lamina::fuzz {
+
+/// Runs a reader on one input: an InputError (bad input refused with a message) is what bad
+/// input must get; anything else escapes to libFuzzer, which reports it.
+template <typename Read>
+int readOrRefuse(Read&& read) {
+    try {
+        read();
+    } catch (const InputError&) {
+    }
+    return 0;
+}
 
 /// A file in the temporary directory holding `size` bytes of `data`, removed on destruction.
 class InputFile {

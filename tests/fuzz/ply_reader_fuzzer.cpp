@@ -3,16 +3,12 @@
 #include <cstdint>
 
 #include "fuzz_input_file.h"
-#include "lamina/core/error.h"
 #include "lamina/render/mesh_files.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const lamina::fuzz::InputFile file(data, size, ".ply");
-    try {
+    return lamina::fuzz::readOrRefuse([&] {
         lamina::render::MeshDesc mesh;
         lamina::render::readPly(file.path(), mesh);
-    } catch (const lamina::InputError&) {
-        // Refused with a message: what bad input must get.
-    }
-    return 0;
+    });
 }

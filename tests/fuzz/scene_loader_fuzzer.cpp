@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <string>
 
-#include "lamina/core/error.h"
+#include "fuzz_input_file.h"
 #include "lamina/render/scene_description.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -15,12 +15,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         return d;
     }();
     const std::string text(reinterpret_cast<const char*>(data), size);
-    try {
-        lamina::JsonSource source;
-        source.name = "fuzz.json";
-        source.directory = directory;
-        (void)lamina::render::parseScene(text, source);
-    } catch (const lamina::InputError&) {
-    }
-    return 0;
+    lamina::JsonSource source;
+    source.name = "fuzz.json";
+    source.directory = directory;
+    return lamina::fuzz::readOrRefuse([&] { (void)lamina::render::parseScene(text, source); });
 }
