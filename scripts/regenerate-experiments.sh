@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Regenerates the reports in docs/experiments/ (about 10 minutes on 2 cores). Run from the
-# repository root after building: bash scripts/regenerate-experiments.sh [build/renderer/lamina]
+# repository root after building: bash scripts/regenerate-experiments.sh [build/app/lamina]
 set -euo pipefail
 cd "$(dirname "$0")/.."
-lamina=${1:-build/renderer/lamina}
+lamina=${1:-build/app/lamina}
 out=docs/experiments
 
 # Error against time: the Cornell box, every integrator, both modes.

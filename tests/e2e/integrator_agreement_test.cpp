@@ -15,11 +15,13 @@
 #include <fstream>
 #include <sstream>
 
-#include "lamina/render/estimator_agreement.h"
+#include "lamina/experiments/estimator_agreement.h"
 #include "render_helpers.h"
 
 namespace lamina::render {
 namespace {
+
+using namespace lamina::experiments;
 
 struct AgreementCase {
     const char* name;

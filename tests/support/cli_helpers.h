@@ -29,7 +29,7 @@ inline CommandRun runLamina(const std::string& args, const std::string& input = 
         redirect = " < " + in.string();
     }
     const std::string cmd =
-        std::string(LAMINA_BINARY_DIR) + "/renderer/lamina " + args + redirect + " 2>&1";
+        std::string(LAMINA_BINARY_DIR) + "/app/lamina " + args + redirect + " 2>&1";
     FILE* pipe = ::popen(cmd.c_str(), "r");
     std::string out;
     std::array<char, 4096> buf{};

@@ -4,10 +4,12 @@
 #include <gtest/gtest.h>
 
 #include "lamina/bsdf/material_builder.h"
-#include "lamina/bsdf/stability_audit.h"
+#include "lamina/experiments/stability_audit.h"
 
 namespace lamina {
 namespace {
+
+using namespace lamina::experiments;
 
 /// Wraps a real BSDF and breaks it on purpose.
 template <SpectrumType S>

@@ -1,0 +1,381 @@
+// `lamina bsdf`: inspect a material outside any scene (docs/bsdf.md, "lamina bsdf").
+//   eval    JSON Lines {"wo": [x, y, z], "wi": [x, y, z]} on stdin -> {"f", "pdf", "pdf_reverse"}
+//   sample  draws wi for one wo           -> one line per sample (JSON Lines or CSV)
+//   albedo  directional albedo for cos theta_o = 0.05 ... 1, reflection and transmission
+//   chi2    the chi-square goodness-of-fit test of sample() against pdf()
+//   plot    a PNG: the lobe in the plane of incidence and a heat map over the hemisphere
+// Directions are in the local frame (z = normal) and are normalised by the tool.
+#include <OpenImageIO/imageio.h>
+
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+#include "lamina/bsdf/material_builder.h"
+#include "lamina/core/chi_square_test.h"
+#include "lamina/core/error.h"
+#include "option_parsing.h"
+
+namespace lamina::app {
+
+namespace {
+
+struct BsdfArgs {
+    std::string material;
+    std::string mode{render::kRenderModeNames.name(render::RenderModeKind::Rgb)};
+    std::string wavelengths = "450,550,650";
+    std::string transport = "radiance";
+    std::string wo = "0,0,1";
+    std::size_t count = 16;
+    std::uint64_t seed = 0;
+    std::string format = "jsonl";
+    std::size_t samples = 1000000;
+    std::string output = "lobe.png";
+};
+
+std::vector<double> parseNumbers(const std::string& text, const std::string& what) {
+    std::vector<double> v;
+    std::stringstream s(text);
+    for (std::string item; std::getline(s, item, ',');) {
+        char* end = nullptr;
+        const double d = std::strtod(item.c_str(), &end);
+        if (item.empty() || *end != '\0' || !std::isfinite(d))
+            throw CLI::ValidationError(what,
+                                       "expected comma-separated numbers, got \"" + text + "\"");
+        v.push_back(d);
+    }
+    return v;
+}
+
+Vec3d parseDirection(const std::string& text, const std::string& what) {
+    const auto v = parseNumbers(text, what);
+    if (v.size() != 3) throw CLI::ValidationError(what, "expected x,y,z");
+    const Vec3d d(v[0], v[1], v[2]);
+    if (glm::length(d) == 0) throw CLI::ValidationError(what, "the direction is zero");
+    return glm::normalize(d);
+}
+
+std::string lobeName(std::uint32_t flags) {
+    std::string s = (flags & kLobeSpecular) ? "specular"
+                    : (flags & kLobeGlossy) ? "glossy"
+                                            : "diffuse";
+    return s + ((flags & kLobeTransmission) ? "_transmission" : "_reflection");
+}
+
+// A spectrum as a JSON array of its first `channels` values.
+template <typename S>
+std::string jsonArray(const S& s, int channels) {
+    std::string out = "[";
+    char buf[32];
+    for (int i = 0; i < channels; ++i) {
+        std::snprintf(buf, sizeof buf, "%.9g", double(s[i]));
+        out += (i ? "," : "") + std::string(buf);
+    }
+    return out + "]";
+}
+
+std::string jsonVec(const Vec3d& v) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "[%.9g,%.9g,%.9g]", v.x, v.y, v.z);
+    return buf;
+}
+
+// Colour map for the heat map: black - red - yellow - white ("hot").
+void hot(double t, float* rgb) {
+    t = std::clamp(t, 0.0, 1.0);
+    rgb[0] = float(std::min(1.0, 3 * t));
+    rgb[1] = float(std::clamp(3 * t - 1, 0.0, 1.0));
+    rgb[2] = float(std::clamp(3 * t - 2, 0.0, 1.0));
+}
+
+template <typename S>
+class BsdfTool {
+  public:
+    BsdfTool(const BsdfArgs& a, std::unique_ptr<Bxdf<S>> bxdf, int channels)
+        : a_(a),
+          bxdf_(std::move(bxdf)),
+          channels_(channels),
+          mode_(a.transport == "importance" ? TransportMode::Importance : TransportMode::Radiance) {
+    }
+
+    void eval() const {
+        std::string line;
+        int lineNo = 0;
+        while (std::getline(std::cin, line)) {
+            ++lineNo;
+            if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+            const JsonSource source{"<stdin> line " + std::to_string(lineNo), "."};
+            const Json j = parseJsonText(line, source);
+            const JsonReader r(j, "", source);
+            r.expectObject();
+            const auto wo = r.requiredArray<3>("wo"), wi = r.requiredArray<3>("wi");
+            r.finish();
+            const Vec3d o = normalized(wo, r, "wo"), i = normalized(wi, r, "wi");
+            const S f = bxdf_->eval(o, i, mode_);
+            std::printf("{\"f\":%s,\"pdf\":%.9g,\"pdf_reverse\":%.9g}\n",
+                        jsonArray(f, channels_).c_str(), bxdf_->pdf(o, i), bxdf_->pdf(i, o));
+        }
+    }
+
+    void sample() const {
+        const Vec3d wo = parseDirection(a_.wo, "--wo");
+        Pcg32 rng(a_.seed);
+        if (a_.format == "csv") {
+            std::printf("wi_x,wi_y,wi_z,pdf,lobe");
+            for (int c = 0; c < channels_; ++c)
+                std::printf(",weight_%d", c);
+            std::printf("\n");
+        }
+        for (std::size_t n = 0; n < a_.count; ++n) {
+            const double uc = rng.nextDouble();
+            const Vec2d u(rng.nextDouble(), rng.nextDouble());
+            const auto s = bxdf_->sample(wo, uc, u, mode_);
+            if (a_.format == "csv") {
+                if (!s) {
+                    std::printf(",,,,none\n");
+                    continue;
+                }
+                std::printf("%.9g,%.9g,%.9g,%.9g,%s", s->wi.x, s->wi.y, s->wi.z, s->pdf,
+                            lobeName(s->flags).c_str());
+                for (int c = 0; c < channels_; ++c)
+                    std::printf(",%.9g", double(s->weight[c]));
+                std::printf("\n");
+            } else if (!s) {
+                std::printf("{\"wi\":null}\n");
+            } else {
+                std::printf("{\"wi\":%s,\"weight\":%s,\"pdf\":%.9g,\"lobe\":\"%s\"}\n",
+                            jsonVec(s->wi).c_str(), jsonArray(s->weight, channels_).c_str(), s->pdf,
+                            lobeName(s->flags).c_str());
+            }
+        }
+    }
+
+    void albedo() const {
+        // Monte Carlo estimate of the directional albedo: the mean of the sample weights,
+        // split by the side wi leaves on, with its standard error per channel.
+        for (int step = 1; step <= 20; ++step) {
+            const double c = 0.05 * step;
+            const Vec3d wo(std::sqrt(std::max(0.0, 1 - c * c)), 0.0, c);
+            Pcg32 rng(a_.seed + std::uint64_t(step));
+            S reflection(0.0), transmission(0.0), sumSq(0.0);
+            for (std::size_t n = 0; n < a_.samples; ++n) {
+                const double uc = rng.nextDouble();
+                const Vec2d u(rng.nextDouble(), rng.nextDouble());
+                const auto s = bxdf_->sample(wo, uc, u, mode_);
+                if (!s) continue;
+                (s->wi.z > 0 ? reflection : transmission) += s->weight;
+                sumSq += s->weight * s->weight;
+            }
+            const double n = double(a_.samples);
+            const S mean = (reflection + transmission) / n;
+            S stderrs;
+            for (int k = 0; k < S::kSize; ++k)
+                stderrs[k] =
+                    std::sqrt(std::max(0.0, double(sumSq[k]) / n - sqr(double(mean[k]))) / n);
+            std::printf(
+                "{\"cos_theta_o\":%.2f,\"reflection\":%s,\"transmission\":%s,\"stderr\":%s}\n", c,
+                jsonArray(reflection / n, channels_).c_str(),
+                jsonArray(transmission / n, channels_).c_str(),
+                jsonArray(stderrs, channels_).c_str());
+        }
+    }
+
+    void chi2() const {
+        const Vec3d wo = parseDirection(a_.wo, "--wo");
+        ChiSquareConfig config;
+        config.sampleCount = a_.samples;
+        config.seed = a_.seed + 1;
+        const ChiSquareResult r = runChiSquareTest(
+            config,
+            [&](Pcg32& rng) -> std::optional<Vec3d> {
+                const double uc = rng.nextDouble();
+                const Vec2d u(rng.nextDouble(), rng.nextDouble());
+                const auto s = bxdf_->sample(wo, uc, u, mode_);
+                if (!s || s->isSpecular()) return std::nullopt;
+                return s->wi;
+            },
+            [&](const Vec3d& wi) { return bxdf_->pdf(wo, wi); });
+        std::printf(
+            "chi-square: %s (p-value %.4g, statistic %.4g, %d degrees of freedom, "
+            "significance %.3g, %zu valid samples, pdf integral %.4f)\n",
+            r.passed ? "accepted" : "REJECTED", r.pValue, r.statistic, r.degreesOfFreedom, r.alpha,
+            r.validSamples, r.pdfIntegral);
+        if (!r.passed) std::printf("%s\n", r.message.c_str());
+    }
+
+    void plot() const {
+        const Vec3d wo = parseDirection(a_.wo, "--wo");
+        constexpr int size = 400;
+        std::vector<float> img(std::size_t(2 * size) * size * 3, 1.0f);
+        auto put = [&](int x, int y, float r, float g, float b) {
+            if (x < 0 || y < 0 || x >= 2 * size || y >= size) return;
+            float* p = &img[(std::size_t(y) * 2 * size + std::size_t(x)) * 3];
+            p[0] = r;
+            p[1] = g;
+            p[2] = b;
+        };
+        auto value = [&](const Vec3d& wi) {
+            return std::max(0.0, double(bxdf_->eval(wo, wi, mode_).average()));
+        };
+        // Left: the plane of incidence (x-z), f cos over theta_i in [-180, 180] degrees.
+        const int steps = 2000;
+        std::vector<double> polar(steps);
+        double peak = 0;
+        for (int k = 0; k < steps; ++k) {
+            const double t = -kPi<double> + 2 * kPi<double> * (k + 0.5) / steps;
+            polar[std::size_t(k)] = value(Vec3d(std::sin(t), 0.0, std::cos(t)));
+            peak = std::max(peak, polar[std::size_t(k)]);
+        }
+        const double cx = size / 2.0, cy = size / 2.0, radius = size * 0.45;
+        for (int k = 0; k < 720; ++k) {  // unit circle and the surface line
+            const double t = 2 * kPi<double> * k / 720;
+            put(int(cx + radius * std::cos(t)), int(cy + radius * std::sin(t)), 0.7f, 0.7f, 0.7f);
+        }
+        for (int x = int(cx - radius); x <= int(cx + radius); ++x)
+            put(x, int(cy), 0.4f, 0.4f, 0.4f);
+        for (int k = 0; k < 200; ++k) {  // wo
+            const double s = radius * k / 200.0;
+            put(int(cx + s * wo.x), int(cy - s * wo.z), 0.1f, 0.3f, 0.9f);
+        }
+        for (int k = 0; k < steps; ++k) {
+            const double t = -kPi<double> + 2 * kPi<double> * (k + 0.5) / steps;
+            const double r = peak > 0 ? radius * polar[std::size_t(k)] / peak : 0;
+            for (int dx = 0; dx < 2; ++dx)
+                put(int(cx + r * std::sin(t)) + dx, int(cy - r * std::cos(t)), 0.85f, 0.1f, 0.1f);
+        }
+        // Right: a heat map of f cos over the projected upper hemisphere (x, y) -> wi.
+        double peak2 = 0;
+        std::vector<double> heat(std::size_t(size) * size, -1.0);
+        for (int y = 0; y < size; ++y)
+            for (int x = 0; x < size; ++x) {
+                const double px = (x + 0.5) / size * 2 - 1, py = 1 - (y + 0.5) / size * 2;
+                const double r2 = px * px + py * py;
+                if (r2 >= 1) continue;
+                const double v = value(Vec3d(px, py, std::sqrt(1 - r2)));
+                heat[std::size_t(y) * size + std::size_t(x)] = v;
+                peak2 = std::max(peak2, v);
+            }
+        for (int y = 0; y < size; ++y)
+            for (int x = 0; x < size; ++x) {
+                const double v = heat[std::size_t(y) * size + std::size_t(x)];
+                float rgb[3] = {1, 1, 1};
+                if (v >= 0) hot(peak2 > 0 ? v / peak2 : 0, rgb);
+                put(size + x, y, rgb[0], rgb[1], rgb[2]);
+            }
+        auto out = OIIO::ImageOutput::create(a_.output);
+        if (!out) throw InputError(a_.output + ": cannot write this image format (use .png)");
+        OIIO::ImageSpec spec(2 * size, size, 3, OIIO::TypeDesc::UINT8);
+        if (!out->open(a_.output, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, img.data()) ||
+            !out->close())
+            throw InputError(a_.output + ": cannot write: " + out->geterror());
+        std::fprintf(stderr,
+                     "%s: left, f cos in the plane of incidence (wo in blue, peak %.4g); "
+                     "right, f cos over the upper hemisphere (peak %.4g)\n",
+                     a_.output.c_str(), peak, peak2);
+    }
+
+  private:
+    static Vec3d normalized(const std::array<double, 3>& v, const JsonReader& r, const char* key) {
+        const Vec3d d(v[0], v[1], v[2]);
+        if (glm::length(d) == 0) r.failAt(key, "the direction is zero");
+        return glm::normalize(d);
+    }
+
+    const BsdfArgs& a_;
+    std::unique_ptr<Bxdf<S>> bxdf_;
+    int channels_;
+    TransportMode mode_;
+};
+
+template <typename Action>
+void withTool(const BsdfArgs& a, Action action) {
+    const MaterialDesc desc = parseMaterialArgument(a.material);
+    if (parseName(render::kRenderModeNames, a.mode, "mode", "--mode") ==
+        render::RenderModeKind::Spectral) {
+        const auto nm = parseNumbers(a.wavelengths, "--wavelengths");
+        if (nm.empty() || nm.size() > 4)
+            throw CLI::ValidationError("--wavelengths", "expected 1 to 4 wavelengths in nm");
+        std::array<double, 4> l{};
+        for (std::size_t i = 0; i < 4; ++i) {
+            l[i] = nm[std::min(i, nm.size() - 1)];
+            if (l[i] < kLambdaMin || l[i] > kLambdaMax)
+                throw CLI::ValidationError("--wavelengths",
+                                           "wavelengths must lie in [360, 830] nm");
+        }
+        auto lambda = SampledWavelengths<double>::fixed(l);
+        const SpectrumContext<SampledSpectrum<double>> context{lambda};
+        BsdfTool<SampledSpectrum<double>> tool(a, buildBxdf(desc, context), int(nm.size()));
+        action(tool);
+    } else {
+        const SpectrumContext<Rgb<double>> context;
+        BsdfTool<Rgb<double>> tool(a, buildBxdf(desc, context), 3);
+        action(tool);
+    }
+}
+
+void addCommon(CLI::App* cmd, BsdfArgs& a) {
+    cmd->add_option("material", a.material,
+                    "Material: a JSON object literal or @file.json (docs/bsdf.md)")
+        ->required();
+    cmd->add_option("--mode", a.mode, "rgb or spectral")
+        ->check(CLI::IsMember(render::kRenderModeNames.names()))
+        ->capture_default_str();
+    cmd->add_option("--wavelengths", a.wavelengths, "Spectral mode: 1-4 wavelengths in nm")
+        ->capture_default_str();
+    cmd->add_option("--transport", a.transport, "radiance or importance (adjoint)")
+        ->check(CLI::IsMember({"radiance", "importance"}))
+        ->capture_default_str();
+}
+
+}  // namespace
+
+void registerBsdfCommand(CLI::App& app) {
+    auto a = std::make_shared<BsdfArgs>();
+    CLI::App* bsdf =
+        app.add_subcommand("bsdf", "Inspect a material: eval, sample, albedo, chi2, plot");
+    bsdf->require_subcommand(1);
+
+    CLI::App* eval = bsdf->add_subcommand("eval",
+                                          "Read JSON Lines {\"wo\":[x,y,z],\"wi\":[x,y,z]} on "
+                                          "stdin; print f*|cos_i|, pdf, pdf_reverse");
+    addCommon(eval, *a);
+    eval->callback([a] { withTool(*a, [](auto& t) { t.eval(); }); });
+
+    CLI::App* sample = bsdf->add_subcommand("sample", "Draw directions wi for one wo");
+    addCommon(sample, *a);
+    sample->add_option("--wo", a->wo, "Outgoing direction x,y,z (local frame)")->required();
+    sample->add_option("--count", a->count, "Number of samples")->check(CLI::Range(1, 100000000));
+    sample->add_option("--seed", a->seed, "Random seed")->capture_default_str();
+    sample->add_option("--format", a->format, "jsonl or csv")
+        ->check(CLI::IsMember({"jsonl", "csv"}))
+        ->capture_default_str();
+    sample->callback([a] { withTool(*a, [](auto& t) { t.sample(); }); });
+
+    CLI::App* albedo = bsdf->add_subcommand(
+        "albedo", "Directional albedo (reflection, transmission) for cos theta_o = 0.05 ... 1");
+    addCommon(albedo, *a);
+    albedo->add_option("--samples", a->samples, "Samples per angle")
+        ->check(CLI::Range(100, 1000000000))
+        ->capture_default_str();
+    albedo->add_option("--seed", a->seed, "Random seed")->capture_default_str();
+    albedo->callback([a] { withTool(*a, [](auto& t) { t.albedo(); }); });
+
+    CLI::App* chi2 = bsdf->add_subcommand("chi2", "Chi-square test of sample() against pdf()");
+    addCommon(chi2, *a);
+    chi2->add_option("--wo", a->wo, "Outgoing direction x,y,z (local frame)")->required();
+    chi2->add_option("--samples", a->samples, "Number of samples")
+        ->check(CLI::Range(1000, 1000000000))
+        ->capture_default_str();
+    chi2->add_option("--seed", a->seed, "Random seed")->capture_default_str();
+    chi2->callback([a] { withTool(*a, [](auto& t) { t.chi2(); }); });
+
+    CLI::App* plot = bsdf->add_subcommand("plot", "Picture of the lobe (PNG)");
+    addCommon(plot, *a);
+    plot->add_option("--wo", a->wo, "Outgoing direction x,y,z (local frame)")->required();
+    plot->add_option("-o,--output", a->output, "Output PNG")->capture_default_str();
+    plot->callback([a] { withTool(*a, [](auto& t) { t.plot(); }); });
+}
+
+}  // namespace lamina::app

@@ -1,0 +1,103 @@
+// `lamina info SCENE`: what a scene needs before it is rendered: geometry counts, materials
+// with their active lobes, lights, spectral data, and the memory the geometry takes.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+
+#include "lamina/bsdf/material_builder.h"
+#include "lamina/render/scene_description.h"
+
+namespace lamina::app {
+
+namespace {
+
+std::string lobes(std::uint32_t f) {
+    std::string s;
+    auto add = [&](std::uint32_t bits, const char* name) {
+        if ((f & bits) == bits) s += (s.empty() ? "" : ", ") + std::string(name);
+    };
+    add(kLobeDiffuseReflection, "diffuse reflection");
+    add(kLobeGlossyReflection, "glossy reflection");
+    add(kLobeSpecularReflection, "specular reflection");
+    add(kLobeGlossyTransmission, "glossy transmission");
+    add(kLobeSpecularTransmission, "specular transmission");
+    return s.empty() ? "none (black)" : s;
+}
+
+void collectSpectral(const MaterialDesc& m, std::vector<std::string>& out) {
+    if (const auto* c = std::get_if<ConductorMaterial>(&m.model))
+        if (c->optics.spectrum) out.push_back(c->optics.spectrum->name() + " (n, k)");
+    if (const auto* d = std::get_if<DielectricMaterial>(&m.model))
+        if (d->spectrum) out.push_back(d->spectrum->name() + " (dispersion)");
+    if (const auto* x = std::get_if<MixMaterial>(&m.model)) {
+        collectSpectral(*x->a, out);
+        collectSpectral(*x->b, out);
+    }
+}
+
+void run(const std::string& file) {
+    const render::SceneDesc scene = render::loadScene(file);
+    std::size_t triangles = 0, vertices = 0, bytes = 0, emitters = 0;
+    std::vector<bool> used(scene.materials.size(), false);
+    for (const auto& m : scene.meshes) {
+        triangles += m.triangles.size();
+        vertices += m.positions.size();
+        bytes += m.positions.size() * sizeof(m.positions[0]) + m.normals.size() * 12 +
+                 m.uvs.size() * 8 + m.triangles.size() * 12;
+        if (m.emission) emitters += m.triangles.size();
+        used[std::size_t(m.material)] = true;
+    }
+    for (const auto& s : scene.spheres) {
+        if (s.emission) ++emitters;
+        used[std::size_t(s.material)] = true;
+    }
+    for (const auto& d : scene.disks) {
+        if (d.emission) ++emitters;
+        used[std::size_t(d.material)] = true;
+    }
+    // Embree's BVH over triangles takes roughly 64 bytes per primitive (a rough guide).
+    bytes += (triangles + scene.spheres.size()) * 64;
+    std::printf("scene: %s\n", file.c_str());
+    std::printf("image: %dx%d, %d spp, max depth %d, %s sampler, seed %llu\n", scene.film.width,
+                scene.film.height, scene.settings.spp, scene.settings.maxDepth,
+                std::string(render::kSamplerNames.name(scene.settings.sampler)).c_str(),
+                static_cast<unsigned long long>(scene.settings.seed));
+    std::printf(
+        "geometry: %zu meshes (%zu triangles, %zu vertices), %zu spheres, %zu disks, "
+        "~%.1f MiB\n",
+        scene.meshes.size(), triangles, vertices, scene.spheres.size(), scene.disks.size(),
+        double(bytes) / (1 << 20));
+    std::printf("lights: %zu emitting primitives, %zu other lights\n", emitters,
+                scene.lights.size());
+    std::printf("materials:\n");
+    std::vector<std::string> spectral;
+    const SpectrumContext<Rgb<float>> context;
+    for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+        const auto bsdf = buildBxdf(scene.materials[i], context);
+        std::printf("  %s: %s; lobes: %s%s\n", scene.materialNames[i].c_str(),
+                    scene.materials[i].type.c_str(), lobes(bsdf->flags()).c_str(),
+                    used[i] ? "" : " (unused)");
+        if (used[i]) collectSpectral(scene.materials[i], spectral);
+    }
+    for (const auto& name : scene.unusedMaterialNames)
+        std::printf("  %s: unused (never loaded)\n", name.c_str());
+    std::printf("textures: %zu loaded", scene.textures.size());
+    for (const auto& name : scene.unusedTextureNames)
+        std::printf(", %s unused (never loaded)", name.c_str());
+    std::printf("\n");
+    std::printf("spectral data: %s\n", spectral.empty() ? "none" : "");
+    for (const auto& s : spectral)
+        std::printf("  %s\n", s.c_str());
+}
+
+}  // namespace
+
+void registerInfoCommand(CLI::App& app) {
+    auto file = std::make_shared<std::string>();
+    CLI::App* cmd = app.add_subcommand("info",
+                                       "Print what a scene needs: geometry, materials "
+                                       "and their lobes, lights, spectral data, memory");
+    cmd->add_option("scene", *file, "Scene file")->required()->check(CLI::ExistingFile);
+    cmd->callback([file] { run(*file); });
+}
+
+}  // namespace lamina::app

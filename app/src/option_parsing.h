@@ -1,0 +1,88 @@
+// Option values and options the commands share: comma-separated lists, names looked up in an
+// enumeration's table, image sizes, and the render overrides (--resolution, --max-depth,
+// --threads) with one help text each. Errors are CLI::ValidationError naming the option (exit
+// status 2).
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "lamina/core/name_table.h"
+#include "lamina/render/renderer.h"
+
+namespace lamina::app {
+
+inline std::vector<std::string> splitList(const std::string& list) {
+    std::vector<std::string> out;
+    std::stringstream in(list);
+    for (std::string item; std::getline(in, item, ',');)
+        if (!item.empty()) out.push_back(item);
+    return out;
+}
+
+/// The value called `name` in `table`; `what` names the kind in the message ("integrator"),
+/// if the option's name does not say it.
+template <typename E, std::size_t N>
+E parseName(const NameTable<E, N>& table, const std::string& name, const std::string& what,
+            const std::string& option) {
+    if (const auto value = table.find(name)) return *value;
+    throw CLI::ValidationError(option, "unknown " + (what.empty() ? "" : what + " ") + "\"" + name +
+                                           "\"; expected " + table.list());
+}
+
+/// A comma-separated list of names of `table`.
+template <typename E, std::size_t N>
+std::vector<E> parseNameList(const NameTable<E, N>& table, const std::string& list,
+                             const std::string& what, const std::string& option) {
+    std::vector<E> out;
+    for (const std::string& name : splitList(list))
+        out.push_back(parseName(table, name, what, option));
+    return out;
+}
+
+/// "WIDTHxHEIGHT".
+inline std::pair<int, int> parseResolution(const std::string& text) {
+    int w = 0, h = 0;
+    char x = 0;
+    std::istringstream in(text);
+    if (!(in >> w >> x >> h) || x != 'x' || w < 1 || h < 1 || !in.eof())
+        throw CLI::ValidationError("--resolution", "expected WIDTHxHEIGHT, e.g. 512x512");
+    return {w, h};
+}
+
+/// The options that override a scene's render settings, shared by the commands that render.
+struct RenderOverrides {
+    std::string resolution;
+    int maxDepth = 0;
+    int threads = 0;
+
+    void applyTo(render::RenderOptions& o) const {
+        o.threads = threads;
+        if (maxDepth > 0) o.maxDepth = maxDepth;
+        if (!resolution.empty()) o.resolution = parseResolution(resolution);
+    }
+};
+
+inline void addResolutionOption(CLI::App* cmd, RenderOverrides& o) {
+    cmd->add_option("--resolution", o.resolution, "Image size WIDTHxHEIGHT (overrides)");
+}
+inline void addMaxDepthOption(CLI::App* cmd, RenderOverrides& o) {
+    cmd->add_option("--max-depth", o.maxDepth, "Maximum scattering events per path")
+        ->check(CLI::Range(1, 1024));
+}
+inline void addThreadsOption(CLI::App* cmd, RenderOverrides& o) {
+    cmd->add_option("--threads", o.threads, "Worker threads (default: all cores)")
+        ->check(CLI::Range(1, 1024));
+}
+
+/// An experiment's output directory (-o, --output), where its report goes.
+inline void addOutputDirectoryOption(CLI::App* cmd, std::string& directory,
+                                     const std::string& help = "Output directory") {
+    cmd->add_option("-o,--output", directory, help)->required();
+}
+
+}  // namespace lamina::app

@@ -1,0 +1,78 @@
+// Error against render time (`lamina convergence`): every combination of integrator and render
+// mode renders progressively for the same time; after every pass the image is compared with a
+// reference (relMSE with epsilon 1e-2, MSE, MAE). The report: convergence.csv,
+// convergence.svg (log-log relMSE against seconds), summary.md (samples per second, final
+// errors, the fitted slope of log relMSE against log seconds, which is -1 for an unbiased
+// Monte Carlo estimator, and the time each needs to reach given error levels).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "lamina/experiments/image_metrics.h"
+#include "lamina/experiments/progress.h"
+#include "lamina/experiments/report.h"
+#include "lamina/render/renderer.h"
+
+namespace lamina::experiments {
+
+/// A relMSE level of the time-to-error columns, with its label as written ("1e-2").
+struct ErrorLevel {
+    double relmse;
+    std::string label;
+};
+
+struct ConvergenceInputs {
+    std::string scene;  ///< scene file
+    std::vector<render::IntegratorKind> integrators = {
+        render::IntegratorKind::Path, render::IntegratorKind::Light, render::IntegratorKind::Bdpt};
+    std::vector<render::RenderModeKind> modes = {render::RenderModeKind::Rgb};
+    double seconds = 10;  ///< render time of each combination
+    std::vector<ErrorLevel> levels = {{1e-2, "1e-2"}, {1e-3, "1e-3"}};
+    /// A reference EXR for every mode; empty: one reference per mode is rendered first.
+    std::string reference;
+    render::IntegratorKind referenceIntegrator = render::IntegratorKind::Path;
+    double referenceSeconds = 0;  ///< of each rendered reference; 0: 20 x seconds
+    /// Applied to every render (threads, sampler, max depth, resolution); the mode, the
+    /// integrator and the time are set per render, and a reference always uses Sobol and a
+    /// seed of its own.
+    render::RenderOptions overrides;
+    ProgressSink progress;
+};
+
+/// A reference the experiment rendered (one per mode).
+struct RenderedReference {
+    render::RenderModeKind mode;
+    render::RenderResult render;
+};
+
+/// One combination's error after every pass.
+struct ConvergenceCurve {
+    render::IntegratorKind integrator;
+    render::RenderModeKind mode;
+    ErrorLog log;
+    double pathsPerSecond = 0;
+    int spp = 0;
+};
+
+struct ConvergenceResult {
+    ConvergenceInputs inputs;
+    std::vector<RenderedReference> references;  ///< empty when the reference was given
+    std::vector<ConvergenceCurve> curves;       ///< modes outer, integrators inner
+};
+
+/// Least-squares slope of log(relMSE) against log(seconds) over the passes after the first
+/// tenth of the time (the first passes are dominated by start-up costs); NAN with fewer than
+/// three such passes.
+double fittedSlope(const std::vector<ErrorLog::Row>& rows);
+
+/// The first time relMSE reaches `level` (log-log interpolation between passes), or NAN.
+double timeToReach(const std::vector<ErrorLog::Row>& rows, double level);
+
+ConvergenceResult runConvergence(const ConvergenceInputs& inputs);
+
+/// convergence.csv, convergence.svg, the references rendered (reference_MODE.exr) and the
+/// summary.
+void writeConvergenceReport(const ConvergenceResult& result, Report& report);
+
+}  // namespace lamina::experiments

@@ -1,0 +1,67 @@
+// Error metrics between two images of the same size (the experiments' yardsticks), over the
+// RGB channels of every pixel (N = 3 x pixels):
+//   mse    = mean((a - b)^2)              rmse = sqrt(mse)
+//   relmse = mean((a - b)^2 / (b^2 + eps)), eps = 1e-2 (b is the reference; the epsilon keeps
+//            black reference pixels from dominating, as in Rousselle et al. 2011's relMSE)
+//   mae    = mean(|a - b|)                max  = max |a - b|
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "lamina/core/name_table.h"
+#include "lamina/render/film.h"
+#include "lamina/render/image_output.h"
+
+namespace lamina::experiments {
+
+inline constexpr double kRelMseEpsilon = 1e-2;
+
+struct ImageMetrics {
+    double mse = 0, rmse = 0, relmse = 0, mae = 0, max = 0;
+};
+
+enum class Metric { Mse, Rmse, Relmse, Mae, Max };
+inline constexpr NameTable kMetricNames{
+    std::array{NameEntry{Metric::Mse, "mse"}, NameEntry{Metric::Rmse, "rmse"},
+               NameEntry{Metric::Relmse, "relmse"}, NameEntry{Metric::Mae, "mae"},
+               NameEntry{Metric::Max, "max"}}};
+
+/// One of the metrics by its name in the table.
+double metricValue(const ImageMetrics& metrics, Metric metric);
+
+/// InputError if the sizes differ.
+ImageMetrics compareImages(const render::RgbImage& a, const render::RgbImage& reference);
+
+/// A false-colour PNG of the mean absolute channel difference |a - b| (black, blue, red,
+/// yellow as it grows to `scale`).
+void writeDifferenceImage(const std::filesystem::path& path, const render::RgbImage& a,
+                          const render::RgbImage& b, double scale);
+
+/// The film's current image (linear Rec.709) as an RgbImage.
+render::RgbImage filmImage(const render::Film& film);
+
+/// Error against a reference after every pass of a render (render --error-log, convergence):
+/// one row per pass of seconds, samples per pixel, MSE, relMSE and MAE.
+class ErrorLog {
+  public:
+    struct Row {
+        double seconds;
+        int spp;
+        ImageMetrics metrics;
+    };
+    explicit ErrorLog(render::RgbImage reference) : reference_(std::move(reference)) {}
+    /// Measures the film; InputError if its size differs from the reference's.
+    void record(double seconds, int spp, const render::Film& film);
+    const std::vector<Row>& rows() const { return rows_; }
+    const render::RgbImage& reference() const { return reference_; }
+    /// CSV with a header: seconds,spp,mse,relmse,mae (prefixed by `columns` when given).
+    static std::string csvHeader(const std::string& columns = "");
+    std::string csvRows(const std::string& prefix = "") const;
+
+  private:
+    render::RgbImage reference_;
+    std::vector<Row> rows_;
+};
+
+}  // namespace lamina::experiments

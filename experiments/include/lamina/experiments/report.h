@@ -1,0 +1,46 @@
+// Where an experiment's report goes: one output directory with summary.md, CSV tables,
+// figures and images, and the console (stdout) that echoes the summary. Every experiment
+// writes its report through one of these, so they share one ending: finish() writes
+// summary.md and prints it.
+#pragma once
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace lamina::experiments {
+
+class SvgPlot;
+
+class Report {
+  public:
+    /// `console`: where print() and finish() echo (nullptr: nowhere). The directory is
+    /// created when the first file is written.
+    explicit Report(std::filesystem::path directory, std::FILE* console = stdout)
+        : directory_(std::move(directory)), console_(console) {}
+
+    const std::filesystem::path& directory() const { return directory_; }
+    /// The path of a file of the report (the directory created if need be).
+    std::filesystem::path file(const std::string& name) const;
+
+    /// Text for the console now (an experiment whose output is a running log).
+    void print(std::string_view text) const;
+    /// Appends Markdown to the summary.
+    void addSummary(std::string_view markdown) { summary_ += markdown; }
+    const std::string& summary() const { return summary_; }
+
+    /// Writes a text file (a CSV table); InputError if it cannot be written.
+    void writeText(const std::string& name, std::string_view text) const;
+    void writeFigure(const std::string& name, const SvgPlot& plot) const;
+
+    /// The ending: summary.md, and the summary on the console. Nothing without a summary.
+    void finish() const;
+
+  private:
+    std::filesystem::path directory_;
+    std::FILE* console_;
+    std::string summary_;
+};
+
+}  // namespace lamina::experiments

@@ -1,0 +1,96 @@
+#include "lamina/experiments/convergence.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "lamina/experiments/text_format.h"
+
+namespace lamina::experiments {
+
+double fittedSlope(const std::vector<ErrorLog::Row>& rows) {
+    if (rows.empty()) return NAN;
+    const double from = 0.1 * rows.back().seconds;
+    double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (const auto& r : rows) {
+        if (r.seconds < from || !(r.metrics.relmse > 0) || !(r.seconds > 0)) continue;
+        const double x = std::log(r.seconds), y = std::log(r.metrics.relmse);
+        n += 1;
+        sx += x;
+        sy += y;
+        sxx += x * x;
+        sxy += x * y;
+    }
+    const double den = n * sxx - sx * sx;
+    if (n < 3 || !(std::abs(den) > 0)) return NAN;
+    return (n * sxy - sx * sy) / den;
+}
+
+double timeToReach(const std::vector<ErrorLog::Row>& rows, double level) {
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        if (!(rows[i].metrics.relmse <= level)) continue;
+        if (i == 0) return rows[0].seconds;
+        const double x0 = std::log(rows[i - 1].seconds), x1 = std::log(rows[i].seconds);
+        const double y0 = std::log(rows[i - 1].metrics.relmse),
+                     y1 = std::log(rows[i].metrics.relmse);
+        const double t = y1 != y0 ? (std::log(level) - y0) / (y1 - y0) : 1.0;
+        return std::exp(x0 + std::clamp(t, 0.0, 1.0) * (x1 - x0));
+    }
+    return NAN;
+}
+
+ConvergenceResult runConvergence(const ConvergenceInputs& in) {
+    const render::SceneDesc scene = render::loadScene(in.scene);
+    ConvergenceResult result{in, {}, {}};
+
+    // One reference per mode (the two modes converge to slightly different images), unless
+    // the caller gives one.
+    std::map<render::RenderModeKind, render::RgbImage> references;
+    if (!in.reference.empty()) {
+        const render::RgbImage ref = render::readRgbImage(in.reference);
+        for (const render::RenderModeKind m : in.modes)
+            references[m] = ref;
+    } else {
+        const double refSeconds = in.referenceSeconds > 0 ? in.referenceSeconds : 20 * in.seconds;
+        for (const render::RenderModeKind m : in.modes) {
+            render::RenderOptions o = in.overrides;
+            o.mode = m;
+            o.integrator = in.referenceIntegrator;
+            o.sampler = render::SamplerKind::Sobol;
+            o.seconds = refSeconds;
+            // Its own seed: with the measured renders' seed, their first samples would be the
+            // reference's and their error would look smaller than it is.
+            o.seed = (scene.settings.seed + 0x5eed) & 0x7fffffffu;
+            tell(in.progress,
+                 formatText(
+                     "rendering the %s reference (%s integrator, %.0f s)...\n",
+                     std::string(render::kRenderModeNames.name(m)).c_str(),
+                     std::string(render::kIntegratorNames.name(in.referenceIntegrator)).c_str(),
+                     refSeconds));
+            render::RenderResult r = render::renderScene(scene, o);
+            references[m] = filmImage(*r.film);
+            result.references.push_back({m, std::move(r)});
+        }
+    }
+
+    for (const render::RenderModeKind m : in.modes)
+        for (const render::IntegratorKind i : in.integrators) {
+            render::RenderOptions o = in.overrides;
+            o.mode = m;
+            o.integrator = i;
+            o.seconds = in.seconds;
+            ErrorLog log(references[m]);
+            tell(in.progress,
+                 formatText("%s, %s mode: %.3g s...\n",
+                            std::string(render::kIntegratorNames.name(i)).c_str(),
+                            std::string(render::kRenderModeNames.name(m)).c_str(), in.seconds));
+            const render::RenderResult r =
+                render::renderScene(scene, o, [&](const render::RenderProgress& p) {
+                    log.record(p.seconds, p.sppDone, *p.film);
+                });
+            result.curves.push_back({i, m, std::move(log), double(r.paths) / r.seconds, r.spp});
+        }
+    return result;
+}
+
+}  // namespace lamina::experiments

@@ -1,0 +1,115 @@
+// The report of `lamina convergence`: convergence.csv, convergence.svg, reference_MODE.exr
+// for each rendered reference, and summary.md.
+#include <cmath>
+#include <sstream>
+
+#include "lamina/experiments/convergence.h"
+#include "lamina/experiments/svg_plot.h"
+#include "lamina/experiments/text_format.h"
+#include "lamina/render/image_output.h"
+
+namespace lamina::experiments {
+
+namespace {
+
+std::string nameOf(render::IntegratorKind kind) {
+    return std::string(render::kIntegratorNames.name(kind));
+}
+std::string nameOf(render::RenderModeKind mode) {
+    return std::string(render::kRenderModeNames.name(mode));
+}
+
+std::string formatSeconds(double s, double budget) {
+    return std::isnan(s) ? formatText("> %.3g s", budget) : formatText("%.3g s", s);
+}
+
+/// Writes the rendered references and says where the reference came from.
+std::string writeReferences(const ConvergenceResult& result, const Report& report) {
+    const ConvergenceInputs& in = result.inputs;
+    if (!in.reference.empty()) return "reference: " + in.reference + " (given) for every mode";
+    std::string note;
+    for (const RenderedReference& ref : result.references) {
+        const std::string mode = nameOf(ref.mode), integrator = nameOf(in.referenceIntegrator);
+        render::ImageMetadata meta;
+        meta.strings["integrator"] = integrator;
+        meta.strings["mode"] = mode;
+        meta.ints["spp"] = ref.render.spp;
+        render::writeExr(report.file("reference_" + mode + ".exr"), *ref.render.film, false, meta);
+        note +=
+            (note.empty() ? "" : "; ") +
+            formatText(
+                "reference_%s.exr: %s integrator, %s mode, %d spp (Sobol, its own seed) in "
+                "%.1f s",
+                mode.c_str(), integrator.c_str(), mode.c_str(), ref.render.spp, ref.render.seconds);
+    }
+    return note;
+}
+
+void writeCsv(const ConvergenceResult& result, const Report& report) {
+    std::string csv = ErrorLog::csvHeader("integrator,mode");
+    for (const ConvergenceCurve& c : result.curves)
+        csv += c.log.csvRows(nameOf(c.integrator) + "," + nameOf(c.mode));
+    report.writeText("convergence.csv", csv);
+}
+
+void writePlot(const ConvergenceResult& result, const Report& report) {
+    const ConvergenceInputs& in = result.inputs;
+    SvgPlot plot("relMSE against render time: " + std::filesystem::path(in.scene).stem().string(),
+                 "seconds", "relMSE (epsilon 1e-2)");
+    plot.setLogX(true);
+    plot.setLogY(true);
+    for (const ConvergenceCurve& c : result.curves) {
+        const std::string mode = nameOf(c.mode);
+        SvgPlot::Series s;
+        s.name = nameOf(c.integrator) + (in.modes.size() > 1 ? " " + mode : "");
+        s.dashed = c.mode == render::RenderModeKind::Spectral;
+        s.markers = true;
+        for (const auto& r : c.log.rows()) {
+            s.x.push_back(r.seconds);
+            s.y.push_back(r.metrics.relmse);
+        }
+        plot.add(std::move(s));
+    }
+    report.writeFigure("convergence.svg", plot);
+}
+
+std::string summary(const ConvergenceResult& result, const std::string& referenceNote) {
+    const ConvergenceInputs& in = result.inputs;
+    std::ostringstream md;
+    md << "# Convergence: " << in.scene << "\n\n"
+       << referenceNote << ". Each combination rendered for " << in.seconds
+       << " s; relMSE = mean((x - ref)^2 / (ref^2 + 1e-2)) over the RGB channels.\n\n"
+       << "| integrator | mode | samples/s | spp | relMSE | MSE | slope |";
+    for (const ErrorLevel& l : in.levels)
+        md << " time to relMSE " << l.label << " |";
+    md << "\n|---|---|---|---|---|---|---|";
+    for (std::size_t k = 0; k < in.levels.size(); ++k)
+        md << "---|";
+    md << "\n";
+    for (const ConvergenceCurve& c : result.curves) {
+        const auto& rows = c.log.rows();
+        const ErrorLog::Row last = rows.empty() ? ErrorLog::Row{0, 0, {}} : rows.back();
+        md << formatText("| %s | %s | %.3g | %d | %.4g | %.4g | %.2f |",
+                         nameOf(c.integrator).c_str(), nameOf(c.mode).c_str(), c.pathsPerSecond,
+                         c.spp, last.metrics.relmse, last.metrics.mse, fittedSlope(rows));
+        for (const ErrorLevel& l : in.levels)
+            md << " " << formatSeconds(timeToReach(rows, l.relmse), in.seconds) << " |";
+        md << "\n";
+    }
+    md << "\nThe slope is the least-squares fit of log relMSE against log seconds after the "
+          "first tenth of the time: -1 for an unbiased estimator whose error is all variance; "
+          "flatter once the reference's own error (or a bias) dominates.\n\n"
+       << "![relMSE against time](convergence.svg)\n";
+    return md.str();
+}
+
+}  // namespace
+
+void writeConvergenceReport(const ConvergenceResult& result, Report& report) {
+    const std::string referenceNote = writeReferences(result, report);
+    writeCsv(result, report);
+    writePlot(result, report);
+    report.addSummary(summary(result, referenceNote));
+}
+
+}  // namespace lamina::experiments

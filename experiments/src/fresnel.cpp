@@ -1,0 +1,147 @@
+#include "lamina/experiments/fresnel.h"
+
+#include <cmath>
+
+#include "lamina/bsdf/fresnel.h"
+#include "lamina/core/error.h"
+#include "lamina/spectral/color_difference.h"
+#include "lamina/spectral/color_space.h"
+#include "lamina/spectral/ior_spectrum.h"
+#include "lamina/spectral/rgb_to_spectrum.h"
+
+namespace lamina::experiments {
+
+namespace {
+
+/// The exact reflectance of an interface from air at one wavelength.
+double exactReflectance(const IorSpectrum& ior, double nm, double cosTheta) {
+    const double k = ior.k(nm);
+    if (k > 0) return fresnelConductor(cosTheta, ior.n(nm), k);
+    return fresnelDielectric(cosTheta, ior.n(nm));
+}
+
+bool isConductor(const IorSpectrum& ior) {
+    for (double nm = 380; nm <= 780; nm += 10)
+        if (ior.k(nm) > 0) return true;
+    return false;
+}
+
+IorSpectrum loadMaterial(const std::string& name) {
+    if (auto ior = namedIor(name)) return *ior;
+    if (std::filesystem::exists(name)) return loadIorFile(name);
+    std::string known;
+    for (const auto& m : namedMetalNames())
+        known += m + " ";
+    for (const auto& g : namedGlassNames())
+        known += g + " ";
+    throw InputError("unknown material \"" + name + "\": expected a metal or glass name (" + known +
+                     ") or an n/k file (YAML or CSV)");
+}
+
+double cosOf(int degrees) {
+    return degrees == 90 ? 0.0 : std::cos(double(degrees) * kPi<double> / 180.0);
+}
+
+WavelengthCurve exactCurve(const IorSpectrum& ior, double nm) {
+    WavelengthCurve c{nm, {}};
+    for (int a = 0; a < kFresnelAngles; ++a)
+        c.reflectance.push_back(exactReflectance(ior, nm, cosOf(a)));
+    return c;
+}
+
+FresnelMaterial analyse(const std::string& materialName) {
+    const IorSpectrum ior = loadMaterial(materialName);
+    const bool conductor = isConductor(ior);
+    FresnelMaterial result;
+    result.stem = std::filesystem::path(materialName).stem().string();
+    result.name = ior.name();
+
+    FresnelModel exact{"exact (spectral)", {}};
+    for (int a = 0; a < kFresnelAngles; ++a) {
+        const double c = cosOf(a);
+        exact.rgb.push_back(
+            reflectanceColor([&](double nm) { return exactReflectance(ior, nm, c); }));
+    }
+    const Rgb<double> f0 = exact.rgb[0];
+    const Rgb<double> f82 =
+        reflectanceColor([&](double nm) { return exactReflectance(ior, nm, kF82Cosine); });
+    const double f90Shadowed = std::min(1.0, luminance(f0) / 0.04);
+    struct Named {
+        std::string name;
+        Fresnel<Rgb<double>> fresnel;
+    };
+    std::vector<Named> rgbModels = {
+        {"Schlick", Fresnel<Rgb<double>>::schlick(f0)},
+        {"Schlick, shadowed F90",
+         Fresnel<Rgb<double>>::schlickShadowed(f0, Rgb<double>(f90Shadowed))},
+        {"Hoffman F82", Fresnel<Rgb<double>>::hoffmanF82(f0, f82)},
+        {"Lagarde spherical Gaussian", Fresnel<Rgb<double>>::schlickSphericalGaussian(f0)},
+    };
+    if (!conductor)
+        rgbModels.push_back({"exact at the d-line index",
+                             Fresnel<Rgb<double>>::dielectric(Rgb<double>(ior.n(kDLineNm)))});
+    result.models.push_back(exact);
+    for (const Named& n : rgbModels) {
+        FresnelModel m{n.name, {}};
+        for (int a = 0; a < kFresnelAngles; ++a)
+            m.rgb.push_back(n.fresnel.evaluate(cosOf(a)));
+        for (int a = 0; a < kFresnelAngles - 1; ++a) {  // 90 degrees: all models give 1
+            for (int ch = 0; ch < 3; ++ch) {
+                const double e =
+                    std::abs(m.rgb[std::size_t(a)][ch] - exact.rgb[std::size_t(a)][ch]);
+                m.maxError = std::max(m.maxError, e);
+                m.meanError += e / (3.0 * (kFresnelAngles - 1));
+            }
+            const double de = ciede2000Rec709(m.rgb[std::size_t(a)], exact.rgb[std::size_t(a)]);
+            m.maxDeltaE = std::max(m.maxDeltaE, de);
+            m.meanDeltaE += de / (kFresnelAngles - 1);
+        }
+        result.models.push_back(std::move(m));
+    }
+    for (int nm = 380; nm <= 780; nm += 20)
+        result.spectral.push_back(exactCurve(ior, nm));
+    for (double nm : {450.0, 550.0, 650.0})
+        result.plotted.push_back(exactCurve(ior, nm));
+    return result;
+}
+
+FresnelSceneComparison compareModes(const std::string& scenePath, int spp,
+                                    const ProgressSink& progress) {
+    const render::SceneDesc scene = render::loadScene(scenePath);
+    render::RenderOptions o;
+    if (spp > 0) o.spp = spp;
+    o.mode = render::RenderModeKind::Rgb;
+    tell(progress, "rendering " + scenePath + " in RGB mode...\n");
+    FresnelSceneComparison c;
+    c.scene = scenePath;
+    c.rgb = render::renderScene(scene, o);
+    o.mode = render::RenderModeKind::Spectral;
+    tell(progress, "rendering " + scenePath + " in spectral mode...\n");
+    c.spectral = render::renderScene(scene, o);
+    const render::RgbImage a = filmImage(*c.rgb.film), b = filmImage(*c.spectral.film);
+    c.metrics = compareImages(a, b);
+    c.ciede2000.resize(std::size_t(a.width) * a.height);
+    double sum = 0, worst = 0;
+    for (std::size_t i = 0; i < c.ciede2000.size(); ++i) {
+        const Rgb<double> ca(a.pixels[3 * i], a.pixels[3 * i + 1], a.pixels[3 * i + 2]);
+        const Rgb<double> cb(b.pixels[3 * i], b.pixels[3 * i + 1], b.pixels[3 * i + 2]);
+        c.ciede2000[i] = float(ciede2000Rec709(ca, cb));
+        sum += c.ciede2000[i];
+        worst = std::max(worst, double(c.ciede2000[i]));
+    }
+    c.meanDeltaE = sum / double(c.ciede2000.size());
+    c.maxDeltaE = worst;
+    return c;
+}
+
+}  // namespace
+
+FresnelResult runFresnel(const FresnelInputs& in) {
+    FresnelResult result;
+    for (const std::string& m : in.materials)
+        result.materials.push_back(analyse(m));
+    if (!in.scene.empty()) result.scene = compareModes(in.scene, in.spp, in.progress);
+    return result;
+}
+
+}  // namespace lamina::experiments

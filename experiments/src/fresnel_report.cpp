@@ -1,0 +1,147 @@
+// The report of `lamina fresnel`: per material MATERIAL.csv, MATERIAL_spectral.csv,
+// MATERIAL.svg and MATERIAL_swatches.png; with a scene, its renders and difference maps; and
+// summary.md.
+#include <cmath>
+#include <sstream>
+
+#include "lamina/experiments/fresnel.h"
+#include "lamina/experiments/svg_plot.h"
+#include "lamina/experiments/text_format.h"
+#include "lamina/render/image_output.h"
+#include "lamina/spectral/color_space.h"
+
+namespace lamina::experiments {
+
+namespace {
+
+void writeCsvs(const FresnelMaterial& m, const Report& report) {
+    std::ostringstream csv;
+    csv << "degrees";
+    for (const FresnelModel& model : m.models)
+        for (const char* ch : {"R", "G", "B"})
+            csv << ",\"" << model.name << " " << ch << "\"";
+    csv << "\n";
+    for (int a = 0; a < kFresnelAngles; ++a) {
+        csv << a;
+        for (const FresnelModel& model : m.models)
+            for (int ch = 0; ch < 3; ++ch)
+                csv << "," << model.rgb[std::size_t(a)][ch];
+        csv << "\n";
+    }
+    report.writeText(m.stem + ".csv", csv.str());
+
+    std::ostringstream spec;
+    spec << "degrees";
+    for (const WavelengthCurve& c : m.spectral)
+        spec << "," << int(c.nm) << "nm";
+    spec << "\n";
+    for (int a = 0; a < kFresnelAngles; ++a) {
+        spec << a;
+        for (const WavelengthCurve& c : m.spectral)
+            spec << "," << c.reflectance[std::size_t(a)];
+        spec << "\n";
+    }
+    report.writeText(m.stem + "_spectral.csv", spec.str());
+}
+
+/// Luminance of each model against angle, and the exact curve at three wavelengths.
+void writePlot(const FresnelMaterial& m, const Report& report) {
+    SvgPlot plot("Fresnel reflectance: " + m.name, "angle of incidence (degrees)",
+                 "reflectance (luminance)");
+    for (const FresnelModel& model : m.models) {
+        SvgPlot::Series s{model.name, {}, {}};
+        for (int a = 0; a < kFresnelAngles; ++a) {
+            s.x.push_back(a);
+            s.y.push_back(luminance(model.rgb[std::size_t(a)]));
+        }
+        plot.add(std::move(s));
+    }
+    for (const WavelengthCurve& c : m.plotted) {
+        SvgPlot::Series s{"exact at " + std::to_string(int(c.nm)) + " nm", {}, {}, true};
+        for (int a = 0; a < kFresnelAngles; ++a) {
+            s.x.push_back(a);
+            s.y.push_back(c.reflectance[std::size_t(a)]);
+        }
+        plot.add(std::move(s));
+    }
+    report.writeFigure(m.stem + ".svg", plot);
+}
+
+/// Rows: the models; columns: a few angles; sRGB-encoded.
+void writeSwatches(const FresnelMaterial& m, const Report& report) {
+    const int angles[] = {0, 30, 60, 75, 82, 87};
+    constexpr int kSwatch = 40;
+    const int w = kSwatch * int(std::size(angles)), h = kSwatch * int(m.models.size());
+    std::vector<float> px(std::size_t(w) * h * 3);
+    for (std::size_t row = 0; row < m.models.size(); ++row)
+        for (std::size_t col = 0; col < std::size(angles); ++col) {
+            const Rgb<double>& c = m.models[row].rgb[std::size_t(angles[col])];
+            for (int y = 0; y < kSwatch; ++y)
+                for (int x = 0; x < kSwatch; ++x)
+                    for (int ch = 0; ch < 3; ++ch) {
+                        const double l = std::clamp(c[ch], 0.0, 1.0);
+                        const double e =
+                            l <= 0.0031308 ? 12.92 * l : 1.055 * std::pow(l, 1 / 2.4) - 0.055;
+                        px[((std::size_t(row) * kSwatch + std::size_t(y)) * std::size_t(w) +
+                            col * kSwatch + std::size_t(x)) *
+                               3 +
+                           std::size_t(ch)] = float(e);
+                    }
+        }
+    render::writeRgb8(report.file(m.stem + "_swatches.png"), w, h, px);
+}
+
+std::string table(const FresnelMaterial& m) {
+    std::ostringstream md;
+    md << "### " << m.stem << "\n\n"
+       << "| model | max abs error | mean abs error | max CIEDE2000 | mean CIEDE2000 |\n"
+       << "|---|---|---|---|---|\n";
+    for (std::size_t i = 1; i < m.models.size(); ++i) {
+        const FresnelModel& model = m.models[i];
+        md << formatText("| %s | %.4f | %.4f | %.2f | %.2f |\n", model.name.c_str(), model.maxError,
+                         model.meanError, model.maxDeltaE, model.meanDeltaE);
+    }
+    md << "\n![" << m.stem << " reflectance](" << m.stem << ".svg)\n\n![" << m.stem << " swatches]("
+       << m.stem << "_swatches.png)\n\n";
+    return md.str();
+}
+
+std::string writeScene(const FresnelSceneComparison& c, const Report& report) {
+    render::ImageMetadata meta;
+    meta.ints["spp"] = c.rgb.spp;
+    render::writeExr(report.file("scene_rgb.exr"), *c.rgb.film, false, meta);
+    render::writeExr(report.file("scene_spectral.exr"), *c.spectral.film, false, meta);
+    const render::RgbImage a = filmImage(*c.rgb.film), b = filmImage(*c.spectral.film);
+    writeDifferenceImage(report.file("scene_difference.png"), a, b, c.metrics.max);
+    render::writeFloatExr(report.file("scene_ciede2000.exr"), a.width, a.height, {"Y"},
+                          c.ciede2000);
+    render::writeSignedHeatMap(report.file("scene_ciede2000.png"), a.width, a.height, c.ciede2000,
+                               10.0);
+    return formatText(
+        "### The scene in both modes: %s\n\n%d spp each (path integrator). RGB mode "
+        "against spectral mode: relMSE %.4g, MAE %.4g; CIEDE2000 mean %.2f, max %.2f "
+        "(noise included: both renders are noisy).\n\n"
+        "![CIEDE2000 map, red = 10](scene_ciede2000.png) "
+        "![|RGB - spectral|](scene_difference.png)\n\n",
+        c.scene.c_str(), c.rgb.spp, c.metrics.relmse, c.metrics.mae, c.meanDeltaE, c.maxDeltaE);
+}
+
+}  // namespace
+
+void writeFresnelReport(const FresnelResult& result, Report& report) {
+    std::string md =
+        "# Fresnel: exact spectral against RGB models\n\n"
+        "Reflectance of a flat interface from air, 0 to 89 degrees; errors are against the "
+        "colour (linear Rec.709, under D65) of the exact spectral reflectance; the RGB models "
+        "are built from that colour (F0, and F82 at cos = 1/7) as RGB mode builds them.\n\n";
+    for (const FresnelMaterial& m : result.materials) {
+        writeCsvs(m, report);
+        writePlot(m, report);
+        writeSwatches(m, report);
+        md += table(m);
+    }
+    if (result.scene) md += writeScene(*result.scene, report);
+    report.addSummary(md);
+}
+
+}  // namespace lamina::experiments

@@ -1,0 +1,98 @@
+#include "lamina/experiments/image_metrics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "lamina/core/error.h"
+
+namespace lamina::experiments {
+
+ImageMetrics compareImages(const render::RgbImage& a, const render::RgbImage& b) {
+    if (a.width != b.width || a.height != b.height)
+        throw InputError("the images differ in size: " + std::to_string(a.width) + "x" +
+                         std::to_string(a.height) + " and " + std::to_string(b.width) + "x" +
+                         std::to_string(b.height));
+    ImageMetrics m;
+    const std::size_t n = a.pixels.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        const double d = double(a.pixels[i]) - double(b.pixels[i]);
+        m.mse += d * d;
+        m.relmse += d * d / (double(b.pixels[i]) * double(b.pixels[i]) + kRelMseEpsilon);
+        m.mae += std::abs(d);
+        m.max = std::max(m.max, std::abs(d));
+    }
+    if (n > 0) {
+        m.mse /= double(n);
+        m.relmse /= double(n);
+        m.mae /= double(n);
+    }
+    m.rmse = std::sqrt(m.mse);
+    return m;
+}
+
+double metricValue(const ImageMetrics& m, Metric metric) {
+    switch (metric) {
+        case Metric::Mse:
+            return m.mse;
+        case Metric::Rmse:
+            return m.rmse;
+        case Metric::Relmse:
+            return m.relmse;
+        case Metric::Mae:
+            return m.mae;
+        case Metric::Max:
+            return m.max;
+    }
+    return m.mse;
+}
+
+void writeDifferenceImage(const std::filesystem::path& path, const render::RgbImage& a,
+                          const render::RgbImage& b, double scale) {
+    std::vector<float> img(std::size_t(a.width) * a.height * 3);
+    for (std::size_t p = 0; p < std::size_t(a.width) * a.height; ++p) {
+        double d = 0;
+        for (int c = 0; c < 3; ++c)
+            d += std::abs(double(a.pixels[p * 3 + c]) - double(b.pixels[p * 3 + c])) / 3;
+        const double t = scale > 0 ? std::clamp(d / scale, 0.0, 1.0) : 0.0;
+        img[p * 3 + 0] = float(std::clamp(2 * t - 0.5, 0.0, 1.0));
+        img[p * 3 + 1] = float(std::clamp(2 * t - 1.0, 0.0, 1.0));
+        img[p * 3 + 2] = float(t < 0.5 ? 2 * t : 2 - 2 * t);
+    }
+    render::writeRgb8(path, a.width, a.height, img);
+}
+
+render::RgbImage filmImage(const render::Film& film) {
+    render::RgbImage img;
+    img.width = film.width();
+    img.height = film.height();
+    img.pixels.resize(std::size_t(img.width) * img.height * 3);
+    for (int y = 0; y < img.height; ++y)
+        for (int x = 0; x < img.width; ++x) {
+            const Rgb<double> v = film.pixel(x, y);
+            for (int c = 0; c < 3; ++c)
+                img.pixels[(std::size_t(y) * img.width + x) * 3 + std::size_t(c)] = float(v[c]);
+        }
+    return img;
+}
+
+void ErrorLog::record(double seconds, int spp, const render::Film& film) {
+    rows_.push_back({seconds, spp, compareImages(filmImage(film), reference_)});
+}
+
+std::string ErrorLog::csvHeader(const std::string& columns) {
+    return (columns.empty() ? "" : columns + ",") + "seconds,spp,mse,relmse,mae\n";
+}
+
+std::string ErrorLog::csvRows(const std::string& prefix) const {
+    std::string out;
+    char line[256];
+    for (const Row& r : rows_) {
+        std::snprintf(line, sizeof line, "%.6g,%d,%.9g,%.9g,%.9g\n", r.seconds, r.spp,
+                      r.metrics.mse, r.metrics.relmse, r.metrics.mae);
+        out += (prefix.empty() ? "" : prefix + ",") + line;
+    }
+    return out;
+}
+
+}  // namespace lamina::experiments

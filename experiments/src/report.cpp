@@ -1,0 +1,41 @@
+#include "lamina/experiments/report.h"
+
+#include <fstream>
+
+#include "lamina/core/error.h"
+#include "lamina/experiments/progress.h"
+#include "lamina/experiments/svg_plot.h"
+
+namespace lamina::experiments {
+
+void printToStderr(const std::string& text) {
+    std::fputs(text.c_str(), stderr);
+}
+
+std::filesystem::path Report::file(const std::string& name) const {
+    std::filesystem::create_directories(directory_);
+    return directory_ / name;
+}
+
+void Report::print(std::string_view text) const {
+    if (console_) std::fwrite(text.data(), 1, text.size(), console_);
+}
+
+void Report::writeText(const std::string& name, std::string_view text) const {
+    const std::filesystem::path path = file(name);
+    std::ofstream out(path);
+    out << text;
+    if (!out) throw InputError(path.string() + ": cannot write");
+}
+
+void Report::writeFigure(const std::string& name, const SvgPlot& plot) const {
+    plot.write(file(name));
+}
+
+void Report::finish() const {
+    if (summary_.empty()) return;
+    writeText("summary.md", summary_);
+    print(summary_);
+}
+
+}  // namespace lamina::experiments
