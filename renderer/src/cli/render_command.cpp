@@ -170,7 +170,7 @@ void runRender(const RenderArgs& a) {
     render::ImageMetadata meta;
     meta.strings["version"] = LAMINA_VERSION_STRING;
     meta.strings["mode"] = r.modeName;
-    meta.strings["integrator"] = render::integratorName(r.settings.integrator);
+    meta.strings["integrator"] = std::string(render::kIntegratorNames.name(r.settings.integrator));
     meta.strings["scene"] = a.scene;
     meta.strings["scene_hash"] = fileHash(a.scene);
     meta.strings["sampler"] =
@@ -197,7 +197,8 @@ void runRender(const RenderArgs& a) {
             "%s: %dx%d, %d spp, %s, %.2f s, %.3g paths/s, %.3g rays/s, "
             "%llu rejected samples%s\n",
             output.string().c_str(), r.film->width(), r.film->height(), r.spp,
-            (r.modeName + " mode, " + render::integratorName(r.settings.integrator) + " integrator")
+            (r.modeName + " mode, " +
+             std::string(render::kIntegratorNames.name(r.settings.integrator)) + " integrator")
                 .c_str(),
             r.seconds, double(r.paths) / r.seconds, double(r.rays) / r.seconds,
             static_cast<unsigned long long>(r.film->rejectedSamples()),
