@@ -70,6 +70,9 @@ struct CameraEstimate {
 template <SpectrumType S>
 class Integrator {
   public:
+    Integrator() = default;
+    Integrator(const Integrator&) = delete;
+    Integrator& operator=(const Integrator&) = delete;
     virtual ~Integrator() = default;
 
     /// True when samples splat (light, bdpt): the renderer then takes one sample per pixel
@@ -89,9 +92,9 @@ struct IntegratorSetup {
     const RenderMode<S>& mode;
     RenderSettings settings;  ///< the integrator's kind, depth, Russian roulette, MIS
     const PixelFilter& filter;
-    TransportAblations ablations;     ///< light and bdpt
-    bool aovs = false;                ///< path only
-    StrategyImages* strategies = {};  ///< bdpt only, optional
+    TransportAblations ablations;          ///< light and bdpt
+    bool aovs = false;                     ///< path only
+    StrategyImages* strategies = nullptr;  ///< bdpt only, optional
 };
 
 /// The integrator of `setup.settings.integrator`.

@@ -22,11 +22,10 @@ class LightIntegrator final : public Integrator<S> {
     /// One particle per pixel sample (seeded by the pixel); it only splats.
     std::optional<CameraEstimate<S>> sample(const PixelSample<S>& sample) const override;
 
+  private:
     /// Traces one particle and splats its contributions (to be scaled by 1 / particles).
     void traceParticle(PixelSampler& sampler, typename Mode::Path& path, Film& film,
                        PathStatistics& stats) const;
-
-  private:
     SceneContext c_;
     const Mode& mode_;
     RenderSettings settings_;

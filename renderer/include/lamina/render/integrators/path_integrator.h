@@ -19,11 +19,10 @@ class PathIntegrator final : public Integrator<S> {
     bool splats() const override { return false; }
     std::optional<CameraEstimate<S>> sample(const PixelSample<S>& sample) const override;
 
+  private:
     /// Radiance along a camera ray. `aovs` (optional) receives first-hit data.
     S radiance(const Vec3f& rayOrigin, const Vec3f& rayDirection, PixelSampler& sampler,
                typename Mode::Path& path, PathStatistics& stats, PixelAovs* aovs) const;
-
-  private:
     /// Next-event estimation at `at`: one light sample, weighted against BSDF sampling.
     S directLight(const SurfaceHit& hit, const ShadingPoint& at, const Bxdf<S>& bsdf, float uLight,
                   const Vec2f& uPoint, typename Mode::Path& path, PathStatistics& stats) const;
