@@ -7,27 +7,13 @@
 #include <chrono>
 
 #include "lamina/core/error.h"
-#include "lamina/render/light_integrator.h"
-#include "lamina/render/path_integrator.h"
-#include "lamina/render/pixel_filter.h"
+#include "lamina/render/integrator.h"
 
 namespace lamina::render {
 
 std::atomic<bool>& renderInterruptFlag() {
     static std::atomic<bool> flag{false};
     return flag;
-}
-
-const char* integratorName(IntegratorKind kind) {
-    switch (kind) {
-        case IntegratorKind::Path:
-            return "path";
-        case IntegratorKind::Light:
-            return "light";
-        case IntegratorKind::Bdpt:
-            return "bdpt";
-    }
-    return "?";
 }
 
 namespace {
@@ -42,7 +28,7 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
     const auto start = Clock::now();
     RenderResult result;
     result.settings = settings;
-    result.modeName = RenderMode<S>::kName;
+    result.modeName = kRenderModeNames.name(options.mode);
     if (settings.integrator != IntegratorKind::Path && options.aovs)
         throw InputError("AOVs are written by the path integrator only");
     result.film = std::make_unique<Film>(width, height, RenderMode<S>::kFilmSpace);
@@ -54,13 +40,10 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
     const PixelFilter filter(scene.film);
     const RenderMode<S> mode(scene);
     const SceneContext context{scene, geometry, lights, camera};
-    const PathIntegrator<S> pathIntegrator(context, mode, settings);
-    const LightIntegrator<S> lightIntegrator(context, mode, settings, filter, options.ablations);
-    const BdptIntegrator<S> bdptIntegrator(context, mode, settings, filter, options.ablations,
-                                           settings.mis);
     if (options.strategies && settings.integrator == IntegratorKind::Bdpt)
         result.strategies = std::make_unique<StrategyImages>(width, height);
-    StrategyImages* strategies = result.strategies.get();
+    const auto integrator = makeIntegrator<S>({context, mode, settings, filter, options.ablations,
+                                               options.aovs, result.strategies.get()});
 
     const int tilesX = (width + kTileSize - 1) / kTileSize;
     const int tilesY = (height + kTileSize - 1) / kTileSize;
@@ -75,30 +58,15 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
         return std::chrono::duration<double>(Clock::now() - start).count() - callbackSeconds;
     };
 
-    // One sample of pixel (x, y): a camera path (path), a particle (light: one per pixel and
-    // iteration, seeded by the pixel), or a camera and a light subpath (bdpt).
+    // One sample of pixel (x, y): the integrator's camera-side estimate goes to the pixel, its
+    // splats (light, bdpt) anywhere on the film.
     const auto renderSample = [&](int x, int y, int s, PathStatistics& stats) {
         PixelSampler sampler(settings.sampler, settings.seed, x, y, std::uint32_t(s));
         auto path = mode.startPath(sampler);
-        if (settings.integrator == IntegratorKind::Light) {
-            lightIntegrator.traceParticle(sampler, path, film, stats);
-            return;
-        }
-        const auto fs = filter.sample(sampler.get2D());
-        const Vec2f lens = sampler.get2D();
-        const Vec2f raster(float(x) + 0.5f + fs.offset.x, float(y) + 0.5f + fs.offset.y);
-        if (settings.integrator == IntegratorKind::Bdpt) {
-            const S L = bdptIntegrator.sample(raster, lens, sampler, path, film, stats, strategies,
-                                              x, y, fs.weight);
-            film.addSample(x, y, mode.filmValue(L, path), fs.weight);
-            return;
-        }
-        const auto ray = camera.generateRay(raster.x, raster.y, lens);
-        PixelAovs aovs;
-        const S L = pathIntegrator.radiance(ray.origin, ray.direction, sampler, path, stats,
-                                            options.aovs ? &aovs : nullptr);
-        film.addSample(x, y, mode.filmValue(L, path), fs.weight);
-        if (options.aovs) film.addAovs(x, y, aovs);
+        const auto estimate = integrator->sample({x, y, sampler, path, film, stats});
+        if (!estimate) return;
+        film.addSample(x, y, mode.filmValue(estimate->value, path), estimate->filterWeight);
+        if (estimate->aovs) film.addAovs(x, y, *estimate->aovs);
     };
     // Samples [first, first + count) of every pixel, tile by tile in parallel.
     const auto renderSamples = [&](int first, int count) {
@@ -117,7 +85,7 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
             rays.fetch_add(stats.rays);
         });
     };
-    const bool splats = settings.integrator != IntegratorKind::Path;
+    const bool splats = integrator->splats();
 
     int done = 0, passes = 0;
     auto& interrupted = renderInterruptFlag();

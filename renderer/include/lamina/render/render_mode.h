@@ -1,7 +1,14 @@
 // What differs between the render modes, and nothing else (DESIGN.md, "Dual mode"): how a
 // path starts (spectral mode draws its wavelengths), how an RGB emission and a material become
 // the mode's spectrum, and what the film receives (Rec.709 in RGB mode, XYZ in spectral mode).
-// The integrators are templated on a RenderMode and contain no mode-specific code.
+// The integrators are templated on a RenderMode and contain no mode-specific code; they are
+// compiled for both (src/integrators/*.cpp instantiate them for Rgb<float> and
+// SampledSpectrum<float>). The mode's names are kRenderModeNames (renderer.h).
+//
+// bsdf(material, uv, path) returns a reference valid until the next call to bsdf() from the
+// same thread (at the path's next vertex, or for another path): a textured material's BSDF is
+// rebuilt at every call, and in spectral mode a call for another path resets the per-thread
+// cache of built BSDFs. Use the reference at one vertex, then ask again.
 #pragma once
 
 #include <memory>
@@ -32,10 +39,10 @@ class RenderMode<Rgb<float>> {
     }
 
     static constexpr FilmSpace kFilmSpace = FilmSpace::Rec709;
-    static constexpr const char* kName = "rgb";
 
     Path startPath(PixelSampler&) const { return {}; }
     Spectrum emission(const Emission& e, const Path&) const { return e.rgb(); }
+    /// Valid until the next call from this thread (see the top of this file).
     const Bxdf<Spectrum>& bsdf(int material, const Vec2<float>& uv, Path&) const {
         if (!scene_.materialTextures[std::size_t(material)].any())
             return *bsdfs_[std::size_t(material)];
@@ -68,7 +75,6 @@ class RenderMode<SampledSpectrum<float>> {
     explicit RenderMode(const SceneDesc& scene) : scene_(scene) {}
 
     static constexpr FilmSpace kFilmSpace = FilmSpace::Xyz;
-    static constexpr const char* kName = "spectral";
 
     Path startPath(PixelSampler& sampler) const {
         return {SampledWavelengths<float>::sample(double(sampler.get1D())), ++cache().nextPathId};
@@ -89,7 +95,7 @@ class RenderMode<SampledSpectrum<float>> {
 
     // A material's BSDF depends on the path's wavelengths: it is built at the first hit on
     // that material along a path and reused at later hits of the same path (a per-thread
-    // cache, reset when the path changes).
+    // cache, reset when the path changes). Valid until the next call from this thread.
     const Bxdf<Spectrum>& bsdf(int material, const Vec2<float>& uv, Path& path) const {
         BsdfCache& c = cache();
         if (scene_.materialTextures[std::size_t(material)].any()) {

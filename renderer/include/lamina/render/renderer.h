@@ -8,9 +8,10 @@
 #include <optional>
 #include <string>
 
-#include "lamina/render/bdpt_integrator.h"
 #include "lamina/render/film.h"
+#include "lamina/render/integrators/transport_ablations.h"
 #include "lamina/render/scene_description.h"
+#include "lamina/render/strategy_images.h"
 
 namespace lamina::render {
 
@@ -48,13 +49,11 @@ struct RenderResult {
     double seconds = 0;
     std::uint64_t rays = 0;
     std::uint64_t paths = 0;
-    bool partial = false;  ///< interrupted before the requested spp or time
-    std::string modeName;
+    bool partial = false;                        ///< interrupted before the requested spp or time
+    std::string modeName;                        ///< kRenderModeNames
     RenderSettings settings;                     ///< after command-line overrides
     std::unique_ptr<StrategyImages> strategies;  ///< with RenderOptions::strategies (bdpt)
 };
-
-const char* integratorName(IntegratorKind kind);
 
 /// Set (from a signal handler) to stop after the pass in flight.
 std::atomic<bool>& renderInterruptFlag();
