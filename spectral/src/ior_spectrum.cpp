@@ -12,6 +12,7 @@
 
 #include "lamina/core/error.h"
 #include "lamina/core/fresnel_equations.h"
+#include "lamina/core/math.h"
 #include "lamina/spectral/cie.h"
 #include "lamina/spectral/color_space.h"
 #include "lamina/spectral/rgb_to_spectrum.h"
@@ -172,6 +173,10 @@ IorSpectrum::Curve formulaCurve(int formula, std::vector<double> c) {
     return [formula, c = std::move(c)](double nm) { return dispersionFormula(formula, c, nm); };
 }
 
+double noAbsorption(double) {
+    return 0.0;
+}
+
 struct NamedGlass {
     const char* name;
     int formula;
@@ -315,7 +320,7 @@ IorSpectrum loadYaml(const std::filesystem::path& path) {
         }
     }
     if (!n) fileError(path, "no real index (n) in the DATA list");
-    if (!k) k = [](double) { return 0.0; };
+    if (!k) k = noAbsorption;
     return IorSpectrum(name, *n, *k, dispersive);
 }
 
@@ -337,6 +342,25 @@ std::complex<double> lorentzDrudeIndex(const std::string& metal, double nm) {
     return std::sqrt(eps);  // principal branch: k >= 0
 }
 
+IorSpectrum cauchyIor(double a, double b, double c) {
+    return IorSpectrum(
+        "Cauchy",
+        [a, b, c](double nm) {
+            const double l2 = sqr(nm * 1e-3);
+            return a + b / l2 + c / (l2 * l2);
+        },
+        noAbsorption, b != 0 || c != 0);
+}
+
+IorSpectrum sellmeierIor(const std::vector<double>& b, const std::vector<double>& c) {
+    std::vector<double> coefficients{0.0};  // formula 2: no constant term
+    for (std::size_t i = 0; i < b.size(); ++i) {
+        coefficients.push_back(b[i]);
+        coefficients.push_back(c[i]);
+    }
+    return IorSpectrum("Sellmeier", formulaCurve(2, std::move(coefficients)), noAbsorption, true);
+}
+
 std::optional<IorSpectrum> namedIor(const std::string& name) {
     if (const LdMetal* m = findLdMetal(name)) {
         const std::string metal = m->name;
@@ -347,8 +371,7 @@ std::optional<IorSpectrum> namedIor(const std::string& name) {
     }
     for (const auto& g : kGlasses)
         if (name == g.name)
-            return IorSpectrum(
-                g.name, formulaCurve(g.formula, g.coefficients), [](double) { return 0.0; }, true);
+            return IorSpectrum(g.name, formulaCurve(g.formula, g.coefficients), noAbsorption, true);
     return std::nullopt;
 }
 

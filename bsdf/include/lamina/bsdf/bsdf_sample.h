@@ -2,7 +2,9 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 
+#include "lamina/core/name_table.h"
 #include "lamina/core/spectrum.h"
 #include "lamina/core/vector.h"
 
@@ -12,8 +14,12 @@ namespace lamina {
 /// (Veach 1997, section 5.2); evaluating in the wrong mode makes light tracing and camera
 /// tracing disagree.
 enum class TransportMode { Radiance, Importance };
+inline constexpr NameTable kTransportModeNames{
+    std::array{NameEntry{TransportMode::Radiance, "radiance"},
+               NameEntry{TransportMode::Importance, "importance"}}};
 
-/// Lobe flags: what kind of scattering a lobe or a sample is.
+/// Lobe flags: what kind of scattering a lobe or a sample is. A sample has exactly one kind
+/// (one of kLobeKindNames); a BSDF's flags are the union of its lobes' kinds.
 enum LobeFlags : std::uint32_t {
     kLobeNone = 0,
     kLobeReflection = 1u << 0,
@@ -22,13 +28,26 @@ enum LobeFlags : std::uint32_t {
     kLobeGlossy = 1u << 3,
     kLobeSpecular = 1u << 4,  ///< a Dirac delta: never evaluated by eval() or pdf()
     kLobeDiffuseReflection = kLobeDiffuse | kLobeReflection,
-    kLobeDiffuseTransmission = kLobeDiffuse | kLobeTransmission,
     kLobeGlossyReflection = kLobeGlossy | kLobeReflection,
     kLobeGlossyTransmission = kLobeGlossy | kLobeTransmission,
     kLobeSpecularReflection = kLobeSpecular | kLobeReflection,
     kLobeSpecularTransmission = kLobeSpecular | kLobeTransmission,
     kLobeAll = kLobeReflection | kLobeTransmission | kLobeDiffuse | kLobeGlossy | kLobeSpecular,
 };
+
+/// The kinds of lobe lamina has, in the order descriptions list them. No lobe transmits
+/// diffusely: as a union of bits, diffuse transmission could not be told apart from diffuse
+/// reflection plus glossy transmission.
+inline constexpr NameTable kLobeKindNames{
+    std::array{NameEntry{kLobeDiffuseReflection, "diffuse_reflection"},
+               NameEntry{kLobeGlossyReflection, "glossy_reflection"},
+               NameEntry{kLobeSpecularReflection, "specular_reflection"},
+               NameEntry{kLobeGlossyTransmission, "glossy_transmission"},
+               NameEntry{kLobeSpecularTransmission, "specular_transmission"}}};
+
+/// The lobe kinds a flags word holds, in words: "diffuse reflection, glossy transmission";
+/// "none (black)" for a BSDF without lobes.
+std::string describeLobes(std::uint32_t flags);
 
 inline bool isSpecular(std::uint32_t f) {
     return (f & kLobeSpecular) != 0;

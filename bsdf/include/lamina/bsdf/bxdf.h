@@ -1,6 +1,7 @@
-// The BSDF interface: the article's four functions (eval, pdf, sample; sample is the
-// article's evalIndirect). Directions are in the local shading frame (z = shading normal),
-// both pointing away from the surface: wo towards the viewer, wi towards the light.
+// The BSDF interface. "The article" throughout bsdf/ is Boksansky, "Crash Course in BRDF
+// Implementation", 2021; this interface has its four functions (eval, pdf, sample; sample is
+// the article's evalIndirect). Directions are in the local shading frame (z = shading
+// normal), both pointing away from the surface: wo towards the viewer, wi towards the light.
 #pragma once
 
 #include <optional>

@@ -84,7 +84,7 @@ class DielectricBxdf final : public Bxdf<S> {
         if (wo.z == Float(0)) return std::nullopt;
         if (isSmooth()) return sampleSmooth(wo, uc, mode);
         const V3 wup = wo.z < Float(0) ? -wo : wo;
-        const V3 m = distribution_.sampleVisible(wup, u);
+        const V3 m = distribution_.sampleVisibleNormal(wup, u);
         const Float wom = glm::dot(wo, m);
         if (wom == Float(0)) return std::nullopt;
         const Float R = fresnelDielectric(wom, eta_);
@@ -142,8 +142,8 @@ class DielectricBxdf final : public Bxdf<S> {
     std::optional<std::pair<V3, Float>> sampleRefraction(const V3& wo, const V2& u) const {
         if (wo.z == Float(0)) return std::nullopt;
         if (indexMatched()) return std::make_pair(-wo, Float(1));
-        const V3 m =
-            isSmooth() ? V3(0, 0, 1) : distribution_.sampleVisible(wo.z < Float(0) ? -wo : wo, u);
+        const V3 m = isSmooth() ? V3(0, 0, 1)
+                                : distribution_.sampleVisibleNormal(wo.z < Float(0) ? -wo : wo, u);
         const auto t = refract(wo, m, eta_);
         if (!t || sameHemisphere(wo, t->first) || t->first.z == Float(0)) return std::nullopt;
         return t;
@@ -183,7 +183,7 @@ class DielectricBxdf final : public Bxdf<S> {
 
     // Visible-normal density of m seen from wo's side.
     Float visibleDensity(const V3& wo, const V3& m) const {
-        return distribution_.visibleD(wo.z < Float(0) ? -wo : wo, m);
+        return distribution_.visibleNormalPdf(wo.z < Float(0) ? -wo : wo, m);
     }
 
     std::optional<BsdfSample<S>> sampleSmooth(const V3& wo, Float uc, TransportMode mode) const {

@@ -1,4 +1,4 @@
-// Diffuse reflection models (article sections 3.1-3.5). All are two-sided (mirrored to the
+// Diffuse reflection models (the article, sections 3.1-3.5). All are two-sided (mirrored to the
 // side of wo) and cosine-sampled, so weight = eval / pdf = reflectance * shape(wo, wi), where
 // f(wo, wi) = reflectance / pi * shape(wo, wi):
 //   Lambert      shape = 1.
@@ -18,11 +18,15 @@
 #pragma once
 
 #include "lamina/bsdf/bxdf.h"
+#include "lamina/core/name_table.h"
 #include "lamina/core/warp.h"
 
 namespace lamina {
 
 enum class DiffuseModel { Lambert, OrenNayar, Burley, Frostbite };
+inline constexpr NameTable kDiffuseModelNames{std::array{
+    NameEntry{DiffuseModel::Lambert, "lambert"}, NameEntry{DiffuseModel::OrenNayar, "oren_nayar"},
+    NameEntry{DiffuseModel::Burley, "burley"}, NameEntry{DiffuseModel::Frostbite, "frostbite"}}};
 
 template <SpectrumType S>
 class DiffuseBxdf final : public Bxdf<S> {

@@ -1,6 +1,6 @@
 // Fresnel models: how much light a (micro)surface reflects at a given angle. Every model is
 // evaluated with the cosine of the angle between the direction and the microfacet normal
-// (article section 4.3: evaluating it on the shading normal would ignore roughness).
+// (the article, section 4.3: evaluating it on the shading normal would ignore roughness).
 #pragma once
 
 #include "lamina/core/fresnel_equations.h"

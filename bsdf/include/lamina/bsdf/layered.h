@@ -1,7 +1,6 @@
-// The layered stack (article section 5, generalised): a specular interface (microfacet or the
-// article's Phong lobe) over a
-// base of diffuse reflection and/or rough dielectric transmission, split by `transmission`
-// (the article's diffuse probability):
+// The layered stack (the article, section 5, generalised): a specular interface (microfacet or
+// the article's Phong lobe) over a base of diffuse reflection and/or rough dielectric
+// transmission, split by `transmission` (the article's diffuse probability):
 //
 //   f = f_spec + (1 - t) W(wo, wi) f_diffuse + t (1 - F(wo.m_t)) f_btdf
 //
@@ -34,10 +33,14 @@
 #include "lamina/bsdf/microfacet_reflection.h"
 #include "lamina/bsdf/multiscatter.h"
 #include "lamina/bsdf/specular_lobe.h"
+#include "lamina/core/name_table.h"
 
 namespace lamina {
 
 enum class LayerCoupling { Fresnel, Sum, Albedo };
+inline constexpr NameTable kLayerCouplingNames{
+    std::array{NameEntry{LayerCoupling::Fresnel, "fresnel"}, NameEntry{LayerCoupling::Sum, "sum"},
+               NameEntry{LayerCoupling::Albedo, "albedo"}}};
 
 template <SpectrumType S>
 class LayeredBxdf final : public Bxdf<S> {

@@ -9,12 +9,14 @@
 #include <optional>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "lamina/bsdf/albedo_table.h"
 #include "lamina/bsdf/diffuse.h"
 #include "lamina/bsdf/layered.h"
 #include "lamina/bsdf/microfacet_distribution.h"
 #include "lamina/core/json_reader.h"
+#include "lamina/core/name_table.h"
 #include "lamina/core/spectrum.h"
 #include "lamina/spectral/ior_spectrum.h"
 
@@ -47,7 +49,22 @@ struct MicrofacetParams {
     double perceptualRoughness() const;
 };
 
+/// The `fresnel` of a material. Auto: the conductor's default (exact for n, k optics, Hoffman's
+/// F82 for f0 / f82); `standard` and `layered` do not take it.
 enum class FresnelChoice { Auto, Schlick, SchlickShadowed, SchlickSphericalGaussian, F82, Exact };
+inline constexpr NameTable kFresnelChoiceNames{
+    std::array{NameEntry{FresnelChoice::Schlick, "schlick"},
+               NameEntry{FresnelChoice::SchlickShadowed, "schlick_shadowed"},
+               NameEntry{FresnelChoice::SchlickSphericalGaussian, "schlick_sg"},
+               NameEntry{FresnelChoice::F82, "f82"}, NameEntry{FresnelChoice::Exact, "exact"},
+               NameEntry{FresnelChoice::Auto, "auto"}}};
+
+/// The lobe of a specular interface: the `specular_model` of `standard` (which also takes
+/// "none") and the `model` of a `layered` interface.
+enum class SpecularModel { Ggx, Beckmann, Phong };
+inline constexpr NameTable kSpecularModelNames{
+    std::array{NameEntry{SpecularModel::Ggx, "ggx"}, NameEntry{SpecularModel::Beckmann, "beckmann"},
+               NameEntry{SpecularModel::Phong, "phong"}}};
 
 /// `standard`: the article's material (and its generalisations); see docs/bsdf.md.
 struct StandardMaterial {
@@ -121,15 +138,16 @@ struct MixMaterial {
     double weight = 0.5;
 };
 
+using MaterialModel = std::variant<StandardMaterial, DiffuseMaterial, ConductorMaterial,
+                                   DielectricMaterial, PhongMaterial, MixMaterial>;
+
 struct MaterialDesc {
     std::string type;  ///< the JSON "type", for messages and `lamina info`
-    std::variant<StandardMaterial, DiffuseMaterial, ConductorMaterial, DielectricMaterial,
-                 PhongMaterial, MixMaterial>
-        model;
+    MaterialModel model;
 };
 
-/// The material types parseMaterial accepts.
-const char* const* materialTypeNames();
+/// The material types parseMaterial accepts, in the order its messages list them.
+std::vector<std::string> materialTypeNames();
 
 /// Parses and validates one material object ({"type": ..., ...}); unknown types, unknown keys
 /// and out-of-range values are InputErrors naming the JSON path.

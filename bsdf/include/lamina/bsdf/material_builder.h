@@ -140,7 +140,7 @@ class MaterialBuilder {
     }
 
     std::unique_ptr<Bxdf<S>> buildModel(const StandardMaterial& s) const {
-        // Article, section 5: F0 = lerp(0.04, base_color, metalness) (with `specular` in
+        // The article, section 4.3.1: F0 = lerp(0.04, base_color, metalness) (with `specular` in
         // place of 0.04), diffuse reflectance = base_color (1 - metalness).
         const RgbInput f0rgb = s.specularColor ? *s.specularColor
                                                : RgbInput(s.specular) * (1.0 - s.metalness) +

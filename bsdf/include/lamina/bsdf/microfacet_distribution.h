@@ -1,5 +1,5 @@
-// Microfacet normal distributions with their Smith masking functions and sampling routines
-// (article section 4). Directions are in the local frame; alpha is the NDF's roughness
+// Microfacet normal distributions with their Smith masking functions and sampling strategies
+// (the article, section 4). Directions are in the local frame; alpha is the NDF's roughness
 // (alpha = roughness^2 in the `standard` material). Anisotropic alpha_x / alpha_y follow the
 // tangent frame's x and y axes.
 //
@@ -11,26 +11,47 @@
 //             at the same alpha (Walter's suggestion in section 5.2).
 //   G1 = 1 / (1 + Lambda);  G2 height-correlated 1 / (1 + Lambda_o + Lambda_i) (Heitz eq. 99)
 //   or separable G1(o) G1(i).
-//   Sampling  visible normals D_w(m) = G1(w) max(0, w.m) D(m) / w.z (Heitz 2014 eq. 16):
-//             GGX by Heitz 2018 (JCGT 7(4)) or by the spherical caps of Dupuy and Benyoub 2023
-//             (CGF 42(8)); Beckmann by inverting the visible-slope marginal numerically
-//             (the slope method of Heitz and d'Eon 2014); or the NDF itself, D(m) cos(m)
-//             (Walter 2007 eqs. 28-29, 35-36), optionally with Walter's widened alpha
-//             (1.2 - 0.2 sqrt|cos theta_o|) alpha (section 5.3).
+//   Sampling  one sample / pdf pair per strategy (MicrofacetSampling), the distribution holding
+//             the one it is sampled by:
+//             vndf    visible normals D_w(m) = G1(w) max(0, w.m) D(m) / w.z (Heitz 2014
+//                     eq. 16): GGX by Heitz 2018 (JCGT 7(4)); Beckmann by inverting the
+//                     visible-slope marginal numerically (the slope method of Heitz and d'Eon
+//                     2014);
+//             caps    the same density for GGX by the spherical caps of Dupuy and Benyoub 2023
+//                     (CGF 42(8));
+//             walter  the NDF itself, D(m) cos(m) (Walter 2007 eqs. 28-29, 35-36);
+//             walter_widened  the NDF with Walter's widened alpha
+//                     (1.2 - 0.2 sqrt|cos theta_o|) alpha (section 5.3).
 #pragma once
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "lamina/core/frame.h"
+#include "lamina/core/name_table.h"
 #include "lamina/core/special_functions.h"
 
 namespace lamina {
 
 enum class NdfKind { Ggx, Beckmann, BlinnPhong };
+inline constexpr NameTable kNdfKindNames{std::array{NameEntry{NdfKind::Ggx, "ggx"},
+                                                    NameEntry{NdfKind::Beckmann, "beckmann"},
+                                                    NameEntry{NdfKind::BlinnPhong, "blinn_phong"}}};
+
 enum class SmithLambda { Exact, WalterApproximation };
+
 enum class G2Form { HeightCorrelated, Separable };
+inline constexpr NameTable kG2FormNames{
+    std::array{NameEntry{G2Form::HeightCorrelated, "height_correlated"},
+               NameEntry{G2Form::Separable, "separable"}}};
+
 enum class MicrofacetSampling { VisibleNormals, SphericalCaps, Walter, WalterWidened };
+inline constexpr NameTable kMicrofacetSamplingNames{
+    std::array{NameEntry{MicrofacetSampling::VisibleNormals, "vndf"},
+               NameEntry{MicrofacetSampling::SphericalCaps, "caps"},
+               NameEntry{MicrofacetSampling::Walter, "walter"},
+               NameEntry{MicrofacetSampling::WalterWidened, "walter_widened"}}};
 
 /// Below this alpha a surface is treated as smooth (a delta lobe), as pbrt-v4 does; float and
 /// double agree on it because it is compared before any other arithmetic.
@@ -57,10 +78,17 @@ class MicrofacetDistribution {
     T alphaY() const { return ay_; }
     bool effectivelySmooth() const { return std::max(ax_, ay_) < T(kSmoothAlpha); }
 
-    /// The same distribution with alpha scaled (Walter's widened sampling lobe).
-    MicrofacetDistribution scaled(T s) const {
-        return MicrofacetDistribution(kind_, ax_ * s, ay_ * s, lambdaForm_);
+    /// The same distribution sampled by `strategy`. Blinn-Phong has no visible-normal sampler:
+    /// the visible-normal strategies sample it by its NDF (Walter's) instead.
+    MicrofacetDistribution sampledBy(MicrofacetSampling strategy) const {
+        MicrofacetDistribution d = *this;
+        const bool visible = strategy == MicrofacetSampling::VisibleNormals ||
+                             strategy == MicrofacetSampling::SphericalCaps;
+        d.sampling_ =
+            kind_ == NdfKind::BlinnPhong && visible ? MicrofacetSampling::Walter : strategy;
+        return d;
     }
+    MicrofacetSampling sampling() const { return sampling_; }
 
     /// Microfacet normal density per unit solid angle (projected: integral of D cos = 1).
     T D(const V3& m) const {
@@ -106,24 +134,78 @@ class MicrofacetDistribution {
         return T(1) / (T(1) + lambda(wo) + lambda(wi));
     }
 
+    /// A microfacet normal for w (w.z > 0) drawn by this distribution's strategy.
+    V3 sampleNormal(const V3& w, const V2& u) const {
+        switch (sampling_) {
+            case MicrofacetSampling::VisibleNormals:
+                return sampleVisibleNormal(w, u);
+            case MicrofacetSampling::SphericalCaps:
+                return sampleSphericalCaps(w, u);
+            case MicrofacetSampling::Walter:
+                return sampleWalter(u);
+            case MicrofacetSampling::WalterWidened:
+                return sampleWalterWidened(w, u);
+        }
+        return V3(0, 0, 1);
+    }
+
+    /// Density of sampleNormal(w, .) at m.
+    T normalPdf(const V3& w, const V3& m) const {
+        switch (sampling_) {
+            case MicrofacetSampling::VisibleNormals:
+                return visibleNormalPdf(w, m);
+            case MicrofacetSampling::SphericalCaps:
+                return sphericalCapsPdf(w, m);
+            case MicrofacetSampling::Walter:
+                return walterPdf(m);
+            case MicrofacetSampling::WalterWidened:
+                return walterWidenedPdf(w, m);
+        }
+        return T(0);
+    }
+
+    /// The reflection lobe's sample weight without F, D G2 / (4 cos_o pdf), for wi = wo
+    /// reflected about m = sampleNormal(wo, .), in closed form where the strategy's density
+    /// cancels D; nullopt where nothing cancels (walter_widened: its alpha is not the NDF's)
+    /// and the lobe divides eval by the pdf.
+    std::optional<T> reflectionWeight(const V3& wo, const V3& wi, const V3& m, G2Form g2) const {
+        switch (sampling_) {
+            case MicrofacetSampling::VisibleNormals:
+            case MicrofacetSampling::SphericalCaps:
+                // D and G1(wo) cancel: weight = G2 / G1(wo) (Heitz 2018, eq. 19).
+                return G2(wo, wi, g2) / G1(wo);
+            case MicrofacetSampling::Walter:
+                // D cancels: weight = G2 (wo.m) / (cos_o cos_m) (Walter 2007, eq. 41).
+                return G2(wo, wi, g2) * glm::dot(wo, m) / (wo.z * m.z);
+            case MicrofacetSampling::WalterWidened:
+                return std::nullopt;
+        }
+        return std::nullopt;
+    }
+
+    // The strategies, one sample / pdf pair each.
+
+    /// vndf: a visible normal for w (w.z > 0); Blinn-Phong, which has no visible-normal
+    /// sampler, falls back to its NDF (sampledBy() never pairs it with this density).
+    V3 sampleVisibleNormal(const V3& w, const V2& u) const {
+        if (kind_ == NdfKind::Ggx) return sampleGgxVisible(w, u);
+        if (kind_ == NdfKind::Beckmann) return sampleBeckmannVisible(w, u);
+        return sampleWalter(u);
+    }
     /// Density of visible normals seen from w (w.z > 0): G1(w) max(0, w.m) D(m) / w.z.
-    T visibleD(const V3& w, const V3& m) const {
+    T visibleNormalPdf(const V3& w, const V3& m) const {
         if (!(w.z > T(0))) return T(0);
         return G1(w) / w.z * D(m) * std::max(T(0), glm::dot(w, m));
     }
 
-    /// Density of the NDF-proportional sampling: D(m) cos(theta_m).
-    T ndfPdf(const V3& m) const { return D(m) * std::max(T(0), m.z); }
-
-    /// A visible normal for w (w.z > 0). `caps` selects Dupuy and Benyoub's method for GGX.
-    V3 sampleVisible(const V3& w, const V2& u, bool caps = false) const {
-        if (kind_ == NdfKind::Ggx) return caps ? sampleGgxCaps(w, u) : sampleGgxVisible(w, u);
-        if (kind_ == NdfKind::Beckmann) return sampleBeckmannVisible(w, u);
-        return sampleNdf(u);  // Blinn-Phong has no visible-normal sampler: NDF sampling
+    /// caps: the visible normals of GGX by spherical caps (other NDFs: their vndf sampler).
+    V3 sampleSphericalCaps(const V3& w, const V2& u) const {
+        return kind_ == NdfKind::Ggx ? sampleGgxCaps(w, u) : sampleVisibleNormal(w, u);
     }
+    T sphericalCapsPdf(const V3& w, const V3& m) const { return visibleNormalPdf(w, m); }
 
-    /// A normal distributed as D(m) cos(theta_m) (Walter 2007).
-    V3 sampleNdf(const V2& u) const {
+    /// walter: a normal distributed as D(m) cos(theta_m) (Walter 2007).
+    V3 sampleWalter(const V2& u) const {
         const T phi = T(2) * kPi<T> * u.y;
         if (kind_ == NdfKind::BlinnPhong) {
             const T cosTheta = std::pow(u.x, T(1) / (exponent_ + T(2)));
@@ -137,8 +219,19 @@ class MicrofacetDistribution {
             return safeNormalize(V3(-std::cos(phi), -std::sin(phi), T(0)));
         return glm::normalize(V3(-sx, -sy, T(1)));
     }
+    T walterPdf(const V3& m) const { return D(m) * std::max(T(0), m.z); }
+
+    /// walter_widened: Walter's NDF sampling with alpha widened for w.
+    V3 sampleWalterWidened(const V3& w, const V2& u) const { return widened(w).sampleWalter(u); }
+    T walterWidenedPdf(const V3& w, const V3& m) const { return widened(w).walterPdf(m); }
 
   private:
+    // Walter 2007, section 5.3: the sampling lobe widened by (1.2 - 0.2 sqrt|cos theta_o|).
+    MicrofacetDistribution widened(const V3& w) const {
+        const T s = T(1.2) - T(0.2) * std::sqrt(std::abs(w.z));
+        return MicrofacetDistribution(kind_, ax_ * s, ay_ * s, lambdaForm_);
+    }
+
     // Heitz 2018, "Sampling the GGX Distribution of Visible Normals", listing 1.
     V3 sampleGgxVisible(const V3& w, const V2& u) const {
         const V3 wh = glm::normalize(V3(ax_ * w.x, ay_ * w.y, w.z));  // hemisphere config.
@@ -217,6 +310,7 @@ class MicrofacetDistribution {
     T ax_, ay_;
     SmithLambda lambdaForm_;
     T exponent_ = 0;
+    MicrofacetSampling sampling_ = MicrofacetSampling::VisibleNormals;
 };
 
 }  // namespace lamina

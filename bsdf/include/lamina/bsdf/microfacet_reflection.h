@@ -1,8 +1,8 @@
-// Rough specular reflection from a microfacet surface (article section 4; Walter et al. 2007
-// eq. 20 with the cosine built in):
+// Rough specular reflection from a microfacet surface (the article, section 4; Walter et al.
+// 2007 eq. 20 with the cosine built in):
 //   f(wo, wi) |cos theta_i| = F(wo.m) D(m) G2(wo, wi) / (4 |cos theta_o|),  m = the half vector.
 // This lobe works in the upper hemisphere (wo.z > 0, wi.z > 0); the BSDFs that use it mirror
-// directions to that side.
+// directions to that side. The distribution carries the sampling strategy.
 #pragma once
 
 #include <optional>
@@ -26,12 +26,7 @@ class MicrofacetReflectionLobe {
     MicrofacetReflectionLobe(const Distribution& d, const Fresnel<S>& f,
                              MicrofacetSampling sampling = MicrofacetSampling::VisibleNormals,
                              G2Form g2 = G2Form::HeightCorrelated)
-        : distribution_(d), fresnel_(f), sampling_(sampling), g2_(g2) {
-        // Blinn-Phong has no visible-normal sampler: it is always sampled by its NDF.
-        if (d.kind() == NdfKind::BlinnPhong && (sampling == MicrofacetSampling::VisibleNormals ||
-                                                sampling == MicrofacetSampling::SphericalCaps))
-            sampling_ = MicrofacetSampling::Walter;
-    }
+        : distribution_(d.sampledBy(sampling)), fresnel_(f), g2_(g2) {}
 
     const Distribution& distribution() const { return distribution_; }
     const Fresnel<S>& fresnel() const { return fresnel_; }
@@ -61,73 +56,26 @@ class MicrofacetReflectionLobe {
         if (!(wo.z > Float(0)) || !(wi.z > Float(0))) return Float(0);
         const auto m = halfVector(wo, wi);
         if (!m) return Float(0);
-        return normalPdf(wo, *m) / (Float(4) * std::abs(glm::dot(wo, *m)));
+        return distribution_.normalPdf(wo, *m) / (Float(4) * std::abs(glm::dot(wo, *m)));
     }
 
     std::optional<Sample> sample(const V3& wo, const V2& u) const {
         if (!(wo.z > Float(0))) return std::nullopt;
-        const V3 m = sampleNormal(wo, u);
+        const V3 m = distribution_.sampleNormal(wo, u);
         const Float wom = glm::dot(wo, m);
         if (!(wom > Float(0))) return std::nullopt;
         const V3 wi = reflect(wo, m);
         if (!(wi.z > Float(0))) return std::nullopt;
-        const Float p = normalPdf(wo, m) / (Float(4) * wom);
+        const Float p = distribution_.normalPdf(wo, m) / (Float(4) * wom);
         if (!(p > Float(0)) || !std::isfinite(p)) return std::nullopt;
         const S f = fresnel_.evaluate(wom);
-        S weight;
-        switch (sampling_) {
-            case MicrofacetSampling::VisibleNormals:
-            case MicrofacetSampling::SphericalCaps:
-                // D and G1(wo) cancel: weight = F G2 / G1(wo) (Heitz 2018, eq. 19).
-                weight = f * (distribution_.G2(wo, wi, g2_) / distribution_.G1(wo));
-                break;
-            case MicrofacetSampling::Walter:
-                // D cancels: weight = F G2 (wo.m) / (cos_o cos_m) (Walter 2007, eq. 41).
-                weight = f * (distribution_.G2(wo, wi, g2_) * wom / (wo.z * m.z));
-                break;
-            case MicrofacetSampling::WalterWidened:
-                weight = eval(wo, wi) / p;  // the sampling alpha differs: nothing cancels
-                break;
-        }
-        return Sample{wi, weight, p};
+        const std::optional<Float> cancelled = distribution_.reflectionWeight(wo, wi, m, g2_);
+        return Sample{wi, cancelled ? f * *cancelled : eval(wo, wi) / p, p};
     }
 
   private:
-    // Density of the sampled microfacet normal m given wo.
-    Float normalPdf(const V3& wo, const V3& m) const {
-        switch (sampling_) {
-            case MicrofacetSampling::VisibleNormals:
-            case MicrofacetSampling::SphericalCaps:
-                return distribution_.visibleD(wo, m);
-            case MicrofacetSampling::Walter:
-                return distribution_.ndfPdf(m);
-            case MicrofacetSampling::WalterWidened:
-                return widened(wo).ndfPdf(m);
-        }
-        return Float(0);
-    }
-
-    V3 sampleNormal(const V3& wo, const V2& u) const {
-        switch (sampling_) {
-            case MicrofacetSampling::VisibleNormals:
-                return distribution_.sampleVisible(wo, u, false);
-            case MicrofacetSampling::SphericalCaps:
-                return distribution_.sampleVisible(wo, u, true);
-            case MicrofacetSampling::Walter:
-                return distribution_.sampleNdf(u);
-            case MicrofacetSampling::WalterWidened:
-                return widened(wo).sampleNdf(u);
-        }
-        return V3(0, 0, 1);
-    }
-
-    Distribution widened(const V3& wo) const {
-        return distribution_.scaled(Float(1.2) - Float(0.2) * std::sqrt(std::abs(wo.z)));
-    }
-
     Distribution distribution_;
     Fresnel<S> fresnel_;
-    MicrofacetSampling sampling_;
     G2Form g2_;
 };
 

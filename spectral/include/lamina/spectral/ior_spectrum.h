@@ -44,6 +44,14 @@ class IorSpectrum {
 IorSpectrum::Curve tabulatedCurve(std::vector<double> nm, std::vector<double> values,
                                   std::string what);
 
+/// Dispersion formulas of a dielectric (k = 0), the wavelength l in um:
+///   Cauchy     n = A + B / l^2 + C / l^4 (dispersive unless B = C = 0), named "Cauchy";
+///   Sellmeier  n^2 = 1 + sum_i B_i l^2 / (l^2 - C_i), C_i in um^2, b and c of one length
+///              (refractiveindex.info's formula 2 without its constant term), named
+///              "Sellmeier".
+IorSpectrum cauchyIor(double a, double b, double c);
+IorSpectrum sellmeierIor(const std::vector<double>& b, const std::vector<double>& c);
+
 /// A named metal (Lorentz-Drude, Rakic et al. 1998: Ag, Au, Cu, Al, Be, Cr, Ni, Pd, Pt, Ti,
 /// W) or glass (bk7, fused_silica, water, diamond); nullopt for an unknown name.
 std::optional<IorSpectrum> namedIor(const std::string& name);

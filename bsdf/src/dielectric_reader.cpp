@@ -1,0 +1,85 @@
+// `dielectric`: the index of refraction as a number, a named glass, a file or a dispersion
+// formula (spectral/ior_spectrum.h), and a microfacet NDF (docs/bsdf.md, "Materials").
+#include "material_readers.h"
+
+namespace lamina {
+
+namespace {
+
+// The NDFs of a rough dielectric: those with a visible-normal sampler, which its sampling uses.
+constexpr auto kDielectricNdfNames =
+    restrictedTable(kNdfKindNames, std::array{NdfKind::Ggx, NdfKind::Beckmann});
+
+// {"cauchy": [A, B]} or [A, B, C], wavelength in um.
+IorSpectrum readCauchy(const JsonReader& f) {
+    const Json& c = f.value()["cauchy"];
+    if (!c.is_array() || c.size() < 2 || c.size() > 3)
+        f.failAt("cauchy", "expected [A, B] or [A, B, C] (wavelength in um)");
+    std::array<double, 3> k{0, 0, 0};
+    for (std::size_t i = 0; i < c.size(); ++i)
+        k[i] = f.checkNumber(c[i], f.childPath("cauchy") + "[" + std::to_string(i) + "]",
+                             i == 0 ? Range::positive() : Range::any());
+    (void)f.child("cauchy");
+    return cauchyIor(k[0], k[1], k[2]);
+}
+
+// {"sellmeier": {"b": [...], "c": [...]}}, c in um^2.
+IorSpectrum readSellmeier(const JsonReader& f) {
+    const JsonReader sm = f.child("sellmeier");
+    const Json& b = sm.value()["b"];
+    const Json& c = sm.value()["c"];
+    if (!sm.has("b") || !sm.has("c") || !b.is_array() || !c.is_array() || b.size() != c.size() ||
+        b.empty())
+        sm.fail("expected {\"b\": [...], \"c\": [...]} of equal, non-zero length (c in um^2)");
+    std::vector<double> bs, cs;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+        bs.push_back(
+            sm.checkNumber(b[i], sm.childPath("b") + "[" + std::to_string(i) + "]", Range::any()));
+        cs.push_back(sm.checkNumber(c[i], sm.childPath("c") + "[" + std::to_string(i) + "]",
+                                    Range::nonNegative()));
+    }
+    (void)sm.child("b");
+    (void)sm.child("c");
+    sm.finish();
+    return sellmeierIor(bs, cs);
+}
+
+// {"cauchy": ...} or {"sellmeier": ...}: exactly one dispersion formula.
+IorSpectrum readDispersionFormula(const JsonReader& f) {
+    if (f.has("cauchy") == f.has("sellmeier"))
+        f.fail("expected exactly one of cauchy and sellmeier");
+    IorSpectrum ior = f.has("cauchy") ? readCauchy(f) : readSellmeier(f);
+    f.finish();
+    return ior;
+}
+
+}  // namespace
+
+MaterialModel readDielectric(const JsonReader& r) {
+    DielectricMaterial d;
+    if (r.has("ior") && r.has("ior_file")) r.fail("give only one of ior and ior_file");
+    if (r.has("ior_file")) {
+        d.spectrum = loadIorAt(r, "ior_file");
+    } else if (r.has("ior") && r.value()["ior"].is_object()) {
+        d.spectrum = std::make_shared<const IorSpectrum>(readDispersionFormula(r.child("ior")));
+    } else if (r.has("ior") && r.value()["ior"].is_string()) {
+        const std::string name = r.requiredString("ior");
+        const auto ior = namedIor(name);
+        if (!ior || ior->k(550) != 0)
+            r.failAt("ior", "unknown glass \"" + name + "\"; expected a number or one of " +
+                                knownNames(namedGlassNames()));
+        d.spectrum = std::make_shared<const IorSpectrum>(*ior);
+    } else {
+        d.ior = r.number("ior", 1.5, Range::positive());
+    }
+    if (d.spectrum) {
+        d.ior = d.spectrum->n(kDLineNm);
+        if (!(d.ior > 0)) r.fail("the index of refraction at 587.56 nm is not positive");
+    }
+    d.microfacet.ndf = r.choice("distribution", NdfKind::Ggx, kDielectricNdfNames);
+    readRoughness(r, 0.0, d.microfacet);
+    readMicrofacetSwitches(r, d.microfacet, false);
+    return d;
+}
+
+}  // namespace lamina

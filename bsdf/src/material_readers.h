@@ -1,0 +1,72 @@
+// The pieces parseMaterial is made of (internal to lamina_bsdf): the readers of parameters
+// several material types share, and one reader per material family. material_parser.cpp
+// holds the table of material types that names them.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lamina/bsdf/material_builder.h"
+
+namespace lamina {
+
+inline RgbInput toRgb(const std::array<double, 3>& a) {
+    return RgbInput(a[0], a[1], a[2]);
+}
+
+// Shared parameters (material_parameters.cpp).
+
+/// A colour: a number, [r, g, b], or {"spectrum": [[nm, reflectance], ...]}.
+ColorInput readColor(const JsonReader& r, const std::string& key, double defaultValue);
+/// `roughness`, `alpha`, or `alpha_x` and `alpha_y` (with `anisotropy` for the first two).
+void readRoughness(const JsonReader& r, double defaultRoughness, MicrofacetParams& m);
+/// `g2` and, with `allowSampling`, `sampling`.
+void readMicrofacetSwitches(const JsonReader& r, MicrofacetParams& m, bool allowSampling);
+/// `fresnel`; "auto" only with `allowAuto`.
+FresnelChoice readFresnel(const JsonReader& r, FresnelChoice defaultValue, bool allowAuto);
+/// An n, k or index file named by `key`, relative to the JSON file's directory (else to the
+/// working directory).
+std::shared_ptr<const IorSpectrum> loadIorAt(const JsonReader& r, const std::string& key);
+/// "a, b, c" for a message.
+std::string knownNames(const std::vector<std::string>& names);
+
+/// One of `table`'s names or "none" (nullopt); a message lists both.
+template <typename E, std::size_t N>
+std::optional<E> choiceOrNone(const JsonReader& r, const std::string& key,
+                              std::optional<E> defaultValue, const NameTable<E, N>& table) {
+    if (!r.has(key)) return defaultValue;
+    const std::string s = r.string(key, "");
+    if (s == "none") return std::nullopt;
+    if (const auto e = table.find(s)) return e;
+    r.failAt(key, "expected one of " + table.list() + ", none, got \"" + s + "\"");
+}
+
+/// The entries of `table` for `values` alone, under the table's names: the part of an
+/// enumeration one material accepts.
+template <typename E, std::size_t N, std::size_t M>
+constexpr NameTable<E, M> restrictedTable(const NameTable<E, N>& table,
+                                          const std::array<E, M>& values) {
+    std::array<NameEntry<E>, M> entries{};
+    for (std::size_t i = 0; i < M; ++i)
+        entries[i] = {values[i], table.name(values[i])};
+    return NameTable<E, M>(entries);
+}
+
+// One reader per material family; each reads the keys of one JSON object.
+
+MaterialModel readStandard(const JsonReader& r);                     // standard_reader.cpp
+MaterialModel readLayered(const JsonReader& r);                      // standard_reader.cpp
+MaterialModel readConductor(const JsonReader& r);                    // conductor_reader.cpp
+MaterialModel readDielectric(const JsonReader& r);                   // dielectric_reader.cpp
+MaterialModel readDiffuse(const JsonReader& r, DiffuseModel model);  // lobe_readers.cpp
+MaterialModel readPhong(const JsonReader& r);                        // lobe_readers.cpp
+
+/// readDiffuse for one model, for the table of material types.
+template <DiffuseModel Model>
+MaterialModel readDiffuseModel(const JsonReader& r) {
+    return readDiffuse(r, Model);
+}
+
+}  // namespace lamina
