@@ -57,13 +57,6 @@ Vec3d parseDirection(const std::string& text, const std::string& what) {
     return glm::normalize(d);
 }
 
-std::string lobeName(std::uint32_t flags) {
-    std::string s = (flags & kLobeSpecular) ? "specular"
-                    : (flags & kLobeGlossy) ? "glossy"
-                                            : "diffuse";
-    return s + ((flags & kLobeTransmission) ? "_transmission" : "_reflection");
-}
-
 // A spectrum as a JSON array of its first `channels` values.
 template <typename S>
 std::string jsonArray(const S& s, int channels) {
@@ -97,8 +90,7 @@ class BsdfTool {
         : a_(a),
           bxdf_(std::move(bxdf)),
           channels_(channels),
-          mode_(a.transport == "importance" ? TransportMode::Importance : TransportMode::Radiance) {
-    }
+          mode_(*kTransportModeNames.find(a.transport)) {}
 
     void eval() const {
         std::string line;
@@ -138,7 +130,7 @@ class BsdfTool {
                     continue;
                 }
                 std::printf("%.9g,%.9g,%.9g,%.9g,%s", s->wi.x, s->wi.y, s->wi.z, s->pdf,
-                            lobeName(s->flags).c_str());
+                            std::string(kLobeKindNames.name(LobeFlags(s->flags))).c_str());
                 for (int c = 0; c < channels_; ++c)
                     std::printf(",%.9g", double(s->weight[c]));
                 std::printf("\n");
@@ -147,7 +139,7 @@ class BsdfTool {
             } else {
                 std::printf("{\"wi\":%s,\"weight\":%s,\"pdf\":%.9g,\"lobe\":\"%s\"}\n",
                             jsonVec(s->wi).c_str(), jsonArray(s->weight, channels_).c_str(), s->pdf,
-                            lobeName(s->flags).c_str());
+                            std::string(kLobeKindNames.name(LobeFlags(s->flags))).c_str());
             }
         }
     }
@@ -325,7 +317,7 @@ void addCommon(CLI::App* cmd, BsdfArgs& a) {
     cmd->add_option("--wavelengths", a.wavelengths, "Spectral mode: 1-4 wavelengths in nm")
         ->capture_default_str();
     cmd->add_option("--transport", a.transport, "radiance or importance (adjoint)")
-        ->check(CLI::IsMember({"radiance", "importance"}))
+        ->check(CLI::IsMember(kTransportModeNames.names()))
         ->capture_default_str();
 }
 

@@ -10,19 +10,6 @@ namespace lamina::app {
 
 namespace {
 
-std::string lobes(std::uint32_t f) {
-    std::string s;
-    auto add = [&](std::uint32_t bits, const char* name) {
-        if ((f & bits) == bits) s += (s.empty() ? "" : ", ") + std::string(name);
-    };
-    add(kLobeDiffuseReflection, "diffuse reflection");
-    add(kLobeGlossyReflection, "glossy reflection");
-    add(kLobeSpecularReflection, "specular reflection");
-    add(kLobeGlossyTransmission, "glossy transmission");
-    add(kLobeSpecularTransmission, "specular transmission");
-    return s.empty() ? "none (black)" : s;
-}
-
 void collectSpectral(const MaterialDesc& m, std::vector<std::string>& out) {
     if (const auto* c = std::get_if<ConductorMaterial>(&m.model))
         if (c->optics.spectrum) out.push_back(c->optics.spectrum->name() + " (n, k)");
@@ -74,7 +61,7 @@ void run(const std::string& file) {
     for (std::size_t i = 0; i < scene.materials.size(); ++i) {
         const auto bsdf = buildBxdf(scene.materials[i], context);
         std::printf("  %s: %s; lobes: %s%s\n", scene.materialNames[i].c_str(),
-                    scene.materials[i].type.c_str(), lobes(bsdf->flags()).c_str(),
+                    scene.materials[i].type.c_str(), describeLobes(bsdf->flags()).c_str(),
                     used[i] ? "" : " (unused)");
         if (used[i]) collectSpectral(scene.materials[i], spectral);
     }

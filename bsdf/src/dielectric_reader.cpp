@@ -8,7 +8,7 @@ namespace {
 
 // The NDFs of a rough dielectric: those with a visible-normal sampler, which its sampling uses.
 constexpr auto kDielectricNdfNames =
-    restrictedTable(kNdfKindNames, std::array{NdfKind::Ggx, NdfKind::Beckmann});
+    kNdfKindNames.subset(std::array{NdfKind::Ggx, NdfKind::Beckmann});
 
 // {"cauchy": [A, B]} or [A, B, C], wavelength in um.
 IorSpectrum readCauchy(const JsonReader& f) {

@@ -60,10 +60,9 @@ void readMicrofacetSwitches(const JsonReader& r, MicrofacetParams& m, bool allow
 
 FresnelChoice readFresnel(const JsonReader& r, FresnelChoice defaultValue, bool allowAuto) {
     // What `standard` and `layered` take: every choice but the conductor's "auto".
-    static constexpr auto kWithoutAuto = restrictedTable(
-        kFresnelChoiceNames, std::array{FresnelChoice::Schlick, FresnelChoice::SchlickShadowed,
-                                        FresnelChoice::SchlickSphericalGaussian, FresnelChoice::F82,
-                                        FresnelChoice::Exact});
+    static constexpr auto kWithoutAuto = kFresnelChoiceNames.subset(std::array{
+        FresnelChoice::Schlick, FresnelChoice::SchlickShadowed,
+        FresnelChoice::SchlickSphericalGaussian, FresnelChoice::F82, FresnelChoice::Exact});
     const FresnelChoice f = r.choice("fresnel", defaultValue, kFresnelChoiceNames);
     if (f == FresnelChoice::Auto && !allowAuto)
         r.failAt("fresnel", "expected one of " + kWithoutAuto.list());
@@ -77,23 +76,8 @@ std::string knownNames(const std::vector<std::string>& names) {
     return list;
 }
 
-namespace {
-
-// A path in a material relative to the JSON file's directory, else to the working directory.
-std::filesystem::path resolvePath(const JsonReader& r, const std::string& key) {
-    std::filesystem::path p = r.requiredString(key);
-    if (p.is_relative()) {
-        const auto beside = (r.source().directory / p).lexically_normal();
-        if (std::filesystem::exists(beside) || !std::filesystem::exists(p)) p = beside;
-    }
-    if (!std::filesystem::exists(p)) r.failAt(key, p.string() + ": no such file");
-    return p;
-}
-
-}  // namespace
-
 std::shared_ptr<const IorSpectrum> loadIorAt(const JsonReader& r, const std::string& key) {
-    const std::filesystem::path path = resolvePath(r, key);
+    const std::filesystem::path path = r.filePath(key);
     try {
         return std::make_shared<const IorSpectrum>(loadIorFile(path));
     } catch (const InputError& e) {

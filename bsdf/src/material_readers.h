@@ -43,17 +43,6 @@ std::optional<E> choiceOrNone(const JsonReader& r, const std::string& key,
     r.failAt(key, "expected one of " + table.list() + ", none, got \"" + s + "\"");
 }
 
-/// The entries of `table` for `values` alone, under the table's names: the part of an
-/// enumeration one material accepts.
-template <typename E, std::size_t N, std::size_t M>
-constexpr NameTable<E, M> restrictedTable(const NameTable<E, N>& table,
-                                          const std::array<E, M>& values) {
-    std::array<NameEntry<E>, M> entries{};
-    for (std::size_t i = 0; i < M; ++i)
-        entries[i] = {values[i], table.name(values[i])};
-    return NameTable<E, M>(entries);
-}
-
 // One reader per material family; each reads the keys of one JSON object.
 
 MaterialModel readStandard(const JsonReader& r);                     // standard_reader.cpp

@@ -28,32 +28,6 @@ inline void PrintTo(const BsdfCase& c, std::ostream* os) {
     *os << c.name;
 }
 
-inline const char* samplingName(MicrofacetSampling s) {
-    switch (s) {
-        case MicrofacetSampling::VisibleNormals:
-            return "vndf";
-        case MicrofacetSampling::SphericalCaps:
-            return "caps";
-        case MicrofacetSampling::Walter:
-            return "walter";
-        case MicrofacetSampling::WalterWidened:
-            return "walter_widened";
-    }
-    return "?";
-}
-
-inline const char* ndfName(NdfKind k) {
-    switch (k) {
-        case NdfKind::Ggx:
-            return "ggx";
-        case NdfKind::Beckmann:
-            return "beckmann";
-        case NdfKind::BlinnPhong:
-            return "blinn_phong";
-    }
-    return "?";
-}
-
 inline std::string alphaName(double a) {
     std::string s = std::to_string(a);
     s.erase(s.find_last_not_of('0') + 1);
@@ -71,28 +45,28 @@ inline Fresnel<Spec> goldFresnel() {
 inline std::vector<BsdfCase> bsdfCases() {
     std::vector<BsdfCase> cases;
     const Spec albedo(0.8, 0.5, 0.3);
-    for (auto [model, name] : {std::pair{DiffuseModel::Lambert, "lambert"},
-                               std::pair{DiffuseModel::OrenNayar, "oren_nayar"},
-                               std::pair{DiffuseModel::Burley, "burley"},
-                               std::pair{DiffuseModel::Frostbite, "frostbite"}})
-        cases.push_back({name, std::make_shared<DiffuseBxdf<Spec>>(albedo, model, 0.7)});
+    for (const auto& [model, name] : kDiffuseModelNames.entries())
+        cases.push_back(
+            {std::string(name), std::make_shared<DiffuseBxdf<Spec>>(albedo, model, 0.7)});
 
     // Conductors: GGX over alpha and sampling methods, Beckmann, Blinn-Phong, anisotropic.
     for (double alpha : {0.05, 0.2, 0.5, 1.0})
         for (auto s : {MicrofacetSampling::VisibleNormals, MicrofacetSampling::SphericalCaps,
                        MicrofacetSampling::Walter, MicrofacetSampling::WalterWidened})
-            cases.push_back(
-                {std::string("conductor_ggx_") + samplingName(s) + "_a" + alphaName(alpha),
-                 std::make_shared<ConductorBxdf<Spec>>(MicrofacetReflectionLobe<Spec>(
-                     MicrofacetDistribution<double>(NdfKind::Ggx, alpha, alpha), goldFresnel(),
-                     s))});
+            cases.push_back({std::string("conductor_ggx_") +
+                                 std::string(kMicrofacetSamplingNames.name(s)) + "_a" +
+                                 alphaName(alpha),
+                             std::make_shared<ConductorBxdf<Spec>>(MicrofacetReflectionLobe<Spec>(
+                                 MicrofacetDistribution<double>(NdfKind::Ggx, alpha, alpha),
+                                 goldFresnel(), s))});
     for (double alpha : {0.05, 0.2, 0.5, 1.0})
         for (auto s : {MicrofacetSampling::VisibleNormals, MicrofacetSampling::Walter})
-            cases.push_back(
-                {std::string("conductor_beckmann_") + samplingName(s) + "_a" + alphaName(alpha),
-                 std::make_shared<ConductorBxdf<Spec>>(MicrofacetReflectionLobe<Spec>(
-                     MicrofacetDistribution<double>(NdfKind::Beckmann, alpha, alpha), goldFresnel(),
-                     s))});
+            cases.push_back({std::string("conductor_beckmann_") +
+                                 std::string(kMicrofacetSamplingNames.name(s)) + "_a" +
+                                 alphaName(alpha),
+                             std::make_shared<ConductorBxdf<Spec>>(MicrofacetReflectionLobe<Spec>(
+                                 MicrofacetDistribution<double>(NdfKind::Beckmann, alpha, alpha),
+                                 goldFresnel(), s))});
     cases.push_back({"conductor_blinn_phong_a0p3",
                      std::make_shared<ConductorBxdf<Spec>>(MicrofacetReflectionLobe<Spec>(
                          MicrofacetDistribution<double>(NdfKind::BlinnPhong, 0.3, 0.3),

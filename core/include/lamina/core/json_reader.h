@@ -6,7 +6,6 @@
 
 #include <array>
 #include <filesystem>
-#include <initializer_list>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -96,20 +95,6 @@ class JsonReader {
         const std::string s = string(key, "");
         if (const auto e = names.find(s)) return *e;
         failAt(key, "expected one of " + names.list() + ", got \"" + s + "\"");
-    }
-
-    /// One of a fixed set of names.
-    template <typename E>
-    E choice(const std::string& key, E defaultValue,
-             std::initializer_list<std::pair<const char*, E>> names) const {
-        if (!has(key)) return defaultValue;
-        const std::string s = string(key, "");
-        for (const auto& [name, e] : names)
-            if (s == name) return e;
-        std::string list;
-        for (const auto& [name, e] : names)
-            list += (list.empty() ? "" : ", ") + std::string(name);
-        failAt(key, "expected one of " + list + ", got \"" + s + "\"");
     }
 
     /// This value as a table [[nm, value], ...]: at least two pairs, wavelengths > 0 and

@@ -62,6 +62,15 @@ class NameTable {
         return out;
     }
     constexpr const std::array<NameEntry<E>, N>& entries() const { return entries_; }
+    /// The part of the table that names `values` (e.g. the distributions a lobe supports),
+    /// under the same names.
+    template <std::size_t M>
+    constexpr NameTable<E, M> subset(const std::array<E, M>& values) const {
+        std::array<NameEntry<E>, M> out{};
+        for (std::size_t i = 0; i < M; ++i)
+            out[i] = {values[i], name(values[i])};
+        return NameTable<E, M>(out);
+    }
 
   private:
     std::array<NameEntry<E>, N> entries_;

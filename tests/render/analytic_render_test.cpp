@@ -76,8 +76,7 @@ INSTANTIATE_TEST_SUITE_P(Modes, AnalyticRender,
                          ::testing::Values(render::RenderModeKind::Rgb,
                                            render::RenderModeKind::Spectral),
                          [](const auto& paramInfo) {
-                             return paramInfo.param == render::RenderModeKind::Rgb ? "rgb"
-                                                                                   : "spectral";
+                             return std::string(render::kRenderModeNames.name(paramInfo.param));
                          });
 
 // Renders a scene in both modes and z-tests the image mean of each channel (|z| < 3.29).
