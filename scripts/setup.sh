@@ -12,6 +12,7 @@ packages=(
   colord-data libtinyobjloader-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-matplotlib python3-numpy
+  clang libclang-rt-14-dev
 )
 
 missing=()

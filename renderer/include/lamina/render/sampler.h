@@ -19,25 +19,62 @@ namespace lamina::render {
 
 namespace sobol_detail {
 
+/// Reverses the 32 bits of x: the byte swap is one instruction, then the bits of each byte.
 inline std::uint32_t reverseBits(std::uint32_t x) {
-    x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
-    x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
+    x = __builtin_bswap32(x);
     x = ((x >> 4) & 0x0F0F0F0Fu) | ((x & 0x0F0F0F0Fu) << 4);
-    x = ((x >> 8) & 0x00FF00FFu) | ((x & 0x00FF00FFu) << 8);
-    return (x >> 16) | (x << 16);
+    x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
+    return ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
 }
 
 /// Sobol dimension 1 (primitive polynomial x + 1, direction numbers v_k = v_{k-1} ^
 /// (v_{k-1} >> 1) from v_0 = 2^31); dimension 0 is the van der Corput sequence.
-inline std::uint32_t sobolDimension1(std::uint32_t index) {
+constexpr std::uint32_t sobolDimension1(std::uint32_t index) {
     std::uint32_t result = 0, v = 1u << 31;
     for (; index; index >>= 1, v ^= v >> 1)
         if (index & 1u) result ^= v;
     return result;
 }
 
-/// Burley 2020, listing 3: the Laine-Karras-style hash that permutes bits only downwards,
-/// applied to reversed bits it is a nested uniform (Owen) scramble.
+/// Sobol dimension 1 in the bit-reversed domain: reverseBits(sobolDimension1(reverseBits(y))).
+/// It is linear over GF(2) in y, so it is the XOR of one table entry per byte of y (the
+/// tables hold the images of the 256 values of each byte), four lookups instead of a loop
+/// over 32 bits.
+class ReversedSobolDimension1 {
+  public:
+    constexpr ReversedSobolDimension1() {
+        std::uint32_t column[32] = {};  // the image of bit j of y
+        for (int j = 0; j < 32; ++j) {
+            // Bit j of y is bit 31 - j of x = reverseBits(y).
+            const std::uint32_t x = 1u << (31 - j);
+            const std::uint32_t r = sobolDimension1(x);
+            std::uint32_t reversed = 0;
+            for (int b = 0; b < 32; ++b)
+                if (r & (1u << b)) reversed |= 1u << (31 - b);
+            column[j] = reversed;
+        }
+        for (int byte = 0; byte < 4; ++byte)
+            for (int v = 0; v < 256; ++v) {
+                std::uint32_t image = 0;
+                for (int bit = 0; bit < 8; ++bit)
+                    if (v & (1 << bit)) image ^= column[8 * byte + bit];
+                table_[byte][v] = image;
+            }
+    }
+    std::uint32_t operator()(std::uint32_t y) const {
+        return table_[0][y & 0xFFu] ^ table_[1][(y >> 8) & 0xFFu] ^ table_[2][(y >> 16) & 0xFFu] ^
+               table_[3][y >> 24];
+    }
+
+  private:
+    std::uint32_t table_[4][256] = {};
+};
+
+inline constexpr ReversedSobolDimension1 kReversedSobolDimension1{};
+
+/// Burley 2020, listing 3: the Laine-Karras-style hash that permutes bits only downwards;
+/// applied to reversed bits, reverse(LK(reverse(x), seed)) is a nested uniform (Owen) scramble
+/// of x.
 inline std::uint32_t laineKarrasPermutation(std::uint32_t x, std::uint32_t seed) {
     x += seed;
     x ^= x * 0x6c50b47cu;
@@ -47,37 +84,60 @@ inline std::uint32_t laineKarrasPermutation(std::uint32_t x, std::uint32_t seed)
     return x;
 }
 
-inline std::uint32_t nestedUniformScramble(std::uint32_t x, std::uint32_t seed) {
-    return reverseBits(laineKarrasPermutation(reverseBits(x), seed));
-}
-
 }  // namespace sobol_detail
 
 class PixelSampler {
   public:
     PixelSampler(SamplerKind kind, std::uint64_t seed, int x, int y, std::uint32_t sampleIndex)
         : kind_(kind),
-          index_(sampleIndex),
+          reversedIndex_(sobol_detail::reverseBits(sampleIndex)),
           pixelSeed_(hashValues({seed, std::uint64_t(x), std::uint64_t(y)})),
-          rng_(hashValues({pixelSeed_, sampleIndex}), pixelSeed_) {}
+          dimensionSeedBase_(hashValues({pixelSeed_})) {
+        // The Sobol sampler needs no generator; seeding one costs as much as a dimension.
+        if (kind_ == SamplerKind::Independent)
+            rng_ = Pcg32(hashValues({pixelSeed_, sampleIndex}), pixelSeed_);
+    }
 
-    float get1D() { return get2D().x; }
+    float get1D() {
+        if (kind_ == SamplerKind::Independent) return get2D().x;
+        // The first coordinate of the next 2D point, without computing the second.
+        using namespace sobol_detail;
+        const std::uint32_t s = dimensionSeed(dimension_++);
+        const std::uint32_t y = laineKarrasPermutation(reversedIndex_, s);
+        return toFloat(reverseBits(laineKarrasPermutation(reverseBits(y), mixSeed(s, 1))));
+    }
 
+    /// The next dimension pair of the sample: the sample index shuffled by a nested uniform
+    /// scramble of its own (so pairs are decorrelated), then Sobol dimensions 0 and 1 of the
+    /// shuffled index, each scrambled with a seed of its own. Everything is computed in the
+    /// bit-reversed domain where it can be, so that each scramble (reverse, permute, reverse)
+    /// costs one reversal at most, with scramble(x, s) = reverse(LK(reverse(x), s)) and the
+    /// van der Corput sequence vdC = reverse:
+    ///   shuffled = scramble(index, s)        = reverse(y),  y = LK(reverse(index), s)
+    ///   a = scramble(vdC(shuffled), s1)      = reverse(LK(reverse(y), s1))
+    ///   b = scramble(Sobol1(shuffled), s2)   = reverse(LK(reversedSobol1(y), s2))
     Vec2<float> get2D() {
-        const std::uint32_t dim = dimension_++;
         if (kind_ == SamplerKind::Independent) {
+            ++dimension_;
             const float a = rng_.nextFloat();
             return {a, rng_.nextFloat()};
         }
         using namespace sobol_detail;
-        const auto s = std::uint32_t(hashValues({pixelSeed_, dim}));
-        const std::uint32_t shuffled = nestedUniformScramble(index_, s);
-        const std::uint32_t a = nestedUniformScramble(reverseBits(shuffled), mixSeed(s, 1));
-        const std::uint32_t b = nestedUniformScramble(sobolDimension1(shuffled), mixSeed(s, 2));
+        const std::uint32_t s = dimensionSeed(dimension_++);
+        const std::uint32_t y = laineKarrasPermutation(reversedIndex_, s);
+        const std::uint32_t a = reverseBits(laineKarrasPermutation(reverseBits(y), mixSeed(s, 1)));
+        const std::uint32_t b =
+            reverseBits(laineKarrasPermutation(kReversedSobolDimension1(y), mixSeed(s, 2)));
         return {toFloat(a), toFloat(b)};
     }
 
   private:
+    /// hashValues({pixelSeed, dim}), its first step (which depends on the pixel alone) done
+    /// once in the constructor.
+    std::uint32_t dimensionSeed(std::uint32_t dim) const {
+        const std::uint64_t h = dimensionSeedBase_;
+        return std::uint32_t(mixBits(h ^ (dim + 0x9e3779b97f4a7c15ULL + (h << 6u))));
+    }
     static std::uint32_t mixSeed(std::uint32_t s, std::uint32_t k) {
         return std::uint32_t(mixBits((std::uint64_t(s) << 8) ^ k));
     }
@@ -86,8 +146,9 @@ class PixelSampler {
     }
 
     SamplerKind kind_;
-    std::uint32_t index_;
+    std::uint32_t reversedIndex_;
     std::uint64_t pixelSeed_;
+    std::uint64_t dimensionSeedBase_;
     Pcg32 rng_;
     std::uint32_t dimension_ = 0;
 };
