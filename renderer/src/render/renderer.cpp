@@ -8,6 +8,7 @@
 
 #include "lamina/core/error.h"
 #include "lamina/render/integrator.h"
+#include "lamina/render/pass_schedule.h"
 
 namespace lamina::render {
 
@@ -50,7 +51,6 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
     std::atomic<std::uint64_t> rays{0};
     std::atomic<std::uint64_t> pixelsDone{0};
     const bool timed = options.seconds.has_value();
-    const int targetSpp = timed ? std::numeric_limits<int>::max() : settings.spp;
     // Render time excludes the time spent in the progress callback (which may, for example,
     // measure the error of the image so far).
     double callbackSeconds = 0;
@@ -87,12 +87,13 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
     };
     const bool splats = integrator->splats();
 
+    PassSchedule schedule(settings.spp, options.seconds);
     int done = 0, passes = 0;
     auto& interrupted = renderInterruptFlag();
-    while (done < targetSpp && !interrupted.load()) {
-        // Passes double in size (1, 1, 2, 4, ... up to 64 spp), so early progress is quick
-        // and an interruption or a time limit loses little work.
-        const int passSpp = std::min({targetSpp - done, std::max(1, std::min(done, 64))});
+    while (!interrupted.load()) {
+        const int passSpp = schedule.next(done, elapsed());
+        if (passSpp == 0) break;
+        const double passStart = elapsed();
         if (!splats) {
             renderSamples(done, passSpp);
         } else {
@@ -104,6 +105,7 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
                 film.endSplatIteration(1.0 / (double(width) * double(height)));
             }
         }
+        schedule.record(passSpp, elapsed() - passStart);
         done += passSpp;
         ++passes;
         if (progress) {
@@ -112,13 +114,12 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
             p.passesDone = passes;
             p.sppDone = done;
             p.fraction = timed ? std::min(1.0, p.seconds / *options.seconds)
-                               : double(done) / double(targetSpp);
+                               : double(done) / double(settings.spp);
             p.film = &film;
             const auto before = Clock::now();
             progress(p);
             callbackSeconds += std::chrono::duration<double>(Clock::now() - before).count();
         }
-        if (timed && elapsed() >= *options.seconds) break;
     }
     result.spp = done;
     result.partial = interrupted.load() && !timed;
