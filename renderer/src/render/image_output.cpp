@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "lamina/core/error.h"
+#include "lamina/core/input_file.h"
 #include "lamina/spectral/color_space.h"
 
 namespace lamina::render {
@@ -149,6 +150,7 @@ void writePngPreview(const std::filesystem::path& path, const Film& film, double
 }
 
 RgbImage readRgbImage(const std::filesystem::path& path) {
+    checkInputFile(path, kMaxImageFileBytes);
     auto in = OIIO::ImageInput::open(path.string());
     if (!in) throw InputError(path.string() + ": cannot read image: " + OIIO::geterror());
     const OIIO::ImageSpec& spec = in->spec();
