@@ -271,6 +271,31 @@ IorSpectrum loadCsv(const std::filesystem::path& path) {
     return IorSpectrum(name, tabulatedCurve(nm, n, name), tabulatedCurve(nm, k, name), dispersive);
 }
 
+// A Sellmeier formula whose pole (l^2 = B_i) lies in the rendered range gives an infinite n
+// there and a negative n^2 (clamped to n = 0) beside it: refuse it, and any formula whose
+// n^2 is not positive somewhere in the range.
+void checkFormula(const std::filesystem::path& p, const std::string& where, int formula,
+                  const std::vector<double>& c) {
+    for (std::size_t i = 0; i < c.size(); ++i)
+        if (!std::isfinite(c[i]))
+            fileError(p, where + ": coefficient " + std::to_string(i) + " is not finite");
+    for (std::size_t i = 1; i + 1 < c.size(); i += 2) {
+        const double b = formula == 1 ? c[i + 1] * c[i + 1] : c[i + 1];
+        const double poleNm = b > 0 ? std::sqrt(b) * 1e3 : 0.0;
+        if (c[i] != 0 && poleNm >= kLambdaMin && poleNm <= kLambdaMax)
+            fileError(p, where + ": the formula has a pole at " + std::to_string(poleNm) +
+                             " nm, inside the rendered range [360, 830] nm");
+    }
+    for (double nm = kLambdaMin; nm <= kLambdaMax; nm += 1.0) {
+        const double l2 = (nm * 1e-3) * (nm * 1e-3);
+        double n2 = 1.0 + c[0];
+        for (std::size_t i = 1; i + 1 < c.size(); i += 2)
+            n2 += c[i] * l2 / (l2 - (formula == 1 ? c[i + 1] * c[i + 1] : c[i + 1]));
+        if (!(n2 > 0) || !std::isfinite(n2))
+            fileError(p, where + ": n^2 is not a positive number at " + std::to_string(nm) + " nm");
+    }
+}
+
 IorSpectrum readYaml(const std::filesystem::path& path, const std::string& text) {
     const YAML::Node root = YAML::Load(text);
     const YAML::Node data = root["DATA"];
@@ -321,6 +346,7 @@ IorSpectrum readYaml(const std::filesystem::path& path, const std::string& text)
                 c.push_back(v);
             if (c.empty() || c.size() % 2 == 0)
                 fileError(path, where + ": expected an odd number of coefficients");
+            checkFormula(path, where, type == "formula 1" ? 1 : 2, c);
             n = formulaCurve(type == "formula 1" ? 1 : 2, c);
             dispersive = true;
         } else {

@@ -210,6 +210,18 @@ TEST_F(BadIorFile, NegativeNOrKIsRefused) {
                 "row 2: k is negative");
 }
 
+// A formula with a pole in 360-830 nm gave n = inf at the pole (fuzz regression
+// formula-pole-at-500nm.bin) and n = 0 beside it.
+TEST_F(BadIorFile, FormulaPolesInTheRenderedRangeAreRefused) {
+    expectError(write("pole.yml", "DATA:\n  - type: formula 1\n    coefficients: 0 2 -0.5\n"),
+                "DATA[0] (formula 1): the formula has a pole at 500");
+    expectError(write("pole2.yml", "DATA:\n  - type: formula 2\n    coefficients: 0 1 0.36\n"),
+                "the formula has a pole at 600");
+    expectError(
+        write("negative.yml", "DATA:\n  - type: formula 2\n    coefficients: -3 0.1 0.01\n"),
+        "n^2 is not a positive number at 360");
+}
+
 // yaml-cpp throws on a subscript of a scalar, a map where a string belongs and bad syntax;
 // each must become an InputError naming the file and the line, never escape (the fuzz
 // regression yaml-data-on-a-scalar.bin aborted the fuzzer).
