@@ -17,6 +17,7 @@
 
 #include "lamina/core/error.h"
 #include "lamina/render/environment_map.h"
+#include "lamina/render/image_output.h"
 #include "lamina/render/mesh_files.h"
 #include "lamina/render/texture.h"
 
@@ -170,6 +171,15 @@ TEST_F(InputFiles, ImagesWithNonFiniteSamplesAreRefused) {
                           "(2, 1), channel 1"));
     EXPECT_THAT(errorOf([&] { EnvironmentMap(file, 0.0); }),
                 HasSubstr("nan.exr: the environment map has a sample that is not finite"));
+}
+
+// A small file whose header claims 10^10 pixels must be refused before the allocation.
+TEST_F(InputFiles, ImagesClaimingTooManyPixelsAreRefusedBeforeAllocating) {
+    const fs::path file = write("huge.ppm", "P6\n100000 100000\n255\n" + std::string(30, 'x'));
+    EXPECT_THAT(errorOf([&] { ImageTexture(file, Vec2<float>(1.0f), true); }),
+                HasSubstr("huge.ppm: cannot read the texture: 100000 x 100000 pixels, more than"));
+    EXPECT_THAT(errorOf([&] { readRgbImage(file); }),
+                HasSubstr("huge.ppm: 100000 x 100000 pixels, more than the limit"));
 }
 
 TEST_F(InputFiles, ImagePathsMustBeRegularFiles) {

@@ -3,6 +3,7 @@
 #include <OpenImageIO/imageio.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "lamina/core/error.h"
@@ -155,6 +156,12 @@ RgbImage readRgbImage(const std::filesystem::path& path) {
     if (!in) throw InputError(path.string() + ": cannot read image: " + OIIO::geterror());
     const OIIO::ImageSpec& spec = in->spec();
     if (spec.nchannels < 3) throw InputError(path.string() + ": expected at least 3 channels");
+    // A small header can claim any resolution: refuse before allocating for it.
+    if (std::uintmax_t(std::max(spec.width, 0)) * std::uintmax_t(std::max(spec.height, 0)) >
+        kMaxImagePixels)
+        throw InputError(path.string() + ": " + std::to_string(spec.width) + " x " +
+                         std::to_string(spec.height) + " pixels, more than the limit of " +
+                         std::to_string(kMaxImagePixels));
     RgbImage img;
     img.width = spec.width;
     img.height = spec.height;
