@@ -1,8 +1,9 @@
 #include "lamina/core/json_reader.h"
 
 #include <cmath>
-#include <fstream>
 #include <sstream>
+
+#include "lamina/core/input_file.h"
 
 namespace lamina {
 
@@ -23,10 +24,23 @@ std::string lineAndColumn(const std::string& text, std::size_t byte) {
 }
 
 std::string typeName(const Json& v) {
-    return v.is_number() ? "a number" : std::string("a ") + v.type_name() + " " + v.dump();
+    return v.is_number() ? "a number" : std::string("a ") + v.type_name() + " " + shortDump(v);
 }
 
+// Thrown by the parser callback when the nesting gets too deep; parseJsonText turns it into
+// an InputError with the file name.
+struct TooDeep {};
+
 }  // namespace
+
+std::string shortDump(const Json& v) {
+    // Nesting is bounded by kMaxJsonDepth, so the dump cannot overflow the stack; a value
+    // with a million elements still must not fill a message.
+    constexpr std::size_t kMaxChars = 40;
+    std::string text = v.dump(-1, ' ', false, Json::error_handler_t::replace);
+    if (text.size() > kMaxChars) text = text.substr(0, kMaxChars) + "...";
+    return text;
+}
 
 std::string formatNumber(double v) {
     std::ostringstream s;
@@ -36,8 +50,17 @@ std::string formatNumber(double v) {
 }
 
 Json parseJsonText(const std::string& text, const JsonSource& source) {
+    // A value nested 100 000 levels deep would overflow the stack of everything that walks
+    // it recursively (dump, destruction in some versions, the readers); refuse it here.
+    const Json::parser_callback_t limitDepth = [](int depth, Json::parse_event_t, Json&) {
+        if (depth > kMaxJsonDepth) throw TooDeep{};
+        return true;
+    };
     try {
-        return Json::parse(text, nullptr, true, /*ignore_comments=*/true);
+        return Json::parse(text, limitDepth, true, /*ignore_comments=*/true);
+    } catch (const TooDeep&) {
+        throw InputError(source.name + ": malformed JSON: arrays and objects nested deeper than " +
+                         std::to_string(kMaxJsonDepth) + " levels");
     } catch (const Json::parse_error& e) {
         // e.what() is "[json.exception.parse_error.101] parse error at line 3, column 5: ...";
         // keep the part after the position, which says what was expected.
@@ -56,12 +79,8 @@ Json parseJsonText(const std::string& text, const JsonSource& source) {
 }
 
 Json readJsonFile(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path.string() + ": cannot open file");
-    std::stringstream buffer;
-    buffer << in.rdbuf();
     JsonSource source{path.string(), path.parent_path()};
-    return parseJsonText(buffer.str(), source);
+    return parseJsonText(readInputFile(path, kMaxTextFileBytes), source);
 }
 
 std::string Range::describe() const {
@@ -156,21 +175,21 @@ int JsonReader::integer(const std::string& key, int defaultValue, int min, int m
     if (!v) return defaultValue;
     if (!v->is_number_integer() || v->get<long long>() < min || v->get<long long>() > max)
         failAt(key, "expected an integer in [" + std::to_string(min) + ", " + std::to_string(max) +
-                        "], got " + v->dump());
+                        "], got " + shortDump(*v));
     return int(v->get<long long>());
 }
 
 bool JsonReader::boolean(const std::string& key, bool defaultValue) const {
     const Json* v = find(key);
     if (!v) return defaultValue;
-    if (!v->is_boolean()) failAt(key, "expected true or false, got " + v->dump());
+    if (!v->is_boolean()) failAt(key, "expected true or false, got " + shortDump(*v));
     return v->get<bool>();
 }
 
 std::string JsonReader::string(const std::string& key, const std::string& defaultValue) const {
     const Json* v = find(key);
     if (!v) return defaultValue;
-    if (!v->is_string()) failAt(key, "expected a string, got " + v->dump());
+    if (!v->is_string()) failAt(key, "expected a string, got " + shortDump(*v));
     return v->get<std::string>();
 }
 
@@ -185,7 +204,10 @@ std::filesystem::path JsonReader::filePath(const std::string& key) const {
         const auto beside = (source_.directory / p).lexically_normal();
         if (std::filesystem::exists(beside) || !std::filesystem::exists(p)) p = beside;
     }
-    if (!std::filesystem::exists(p)) failAt(key, p.string() + ": no such file");
+    // A directory, a FIFO or a device is refused here, where the JSON path can be named;
+    // the reader of the file checks again (and its size) for callers that bypass the scene.
+    if (const std::string why = notARegularFile(p); !why.empty())
+        failAt(key, p.string() + ": " + why);
     return p;
 }
 
@@ -198,7 +220,7 @@ std::optional<std::array<double, 3>> JsonReader::optionalTriple(const std::strin
         return std::array<double, 3>{d, d, d};
     }
     if (!v->is_array() || v->size() != 3)
-        failAt(key, "expected a number or an array [r, g, b] of numbers, got " + v->dump());
+        failAt(key, "expected a number or an array [r, g, b] of numbers, got " + shortDump(*v));
     std::array<double, 3> out{};
     for (std::size_t i = 0; i < 3; ++i)
         out[i] = checkNumber((*v)[i], childPath(key) + "[" + std::to_string(i) + "]", range);
@@ -216,7 +238,7 @@ std::pair<std::vector<double>, std::vector<double>> JsonReader::wavelengthTable(
     for (std::size_t i = 0; i < value_.size(); ++i) {
         const Json& pair = value_[i];
         if (!pair.is_array() || pair.size() != 2)
-            fail("expected [nm, value] pairs, got " + pair.dump() + " at index " +
+            fail("expected [nm, value] pairs, got " + shortDump(pair) + " at index " +
                  std::to_string(i));
         nm.push_back(checkNumber(pair[0], indexPath(i) + "[0]", Range::positive()));
         values.push_back(checkNumber(pair[1], indexPath(i) + "[1]", range));

@@ -12,6 +12,7 @@
 
 #include "lamina/core/error.h"
 #include "lamina/core/fresnel_equations.h"
+#include "lamina/core/input_file.h"
 #include "lamina/core/math.h"
 #include "lamina/spectral/cie.h"
 #include "lamina/spectral/color_space.h"
@@ -202,8 +203,16 @@ const NamedGlass kGlasses[] = {
     throw InputError(p.string() + ": " + what);
 }
 
+// A column of an n/k table: its name for messages ("n", "k") and its values.
+struct Column {
+    const char* name;
+    const std::vector<double>& values;
+};
+
+// Wavelengths positive and increasing; n and k finite and not negative (a negative k would
+// make a conductor amplify light, a negative n has no meaning in the Fresnel equations).
 void checkTable(const std::filesystem::path& p, const std::vector<double>& nm,
-                const std::vector<std::vector<double>>& columns) {
+                std::initializer_list<Column> columns) {
     if (nm.size() < 2) fileError(p, "needs at least two wavelengths");
     for (std::size_t i = 0; i < nm.size(); ++i) {
         if (!std::isfinite(nm[i]) || nm[i] <= 0)
@@ -211,15 +220,20 @@ void checkTable(const std::filesystem::path& p, const std::vector<double>& nm,
         if (i > 0 && !(nm[i] > nm[i - 1]))
             fileError(p, "row " + std::to_string(i + 1) + ": wavelengths must increase (" +
                              std::to_string(nm[i - 1]) + " then " + std::to_string(nm[i]) + ")");
-        for (const auto& col : columns)
-            if (!std::isfinite(col[i]))
-                fileError(p, "row " + std::to_string(i + 1) + ": value is not a finite number");
+        for (const Column& col : columns) {
+            const double v = col.values[i];
+            if (!std::isfinite(v))
+                fileError(p, "row " + std::to_string(i + 1) + ": value is not a finite number (" +
+                                 col.name + ")");
+            if (v < 0)
+                fileError(p, "row " + std::to_string(i + 1) + ": " + col.name + " is negative (" +
+                                 std::to_string(v) + "); expected n >= 0 and k >= 0");
+        }
     }
 }
 
 IorSpectrum loadCsv(const std::filesystem::path& path) {
-    std::ifstream in(path);
-    if (!in) fileError(path, "cannot open file");
+    std::istringstream in(readInputFile(path, kMaxTextFileBytes));
     std::vector<double> nm, n, k;
     std::string line;
     int lineNo = 0;
@@ -250,22 +264,40 @@ IorSpectrum loadCsv(const std::filesystem::path& path) {
         n.push_back(b);
         k.push_back(c);
     }
-    checkTable(path, nm, {n, k});
+    checkTable(path, nm, {{"n", n}, {"k", k}});
     const std::string name = path.filename().string();
     const bool dispersive =
         *std::max_element(n.begin(), n.end()) != *std::min_element(n.begin(), n.end());
     return IorSpectrum(name, tabulatedCurve(nm, n, name), tabulatedCurve(nm, k, name), dispersive);
 }
 
-IorSpectrum loadYaml(const std::filesystem::path& path) {
-    YAML::Node root;
-    try {
-        root = YAML::LoadFile(path.string());
-    } catch (const YAML::BadFile&) {
-        fileError(path, "cannot open file");
-    } catch (const YAML::Exception& e) {
-        fileError(path, "malformed YAML at line " + std::to_string(e.mark.line + 1) + ": " + e.msg);
+// A Sellmeier formula whose pole (l^2 = B_i) lies in the rendered range gives an infinite n
+// there and a negative n^2 (clamped to n = 0) beside it: refuse it, and any formula whose
+// n^2 is not positive somewhere in the range.
+void checkFormula(const std::filesystem::path& p, const std::string& where, int formula,
+                  const std::vector<double>& c) {
+    for (std::size_t i = 0; i < c.size(); ++i)
+        if (!std::isfinite(c[i]))
+            fileError(p, where + ": coefficient " + std::to_string(i) + " is not finite");
+    for (std::size_t i = 1; i + 1 < c.size(); i += 2) {
+        const double b = formula == 1 ? c[i + 1] * c[i + 1] : c[i + 1];
+        const double poleNm = b > 0 ? std::sqrt(b) * 1e3 : 0.0;
+        if (c[i] != 0 && poleNm >= kLambdaMin && poleNm <= kLambdaMax)
+            fileError(p, where + ": the formula has a pole at " + std::to_string(poleNm) +
+                             " nm, inside the rendered range [360, 830] nm");
     }
+    for (double nm = kLambdaMin; nm <= kLambdaMax; nm += 1.0) {
+        const double l2 = (nm * 1e-3) * (nm * 1e-3);
+        double n2 = 1.0 + c[0];
+        for (std::size_t i = 1; i + 1 < c.size(); i += 2)
+            n2 += c[i] * l2 / (l2 - (formula == 1 ? c[i + 1] * c[i + 1] : c[i + 1]));
+        if (!(n2 > 0) || !std::isfinite(n2))
+            fileError(p, where + ": n^2 is not a positive number at " + std::to_string(nm) + " nm");
+    }
+}
+
+IorSpectrum readYaml(const std::filesystem::path& path, const std::string& text) {
+    const YAML::Node root = YAML::Load(text);
     const YAML::Node data = root["DATA"];
     if (!data || !data.IsSequence() || data.size() == 0)
         fileError(path, "no DATA list (expected a refractiveindex.info database file)");
@@ -295,7 +327,10 @@ IorSpectrum loadYaml(const std::filesystem::path& path) {
                 a.push_back(v1);
                 b.push_back(v2);
             }
-            checkTable(path, nm, {a, b});
+            if (type == "tabulated nk")
+                checkTable(path, nm, {{"n", a}, {"k", b}});
+            else
+                checkTable(path, nm, {{type == "tabulated n" ? "n" : "k", a}});
             if (type == "tabulated nk" || type == "tabulated n") {
                 dispersive |=
                     *std::max_element(a.begin(), a.end()) != *std::min_element(a.begin(), a.end());
@@ -311,6 +346,7 @@ IorSpectrum loadYaml(const std::filesystem::path& path) {
                 c.push_back(v);
             if (c.empty() || c.size() % 2 == 0)
                 fileError(path, where + ": expected an odd number of coefficients");
+            checkFormula(path, where, type == "formula 1" ? 1 : 2, c);
             n = formulaCurve(type == "formula 1" ? 1 : 2, c);
             dispersive = true;
         } else {
@@ -322,6 +358,19 @@ IorSpectrum loadYaml(const std::filesystem::path& path) {
     if (!n) fileError(path, "no real index (n) in the DATA list");
     if (!k) k = noAbsorption;
     return IorSpectrum(name, *n, *k, dispersive);
+}
+
+// Every yaml-cpp exception (a syntax error, a map where a scalar belongs, a subscript on a
+// scalar) becomes an InputError naming the file and, where yaml-cpp knows it, the line.
+IorSpectrum loadYaml(const std::filesystem::path& path) {
+    const std::string text = readInputFile(path, kMaxTextFileBytes);
+    try {
+        return readYaml(path, text);
+    } catch (const YAML::Exception& e) {
+        const std::string where =
+            e.mark.is_null() ? std::string() : " at line " + std::to_string(e.mark.line + 1);
+        fileError(path, "malformed YAML" + where + ": " + (e.msg.empty() ? e.what() : e.msg));
+    }
 }
 
 }  // namespace
@@ -390,7 +439,7 @@ std::vector<std::string> namedGlassNames() {
 }
 
 IorSpectrum loadIorFile(const std::filesystem::path& path) {
-    if (!std::filesystem::exists(path)) fileError(path, "no such file");
+    checkInputFile(path, kMaxTextFileBytes);
     const std::string ext = path.extension().string();
     if (ext == ".yml" || ext == ".yaml") return loadYaml(path);
     if (ext == ".csv" || ext == ".txt") return loadCsv(path);

@@ -8,6 +8,7 @@
 #include <complex>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include "lamina/core/error.h"
 #include "lamina/core/fresnel_equations.h"
@@ -194,6 +195,47 @@ TEST_F(BadIorFile, ErrorsNameTheFileAndTheProblem) {
     expectError(write("nodata.yml", "REFERENCES: x\n"), "no DATA list");
     expectError(write("missing.csv", ""), "needs at least two wavelengths");
     expectError(fs::path("/nonexistent/gold.yml"), "no such file");
+}
+
+// A negative n or k in a file is refused like an inline negative k (issue 14).
+TEST_F(BadIorFile, NegativeNOrKIsRefused) {
+    expectError(write("negative-k.csv", "400,1.5,0\n500,1.4,-0.1\n"), "row 2: k is negative");
+    expectError(write("negative-n.csv", "400,-1.5,0\n500,1.4,0\n"), "row 1: n is negative");
+    expectError(write("negative-n.yml",
+                      "DATA:\n  - type: tabulated nk\n    data: |\n      0.4 1.5 0\n"
+                      "      0.5 -1.4 0\n"),
+                "row 2: n is negative");
+    expectError(write("negative-k.yml",
+                      "DATA:\n  - type: tabulated k\n    data: |\n      0.4 1\n      0.5 -1\n"),
+                "row 2: k is negative");
+}
+
+// A formula with a pole in 360-830 nm gave n = inf at the pole (fuzz regression
+// formula-pole-at-500nm.bin) and n = 0 beside it.
+TEST_F(BadIorFile, FormulaPolesInTheRenderedRangeAreRefused) {
+    expectError(write("pole.yml", "DATA:\n  - type: formula 1\n    coefficients: 0 2 -0.5\n"),
+                "DATA[0] (formula 1): the formula has a pole at 500");
+    expectError(write("pole2.yml", "DATA:\n  - type: formula 2\n    coefficients: 0 1 0.36\n"),
+                "the formula has a pole at 600");
+    expectError(
+        write("negative.yml", "DATA:\n  - type: formula 2\n    coefficients: -3 0.1 0.01\n"),
+        "n^2 is not a positive number at 360");
+}
+
+// yaml-cpp throws on a subscript of a scalar, a map where a string belongs and bad syntax;
+// each must become an InputError naming the file and the line, never escape (the fuzz
+// regression yaml-data-on-a-scalar.bin aborted the fuzzer).
+TEST_F(BadIorFile, YamlExceptionsBecomeInputErrors) {
+    expectError(write("scalar.yml", "DATA:\n  - 1.03961212 0.006\n"), "malformed YAML at line");
+    expectError(write("map-type.yml", "DATA:\n  - type: {a: 1}\n"), "malformed YAML at line 2");
+    expectError(write("syntax.yml", "DATA: [\n"), "malformed YAML");
+    const fs::path regression = fs::path(LAMINA_SOURCE_DIR) / "tests" / "fuzz" / "regressions" /
+                                "ior_file" / "yaml-data-on-a-scalar.bin";
+    std::ifstream in(regression, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_FALSE(bytes.empty());
+    // The fuzz target's first byte chooses the format (odd: YAML); the rest is the file.
+    expectError(write("fuzz-regression.yml", bytes.substr(1)), "malformed YAML");
 }
 
 }  // namespace

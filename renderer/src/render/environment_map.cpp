@@ -1,12 +1,11 @@
 #include "lamina/render/environment_map.h"
 
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
 #include <cmath>
 
 #include "lamina/core/error.h"
 #include "lamina/core/math.h"
+#include "lamina/render/image_input.h"
 
 namespace lamina::render {
 
@@ -40,17 +39,12 @@ double PiecewiseConstant1D::pdf(double x) const {
 }
 
 EnvironmentMap::EnvironmentMap(const std::filesystem::path& file, double rotationDegrees) {
-    auto in = OIIO::ImageInput::open(file.string());
-    if (!in)
-        throw InputError(file.string() + ": cannot read the environment map: " + OIIO::geterror());
-    const OIIO::ImageSpec& spec = in->spec();
-    width_ = spec.width;
-    height_ = spec.height;
+    const InputImage image = readInputImage(file, "environment map");
+    width_ = image.width;
+    height_ = image.height;
     if (width_ < 2 || height_ < 1) throw InputError(file.string() + ": image too small");
-    const int channels = std::min(spec.nchannels, 3);
-    std::vector<float> data(std::size_t(width_) * height_ * std::size_t(channels));
-    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, data.data()))
-        throw InputError(file.string() + ": cannot read the environment map: " + in->geterror());
+    const int channels = image.channels;
+    const std::vector<float>& data = image.samples;
     pixels_.resize(std::size_t(width_) * height_);
     for (std::size_t i = 0; i < pixels_.size(); ++i)
         for (int c = 0; c < 3; ++c) {

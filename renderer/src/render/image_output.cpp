@@ -3,9 +3,11 @@
 #include <OpenImageIO/imageio.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "lamina/core/error.h"
+#include "lamina/core/input_file.h"
 #include "lamina/spectral/color_space.h"
 
 namespace lamina::render {
@@ -149,10 +151,17 @@ void writePngPreview(const std::filesystem::path& path, const Film& film, double
 }
 
 RgbImage readRgbImage(const std::filesystem::path& path) {
+    checkInputFile(path, kMaxImageFileBytes);
     auto in = OIIO::ImageInput::open(path.string());
     if (!in) throw InputError(path.string() + ": cannot read image: " + OIIO::geterror());
     const OIIO::ImageSpec& spec = in->spec();
     if (spec.nchannels < 3) throw InputError(path.string() + ": expected at least 3 channels");
+    // A small header can claim any resolution: refuse before allocating for it.
+    if (std::uintmax_t(std::max(spec.width, 0)) * std::uintmax_t(std::max(spec.height, 0)) >
+        kMaxImagePixels)
+        throw InputError(path.string() + ": " + std::to_string(spec.width) + " x " +
+                         std::to_string(spec.height) + " pixels, more than the limit of " +
+                         std::to_string(kMaxImagePixels));
     RgbImage img;
     img.width = spec.width;
     img.height = spec.height;

@@ -1,25 +1,84 @@
 #include <tiny_obj_loader.h>
 
+#include <cmath>
 #include <map>
+#include <sstream>
 
 #include "lamina/core/error.h"
+#include "lamina/core/input_file.h"
 #include "lamina/render/mesh_files.h"
 
 namespace lamina::render {
 
+namespace {
+
+// tinyobjloader skips what it cannot use (degenerate faces, faces with invalid indices,
+// unparsable lines) and says so only in its warnings: those are errors of the mesh. The
+// warnings about materials are not: lamina takes materials from the scene, never from .mtl.
+void refuseGeometryWarnings(const std::filesystem::path& file, const std::string& warnings) {
+    std::istringstream lines(warnings);
+    for (std::string line; std::getline(lines, line);) {
+        if (line.find_first_not_of(" \t\r.") == std::string::npos) continue;
+        if (line.find("aterial") != std::string::npos || line.find("mtl") != std::string::npos ||
+            line.find("group name") != std::string::npos)
+            continue;
+        // tinyobjloader's "out of bounds (line N.)" gives the file's last line, not the
+        // face's: drop it.
+        if (const auto at = line.find(" (line ");
+            at != std::string::npos && line.find("out of bounds") != std::string::npos)
+            line = line.substr(0, at);
+        throw InputError(file.string() + ": " + line);
+    }
+}
+
+// Checks one index of a face corner against its array: `optional` arrays (normals, uvs)
+// may be absent at a corner (index -1).
+void checkIndex(const std::filesystem::path& file, const std::string& face, const char* what,
+                int index, std::size_t count, bool optional) {
+    if ((optional && index == -1) || (index >= 0 && std::size_t(index) < count)) return;
+    throw InputError(file.string() + ": " + face + ": " + what + " index " +
+                     std::to_string(index >= 0 ? std::int64_t(index) + 1 : std::int64_t(index)) +
+                     " is out of range (the file has " + std::to_string(count) + ")");
+}
+
+// The first NaN or infinite number of an attribute array (v, vn or vt lines, `n` numbers
+// each; 1e39 overflows to infinity in float), or a zero normal: geometry that would silently
+// disappear or shade as NaN.
+void checkValues(const std::filesystem::path& file, const std::vector<tinyobj::real_t>& values,
+                 std::size_t n, const char* what, bool normal) {
+    for (std::size_t i = 0; i + n <= values.size(); i += n) {
+        bool finite = true, zero = true;
+        for (std::size_t c = 0; c < n; ++c) {
+            finite &= std::isfinite(values[i + c]);
+            zero &= values[i + c] == 0;
+        }
+        if (!finite || (normal && zero))
+            throw InputError(file.string() + ": " + what + " " + std::to_string(i / n + 1) +
+                             (finite ? " is zero" : " is not finite (in single precision)"));
+    }
+}
+
+}  // namespace
+
 // Vertices are shared between triangles where the OBJ shares the same position, normal and
 // uv indices; normals and uvs are kept only when every face vertex has one.
 void readObj(const std::filesystem::path& file, MeshDesc& mesh) {
+    const std::string text = readInputFile(file, kMaxMeshFileBytes);
     tinyobj::ObjReaderConfig config;
     config.triangulate = true;
     config.vertex_color = false;
     tinyobj::ObjReader reader;
-    if (!reader.ParseFromFile(file.string(), config))
+    if (!reader.ParseFromString(text, "", config))
         throw InputError(file.string() + ": " +
                          (reader.Error().empty() ? "cannot read the OBJ file" : reader.Error()));
     const auto& attrib = reader.GetAttrib();
+    checkValues(file, attrib.vertices, 3, "vertex position (v)", false);
+    checkValues(file, attrib.normals, 3, "normal (vn)", true);
+    checkValues(file, attrib.texcoords, 2, "texture coordinate (vt)", false);
+    const std::size_t positions = attrib.vertices.size() / 3, normals = attrib.normals.size() / 3,
+                      uvs = attrib.texcoords.size() / 2;
     std::map<std::array<int, 3>, std::uint32_t> unique;
-    bool hasNormals = !attrib.normals.empty(), hasUvs = !attrib.texcoords.empty();
+    bool hasNormals = normals > 0, hasUvs = uvs > 0;
     for (const auto& shape : reader.GetShapes())
         for (const auto& index : shape.mesh.indices) {
             hasNormals &= index.normal_index >= 0;
@@ -28,9 +87,16 @@ void readObj(const std::filesystem::path& file, MeshDesc& mesh) {
     for (const auto& shape : reader.GetShapes()) {
         const auto& idx = shape.mesh.indices;
         for (std::size_t t = 0; t + 2 < idx.size(); t += 3) {
+            const std::string face =
+                (shape.name.empty() ? std::string() : "object \"" + shape.name + "\", ") +
+                "triangle " + std::to_string(t / 3);
             std::array<std::uint32_t, 3> tri{};
             for (int k = 0; k < 3; ++k) {
                 const auto& i = idx[t + std::size_t(k)];
+                // OBJ indices in messages count from 1, as in the file.
+                checkIndex(file, face, "vertex", i.vertex_index, positions, false);
+                checkIndex(file, face, "normal", i.normal_index, normals, true);
+                checkIndex(file, face, "texture coordinate", i.texcoord_index, uvs, true);
                 const std::array<int, 3> key{i.vertex_index, hasNormals ? i.normal_index : -1,
                                              hasUvs ? i.texcoord_index : -1};
                 auto [it, inserted] = unique.emplace(key, std::uint32_t(mesh.positions.size()));
@@ -53,6 +119,9 @@ void readObj(const std::filesystem::path& file, MeshDesc& mesh) {
             mesh.triangles.push_back(tri);
         }
     }
+    // After the faces' own checks, which name the face: what is left are the faces
+    // tinyobjloader dropped.
+    refuseGeometryWarnings(file, reader.Warning());
     if (mesh.triangles.empty()) throw InputError(file.string() + ": no triangles");
 }
 

@@ -1,11 +1,16 @@
 #include "lamina/render/mesh_files.h"
 
+#include <algorithm>
 #include <bit>
+#include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "lamina/core/error.h"
+#include "lamina/core/input_file.h"
 
 namespace lamina::render {
 
@@ -35,10 +40,26 @@ std::size_t typeSize(const std::string& t) {
     return 0;
 }
 
+// An integer read from a file, for messages: "99999999999", never a wrapped 32-bit value.
+std::string integerText(double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.0f", v);
+    return buf;
+}
+
+// The header's element count: a plain decimal integer (a "-1" read into a size_t would be
+// 2^64 - 1 elements).
+bool parseCount(const std::string& word, std::size_t& count) {
+    if (word.empty() || word.size() > 19 || word.find_first_not_of("0123456789") != word.npos)
+        return false;
+    count = std::size_t(std::stoull(word));
+    return true;
+}
+
 class PlyReader {
   public:
     explicit PlyReader(const std::filesystem::path& file)
-        : file_(file), in_(file, std::ios::binary) {
+        : file_(file), size_(checkInputFile(file, kMaxMeshFileBytes)), in_(file, std::ios::binary) {
         if (!in_) fail("cannot open the PLY file");
     }
 
@@ -68,8 +89,9 @@ class PlyReader {
                     fail("unknown format \"" + f + "\"");
             } else if (word == "element") {
                 Element e;
-                s >> e.name >> e.count;
-                if (!s) fail("malformed element line: " + line);
+                std::string count;
+                s >> e.name >> count;
+                if (!s || !parseCount(count, e.count)) fail("malformed element line: " + line);
                 elements_.push_back(e);
             } else if (word == "property") {
                 if (elements_.empty()) fail("property before any element");
@@ -87,22 +109,51 @@ class PlyReader {
                     fail("malformed or unsupported property line: " + line);
                 elements_.back().properties.push_back(p);
             } else if (word == "end_header") {
+                checkCounts();
                 return;
             }
         }
         fail("no end_header");
     }
 
+    // Counts that lie (more elements than the file holds) must fail before the reader loops
+    // over them: each element takes at least one byte per scalar in binary (the sizes of its
+    // scalars and list counts), and at least a digit and a separator per scalar in ASCII.
+    void checkCounts() {
+        const std::uintmax_t headerEnd = std::uintmax_t(std::max<std::streamoff>(in_.tellg(), 0));
+        const std::uintmax_t body = size_ > headerEnd ? size_ - headerEnd : 0;
+        std::uintmax_t needed = 0;
+        for (const Element& e : elements_) {
+            std::uintmax_t perElement = 0;
+            for (const Property& p : e.properties)
+                perElement += format_ == Format::Ascii
+                                  ? 2
+                                  : typeSize(p.countType.empty() ? p.type : p.countType);
+            const std::uintmax_t room = body - std::min(body, needed) + 1;
+            if (perElement > 0 && e.count > room / perElement)
+                fail("element " + e.name + ": unexpected end of data: the header says " +
+                     std::to_string(e.count) + " elements, more than the " + std::to_string(body) +
+                     " bytes after the header can hold");
+            needed += e.count * perElement;
+        }
+    }
+
+    std::size_t vertexCount() const {
+        for (const Element& e : elements_)
+            if (e.name == "vertex") return e.count;
+        return 0;
+    }
+
     double readScalar(const std::string& type) {
         if (format_ == Format::Ascii) {
             double v;
-            if (!(in_ >> v)) fail("unexpected end of data or a non-number");
+            if (!(in_ >> v)) fail(where_ + ": unexpected end of data or a non-number");
             return v;
         }
         unsigned char buf[8];
         const std::size_t n = typeSize(type);
         if (!in_.read(reinterpret_cast<char*>(buf), std::streamsize(n)))
-            fail("unexpected end of data");
+            fail(where_ + ": unexpected end of data");
         const bool swap =
             (format_ == Format::BinaryBig) == (std::endian::native == std::endian::little);
         if (swap) std::reverse(buf, buf + n);
@@ -123,6 +174,10 @@ class PlyReader {
     void read(MeshDesc& mesh) {
         readHeader();
         const std::uint32_t base = std::uint32_t(mesh.positions.size());
+        const std::size_t vertices = vertexCount();
+        if (vertices > std::numeric_limits<std::uint32_t>::max() - base)
+            fail("element vertex: " + std::to_string(vertices) +
+                 " vertices, more than a mesh can index with 32 bits");
         for (const Element& e : elements_) {
             const bool vertex = e.name == "vertex", face = e.name == "face";
             auto index = [&](const char* a, const char* b = nullptr) {
@@ -140,7 +195,10 @@ class PlyReader {
             const bool normals = vertex && nx >= 0 && ny >= 0 && nz >= 0;
             const bool uvs = vertex && tu >= 0 && tv >= 0;
             std::vector<double> values(e.properties.size());
-            for (std::size_t k = 0; k < e.count; ++k) {
+            // An element without properties occupies no bytes: nothing to read, however many.
+            const std::size_t count = e.properties.empty() ? 0 : e.count;
+            for (std::size_t k = 0; k < count; ++k) {
+                where_ = e.name + " " + std::to_string(k);
                 std::vector<std::uint32_t> polygon;
                 for (std::size_t p = 0; p < e.properties.size(); ++p) {
                     const Property& prop = e.properties[p];
@@ -149,13 +207,22 @@ class PlyReader {
                         continue;
                     }
                     const double n = readScalar(prop.countType);
-                    if (n < 0 || n > 1e6) fail("implausible list length in " + e.name);
+                    const bool indices = face && int(p) == list;
+                    if (!(n >= 0 && n <= 1e6 && n == std::floor(n)))
+                        fail(e.name + " " + std::to_string(k) + ": implausible list length " +
+                             integerText(n));
+                    if (indices && n > double(vertices))
+                        fail("face " + std::to_string(k) + ": lists " + integerText(n) +
+                             " vertices, more than the " + std::to_string(vertices) +
+                             " of element vertex");
                     for (int i = 0; i < int(n); ++i) {
                         const double v = readScalar(prop.type);
-                        if (face && int(p) == list) {
-                            if (v < 0) fail("negative vertex index in face " + std::to_string(k));
-                            polygon.push_back(base + std::uint32_t(v));
-                        }
+                        if (!indices) continue;
+                        if (!(v >= 0 && v < double(vertices) && v == std::floor(v)))
+                            fail("face " + std::to_string(k) + ": face index " +
+                                 (std::isfinite(v) ? integerText(v) : std::string("nan")) +
+                                 " is out of range [0, " + std::to_string(vertices) + ")");
+                        polygon.push_back(base + std::uint32_t(v));
                     }
                 }
                 if (vertex) {
@@ -178,19 +245,19 @@ class PlyReader {
                 }
             }
         }
-        for (const auto& t : mesh.triangles)
-            for (std::uint32_t i : t)
-                if (i >= mesh.positions.size())
-                    fail("face index " + std::to_string(i - base) + " is out of range (" +
-                         std::to_string(mesh.positions.size() - base) + " vertices)");
+        // Every index was checked against the header's vertex count, which the vertex
+        // element then delivered in full (a short file fails in readScalar).
         if (mesh.triangles.empty()) fail("no faces");
+        if (const auto bad = firstBadVertex(mesh, base)) fail(*bad);
     }
 
   private:
     std::filesystem::path file_;
+    std::uintmax_t size_;
     std::ifstream in_;
     Format format_ = Format::Ascii;
     std::vector<Element> elements_;
+    std::string where_ = "header";  ///< the element being read, for messages
 };
 
 }  // namespace

@@ -140,7 +140,7 @@ void readInlineMesh(const JsonReader& r, MeshDesc& mesh) {
             if (!i.is_number_integer() || i.get<long long>() < 0 ||
                 i.get<long long>() >= (long long)mesh.positions.size())
                 faces.fail("face " + std::to_string(f) + ": expected vertex indices in [0, " +
-                           std::to_string(mesh.positions.size() - 1) + "], got " + i.dump());
+                           std::to_string(mesh.positions.size() - 1) + "], got " + shortDump(i));
             idx.push_back(std::uint32_t(i.get<long long>()));
         }
         // Polygons (the Cornell box's quads) are split as fans: (0, 1, 2), (0, 2, 3), ...

@@ -1,26 +1,19 @@
 #include "lamina/render/texture.h"
 
-#include <OpenImageIO/imageio.h>
-
 #include <cmath>
 
-#include "lamina/core/error.h"
+#include "lamina/render/image_input.h"
 
 namespace lamina::render {
 
 ImageTexture::ImageTexture(const std::filesystem::path& file, const Vec2<float>& scale, bool srgb)
     : scale_(scale) {
-    auto in = OIIO::ImageInput::open(file.string());
-    if (!in) throw InputError(file.string() + ": cannot read the texture: " + OIIO::geterror());
-    const OIIO::ImageSpec& spec = in->spec();
-    width_ = spec.width;
-    height_ = spec.height;
-    const int channels = std::min(spec.nchannels, 3);
-    std::vector<float> data(std::size_t(width_) * height_ * std::size_t(channels));
-    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, data.data()))
-        throw InputError(file.string() + ": cannot read the texture: " + in->geterror());
-    const bool decode =
-        srgb && (spec.format == OIIO::TypeDesc::UINT8 || spec.format == OIIO::TypeDesc::UINT16);
+    InputImage image = readInputImage(file, "texture");
+    width_ = image.width;
+    height_ = image.height;
+    const int channels = image.channels;
+    const std::vector<float>& data = image.samples;
+    const bool decode = srgb && image.integerFormat;
     pixels_.resize(std::size_t(width_) * height_);
     for (std::size_t i = 0; i < pixels_.size(); ++i)
         for (int c = 0; c < 3; ++c) {

@@ -28,10 +28,17 @@ struct JsonSource {
     std::filesystem::path directory = ".";
 };
 
-/// Parses JSON text (comments allowed); a syntax error names the line and column.
+/// The deepest nesting of arrays and objects a JSON input may have (scenes need about 6).
+inline constexpr int kMaxJsonDepth = 64;
+
+/// Parses JSON text (comments allowed); a syntax error names the line and column, nesting
+/// deeper than kMaxJsonDepth is an error.
 Json parseJsonText(const std::string& text, const JsonSource& source);
 /// Reads and parses a JSON file; a missing file is an InputError naming it.
 Json readJsonFile(const std::filesystem::path& path);
+
+/// A value for a message: its JSON text, cut to a short prefix ("...") when long.
+std::string shortDump(const Json& v);
 
 /// A closed interval for numeric validation.
 struct Range {
@@ -121,7 +128,7 @@ std::array<double, N> JsonReader::requiredArray(const std::string& key, Range ra
     const Json* v = find(key);
     if (!v) failAt(key, "missing; expected an array of " + std::to_string(N) + " numbers");
     if (!v->is_array() || v->size() != N)
-        failAt(key, "expected an array of " + std::to_string(N) + " numbers, got " + v->dump());
+        failAt(key, "expected an array of " + std::to_string(N) + " numbers, got " + shortDump(*v));
     std::array<double, N> out{};
     for (std::size_t i = 0; i < N; ++i)
         out[i] = checkNumber((*v)[i], childPath(key) + "[" + std::to_string(i) + "]", range);

@@ -8,7 +8,10 @@
 //                   other elements and unknown vertex properties are skipped.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
+#include <optional>
+#include <string>
 
 #include "lamina/render/scene_description.h"
 
@@ -16,5 +19,10 @@ namespace lamina::render {
 
 void readObj(const std::filesystem::path& file, MeshDesc& mesh);
 void readPly(const std::filesystem::path& file, MeshDesc& mesh);
+
+/// The first vertex from `first` on whose position, normal or uv is NaN or infinite (in
+/// float: 1e39 overflows), or whose normal is zero, described as "vertex 7: normal (0, 0,
+/// 0) is zero" (numbered from `first`); nothing when every vertex is usable.
+std::optional<std::string> firstBadVertex(const MeshDesc& mesh, std::size_t first);
 
 }  // namespace lamina::render

@@ -1,0 +1,108 @@
+// The gate every reader goes through (input_file.h) and the JSON reader's bounds: a path
+// that is a directory, a FIFO or a device is refused before it is opened (readers hung on
+// them), a file larger than its kind's limit is refused, JSON nesting is bounded (100 000
+// levels crashed) and no message echoes a whole value.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "lamina/core/error.h"
+#include "lamina/core/input_file.h"
+#include "lamina/core/json_reader.h"
+
+namespace lamina {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+template <typename F>
+std::string errorOf(F&& f) {
+    try {
+        f();
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "(accepted)";
+}
+
+class InputFiles : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / ("lamina-input-file-" + std::to_string(::getpid()));
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+    fs::path write(const std::string& name, const std::string& text) {
+        const fs::path p = dir_ / name;
+        std::ofstream(p, std::ios::binary) << text;
+        return p;
+    }
+    fs::path dir_;
+};
+
+TEST_F(InputFiles, ADirectoryAFifoAndADeviceAreRefusedBeforeOpening) {
+    EXPECT_THAT(errorOf([&] { readInputFile(dir_, kMaxTextFileBytes); }),
+                HasSubstr(dir_.string() + ": is a directory, not a regular file"));
+    const fs::path fifo = dir_ / "fifo.json";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    // Opening a FIFO blocks until a writer comes: the check must not open it.
+    EXPECT_THAT(errorOf([&] { readJsonFile(fifo); }), HasSubstr("fifo.json: is a FIFO"));
+    EXPECT_THAT(errorOf([&] { readJsonFile("/dev/zero"); }),
+                HasSubstr("/dev/zero: is a device, not a regular file"));
+    EXPECT_THAT(errorOf([&] { readJsonFile(dir_ / "missing.json"); }),
+                HasSubstr("missing.json: cannot open file (no such file)"));
+}
+
+TEST_F(InputFiles, AFileLargerThanItsLimitIsRefused) {
+    const fs::path p = write("big.csv", std::string(2000, 'x'));
+    EXPECT_EQ(checkInputFile(p, 2000), 2000u);
+    EXPECT_THAT(errorOf([&] { readInputFile(p, 1000); }),
+                HasSubstr("big.csv: the file is 0.0 MiB, more than the limit"));
+    EXPECT_EQ(readInputFile(p, 2000).size(), 2000u);
+}
+
+TEST_F(InputFiles, AFilePathInJsonMustBeARegularFile) {
+    const Json j = {{"file", dir_.string()}};
+    const JsonSource source{"scene.json", "."};
+    const JsonReader r(j, "", source);
+    EXPECT_THAT(errorOf([&] { r.filePath("file"); }),
+                HasSubstr("scene.json: file: " + dir_.string() + ": is a directory"));
+}
+
+TEST(JsonBounds, DeepNestingIsRefusedWithoutCrashing) {
+    const int levels = 100000;
+    const std::string text =
+        "{\"camera\": " + std::string(levels, '[') + std::string(levels, ']') + "}";
+    const JsonSource source{"deep.json", "."};
+    EXPECT_THAT(errorOf([&] { parseJsonText(text, source); }),
+                HasSubstr("deep.json: malformed JSON: arrays and objects nested deeper than 64"));
+    // Up to the limit is legal JSON.
+    const std::string ok = std::string(kMaxJsonDepth, '[') + std::string(kMaxJsonDepth, ']');
+    EXPECT_NO_THROW(parseJsonText(ok, source));
+}
+
+TEST(JsonBounds, MessagesEchoAShortPrefixOfAValue) {
+    Json big = Json::array();
+    for (int i = 0; i < 10000; ++i)
+        big.push_back("element");
+    const Json j = {{"name", big}, {"flag", big}, {"count", big}, {"roughness", big}};
+    const JsonSource source{"scene.json", "."};
+    const JsonReader r(j, "", source);
+    for (const std::string& message :
+         {errorOf([&] { r.string("name", ""); }), errorOf([&] { r.boolean("flag", false); }),
+          errorOf([&] { r.integer("count", 0, 0, 9); }),
+          errorOf([&] { r.number("roughness", 0.0); }),
+          errorOf([&] { JsonReader(big, "x", source).expectObject(); })}) {
+        EXPECT_THAT(message, HasSubstr("[\"element\",\"element\""));
+        EXPECT_THAT(message, HasSubstr("..."));
+        EXPECT_LT(message.size(), 200u) << message;
+    }
+}
+
+}  // namespace
+}  // namespace lamina
