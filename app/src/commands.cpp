@@ -2,7 +2,34 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
+#include <cstdlib>
+
 namespace lamina::app {
+
+namespace {
+
+// strtod, which CLI11 converts floating options with, accepts "nan", "inf" and overflowing
+// literals such as 1e999; none of them is a meaningful time, exposure or scale. A token that
+// is not a number at all is left to CLI11's own conversion error.
+std::string refuseNonFinite(std::string& token) {
+    char* end = nullptr;
+    const double value = std::strtod(token.c_str(), &end);
+    if (end == token.c_str() || std::isfinite(value)) return {};
+    return "expected a finite number, got " + token;
+}
+
+// Every floating option of every command (CLI11 names their type FLOAT) gets the check, so a
+// new option cannot forget it.
+void requireFiniteFloats(CLI::App& app) {
+    for (CLI::Option* option : app.get_options())
+        if (option->get_type_name().find("FLOAT") != std::string::npos)
+            option->check(CLI::Validator(refuseNonFinite, "FINITE"));
+    for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; }))
+        requireFiniteFloats(*sub);
+}
+
+}  // namespace
 
 void registerRenderCommand(CLI::App& app);
 void registerBsdfCommand(CLI::App& app);
@@ -27,6 +54,7 @@ void registerCommands(CLI::App& app) {
     registerFresnelCommand(app);
     registerStabilityCommand(app);
     registerSpectrumCommand(app);
+    requireFiniteFloats(app);
 }
 
 }  // namespace lamina::app

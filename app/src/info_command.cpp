@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "lamina/bsdf/material_builder.h"
+#include "lamina/render/render_memory.h"
 #include "lamina/render/scene_description.h"
 
 namespace lamina::app {
@@ -53,6 +54,18 @@ void run(const std::string& file) {
         "~%.1f MiB\n",
         scene.meshes.size(), triangles, vertices, scene.spheres.size(), scene.disks.size(),
         double(bytes) / (1 << 20));
+    const auto film =
+        render::estimateRenderMemory(scene.film.width, scene.film.height, false, false);
+    std::printf(
+        "render memory: ~%s (film %s, image %s); with --aovs ~%s, bdpt --strategies ~%s\n",
+        render::formatBytes(film.total()).c_str(), render::formatBytes(film.film).c_str(),
+        render::formatBytes(film.output).c_str(),
+        render::formatBytes(
+            render::estimateRenderMemory(scene.film.width, scene.film.height, true, false).total())
+            .c_str(),
+        render::formatBytes(
+            render::estimateRenderMemory(scene.film.width, scene.film.height, false, true).total())
+            .c_str());
     std::printf("lights: %zu emitting primitives, %zu other lights\n", emitters,
                 scene.lights.size());
     std::printf("materials:\n");

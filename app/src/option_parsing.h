@@ -44,13 +44,15 @@ std::vector<E> parseNameList(const NameTable<E, N>& table, const std::string& li
     return out;
 }
 
-/// "WIDTHxHEIGHT".
+/// "WIDTHxHEIGHT", each in [1, 65536] as the scene's film.resolution (the memory it needs is
+/// checked when the render starts, render_memory.h).
 inline std::pair<int, int> parseResolution(const std::string& text) {
     int w = 0, h = 0;
     char x = 0;
     std::istringstream in(text);
-    if (!(in >> w >> x >> h) || x != 'x' || w < 1 || h < 1 || !in.eof())
-        throw CLI::ValidationError("--resolution", "expected WIDTHxHEIGHT, e.g. 512x512");
+    if (!(in >> w >> x >> h) || x != 'x' || w < 1 || h < 1 || w > 65536 || h > 65536 || !in.eof())
+        throw CLI::ValidationError("--resolution",
+                                   "expected WIDTHxHEIGHT, each in [1, 65536], e.g. 512x512");
     return {w, h};
 }
 

@@ -1,5 +1,8 @@
 // `dielectric`: the index of refraction as a number, a named glass, a file or a dispersion
 // formula (spectral/ior_spectrum.h), and a microfacet NDF (docs/bsdf.md, "Materials").
+#include <cmath>
+
+#include "lamina/spectral/cie.h"
 #include "material_readers.h"
 
 namespace lamina {
@@ -38,6 +41,16 @@ IorSpectrum readSellmeier(const JsonReader& f) {
         cs.push_back(sm.checkNumber(c[i], sm.childPath("c") + "[" + std::to_string(i) + "]",
                                     Range::nonNegative()));
     }
+    // n^2 = 1 + sum B lambda^2 / (lambda^2 - C) has a pole at lambda = sqrt(C) um: inside
+    // the rendered wavelengths it gives an infinite index, and beyond it a negative n^2.
+    for (std::size_t i = 0; i < cs.size(); ++i) {
+        const double poleNm = 1e3 * std::sqrt(cs[i]);
+        if (bs[i] != 0 && poleNm >= kLambdaMin && poleNm <= kLambdaMax)
+            sm.failAt("c[" + std::to_string(i) + "]",
+                      "puts a pole of the formula at " + formatNumber(poleNm) +
+                          " nm, inside the rendered range " + formatNumber(kLambdaMin) + "-" +
+                          formatNumber(kLambdaMax) + " nm");
+    }
     (void)sm.child("b");
     (void)sm.child("c");
     sm.finish();
@@ -49,6 +62,15 @@ IorSpectrum readDispersionFormula(const JsonReader& f) {
     if (f.has("cauchy") == f.has("sellmeier"))
         f.fail("expected exactly one of cauchy and sellmeier");
     IorSpectrum ior = f.has("cauchy") ? readCauchy(f) : readSellmeier(f);
+    // Whatever the coefficients, the index must be a positive float at every wavelength that
+    // is rendered (1 nm steps find a negative or overflowing stretch of either formula).
+    for (double nm = kLambdaMin; nm <= kLambdaMax; nm += 1.0) {
+        const double n = ior.n(nm);
+        if (!(n > 0) || !std::isfinite(float(n)))
+            f.fail("the formula gives n = " + formatNumber(n) + " at " + formatNumber(nm) +
+                   " nm; expected a positive index over " + formatNumber(kLambdaMin) + "-" +
+                   formatNumber(kLambdaMax) + " nm");
+    }
     f.finish();
     return ior;
 }

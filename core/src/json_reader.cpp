@@ -87,9 +87,9 @@ std::string Range::describe() const {
     const bool lo = std::isfinite(min), hi = std::isfinite(max);
     if (lo && hi)
         return "a number in " + std::string(minOpen ? "(" : "[") + formatNumber(min) + ", " +
-               formatNumber(max) + "]";
+               formatNumber(max) + (maxOpen ? ")" : "]");
     if (lo) return std::string("a number ") + (minOpen ? "> " : ">= ") + formatNumber(min);
-    if (hi) return "a number <= " + formatNumber(max);
+    if (hi) return std::string("a number ") + (maxOpen ? "< " : "<= ") + formatNumber(max);
     return "a finite number";
 }
 
@@ -149,6 +149,16 @@ double JsonReader::checkNumber(const Json& v, const std::string& path, Range ran
     const double d = v.get<double>();
     if (!std::isfinite(d) || !range.contains(d))
         throw InputError(source_.name + ": " + path + ": expected " + range.describe() + ", got " +
+                         formatNumber(d));
+    // Rendering is in float: a number beyond its range becomes Inf (1e39 as a radiance is a
+    // black image) and one below its smallest normal value loses its precision or becomes 0
+    // (an emitter of zero size). One rule here covers every number of every reader.
+    const float f = float(d);
+    if (!std::isfinite(f) || (d != 0 && !(std::abs(f) >= std::numeric_limits<float>::min())))
+        throw InputError(source_.name + ": " + path + ": expected " + range.describe() +
+                         " representable in float (0 or a magnitude in [" +
+                         formatNumber(std::numeric_limits<float>::min()) + ", " +
+                         formatNumber(std::numeric_limits<float>::max()) + "]), got " +
                          formatNumber(d));
     return d;
 }

@@ -16,6 +16,7 @@
 #include "cli_helpers.h"
 #include "lamina/bsdf/material_builder.h"
 #include "lamina/render/image_output.h"
+#include "lamina/render/render_memory.h"
 
 namespace lamina {
 namespace {
@@ -183,6 +184,53 @@ TEST_F(CliTest, UsageErrorsExitWithTwo) {
     EXPECT_EQ(runLamina("render " + s + " --mode infrared").exitCode, 2);
     EXPECT_EQ(runLamina("render").exitCode, 2);
     EXPECT_EQ(runLamina("render --help").exitCode, 0);
+}
+
+// strtod accepts "nan", "inf" and overflowing literals; every floating option refuses them
+// (--time's own range check sees an infinity first and refuses it in its words).
+TEST_F(CliTest, FloatingOptionsRefuseNanAndInfinity) {
+    const auto s = write("ok.json", scene(R"({"type": "lambert"})"));
+    const auto out = (dir_ / "never.exr").string();
+    for (const std::string option : {"--time nan", "--time inf", "--time 1e999", "--exposure nan",
+                                     "--exposure -inf", "--exposure NAN", "--exposure 1e999"}) {
+        const CommandRun r = runLamina("render " + s + " -o " + out + " -q " + option);
+        EXPECT_EQ(r.exitCode, 2) << option << ": " << r.output;
+        EXPECT_THAT(r.output, ::testing::StartsWith("lamina: error: " + option.substr(0, 6)))
+            << option;
+        if (option.find("nan") != std::string::npos ||
+            option.find("exposure") != std::string::npos) {
+            EXPECT_THAT(r.output, ::testing::HasSubstr("expected a finite number")) << option;
+        }
+        EXPECT_FALSE(fs::exists(out)) << option;
+    }
+    // Other commands' floating options have the same check.
+    EXPECT_EQ(runLamina("reciprocity " + s + " --alpha nan").exitCode, 2);
+    // Finite values still pass the check.
+    EXPECT_EQ(runLamina("render " + s + " -o " + out + " -q --spp 1 --exposure -1.5").exitCode, 0);
+}
+
+// The memory of the film is estimated before anything is allocated: printed by `info`,
+// refused when it exceeds what the machine has (it used to end in std::bad_alloc); the
+// command line's resolution has the scene key's bound.
+TEST_F(CliTest, RenderMemoryIsPrintedAndCheckedUpFront) {
+    std::string text = scene(R"({"type": "lambert"})");
+    text.replace(text.find("[8, 8]"), 6, "[1024, 1024]");
+    const auto s = write("big.json", text);
+    const CommandRun info = runLamina("info " + s);
+    ASSERT_EQ(info.exitCode, 0) << info.output;
+    EXPECT_THAT(
+        info.output,
+        ::testing::HasSubstr(
+            "render memory: ~" +
+            render::formatBytes(render::estimateRenderMemory(1024, 1024, false, false).total())));
+    const auto out = (dir_ / "huge.exr").string();
+    const CommandRun huge =
+        runLamina("render " + s + " -o " + out + " -q --resolution 65536x65536");
+    EXPECT_EQ(huge.exitCode, 1) << huge.output;
+    EXPECT_THAT(huge.output,
+                ::testing::StartsWith("lamina: error: --resolution: 65536x65536 needs ~"));
+    EXPECT_FALSE(fs::exists(out));
+    EXPECT_EQ(runLamina("render " + s + " -o " + out + " -q --resolution 65537x16").exitCode, 2);
 }
 
 TEST_F(CliTest, BsdfEvalMatchesTheLibraryAndSampleCountsLines) {

@@ -54,13 +54,13 @@ TEST_P(RayOffset, NoSelfIntersectionOnSpheresAndTriangles) {
         if (!hit || hit->shape != kSphere) continue;
         ++sphereHits;
         // Outwards (reflection): must escape the convex sphere.
-        const Vec3f out = render::offsetRayOrigin(hit->p, hit->ng);
+        const Vec3f out = render::offsetRayOrigin(hit->p, hit->ng, geometry.rayOffsetScale());
         Vec3f w = squareToCosineHemisphere(Vec2f(rng.nextFloat(), rng.nextFloat()));
         w = Frame<float>::fromNormal(hit->ng).toWorld(w);
         if (const auto again = geometry.intersect(out, w); again && again->shape == kSphere)
             ++failures;
         // Inwards (refraction): must reach the far side, at least a little away.
-        const Vec3f in = render::offsetRayOrigin(hit->p, -hit->ng);
+        const Vec3f in = render::offsetRayOrigin(hit->p, -hit->ng, geometry.rayOffsetScale());
         const auto far = geometry.intersect(in, -hit->ng);
         if (!far || far->shape != kSphere || far->t < 1.0f * float(s)) ++failures;
     }
@@ -77,7 +77,8 @@ TEST_P(RayOffset, NoSelfIntersectionOnSpheresAndTriangles) {
         ++triangleHits;
         const Vec3f w = Frame<float>::fromNormal(hit->ng).toWorld(
             squareToCosineHemisphere(Vec2f(rng.nextFloat(), rng.nextFloat())));
-        if (const auto again = geometry.intersect(render::offsetRayOrigin(hit->p, hit->ng), w);
+        if (const auto again = geometry.intersect(
+                render::offsetRayOrigin(hit->p, hit->ng, geometry.rayOffsetScale()), w);
             again && again->shape == kTriangle)
             ++failures;
     }

@@ -86,7 +86,7 @@ template <SpectrumType S>
 void BdptIntegrator<S>::generateLightSubpath(PixelSampler& sampler, typename Mode::Path& path,
                                              std::vector<Vertex>& out,
                                              PathStatistics& stats) const {
-    const auto particle = startParticle(c_.lights, mode_, sampler, path);
+    const auto particle = startParticle(c_.lights, c_.geometry, mode_, sampler, path);
     if (!particle) return;
     const EmissionSample& e = particle->emission;
     const Light& light = c_.lights.light(particle->light);
@@ -152,7 +152,7 @@ void BdptIntegrator<S>::randomWalk(Vec3f o, Vec3f d, S beta, float pdfDir, int m
         if (surfaces + 1 >= maxSurfaces) return;
 
         const Bxdf<S>& bsdf = mode_.bsdf(cur.material, cur.uv, path);
-        const ShadingPoint at(cur.p, cur.ng, cur.ns, -d);
+        const ShadingPoint at(cur.p, cur.ng, cur.ns, -d, c_.geometry.rayOffsetScale());
         const auto step =
             scatter(bsdf, at, bsdfMode, surfaces + 1, settings_.russianRouletteDepth, sampler, beta,
                     [&](S& b, const BsdfSample<S>& s, const Vec3f& wi) {

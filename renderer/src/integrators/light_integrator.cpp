@@ -23,7 +23,7 @@ std::optional<CameraEstimate<S>> LightIntegrator<S>::sample(const PixelSample<S>
 template <SpectrumType S>
 void LightIntegrator<S>::traceParticle(PixelSampler& sampler, typename Mode::Path& path, Film& film,
                                        PathStatistics& stats) const {
-    const auto particle = startParticle(c_.lights, mode_, sampler, path);
+    const auto particle = startParticle(c_.lights, c_.geometry, mode_, sampler, path);
     if (!particle) return;
     const EmissionSample& e = particle->emission;
     const Light& light = c_.lights.light(particle->light);
@@ -58,7 +58,8 @@ void LightIntegrator<S>::traceParticle(PixelSampler& sampler, typename Mode::Pat
         if (!hit) break;
         const ShapeInfo& shape = c_.geometry.shapes()[std::size_t(hit->shape)];
         const Bxdf<S>& bsdf = mode_.bsdf(shape.material, hit->uv, path);
-        const ShadingPoint at(hit->p, hit->ng, hit->ns, -d);  // wo towards the light's side
+        const ShadingPoint at(hit->p, hit->ng, hit->ns, -d,
+                              c_.geometry.rayOffsetScale());  // wo towards the light's side
 
         // Connection to the camera.
         const Vec2f uCamera = sampler.get2D();

@@ -5,8 +5,8 @@
 namespace lamina::render {
 
 template <SpectrumType S>
-std::optional<ParticleStart<S>> startParticle(const LightSet& lights, const RenderMode<S>& mode,
-                                              PixelSampler& sampler,
+std::optional<ParticleStart<S>> startParticle(const LightSet& lights, const Geometry& geometry,
+                                              const RenderMode<S>& mode, PixelSampler& sampler,
                                               typename RenderMode<S>::Path& path) {
     const float uLight = sampler.get1D();
     const Vec2f uPosition = sampler.get2D(), uDirection = sampler.get2D();
@@ -19,21 +19,22 @@ std::optional<ParticleStart<S>> startParticle(const LightSet& lights, const Rend
     const S Le = mode.emission(e->radiance, path);
     const float cosEmit = std::abs(glm::dot(e->normal, e->direction));
     const bool onSurface = !e->deltaPosition && !light.isInfinite();
-    return ParticleStart<S>{
-        index,
-        pmf,
-        *e,
-        onSurface,
-        Le * (cosEmit / (pmf * e->pdfPosition * e->pdfDirection)),
-        onSurface ? offsetRayOrigin(e->point, facing(e->normal, e->direction)) : e->point};
+    return ParticleStart<S>{index,
+                            pmf,
+                            *e,
+                            onSurface,
+                            Le * (cosEmit / (pmf * e->pdfPosition * e->pdfDirection)),
+                            onSurface ? offsetRayOrigin(e->point, facing(e->normal, e->direction),
+                                                        geometry.rayOffsetScale())
+                                      : e->point};
 }
 
-template std::optional<ParticleStart<Rgb<float>>> startParticle(const LightSet&,
+template std::optional<ParticleStart<Rgb<float>>> startParticle(const LightSet&, const Geometry&,
                                                                 const RenderMode<Rgb<float>>&,
                                                                 PixelSampler&,
                                                                 RenderMode<Rgb<float>>::Path&);
 template std::optional<ParticleStart<SampledSpectrum<float>>> startParticle(
-    const LightSet&, const RenderMode<SampledSpectrum<float>>&, PixelSampler&,
+    const LightSet&, const Geometry&, const RenderMode<SampledSpectrum<float>>&, PixelSampler&,
     RenderMode<SampledSpectrum<float>>::Path&);
 
 }  // namespace lamina::render

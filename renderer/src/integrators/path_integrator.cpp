@@ -74,7 +74,7 @@ S PathIntegrator<S>::radiance(const Vec3f& rayOrigin, const Vec3f& rayDirection,
 
         const ShapeInfo& shape = c_.geometry.shapes()[std::size_t(hit->shape)];
         const Bxdf<S>& bsdf = mode_.bsdf(shape.material, hit->uv, path);
-        const ShadingPoint at(hit->p, hit->ng, hit->ns, -d);
+        const ShadingPoint at(hit->p, hit->ng, hit->ns, -d, c_.geometry.rayOffsetScale());
 
         // Next-event estimation (always draws its three numbers, so the sampler's
         // dimensions mean the same thing at every vertex).

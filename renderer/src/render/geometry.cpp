@@ -1,5 +1,6 @@
 #include "lamina/render/geometry.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -81,6 +82,12 @@ Geometry::Geometry(const SceneDesc& scene) : scene_(scene) {
     if (!shapes_.empty()) {
         boundsCenter_ = Vec3f(0.5 * (lo + hi));
         boundsRadius_ = std::max(1e-3f, float(0.5 * glm::length(hi - lo)));
+        const double extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+        constexpr double kSmall = 1.0, kLarge = 65536.0;
+        if (extent > 0 && extent < kSmall)
+            rayOffsetScale_ = float(std::exp2(std::ceil(std::log2(extent / kSmall))));
+        else if (extent > kLarge)
+            rayOffsetScale_ = float(std::exp2(std::ceil(std::log2(extent / kLarge))));
     }
 }
 
@@ -122,7 +129,7 @@ std::optional<SurfaceHit> Geometry::intersect(const Vec3f& origin, const Vec3f& 
         const Vec3f& p2 = m.positions[tri[2]];
         // Barycentric interpolation is accurate to a few ULPs of the vertices, unlike o + t d.
         hit.p = b0 * p0 + b1 * p1 + b2 * p2;
-        hit.ng = safeNormalize(glm::cross(p1 - p0, p2 - p0));
+        hit.ng = normalizeAnyScale(glm::cross(p1 - p0, p2 - p0));
         hit.ns = hit.ng;
         if (!m.normals.empty()) {
             const Vec3f n = safeNormalize(b0 * m.normals[tri[0]] + b1 * m.normals[tri[1]] +

@@ -1,3 +1,5 @@
+#include <cmath>
+
 #include "lamina/render/scene_readers.h"
 
 namespace lamina::render {
@@ -33,7 +35,12 @@ std::pair<Rgb<double>, std::shared_ptr<const EmissionSpectrum>> readEmissionValu
             nm, values, scale, list.source().name + ": " + list.path()));
     }
     v.finish();
-    return {spectrum->rgb(), spectrum};
+    // The scale times the spectrum is what is rendered, in float.
+    const Rgb<double> rgb = spectrum->rgb();
+    for (int c = 0; c < 3; ++c)
+        if (!std::isfinite(float(rgb[c])))
+            v.fail("the emission overflows float (scale " + formatNumber(scale) + ")");
+    return {rgb, spectrum};
 }
 
 std::optional<EmissionDesc> readEmission(const JsonReader& shape) {
@@ -64,10 +71,13 @@ LightDesc readLight(const JsonReader& r) {
     } else {
         std::tie(l.intensity, l.spectrum) = readEmissionValue(r, key);
     }
-    if (l.kind == LightKind::Point || l.kind == LightKind::Spot)
+    if (l.kind == LightKind::Point || l.kind == LightKind::Spot) {
         l.position = requiredVec3(r, "position");
+        checkCoordinates(r, "position", l.position);
+    }
     if (l.kind == LightKind::Spot) {
         const Vec3d target = requiredVec3(r, "look_at");
+        checkCoordinates(r, "look_at", target);
         if (glm::length(target - l.position) == 0) r.failAt("look_at", "equals position");
         l.direction = glm::normalize(target - l.position);
         l.coneAngle = r.number("cone_angle", 30.0, {0.0, 90.0, true});

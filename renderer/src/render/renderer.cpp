@@ -9,6 +9,7 @@
 #include "lamina/core/error.h"
 #include "lamina/render/integrator.h"
 #include "lamina/render/pass_schedule.h"
+#include "lamina/render/render_memory.h"
 
 namespace lamina::render {
 
@@ -142,6 +143,11 @@ RenderResult renderScene(const SceneDesc& scene, const RenderOptions& options,
     if (options.mis) settings.mis = *options.mis;
     int width = scene.film.width, height = scene.film.height;
     if (options.resolution) std::tie(width, height) = *options.resolution;
+    checkRenderMemory(
+        estimateRenderMemory(width, height, options.aovs,
+                             options.strategies && settings.integrator == IntegratorKind::Bdpt),
+        width, height,
+        options.resolution ? "--resolution" : scene.file.string() + ": film.resolution");
 
     std::optional<tbb::global_control> threads;
     if (options.threads > 0)

@@ -25,21 +25,30 @@ CameraDesc readCamera(const JsonReader& r) {
         c.lookAt = readVec3(r, "look_at", c.lookAt);
         c.up = readVec3(r, "up", c.up);
     }
+    const bool matrix = r.has("matrix");
+    checkCoordinates(r, matrix ? "matrix" : "position", c.position, matrix ? "the position" : "");
+    checkCoordinates(r, matrix ? "matrix" : "look_at", c.lookAt, matrix ? "the look-at point" : "");
     if (glm::length(c.lookAt - c.position) == 0) r.failAt("look_at", "equals position");
     if (glm::length(glm::cross(c.lookAt - c.position, c.up)) == 0)
         r.failAt("up", "is parallel to the viewing direction");
     if (r.has("fov") && r.has("focal_length"))
         r.fail("give either fov or focal_length (with sensor_height), not both");
-    c.verticalFovDegrees = r.number("fov", 40.0, {0.0, 180.0, true});
+    // 180 degrees is an infinitely wide image plane (tan 90 degrees): every ray misses.
+    c.verticalFovDegrees = r.number("fov", 40.0, {0.0, 180.0, true, true});
     if (r.has("focal_length")) {
         // A full-frame sensor is 24 mm high.
         const double f = r.requiredNumber("focal_length", Range::positive());
         const double h = r.number("sensor_height", 24.0, Range::positive());
         c.verticalFovDegrees = glm::degrees(2.0 * std::atan(0.5 * h / f));
+        if (!(c.verticalFovDegrees < 180.0))
+            r.failAt("focal_length",
+                     "is too short for the sensor: the field of view is 180 degrees");
     }
-    c.apertureRadius = r.number("aperture_radius", 0.0, Range::nonNegative());
+    // Lens points are ray origins.
+    c.apertureRadius = r.number("aperture_radius", 0.0, {0.0, kMaxSceneCoordinate});
     c.focusDistance =
-        r.number("focus_distance", glm::length(c.lookAt - c.position), Range::positive());
+        r.number("focus_distance", glm::length(c.lookAt - c.position),
+                 {0.0, 2 * kMaxSceneCoordinate, true});  // the focal point is a ray's target
     if (*kind == CameraKind::ThinLens && c.apertureRadius == 0)
         r.failAt("aperture_radius", "a thin_lens camera needs an aperture_radius > 0");
     r.finish();

@@ -68,6 +68,9 @@ SphereDesc readSphere(const JsonReader& r, const std::string& name, SceneMateria
     const double sx = uniformScale(r, m, "a sphere");
     s.center = Vec3d(m * glm::dvec4(s.center, 1.0));
     s.radius *= sx;
+    checkCoordinates(r, "center", glm::abs(s.center) + s.radius,
+                     "the sphere's bounding box corner");
+    if (s.emission) checkEmitterArea(r, 4.0 * kPi<double> * s.radius * s.radius);
     r.finish();
     return s;
 }
@@ -89,6 +92,8 @@ DiskDesc readDisk(const JsonReader& r, const std::string& name, SceneMaterials& 
     d.normal = glm::normalize(glm::dmat3(m) * d.normal) *
                (glm::determinant(glm::dmat3(m)) < 0 ? -1.0 : 1.0);
     d.radius *= sx;
+    checkCoordinates(r, "center", glm::abs(d.center) + d.radius, "the disk's bounding box corner");
+    if (d.emission) checkEmitterArea(r, kPi<double> * d.radius * d.radius);
     r.finish();
     return d;
 }
@@ -186,19 +191,35 @@ void readTriangles(const JsonReader& r, ShapeKind kind, MeshDesc& mesh) {
 
 void finishMesh(const JsonReader& r, MeshDesc mesh, const Mat4& m, SceneDesc& scene) {
     const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(m)));
-    for (auto& p : mesh.positions)
-        p = Vec3<float>(m * glm::dvec4(Vec3d(p), 1.0));
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+        const Vec3d p = Vec3d(m * glm::dvec4(Vec3d(mesh.positions[i]), 1.0));
+        checkCoordinates(r,
+                         r.has("transform") ? "transform"
+                         : r.has("file")    ? "file"
+                                            : "positions",
+                         p, "vertex " + std::to_string(i) + " at");
+        mesh.positions[i] = Vec3<float>(p);
+    }
     for (auto& n : mesh.normals)
         n = Vec3<float>(glm::normalize(normalMatrix * Vec3d(n)));
     // A negative determinant mirrors the winding; keep the geometric normal outwards.
     if (glm::determinant(glm::dmat3(m)) < 0)
         for (auto& t : mesh.triangles)
             std::swap(t[1], t[2]);
-    double area = 0;
-    for (const auto& t : mesh.triangles)
-        area += 0.5 * glm::length(glm::cross(Vec3d(mesh.positions[t[1]] - mesh.positions[t[0]]),
+    if (mesh.emission) {
+        // Each triangle is a light of its own (light_set.cpp), with its area computed the
+        // same way: a degenerate one is never sampled, a tiny one would have an infinite
+        // density.
+        double area = 0;
+        for (const auto& t : mesh.triangles) {
+            const double a =
+                0.5 * glm::length(glm::cross(Vec3d(mesh.positions[t[1]] - mesh.positions[t[0]]),
                                              Vec3d(mesh.positions[t[2]] - mesh.positions[t[0]])));
-    if (mesh.emission && !(area > 0)) r.failAt("emission", "the emitting shape has zero area");
+            if (a > 0) checkEmitterArea(r, a);
+            area += a;
+        }
+        checkEmitterArea(r, area);
+    }
     scene.meshes.push_back(std::move(mesh));
 }
 

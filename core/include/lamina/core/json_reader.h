@@ -40,17 +40,21 @@ Json readJsonFile(const std::filesystem::path& path);
 /// A value for a message: its JSON text, cut to a short prefix ("...") when long.
 std::string shortDump(const Json& v);
 
-/// A closed interval for numeric validation.
+/// An interval for numeric validation, closed unless said otherwise. Every number a reader
+/// accepts must also survive the conversion to float that rendering makes (checkNumber).
 struct Range {
     double min = -std::numeric_limits<double>::infinity();
     double max = std::numeric_limits<double>::infinity();
     bool minOpen = false;  ///< true: min itself is not allowed
+    bool maxOpen = false;  ///< true: max itself is not allowed
 
     static Range any() { return {}; }
     static Range nonNegative() { return {0.0}; }
     static Range positive() { return {0.0, std::numeric_limits<double>::infinity(), true}; }
     static Range unit() { return {0.0, 1.0}; }
-    bool contains(double v) const { return (minOpen ? v > min : v >= min) && v <= max; }
+    bool contains(double v) const {
+        return (minOpen ? v > min : v >= min) && (maxOpen ? v < max : v <= max);
+    }
     std::string describe() const;
 };
 
@@ -111,7 +115,8 @@ class JsonReader {
     /// Fails on any key that was not read (misspelt or unsupported parameters).
     void finish() const;
 
-    /// Checks a number read by other means (e.g. from an array).
+    /// Checks a number read by other means (e.g. from an array): a JSON number in `range`
+    /// that float represents (finite, and not rounded to 0 unless it is 0).
     double checkNumber(const Json& v, const std::string& path, Range range) const;
 
   private:

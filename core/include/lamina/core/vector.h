@@ -2,12 +2,14 @@
 // float (rendering) and double (the numerical-stability reference).
 #pragma once
 
+#include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
+#include <limits>
 
 #include "lamina/core/math.h"
 
@@ -40,6 +42,18 @@ inline Vec3<T> safeNormalize(const Vec3<T>& v) {
     const T len2 = glm::dot(v, v);
     if (!(len2 > T(0)) || !std::isfinite(len2)) return Vec3<T>(T(0));
     return v / std::sqrt(len2);
+}
+
+/// Normalises v at any magnitude a float vector can have. The float dot product overflows for
+/// |v| above about 1.8e19 (a triangle's edge cross product in a scene 1e8 times the Cornell
+/// box's size) and loses its precision below about 1e-19, where safeNormalize would return
+/// zero or an inaccurate vector; there the length is taken in double. Elsewhere the result is
+/// safeNormalize's, bit for bit.
+inline Vec3<float> normalizeAnyScale(const Vec3<float>& v) {
+    const float len2 = glm::dot(v, v);
+    if (std::isfinite(len2) && len2 >= std::numeric_limits<float>::min())
+        return v / std::sqrt(len2);
+    return Vec3<float>(safeNormalize(Vec3<double>(v)));
 }
 
 template <typename T>

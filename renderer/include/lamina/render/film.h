@@ -28,6 +28,8 @@ struct PixelAovs {
 class Film {
   public:
     Film(int width, int height, FilmSpace space);
+    /// What the film allocates per pixel (render_memory.h estimates from it).
+    static constexpr std::size_t bytesPerPixel();
 
     int width() const { return width_; }
     int height() const { return height_; }
@@ -79,5 +81,9 @@ class Film {
     int splatIterations_ = 0;
     std::atomic<std::uint64_t> rejected_{0};
 };
+
+constexpr std::size_t Film::bytesPerPixel() {
+    return sizeof(Pixel) + sizeof(Rgb<double>);
+}
 
 }  // namespace lamina::render

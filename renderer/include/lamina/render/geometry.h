@@ -53,6 +53,14 @@ class Geometry {
     /// Bounding sphere of everything (for environment and directional lights).
     Vec3f boundsCenter() const { return boundsCenter_; }
     float boundsRadius() const { return boundsRadius_; }
+    /// The scale of the absolute ray offset near the origin (ray_offset.h): 1 for a scene
+    /// whose extent is between 1 and 65536, else that extent over the nearer bound, rounded up
+    /// to a power of two. The hit points' error grows with the scene's coordinates, not with
+    /// a point's own: Waechter and Binder's fixed 1/65536 would carry a ray out of a scene
+    /// 1e-8 times the Cornell box's size (it is 5.6e-6 across) and be lost in the rounding
+    /// of one 1e8 times larger. Powers of two keep the offsets exact, and every scene of
+    /// ordinary size renders as before, bit for bit.
+    float rayOffsetScale() const { return rayOffsetScale_; }
 
   private:
     const SceneDesc& scene_;
@@ -61,6 +69,7 @@ class Geometry {
     std::vector<ShapeInfo> shapes_;
     Vec3f boundsCenter_{0.0f};
     float boundsRadius_ = 1;
+    float rayOffsetScale_ = 1;
 };
 
 }  // namespace lamina::render

@@ -7,6 +7,7 @@
 // Every error names the file and the JSON path.
 #pragma once
 
+#include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
@@ -35,6 +36,35 @@ inline Mat4 requiredMatrix(const JsonReader& r, const std::string& key) {
         for (int col = 0; col < 4; ++col)
             m[col][row] = a[std::size_t(row * 4 + col)];  // glm is column-major
     return m;
+}
+
+/// The largest coordinate magnitude of anything a ray can start from or reach (camera, lens,
+/// lights, shapes). Rays and hit points are float: Embree refuses a ray whose origin exceeds
+/// 1.8e19 (its ray.valid() assertion), and squared distances overflow float at the same size.
+/// 1e15 keeps the farthest distance in a scene (3.5e15) squared at 1e31, seven orders of
+/// magnitude below float's limit for the densities and cosines it is multiplied with, and the
+/// scene disk of infinite lights (twice the bounding radius) inside Embree's range.
+inline constexpr double kMaxSceneCoordinate = 1e15;
+
+/// Fails at `key` unless every coordinate of `p` lies within kMaxSceneCoordinate; `what` says
+/// which point it is (empty when the key's value is the point itself).
+inline void checkCoordinates(const JsonReader& r, const std::string& key, const Vec3d& p,
+                             const std::string& what = "") {
+    for (int c = 0; c < 3; ++c)
+        if (!(std::abs(p[c]) <= kMaxSceneCoordinate))
+            r.failAt(key, (what.empty() ? "" : what + " ") + "(" + formatNumber(p.x) + ", " +
+                              formatNumber(p.y) + ", " + formatNumber(p.z) +
+                              ") is too far out for float rays: expected coordinates within +-" +
+                              formatNumber(kMaxSceneCoordinate));
+}
+
+/// An emitter's area, in double from its float geometry, must survive float: the density of a
+/// point sampled on it is float(1 / area), infinite for an area below about 3e-39 (a triangle
+/// or radius so small that float rounds its area away). Fails at the shape's "emission".
+inline void checkEmitterArea(const JsonReader& shape, double area) {
+    if (!(area > 0) || !std::isfinite(float(area)) || !std::isfinite(float(1.0 / area)))
+        shape.failAt("emission",
+                     "the emitting shape has zero area in float (area " + formatNumber(area) + ")");
 }
 
 // scene_settings_reader.cpp

@@ -20,6 +20,14 @@ class StrategyImages {
   public:
     static constexpr int kMaxDepth = 4;  ///< s + t - 2 <= 4: 19 strategies
 
+    /// Strategies (s, t) with s + t - 2 <= kMaxDepth, but for (0, 1) (a light path alone).
+    static constexpr int kStrategies = (kMaxDepth + 1) * (kMaxDepth + 4) / 2 - 1;
+    /// What the images allocate per pixel: for the camera and the splat part, a weighted and
+    /// an unweighted image per strategy, and the weight sums (render_memory.h).
+    static constexpr std::size_t bytesPerPixel() {
+        return 2 * 2 * kStrategies * sizeof(Rgb<double>) + sizeof(double);
+    }
+
     StrategyImages(int width, int height);
 
     /// The strategy's slot, or -1 beyond kMaxDepth.

@@ -23,8 +23,8 @@ struct ParticleStart {
 
 /// The particle of this sample, or nothing when the emission sample failed or carries nothing.
 template <SpectrumType S>
-std::optional<ParticleStart<S>> startParticle(const LightSet& lights, const RenderMode<S>& mode,
-                                              PixelSampler& sampler,
+std::optional<ParticleStart<S>> startParticle(const LightSet& lights, const Geometry& geometry,
+                                              const RenderMode<S>& mode, PixelSampler& sampler,
                                               typename RenderMode<S>::Path& path);
 
 }  // namespace lamina::render

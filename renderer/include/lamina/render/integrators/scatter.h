@@ -26,21 +26,25 @@ bool russianRoulette(S& beta, float rrBeta, int bounces, int rrDepth, float u) {
     return true;
 }
 
-/// A surface point a path arrived at: its normals, the shading frame, and the direction back
-/// to where the path came from (world and shading frame).
+/// A surface point a path arrived at: its normals, the shading frame, the direction back
+/// to where the path came from (world and shading frame), and the geometry's ray offset
+/// scale (ray_offset.h) for the ray that leaves it.
 struct ShadingPoint {
-    ShadingPoint(const Vec3f& p_, const Vec3f& ng_, const Vec3f& ns_, const Vec3f& woWorld_)
+    ShadingPoint(const Vec3f& p_, const Vec3f& ng_, const Vec3f& ns_, const Vec3f& woWorld_,
+                 float offsetScale_)
         : p(p_),
           ng(ng_),
           ns(ns_),
           frame(Frame<float>::fromNormal(ns_)),
           woWorld(woWorld_),
-          wo(frame.toLocal(woWorld_)) {}
+          wo(frame.toLocal(woWorld_)),
+          offsetScale(offsetScale_) {}
 
     Vec3f p, ng, ns;
     Frame<float> frame;
     Vec3f woWorld;  ///< unit, towards the previous vertex
     Vec3f wo;       ///< woWorld in the shading frame
+    float offsetScale;
 };
 
 template <SpectrumType S>
@@ -71,7 +75,7 @@ ScatterResult<S> scatter(const Bxdf<S>& bsdf, const ShadingPoint& at, TransportM
     const float uRoulette = sampler.get1D();
     if (!russianRoulette(beta, rrBeta, bounces, rrDepth, uRoulette)) return result;
     if (!beta.isFinite() || beta.maxValue() <= 0.0f) return result;
-    result.next = Ray(offsetRayOrigin(at.p, facing(at.ng, wi)), wi);
+    result.next = Ray(offsetRayOrigin(at.p, facing(at.ng, wi), at.offsetScale), wi);
     return result;
 }
 

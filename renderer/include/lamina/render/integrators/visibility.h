@@ -21,8 +21,8 @@ inline Vec3f facing(const Vec3f& n, const Vec3f& w) {
 inline bool directionUnoccluded(const Geometry& geometry, const Vec3f& p, const Vec3f& n,
                                 const Vec3f& direction, PathStatistics& stats) {
     ++stats.rays;
-    return !geometry.occluded(offsetRayOrigin(p, facing(n, direction)), direction,
-                              std::numeric_limits<float>::infinity());
+    return !geometry.occluded(offsetRayOrigin(p, facing(n, direction), geometry.rayOffsetScale()),
+                              direction, std::numeric_limits<float>::infinity());
 }
 
 /// True when nothing blocks the segment between two points, each moved off its surface along
@@ -31,8 +31,9 @@ inline bool directionUnoccluded(const Geometry& geometry, const Vec3f& p, const 
 inline bool segmentUnoccluded(const Geometry& geometry, const Vec3f& a, const Vec3f& na,
                               const Vec3f& b, const Vec3f& nb, PathStatistics& stats) {
     const Vec3f ab = b - a;
-    const Vec3f from = na == Vec3f(0.0f) ? a : offsetRayOrigin(a, facing(na, ab));
-    const Vec3f to = nb == Vec3f(0.0f) ? b : offsetRayOrigin(b, facing(nb, -ab));
+    const float scale = geometry.rayOffsetScale();
+    const Vec3f from = na == Vec3f(0.0f) ? a : offsetRayOrigin(a, facing(na, ab), scale);
+    const Vec3f to = nb == Vec3f(0.0f) ? b : offsetRayOrigin(b, facing(nb, -ab), scale);
     const Vec3f segment = to - from;
     const float length = glm::length(segment);
     if (!(length > 0.0f)) return true;
