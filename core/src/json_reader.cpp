@@ -186,6 +186,7 @@ std::filesystem::path JsonReader::filePath(const std::string& key) const {
         if (std::filesystem::exists(beside) || !std::filesystem::exists(p)) p = beside;
     }
     if (!std::filesystem::exists(p)) failAt(key, p.string() + ": no such file");
+    if (source_.readFiles) source_.readFiles->push_back(p);
     return p;
 }
 
