@@ -130,7 +130,14 @@ void SvgHeatMap::write(const std::filesystem::path& path) const {
         };
         std::vector<std::pair<double, std::string>> out;
         if (!a.categories.empty()) {
-            for (int i = 0; i < cells && i < int(a.categories.size()); ++i)
+            // Every k-th name, so that neighbouring names do not overlap (about 7 units per
+            // character across, one 14-unit line down).
+            std::size_t longest = 0;
+            for (const std::string& c : a.categories)
+                longest = std::max(longest, c.size());
+            const double room = horizontal ? 7.0 * double(longest) + 6 : 14;
+            const int every = std::max(1, int(std::ceil(room / cell)));
+            for (int i = 0; i < cells && i < int(a.categories.size()); i += every)
                 out.emplace_back(at(i), a.categories[std::size_t(i)]);
         } else if (cells == 1 || a.last == a.first) {
             out.emplace_back(at(0), number(a.first));
