@@ -211,13 +211,18 @@ class BsdfTool {
         auto value = [&](const Vec3d& wi) {
             return std::max(0.0, double(bxdf_->eval(wo, wi, mode_).average()));
         };
-        // Left: the plane of incidence (x-z), f cos over theta_i in [-180, 180] degrees.
+        // Left: the plane of incidence, spanned by the normal (z) and wo's tangential direction
+        // u (x when wo is the normal), f cos over theta_i in [-180, 180] degrees, positive
+        // towards u: the mirror direction of wo lies in it at theta = -theta_o.
+        const double tangential = std::hypot(wo.x, wo.y);
+        const Vec3d u = tangential > 0 ? Vec3d(wo.x / tangential, wo.y / tangential, 0.0)
+                                       : Vec3d(1.0, 0.0, 0.0);
         const int steps = 2000;
         std::vector<double> polar(steps);
         double peak = 0;
         for (int k = 0; k < steps; ++k) {
             const double t = -kPi<double> + 2 * kPi<double> * (k + 0.5) / steps;
-            polar[std::size_t(k)] = value(Vec3d(std::sin(t), 0.0, std::cos(t)));
+            polar[std::size_t(k)] = value(std::sin(t) * u + Vec3d(0.0, 0.0, std::cos(t)));
             peak = std::max(peak, polar[std::size_t(k)]);
         }
         const double cx = size / 2.0, cy = size / 2.0, radius = size * 0.45;
@@ -229,7 +234,7 @@ class BsdfTool {
             put(x, int(cy), 0.4f, 0.4f, 0.4f);
         for (int k = 0; k < 200; ++k) {  // wo
             const double s = radius * k / 200.0;
-            put(int(cx + s * wo.x), int(cy - s * wo.z), 0.1f, 0.3f, 0.9f);
+            put(int(cx + s * tangential), int(cy - s * wo.z), 0.1f, 0.3f, 0.9f);
         }
         for (int k = 0; k < steps; ++k) {
             const double t = -kPi<double> + 2 * kPi<double> * (k + 0.5) / steps;
@@ -263,9 +268,10 @@ class BsdfTool {
             !out->close())
             throw InputError(a_.output + ": cannot write: " + out->geterror());
         std::fprintf(stderr,
-                     "%s: left, f cos in the plane of incidence (wo in blue, peak %.4g); "
-                     "right, f cos over the upper hemisphere (peak %.4g)\n",
-                     a_.output.c_str(), peak, peak2);
+                     "%s: left, f cos in the plane of incidence (the normal and (%.3g, %.3g, 0); "
+                     "wo in blue, peak %.4g); right, f cos over the upper hemisphere (peak "
+                     "%.4g)\n",
+                     a_.output.c_str(), u.x, u.y, peak, peak2);
     }
 
   private:

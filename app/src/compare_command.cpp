@@ -16,11 +16,22 @@ struct CompareArgs {
     std::string a, b;
     std::string metrics = experiments::kMetricNames.list(",");
     std::string diff;
+    double diffScale = 0;  ///< 0: the largest difference
 };
 
 void run(const CompareArgs& args) {
     const render::RgbImage a = render::readRgbImage(args.a);
     const render::RgbImage b = render::readRgbImage(args.b);
+    // Both sides are linear after reading; a display image (sRGB, tone-mapped and clipped)
+    // against a linear one would measure the tone mapping, not the render.
+    if (a.displayReferred != b.displayReferred) {
+        const std::string& display = a.displayReferred ? args.a : args.b;
+        const std::string& linear = a.displayReferred ? args.b : args.a;
+        throw InputError(display +
+                         ": an sRGB-encoded display image (tone-mapped and clipped to "
+                         "[0, 1]) cannot be compared with the linear image " +
+                         linear + ": compare the EXRs, or two display images");
+    }
     if (a.width != b.width || a.height != b.height)
         throw InputError(args.a + " is " + std::to_string(a.width) + "x" +
                          std::to_string(a.height) + " but " + args.b + " is " +
@@ -31,7 +42,12 @@ void run(const CompareArgs& args) {
         const auto metric = parseName(experiments::kMetricNames, name, "metric", "--metric");
         std::printf("%s %.9g\n", name.c_str(), experiments::metricValue(m, metric));
     }
-    if (!args.diff.empty()) experiments::writeDifferenceImage(args.diff, a, b, m.max);
+    if (!args.diff.empty()) {
+        const double scale = args.diffScale > 0 ? args.diffScale : m.max;
+        experiments::writeDifferenceImage(args.diff, a, b, scale);
+        // Beside the metrics, in their "name value" form: the difference shown white.
+        std::printf("diff_scale %.9g\n", scale);
+    }
 }
 
 }  // namespace
@@ -46,7 +62,12 @@ void registerCompareCommand(CLI::App& app) {
     cmd->add_option("reference", a->b, "Reference image")->required()->check(CLI::ExistingFile);
     cmd->add_option("--metric", a->metrics, "Comma-separated: " + experiments::kMetricNames.list())
         ->capture_default_str();
-    cmd->add_option("--diff", a->diff, "Write a false-colour PNG of |image - reference|");
+    cmd->add_option("--diff", a->diff,
+                    "Write a false-colour PNG of |image - reference| and beside it an SVG "
+                    "figure with its colour bar");
+    cmd->add_option("--diff-scale", a->diffScale,
+                    "The difference shown white in --diff (default: the largest)")
+        ->check(CLI::PositiveNumber);
     cmd->callback([a] { run(*a); });
 }
 

@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 
 #include "lamina/experiments/convergence.h"
+#include "lamina/version.h"
 #include "option_parsing.h"
 
 namespace lamina::app {
@@ -20,6 +21,7 @@ struct ConvergenceArgs {
     std::string referenceIntegrator{render::kIntegratorNames.name(render::IntegratorKind::Path)};
     double seconds = 10;
     double referenceSeconds = 0;
+    bool allowCorrelatedReference = false;
     RenderOverrides overrides;
 };
 
@@ -39,6 +41,8 @@ experiments::ConvergenceInputs inputs(const ConvergenceArgs& a) {
     experiments::ConvergenceInputs in;
     in.scene = a.scene;
     in.reference = a.reference;
+    in.allowCorrelatedReference = a.allowCorrelatedReference;
+    in.build = {LAMINA_VERSION_STRING, LAMINA_GIT_COMMIT};
     in.levels = parseLevels(a.levels);
     in.integrators =
         parseNameList(render::kIntegratorNames, a.integrators, "integrator", "--integrators");
@@ -67,6 +71,9 @@ void registerConvergenceCommand(CLI::App& app) {
     cmd->add_option("--reference", a->reference,
                     "Reference EXR (default: rendered first, per mode, with the path integrator)")
         ->check(CLI::ExistingFile);
+    cmd->add_flag("--allow-correlated-reference", a->allowCorrelatedReference,
+                  "Accept a --reference rendered with the measured renders' sampler and seed "
+                  "(their errors are then understated)");
     cmd->add_option("--integrators", a->integrators, "Comma-separated list")->capture_default_str();
     cmd->add_option("--modes", a->modes,
                     "Comma-separated list of " + render::kRenderModeNames.list())

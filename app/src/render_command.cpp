@@ -11,6 +11,7 @@
 #include "lamina/core/error.h"
 #include "lamina/experiments/image_metrics.h"
 #include "lamina/render/image_output.h"
+#include "lamina/render/render_metadata.h"
 #include "lamina/render/renderer.h"
 #include "lamina/version.h"
 #include "option_parsing.h"
@@ -38,20 +39,6 @@ struct RenderArgs {
     bool aovs = false;
     bool quiet = false;
 };
-
-std::string fileHash(const std::string& path) {
-    // FNV-1a 64 of the file's bytes: enough to tell which version of a scene made an image.
-    std::ifstream in(path, std::ios::binary);
-    std::uint64_t h = 1469598103934665603ULL;
-    char c;
-    while (in.get(c)) {
-        h ^= std::uint8_t(c);
-        h *= 1099511628211ULL;
-    }
-    char buf[17];
-    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-    return buf;
-}
 
 void onInterrupt(int) {
     render::renderInterruptFlag().store(true);
@@ -143,7 +130,7 @@ void runRender(const RenderArgs& a) {
     o.aovs = a.aovs;
 
     std::optional<experiments::ErrorLog> errors;
-    if (!a.reference.empty()) errors.emplace(render::readRgbImage(a.reference));
+    if (!a.reference.empty()) errors.emplace(render::readLinearRgbImage(a.reference));
     if (errors) {
         const int w = o.resolution ? o.resolution->first : scene.film.width;
         const int h = o.resolution ? o.resolution->second : scene.film.height;
@@ -163,20 +150,8 @@ void runRender(const RenderArgs& a) {
     std::signal(SIGINT, SIG_DFL);
     printer.finish();
 
-    render::ImageMetadata meta;
-    meta.strings["version"] = LAMINA_VERSION_STRING;
-    meta.strings["mode"] = r.modeName;
-    meta.strings["integrator"] = std::string(render::kIntegratorNames.name(r.settings.integrator));
-    meta.strings["scene"] = a.scene;
-    meta.strings["scene_hash"] = fileHash(a.scene);
-    meta.strings["sampler"] = std::string(render::kSamplerNames.name(r.settings.sampler));
-    meta.ints["spp"] = r.spp;
-    meta.ints["seed"] = int(r.settings.seed);
-    meta.ints["max_depth"] = r.settings.maxDepth;
-    meta.ints["partial"] = r.partial ? 1 : 0;
-    meta.ints["rejected_samples"] =
-        int(std::min<std::uint64_t>(r.film->rejectedSamples(), 1u << 30));
-    meta.floats["seconds"] = float(r.seconds);
+    const render::ImageMetadata meta =
+        render::renderMetadata(scene, o, r, {LAMINA_VERSION_STRING, LAMINA_GIT_COMMIT});
     render::writeExr(output, *r.film, a.aovs, meta);
     if (errors) {
         std::ofstream csv(a.errorLog);

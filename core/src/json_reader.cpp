@@ -218,6 +218,7 @@ std::filesystem::path JsonReader::filePath(const std::string& key) const {
     // the reader of the file checks again (and its size) for callers that bypass the scene.
     if (const std::string why = notARegularFile(p); !why.empty())
         failAt(key, p.string() + ": " + why);
+    if (source_.readFiles) source_.readFiles->push_back(p);
     return p;
 }
 

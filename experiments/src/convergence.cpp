@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 
+#include "lamina/core/error.h"
 #include "lamina/experiments/text_format.h"
 
 namespace lamina::experiments {
@@ -39,15 +40,58 @@ double timeToReach(const std::vector<ErrorLog::Row>& rows, double level) {
     return NAN;
 }
 
+namespace {
+
+std::string metadataValue(const render::RgbImage& image, const std::string& key) {
+    const auto it = image.metadata.find("lamina:" + key);
+    return it == image.metadata.end() ? std::string() : it->second;
+}
+
+}  // namespace
+
+std::optional<std::string> referenceCorrelation(const render::RgbImage& reference,
+                                                const render::SceneDesc& scene,
+                                                const render::RenderOptions& measured) {
+    const std::string seed = metadataValue(reference, "seed");
+    const std::string sampler = metadataValue(reference, "sampler");
+    if (seed.empty() || sampler.empty()) return std::nullopt;
+    const std::string measuredSeed = std::to_string(measured.seed.value_or(scene.settings.seed));
+    const std::string measuredSampler(
+        render::kSamplerNames.name(measured.sampler.value_or(scene.settings.sampler)));
+    if (seed != measuredSeed || sampler != measuredSampler) return std::nullopt;
+    const std::string hash = metadataValue(reference, "scene_hash");
+    const bool sameScene = hash == render::sceneHash(scene);
+    return formatText(
+        "the reference was rendered %swith the same sampler (%s) and seed (%s) as the measured "
+        "renders, so their samples are correlated with its own: the measured error would be "
+        "understated and the slope too steep; render the reference with another seed "
+        "(lamina render --seed) or pass --allow-correlated-reference",
+        sameScene ? "from the same scene files " : "", sampler.c_str(), seed.c_str());
+}
+
 ConvergenceResult runConvergence(const ConvergenceInputs& in) {
     const render::SceneDesc scene = render::loadScene(in.scene);
-    ConvergenceResult result{in, {}, {}};
+    ConvergenceResult result{in, {}, {}, {}};
 
     // One reference per mode (the two modes converge to slightly different images), unless
     // the caller gives one.
     std::map<render::RenderModeKind, render::RgbImage> references;
     if (!in.reference.empty()) {
-        const render::RgbImage ref = render::readRgbImage(in.reference);
+        const render::RgbImage ref = render::readLinearRgbImage(in.reference);
+        const std::optional<std::string> correlated =
+            referenceCorrelation(ref, scene, in.overrides);
+        if (correlated && !in.allowCorrelatedReference)
+            throw InputError(in.reference + ": " + *correlated);
+        if (correlated)
+            result.referenceNote =
+                "correlated with the measured renders (same sampler and seed, allowed by "
+                "--allow-correlated-reference): the errors below are understated";
+        else if (metadataValue(ref, "seed").empty())
+            result.referenceNote =
+                "without lamina metadata (another renderer?): its sampler and seed, and so its "
+                "independence from the measured renders, could not be checked";
+        else
+            result.referenceNote = "rendered by lamina with another seed or sampler";
         for (const render::RenderModeKind m : in.modes)
             references[m] = ref;
     } else {
@@ -69,7 +113,8 @@ ConvergenceResult runConvergence(const ConvergenceInputs& in) {
                      refSeconds));
             render::RenderResult r = render::renderScene(scene, o);
             references[m] = filmImage(*r.film);
-            result.references.push_back({m, std::move(r)});
+            render::ImageMetadata meta = render::renderMetadata(scene, o, r, in.build);
+            result.references.push_back({m, std::move(r), std::move(meta)});
         }
     }
 

@@ -26,15 +26,13 @@ std::string formatSeconds(double s, double budget) {
 /// Writes the rendered references and says where the reference came from.
 std::string writeReferences(const ConvergenceResult& result, const Report& report) {
     const ConvergenceInputs& in = result.inputs;
-    if (!in.reference.empty()) return "reference: " + in.reference + " (given) for every mode";
+    if (!in.reference.empty())
+        return "reference: " + in.reference + " (given) for every mode, " + result.referenceNote;
     std::string note;
     for (const RenderedReference& ref : result.references) {
         const std::string mode = nameOf(ref.mode), integrator = nameOf(in.referenceIntegrator);
-        render::ImageMetadata meta;
-        meta.strings["integrator"] = integrator;
-        meta.strings["mode"] = mode;
-        meta.ints["spp"] = ref.render.spp;
-        render::writeExr(report.file("reference_" + mode + ".exr"), *ref.render.film, false, meta);
+        render::writeExr(report.file("reference_" + mode + ".exr"), *ref.render.film, false,
+                         ref.metadata);
         note +=
             (note.empty() ? "" : "; ") +
             formatText(

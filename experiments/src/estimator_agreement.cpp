@@ -1,8 +1,10 @@
 #include "lamina/experiments/estimator_agreement.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "lamina/core/hash.h"
+#include "lamina/core/pcg32.h"
 #include "lamina/core/student_t.h"
 #include "lamina/spectral/color_space.h"
 
@@ -124,6 +126,78 @@ AgreementResult testAgreement(const BatchImages& a, const BatchImages& b,
     else
         r.meanPValue = r.meanA == r.meanB ? 1.0 : 0.0;
     return r;
+}
+
+namespace {
+
+/// One side of a pixel's bootstrap: the batch values, their mean.
+struct PixelSide {
+    std::vector<double> values;
+    double mean = 0;
+};
+
+PixelSide pixelSide(const BatchImages& images, int x, int y) {
+    PixelSide s;
+    for (int k = 0; k < images.batches(); ++k)
+        s.values.push_back(double(images.value(k, x, y)));
+    for (double v : s.values)
+        s.mean += v / double(s.values.size());
+    return s;
+}
+
+/// A resample with replacement, moved to mean 0 (the side's own mean removed): its mean and
+/// the variance of that mean.
+std::pair<double, double> resample(const PixelSide& side, Pcg32& rng) {
+    const std::size_t k = side.values.size();
+    if (k < 2) return {0.0, 0.0};  // a reference: exact
+    double sum = 0, sumSq = 0;
+    for (std::size_t i = 0; i < k; ++i) {
+        const double v =
+            side.values[std::min(k - 1, std::size_t(rng.nextDouble() * double(k)))] - side.mean;
+        sum += v;
+        sumSq += v * v;
+    }
+    const double mean = sum / double(k);
+    const double variance = std::max(0.0, (sumSq - double(k) * mean * mean) / double(k - 1));
+    return {mean, variance / double(k)};
+}
+
+}  // namespace
+
+PixelTestCalibration calibratePixelTest(const BatchImages& a, const BatchImages& b,
+                                        const AgreementTest& test, int spp, int resamples,
+                                        std::uint64_t seed) {
+    PixelTestCalibration c;
+    if (std::max(a.batches(), b.batches()) < 4 || std::min(a.batches(), b.batches()) < 1) return c;
+    Pcg32 rng(seed);
+    std::uint64_t tested = 0, rejected = 0;
+    for (int y = 0; y < a.height(); ++y)
+        for (int x = 0; x < a.width(); ++x) {
+            const PixelSide sa = pixelSide(a, x, y), sb = pixelSide(b, x, y);
+            for (int r = 0; r < resamples; ++r) {
+                const auto [ma, va] = resample(sa, rng);
+                const auto [mb, vb] = resample(sb, rng);
+                if (!(va + vb > 0.0)) continue;  // the test itself leaves these out
+                const double t = (ma - mb) / std::sqrt(va + vb);
+                const double dof = welchDegreesOfFreedom(va, a.batches(), vb, b.batches());
+                ++tested;
+                rejected += studentTTwoSidedPValue(t, dof) < test.alpha;
+            }
+        }
+    if (tested == 0) return c;
+    c.checked = true;
+    c.nullRejectionRate = double(rejected) / double(tested);
+    const double alpha = test.alpha;
+    // Pixels, not resamples, are the independent units of the estimate.
+    const double pixels = double(tested) / resamples;
+    c.trustworthy = c.nullRejectionRate <= 2 * alpha + 3 * std::sqrt(alpha * (1 - alpha) / pixels);
+    if (!c.trustworthy) {
+        const int batches = std::max(a.batches(), b.batches());
+        const double factor = (c.nullRejectionRate - alpha) / alpha;
+        const double perBatch = std::ceil(std::max(1.0, double(spp) / batches) * factor);
+        c.recommendedSpp = int(std::min(perBatch * batches, double(1 << 24)));
+    }
+    return c;
 }
 
 BatchImages renderBatches(const render::SceneDesc& scene, render::RenderOptions options, int spp,

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "lamina/experiments/fresnel.h"
+#include "lamina/experiments/svg_heat_map.h"
 #include "lamina/experiments/svg_plot.h"
 #include "lamina/experiments/text_format.h"
 #include "lamina/render/image_output.h"
@@ -115,14 +116,16 @@ std::string writeScene(const FresnelSceneComparison& c, const Report& report) {
     writeDifferenceImage(report.file("scene_difference.png"), a, b, c.metrics.max);
     render::writeFloatExr(report.file("scene_ciede2000.exr"), a.width, a.height, {"Y"},
                           c.ciede2000);
-    render::writeSignedHeatMap(report.file("scene_ciede2000.png"), a.width, a.height, c.ciede2000,
-                               10.0);
+    SvgHeatMap map("CIEDE2000, RGB against spectral mode", a.width, a.height, c.ciede2000);
+    map.setScale(Palette::Diverging, -10, 10, "CIEDE2000 (saturated at 10)");
+    map.writePng(report.file("scene_ciede2000.png"));
+    map.write(report.file("scene_ciede2000.svg"));
     return formatText(
         "### The scene in both modes: %s\n\n%d spp each (path integrator). RGB mode "
         "against spectral mode: relMSE %.4g, MAE %.4g; CIEDE2000 mean %.2f, max %.2f "
         "(noise included: both renders are noisy).\n\n"
-        "![CIEDE2000 map, red = 10](scene_ciede2000.png) "
-        "![|RGB - spectral|](scene_difference.png)\n\n",
+        "![CIEDE2000 map, red = 10](scene_ciede2000.svg) "
+        "![|RGB - spectral|](scene_difference.svg)\n\n",
         c.scene.c_str(), c.rgb.spp, c.metrics.relmse, c.metrics.mae, c.meanDeltaE, c.maxDeltaE);
 }
 

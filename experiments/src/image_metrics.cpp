@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "lamina/core/error.h"
+#include "lamina/experiments/svg_heat_map.h"
 
 namespace lamina::experiments {
 
@@ -49,17 +50,17 @@ double metricValue(const ImageMetrics& m, Metric metric) {
 
 void writeDifferenceImage(const std::filesystem::path& path, const render::RgbImage& a,
                           const render::RgbImage& b, double scale) {
-    std::vector<float> img(std::size_t(a.width) * a.height * 3);
-    for (std::size_t p = 0; p < std::size_t(a.width) * a.height; ++p) {
-        double d = 0;
+    std::vector<float> d(std::size_t(a.width) * a.height);
+    for (std::size_t p = 0; p < d.size(); ++p) {
+        double sum = 0;
         for (int c = 0; c < 3; ++c)
-            d += std::abs(double(a.pixels[p * 3 + c]) - double(b.pixels[p * 3 + c])) / 3;
-        const double t = scale > 0 ? std::clamp(d / scale, 0.0, 1.0) : 0.0;
-        img[p * 3 + 0] = float(std::clamp(2 * t - 0.5, 0.0, 1.0));
-        img[p * 3 + 1] = float(std::clamp(2 * t - 1.0, 0.0, 1.0));
-        img[p * 3 + 2] = float(t < 0.5 ? 2 * t : 2 - 2 * t);
+            sum += std::abs(double(a.pixels[p * 3 + c]) - double(b.pixels[p * 3 + c])) / 3;
+        d[p] = float(sum);
     }
-    render::writeRgb8(path, a.width, a.height, img);
+    SvgHeatMap map("|image - reference|, mean over R, G, B", a.width, a.height, std::move(d));
+    map.setScale(Palette::Sequential, 0, scale > 0 ? scale : 1, "|difference| (linear radiance)");
+    map.writePng(path);
+    map.write(std::filesystem::path(path).replace_extension(".svg"));
 }
 
 render::RgbImage filmImage(const render::Film& film) {

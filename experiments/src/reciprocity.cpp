@@ -28,7 +28,7 @@ void apply(Ablation a, render::TransportAblations& ablations) {
 
 /// A reference image as a single batch (no variance).
 BatchImages referenceImages(const std::string& path, int width, int height) {
-    const render::RgbImage img = render::readRgbImage(path);
+    const render::RgbImage img = render::readLinearRgbImage(path);
     if (img.width != width || img.height != height)
         throw InputError(path + " is " + std::to_string(img.width) + "x" +
                          std::to_string(img.height) + " but the renders are " +
@@ -44,9 +44,10 @@ BatchImages referenceImages(const std::string& path, int width, int height) {
 }
 
 PairAgreement comparePair(const std::string& nameA, const BatchImages& a, const std::string& nameB,
-                          const BatchImages& b, const AgreementTest& test) {
+                          const BatchImages& b, const AgreementTest& test, int spp) {
     PairAgreement p{nameA, nameB, testAgreement(a, b, test)};
     p.agree = p.result.agree(test.alpha);
+    p.pixelTest = calibratePixelTest(a, b, test, spp);
     p.width = a.width();
     p.height = a.height();
     return p;
@@ -66,7 +67,7 @@ void checkMaterials(const render::SceneDesc& scene, const SpectrumContext<S>& co
 
 ReciprocityResult runReciprocity(const ReciprocityInputs& in) {
     const render::SceneDesc scene = render::loadScene(in.scene);
-    ReciprocityResult result{in, {}, {}, {}};
+    ReciprocityResult result{in, {}, {}, {}, {}};
     render::RenderOptions o = in.overrides;
     o.mode = in.mode;
     for (const Ablation a : in.ablations)
@@ -93,15 +94,21 @@ ReciprocityResult runReciprocity(const ReciprocityInputs& in) {
         for (std::size_t j = i + 1; j < result.renders.size(); ++j)
             result.pairs.push_back(comparePair(nameOf(result.renders[i]), result.renders[i].images,
                                                nameOf(result.renders[j]), result.renders[j].images,
-                                               in.test));
+                                               in.test, in.spp));
     if (!in.reference.empty()) {
         const BatchImages ref = referenceImages(in.reference, result.renders.front().images.width(),
                                                 result.renders.front().images.height());
         for (const IntegratorBatches& r : result.renders)
-            result.pairs.push_back(comparePair(nameOf(r), r.images, "reference", ref, in.test));
+            result.pairs.push_back(
+                comparePair(nameOf(r), r.images, "reference", ref, in.test, in.spp));
     }
     for (const PairAgreement& p : result.pairs)
         result.allAgree &= p.agree;
+    for (const PairAgreement& p : result.pairs)
+        if (p.pixelTest.checked &&
+            (!result.pixelTest.checked ||
+             p.pixelTest.nullRejectionRate > result.pixelTest.nullRejectionRate))
+            result.pixelTest = p.pixelTest;
 
     checkMaterials(scene, SpectrumContext<Rgb<double>>{}, render::RenderModeKind::Rgb,
                    result.materials);

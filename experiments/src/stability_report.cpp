@@ -1,9 +1,12 @@
 // The report of `lamina stability`: heat maps per model over (alpha, angle) and summary.md.
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <sstream>
 
+#include "lamina/core/json_reader.h"
 #include "lamina/experiments/stability.h"
+#include "lamina/experiments/svg_heat_map.h"
 #include "lamina/experiments/text_format.h"
 #include "lamina/render/image_output.h"
 
@@ -16,32 +19,46 @@ std::string cellText(const StabilityCell& t) {
                       t.weightMismatch, t.worstFloatError);
 }
 
-void writeHeatMaps(const Report& report, const std::string& stem, const StabilityReport& r) {
-    constexpr int kCell = 16;
-    const int w = kCell * int(r.cosines.size()), h = kCell * int(r.alphas.size());
-    std::vector<float> issues(std::size_t(w) * h * 3), error(std::size_t(w) * h * 3);
+/// The file stem of a model: its number and its material type ("model2_conductor").
+std::string modelStem(std::size_t index, const std::string& json) {
+    std::string type = "material";
+    const Json j = Json::parse(json, nullptr, false);
+    if (j.is_object() && j.contains("type") && j["type"].is_string()) type = j["type"];
+    for (char& c : type)
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-') c = '_';
+    return "model" + std::to_string(index + 1) + "_" + type;
+}
+
+/// Two figures per model over (alpha, cos theta_o), each cell one audited pair of parameters:
+/// the number of issues and the worst float-against-double error, both on log scales.
+void writeHeatMaps(const Report& report, const std::string& stem, const std::string& json,
+                   const StabilityReport& r) {
+    const int w = int(r.cosines.size()), h = int(r.alphas.size());
+    std::vector<float> issues(std::size_t(w) * h), error(std::size_t(w) * h);
     for (std::size_t a = 0; a < r.alphas.size(); ++a)
         for (std::size_t c = 0; c < r.cosines.size(); ++c) {
             const StabilityCell& cell = r.at(a, c);
-            // Issues: black none, red growing with log10(count). Float error: green up to
-            // 1e-3, yellow to 1e-1, red beyond (log scale).
-            const float t = cell.issues()
-                                ? float(std::min(1.0, 0.3 + std::log10(double(cell.issues())) / 4))
-                                : 0.0f;
-            const double le = std::log10(std::max(cell.worstFloatError, 1e-8));
-            const float e = float(std::clamp((le + 8) / 8, 0.0, 1.0));
-            for (int y = 0; y < kCell; ++y)
-                for (int x = 0; x < kCell; ++x) {
-                    const std::size_t p = ((a * kCell + std::size_t(y)) * std::size_t(w) +
-                                           c * kCell + std::size_t(x)) *
-                                          3;
-                    issues[p] = t;
-                    error[p] = std::min(1.0f, 2 * e);
-                    error[p + 1] = std::min(1.0f, 2 * (1 - e));
-                }
+            issues[a * std::size_t(w) + c] = float(std::log10(1.0 + double(cell.issues())));
+            error[a * std::size_t(w) + c] = float(std::log10(std::max(cell.worstFloatError, 1e-8)));
         }
-    render::writeRgb8(report.file(stem + "_issues.png"), w, h, issues);
-    render::writeRgb8(report.file(stem + "_float_error.png"), w, h, error);
+    SvgHeatMap::Axis x{"cos(theta_o)", 0, 0, {}}, y{"alpha (GGX roughness)", 0, 0, {}};
+    for (double c : r.cosines)
+        x.categories.push_back(formatText("%g", c));
+    for (double a : r.alphas)
+        y.categories.push_back(formatText("%g", a));
+    SvgHeatMap issueMap("Issues (NaN, Inf, negative, energy gain, weight != eval/pdf): " + json, w,
+                        h, std::move(issues));
+    issueMap.setAxes(x, y);
+    double most = 1;
+    for (const StabilityCell& cell : r.cells)
+        most = std::max(most, std::log10(1.0 + double(cell.issues())));
+    issueMap.setScale(Palette::Sequential, 0, most, "log10(1 + issues per cell)");
+    issueMap.write(report.file(stem + "_issues.svg"));
+    SvgHeatMap errorMap("Worst relative error of float against double: " + json, w, h,
+                        std::move(error));
+    errorMap.setAxes(x, y);
+    errorMap.setScale(Palette::Sequential, -8, 0, "log10(relative error)");
+    errorMap.write(report.file(stem + "_float_error.svg"));
 }
 
 std::string modelsSection(const StabilityResult& result, const Report& report) {
@@ -58,12 +75,13 @@ std::string modelsSection(const StabilityResult& result, const Report& report) {
           "error |\n|---|---|---|---|---|---|---|\n";
     for (std::size_t i = 0; i < result.models.size(); ++i) {
         const AuditedModel& m = result.models[i];
-        writeHeatMaps(report, "model" + std::to_string(i + 1), m.audit);
+        writeHeatMaps(report, modelStem(i, m.json), m.json, m.audit);
         md << "| `" << m.json << "` | " << cellText(m.audit.total()) << " |\n";
     }
-    md << "\nHeat maps per model (`modelN_issues.png`: rows alpha, columns cos(theta_o) in the "
-          "order above; black = no issue, red = more; `modelN_float_error.png`: green = float "
-          "within 1e-8 of double, red = 1e-4 or worse).\n\n";
+    md << "\nHeat maps per model, named by its number and material type "
+          "(`modelN_TYPE_issues.svg`: issues per (alpha, cos theta_o) cell; "
+          "`modelN_TYPE_float_error.svg`: the worst float error against double), each with "
+          "its parameter values on the axes and a colour bar.\n\n";
     return md.str();
 }
 

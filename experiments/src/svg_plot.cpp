@@ -13,8 +13,11 @@ namespace lamina::experiments {
 
 namespace {
 
-constexpr double kWidth = 720, kHeight = 480;
-constexpr double kLeft = 80, kRight = 200, kTop = 40, kBottom = 60;
+constexpr double kPlotWidth = 520, kHeight = 480;
+constexpr double kLeft = 80, kTop = 40, kBottom = 60;
+// The legend right of the plot: a 30-unit line sample, then the name at about 7 units per
+// character of the 12-unit font, so that no name is cut.
+constexpr double kLegendSample = 42, kCharWidth = 7.2;
 // A qualitative palette that stays distinguishable in print (Okabe and Ito 2008).
 constexpr const char* kColors[] = {"#0072B2", "#D55E00", "#009E73", "#CC79A7",
                                    "#E69F00", "#56B4E9", "#F0E442", "#000000"};
@@ -96,10 +99,15 @@ void SvgPlot::write(const std::filesystem::path& path) const {
             yhi = std::max(yhi, s.y[i]);
         }
     const Axis ax = makeAxis(logX_, xlo, xhi), ay = makeAxis(logY_, ylo, yhi);
-    const double x0 = kLeft, x1 = kWidth - kRight, y0 = kHeight - kBottom, y1 = kTop;
+    std::size_t longest = 0;
+    for (const Series& s : series_)
+        longest = std::max(longest, s.name.size());
+    const double width =
+        kLeft + kPlotWidth + std::max(120.0, kLegendSample + 20 + kCharWidth * double(longest));
+    const double x0 = kLeft, x1 = kLeft + kPlotWidth, y0 = kHeight - kBottom, y1 = kTop;
 
     std::ostringstream svg;
-    svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kWidth << "\" height=\""
+    svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\""
         << kHeight << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
         << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
         << "<text x=\"" << (x0 + x1) / 2 << "\" y=\"22\" text-anchor=\"middle\" font-size=\"14\">"

@@ -114,6 +114,9 @@ TEST_F(CliTest, CompareReportsKnownDifferences) {
     EXPECT_NEAR(m["max"], 0.1, 1e-6);
     EXPECT_NEAR(m["relmse"], 0.01 / 0.26, 1e-6);
     EXPECT_TRUE(fs::exists(diff));
+    // The scale of the false colours is printed, and the SVG beside it has its colour bar.
+    EXPECT_NEAR(m["diff_scale"], 0.1, 1e-6);
+    EXPECT_TRUE(fs::exists(dir_ / "diff.svg"));
     const auto small = writeExr("small.exr", 2, 4, 0.5f);
     const CommandRun mismatch = runLamina("compare " + a + " " + small);
     EXPECT_EQ(mismatch.exitCode, 1);

@@ -142,8 +142,12 @@ TEST_F(ExperimentCli, StabilityReportsAHealthyModelCleanAndRendersStressScenes) 
               std::string::npos)
         << r.output;
     EXPECT_NE(r.output.find("| ior-4.json | 0 |"), std::string::npos) << r.output;
-    EXPECT_TRUE(fs::exists(dir_ / "model1_issues.png"));
-    EXPECT_TRUE(fs::exists(dir_ / "model1_float_error.png"));
+    // The material in the name; the parameter values on the axes.
+    EXPECT_TRUE(fs::exists(dir_ / "model1_lambert_float_error.svg"));
+    std::ifstream svg(dir_ / "model1_lambert_issues.svg");
+    const std::string figure((std::istreambuf_iterator<char>(svg)), {});
+    EXPECT_NE(figure.find("cos(theta_o)"), std::string::npos);
+    EXPECT_NE(figure.find("log10(1 + issues per cell)"), std::string::npos);
 }
 
 }  // namespace

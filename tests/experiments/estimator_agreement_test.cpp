@@ -67,5 +67,54 @@ TEST(EstimatorAgreement, AReferenceOfOneBatchIsTestedAgainstItsValue) {
         testAgreement(normalBatches(1.05, 0.1, kBatches, 7), exact, test).agree(test.alpha));
 }
 
+/// Batches of `samples` samples per pixel, each sample 1 / p with probability p and 0
+/// otherwise (mean 1): rare large values, the light tracer's caustics and glossy highlights.
+BatchImages fireflyBatches(int batches, int samples, double p, std::uint64_t seed) {
+    Pcg32 rng(seed);
+    BatchImages images(kSize, kSize);
+    for (int k = 0; k < batches; ++k) {
+        render::Film film(kSize, kSize, render::FilmSpace::Rec709);
+        for (int y = 0; y < kSize; ++y)
+            for (int x = 0; x < kSize; ++x)
+                for (int s = 0; s < samples; ++s)
+                    film.addSample(x, y, Rgb<double>(rng.nextDouble() < p ? 1 / p : 0.0), 1.0);
+        images.add(film);
+    }
+    return images;
+}
+
+TEST(PixelTestCalibration, NormalBatchesAreTrusted) {
+    const BatchImages a = normalBatches(1.0, 0.1, kBatches, 8),
+                      b = normalBatches(2.0, 0.3, kBatches, 9);
+    const PixelTestCalibration c = calibratePixelTest(a, b, AgreementTest{}, 64);
+    EXPECT_TRUE(c.checked);
+    EXPECT_TRUE(c.trustworthy) << c.nullRejectionRate;
+    EXPECT_EQ(c.recommendedSpp, 0);
+}
+
+TEST(PixelTestCalibration, RareLargeSamplesAgainstASmoothEstimatorAreFlagged) {
+    // Both estimate 1 everywhere, yet the per-pixel test rejects far more than alpha: with
+    // 8 batches of 4 samples at p = 0.02 most pixels see no large sample at all.
+    AgreementTest test;
+    const BatchImages smooth = normalBatches(1.0, 0.05, 8, 10),
+                      heavy = fireflyBatches(8, 4, 0.02, 11);
+    const AgreementResult actual = testAgreement(heavy, smooth, test);
+    const PixelTestCalibration c = calibratePixelTest(heavy, smooth, test, 32);
+    EXPECT_GT(actual.pixelRejectionRate(), 5 * test.alpha) << "the case to be caught";
+    EXPECT_TRUE(c.checked);
+    EXPECT_FALSE(c.trustworthy) << c.nullRejectionRate;
+    EXPECT_GT(c.nullRejectionRate, 2 * test.alpha);
+    // spp x (rate - alpha) / alpha, a multiple of the 8 batches, above 32.
+    EXPECT_GT(c.recommendedSpp, 32);
+    EXPECT_EQ(c.recommendedSpp % 8, 0);
+}
+
+TEST(PixelTestCalibration, NeedsFourBatches) {
+    const BatchImages few = normalBatches(1.0, 0.1, 3, 12), other = normalBatches(1.0, 0.1, 3, 13);
+    const PixelTestCalibration c = calibratePixelTest(few, other, AgreementTest{}, 24);
+    EXPECT_FALSE(c.checked);
+    EXPECT_TRUE(c.trustworthy);
+}
+
 }  // namespace
 }  // namespace lamina::experiments

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 
 #include "lamina/core/error.h"
@@ -51,6 +52,8 @@ void addMetadata(OIIO::ImageSpec& spec, const ImageMetadata& metadata) {
         spec.attribute("lamina:" + k, v);
     for (const auto& [k, v] : metadata.ints)
         spec.attribute("lamina:" + k, v);
+    for (const auto& [k, v] : metadata.matrices)
+        spec.attribute("lamina:" + k, OIIO::TypeMatrix44, v.data());
 }
 
 }  // namespace
@@ -121,17 +124,6 @@ void writeRgb8(const std::filesystem::path& path, int width, int height,
     writeAtomically(path, OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::UINT8), rgb);
 }
 
-void writeSignedHeatMap(const std::filesystem::path& path, int width, int height,
-                        const std::vector<float>& values, double limit) {
-    OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
-    std::vector<float> data(std::size_t(width) * height * 3, 0.0f);
-    for (std::size_t i = 0; i < values.size(); ++i) {
-        const double t = std::clamp(double(values[i]) / limit, -1.0, 1.0);
-        data[3 * i + (t > 0 ? 0 : 2)] = float(std::sqrt(std::abs(t)));
-    }
-    writeAtomically(path, spec, data);
-}
-
 void writePngPreview(const std::filesystem::path& path, const Film& film, double exposure) {
     const int w = film.width(), h = film.height();
     OIIO::ImageSpec spec(w, h, 3, OIIO::TypeDesc::UINT8);
@@ -150,27 +142,82 @@ void writePngPreview(const std::filesystem::path& path, const Film& film, double
     writeAtomically(path, spec, data);
 }
 
+namespace {
+
+/// The index of channel `name`, or -1.
+int channelIndex(const OIIO::ImageSpec& spec, const std::string& name) {
+    for (int c = 0; c < spec.nchannels; ++c)
+        if (spec.channel_name(c) == name) return c;
+    return -1;
+}
+
+/// An 8- or 16-bit file is sRGB-encoded unless it says otherwise (PNG, JPEG); a float file is
+/// linear unless it says it is sRGB.
+bool isSrgbEncoded(const OIIO::ImageSpec& spec) {
+    std::string cs = spec.get_string_attribute("oiio:ColorSpace");
+    std::transform(cs.begin(), cs.end(), cs.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
+    if (cs.find("srgb") != std::string::npos && cs.find("lin") == std::string::npos) return true;
+    const bool integer = !spec.format.is_floating_point();
+    return integer && cs.empty();
+}
+
+double srgbToLinear(double e) {
+    // The inverse of the sRGB transfer function (IEC 61966-2-1).
+    return e <= 0.04045 ? e / 12.92 : std::pow((e + 0.055) / 1.055, 2.4);
+}
+
+}  // namespace
+
 RgbImage readRgbImage(const std::filesystem::path& path) {
     checkInputFile(path, kMaxImageFileBytes);
     auto in = OIIO::ImageInput::open(path.string());
     if (!in) throw InputError(path.string() + ": cannot read image: " + OIIO::geterror());
     const OIIO::ImageSpec& spec = in->spec();
-    if (spec.nchannels < 3) throw InputError(path.string() + ": expected at least 3 channels");
     // A small header can claim any resolution: refuse before allocating for it.
     if (std::uintmax_t(std::max(spec.width, 0)) * std::uintmax_t(std::max(spec.height, 0)) >
         kMaxImagePixels)
         throw InputError(path.string() + ": " + std::to_string(spec.width) + " x " +
                          std::to_string(spec.height) + " pixels, more than the limit of " +
                          std::to_string(kMaxImagePixels));
+    // By name, not by position: an EXR's channels are stored sorted (A before B, G, R, and
+    // AOV layers such as Albedo.R before R).
+    const int channels[3] = {channelIndex(spec, "R"), channelIndex(spec, "G"),
+                             channelIndex(spec, "B")};
+    if (channels[0] < 0 || channels[1] < 0 || channels[2] < 0) {
+        std::string names;
+        for (int c = 0; c < spec.nchannels; ++c)
+            names += std::string(c ? ", " : "") + std::string(spec.channel_name(c));
+        throw InputError(path.string() + ": expected channels R, G and B, found " +
+                         (names.empty() ? std::string("none") : names));
+    }
     RgbImage img;
     img.width = spec.width;
     img.height = spec.height;
-    img.pixels.resize(std::size_t(spec.width) * spec.height * 3);
-    if (!in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, img.pixels.data()))
+    img.displayReferred = isSrgbEncoded(spec);
+    const std::size_t nc = std::size_t(spec.nchannels), n = std::size_t(spec.width) * spec.height;
+    std::vector<float> all(n * nc);
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, all.data()))
         throw InputError(path.string() + ": cannot read image: " + in->geterror());
+    img.pixels.resize(n * 3);
+    for (std::size_t i = 0; i < n; ++i)
+        for (int c = 0; c < 3; ++c) {
+            const float v = all[i * nc + std::size_t(channels[c])];
+            img.pixels[i * 3 + std::size_t(c)] =
+                img.displayReferred ? float(srgbToLinear(double(v))) : v;
+        }
     for (const auto& p : spec.extra_attribs)
         img.metadata[p.name().string()] = p.get_string();
     in->close();
+    return img;
+}
+
+RgbImage readLinearRgbImage(const std::filesystem::path& path) {
+    RgbImage img = readRgbImage(path);
+    if (img.displayReferred)
+        throw InputError(path.string() +
+                         ": an sRGB-encoded display image (tone-mapped and clipped to [0, 1]) "
+                         "cannot be a reference for a linear render: use the EXR");
     return img;
 }
 

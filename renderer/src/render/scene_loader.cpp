@@ -45,13 +45,21 @@ SceneDesc readScene(const Json& json, const JsonSource& source) {
 
 SceneDesc parseScene(const std::string& text, const JsonSource& source) {
     const Json root = parseJsonText(text, source);
-    return readScene(root, source);
+    std::vector<std::filesystem::path> read;
+    JsonSource recording = source;
+    recording.readFiles = &read;
+    SceneDesc scene = readScene(root, recording);
+    scene.inputFiles = std::move(read);
+    return scene;
 }
 
 SceneDesc loadScene(const std::filesystem::path& file) {
     const Json root = readJsonFile(file);
-    const JsonSource source{file.string(), file.parent_path()};
-    return readScene(root, source);
+    std::vector<std::filesystem::path> read{file};
+    const JsonSource source{file.string(), file.parent_path(), &read};
+    SceneDesc scene = readScene(root, source);
+    scene.inputFiles = std::move(read);
+    return scene;
 }
 
 }  // namespace lamina::render

@@ -26,6 +26,9 @@ using Json = nlohmann::json;
 struct JsonSource {
     std::string name = "<input>";
     std::filesystem::path directory = ".";
+    /// When set, every file a reader names (JsonReader::filePath) is appended: the scene's
+    /// provenance hash covers what the scene read, not only its JSON text.
+    std::vector<std::filesystem::path>* readFiles = nullptr;
 };
 
 /// The deepest nesting of arrays and objects a JSON input may have (scenes need about 6).

@@ -6,12 +6,14 @@
 // Monte Carlo estimator, and the time each needs to reach given error levels).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "lamina/experiments/image_metrics.h"
 #include "lamina/experiments/progress.h"
 #include "lamina/experiments/report.h"
+#include "lamina/render/render_metadata.h"
 #include "lamina/render/renderer.h"
 
 namespace lamina::experiments {
@@ -31,12 +33,16 @@ struct ConvergenceInputs {
     std::vector<ErrorLevel> levels = {{1e-2, "1e-2"}, {1e-3, "1e-3"}};
     /// A reference EXR for every mode; empty: one reference per mode is rendered first.
     std::string reference;
+    /// Measure against a reference rendered with the measured renders' sampler and seed
+    /// anyway (referenceCorrelation): the errors are then understated.
+    bool allowCorrelatedReference = false;
     render::IntegratorKind referenceIntegrator = render::IntegratorKind::Path;
     double referenceSeconds = 0;  ///< of each rendered reference; 0: 20 x seconds
     /// Applied to every render (threads, sampler, max depth, resolution); the mode, the
     /// integrator and the time are set per render, and a reference always uses Sobol and a
     /// seed of its own.
     render::RenderOptions overrides;
+    render::BuildInfo build;  ///< stamped into the rendered references
     ProgressSink progress;
 };
 
@@ -44,6 +50,7 @@ struct ConvergenceInputs {
 struct RenderedReference {
     render::RenderModeKind mode;
     render::RenderResult render;
+    render::ImageMetadata metadata;  ///< written into reference_MODE.exr
 };
 
 /// One combination's error after every pass.
@@ -59,7 +66,19 @@ struct ConvergenceResult {
     ConvergenceInputs inputs;
     std::vector<RenderedReference> references;  ///< empty when the reference was given
     std::vector<ConvergenceCurve> curves;       ///< modes outer, integrators inner
+    /// For the summary: what is known of a given reference's provenance.
+    std::string referenceNote;
 };
+
+/// Why a given reference is correlated with the measured renders, or nothing. A reference
+/// rendered with the same sampler and seed as the measured renders (read from its lamina:seed
+/// and lamina:sampler metadata) shares their first samples: pixel by pixel the measured image
+/// converges towards the reference's own noise, so the error is understated (about 3x on the
+/// Cornell box) and the fitted slope is steeper than -1. A reference without lamina metadata
+/// (another renderer) cannot be checked and is not reported.
+std::optional<std::string> referenceCorrelation(const render::RgbImage& reference,
+                                                const render::SceneDesc& scene,
+                                                const render::RenderOptions& measured);
 
 /// Least-squares slope of log(relMSE) against log(seconds) over the passes after the first
 /// tenth of the time (the first passes are dominated by start-up costs); NAN with fewer than

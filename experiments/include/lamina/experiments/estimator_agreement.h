@@ -6,6 +6,7 @@
 // when the estimators agree, about alpha of the tests reject.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -30,6 +31,10 @@ class BatchImages {
     RegionStatistics region(int x0, int y0, int x1, int y1) const;
     /// A Rec.709 image of the mean over the batches.
     const std::vector<Rgb<double>>& meanImage() const { return meanRgb_; }
+    /// The luminance of pixel (x, y) in one batch.
+    float value(int batch, int x, int y) const {
+        return batches_[std::size_t(batch)][std::size_t(y) * width_ + x];
+    }
 
   private:
     double regionMean(std::size_t batch, int x0, int y0, int x1, int y1) const;
@@ -67,6 +72,37 @@ struct AgreementResult {
     /// means is significant at level 0.001.
     bool agree(double alpha) const;
 };
+
+/// Whether the per-pixel t-test holds its significance level for these two estimators at
+/// this sample count.
+///
+/// Welch's test assumes that a pixel's batch means are about normal. With heavy-tailed
+/// per-sample values (caustics, light tracing of glossy surfaces in view) and few samples they
+/// are not: most batches miss the rare large values, so a typical heavy-tailed estimate is
+/// low AND its variance estimate small, and against a low-variance estimator the test rejects
+/// far more than alpha although both are unbiased (13-15% at alpha 0.01 on the rough glass
+/// scene at 32 spp in 8 batches). Two halves of the same estimator would not show it: their
+/// skews cancel in the difference. A per-pixel kurtosis or skewness from 8 or 16 batch means
+/// is too noisy to decide on. So the test's own false-rejection rate is estimated for the
+/// pair at hand by the bootstrap (Efron and Tibshirani 1993, ch. 12, the bootstrap-t): each
+/// side's batches are resampled with replacement around their own mean (the null hypothesis
+/// made true while keeping each side's distribution), and the per-pixel test is run on
+/// `resamples` such pairs; the rate is pooled over all pixels.
+///
+/// The test is trusted when that rate is at most 2 alpha plus three binomial standard
+/// deviations. Otherwise the recommended sample count assumes that the excess rejection
+/// (rate - alpha) falls as 1 / (samples): the error of a two-sided t-test under non-normality
+/// is of order 1/n (its Edgeworth expansion's 1/sqrt(n) skewness terms cancel between the
+/// two tails), so spp x (rate - alpha) / alpha samples bring the excess down to alpha.
+struct PixelTestCalibration {
+    bool checked = false;          ///< false with fewer than 4 batches on the noisier side
+    bool trustworthy = true;       ///< unchecked counts as trusted
+    double nullRejectionRate = 0;  ///< the bootstrap estimate of the false-rejection rate
+    int recommendedSpp = 0;        ///< when not trustworthy: a multiple of the batch count
+};
+PixelTestCalibration calibratePixelTest(const BatchImages& a, const BatchImages& b,
+                                        const AgreementTest& test, int spp, int resamples = 16,
+                                        std::uint64_t seed = 1);
 
 /// Tests A against B. `b` may have a single batch (a reference): its variance is then zero.
 AgreementResult testAgreement(const BatchImages& a, const BatchImages& b,

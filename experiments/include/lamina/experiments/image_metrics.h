@@ -33,8 +33,9 @@ double metricValue(const ImageMetrics& metrics, Metric metric);
 /// InputError if the sizes differ.
 ImageMetrics compareImages(const render::RgbImage& a, const render::RgbImage& reference);
 
-/// A false-colour PNG of the mean absolute channel difference |a - b| (black, blue, red,
-/// yellow as it grows to `scale`).
+/// A false-colour PNG of the mean absolute channel difference |a - b| (black, blue, magenta,
+/// yellow, white from 0 to `scale`, Palette::Sequential), and beside it (same name, .svg) the
+/// figure with its axes and colour bar.
 void writeDifferenceImage(const std::filesystem::path& path, const render::RgbImage& a,
                           const render::RgbImage& b, double scale);
 

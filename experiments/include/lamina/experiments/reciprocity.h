@@ -57,7 +57,8 @@ struct PairAgreement {
     std::string nameA, nameB;  ///< integrator names, or "reference"
     AgreementResult result;
     bool agree = false;
-    int width = 0, height = 0;  ///< of the t-statistic maps
+    PixelTestCalibration pixelTest;  ///< whether its per-pixel rejection rate means anything
+    int width = 0, height = 0;       ///< of the t-statistic maps
 };
 
 struct MaterialReciprocity {
@@ -71,6 +72,8 @@ struct ReciprocityResult {
     std::vector<IntegratorBatches> renders;
     std::vector<PairAgreement> pairs;
     std::vector<MaterialReciprocity> materials;  ///< every material in RGB, then in spectral mode
+    /// The pair whose per-pixel test is the least trustworthy (the verdict reports it).
+    PixelTestCalibration pixelTest;
     bool allAgree = true;
 };
 

@@ -12,6 +12,7 @@
 // section 10.8, and pbrt-v4 section 5.2.4 use the same form with the film area instead of K).
 #pragma once
 
+#include <array>
 #include <optional>
 
 #include "lamina/core/warp.h"
@@ -55,6 +56,32 @@ class Camera {
 
     bool isPinhole() const { return !(desc_.apertureRadius > 0); }
     Vec3<float> forward() const { return forward_; }
+
+    /// Row-major 4x4 matrices acting on column vectors (provenance metadata). Camera space:
+    /// x right, y up, z forward (the viewing axis), origin at the pinhole.
+    using Matrix4 = std::array<float, 16>;
+    Matrix4 cameraToWorld() const {
+        return {right_.x, up_.x, forward_.x, origin_.x, right_.y, up_.y, forward_.y, origin_.y,
+                right_.z, up_.z, forward_.z, origin_.z, 0.0f,     0.0f,  0.0f,       1.0f};
+    }
+    /// World -> NDC of the pinhole projection, the same as rasterPosition: after the division
+    /// by w (the depth along the viewing axis), x in [0, 1] runs left to right and y in [0, 1]
+    /// top to bottom over the film (times width and height: pixels), and z = 1 / depth.
+    Matrix4 worldToNdc() const {
+        const float ax = 0.5f / tanHalfWidth_, ay = -0.5f / tanHalfHeight_;
+        const Vec3<float> rows[3] = {ax * right_ + 0.5f * forward_, ay * up_ + 0.5f * forward_,
+                                     forward_};
+        Matrix4 m{};
+        for (int r = 0; r < 3; ++r) {
+            const int out = r == 2 ? 3 : r;  // depth goes to w; z is the constant 1
+            m[std::size_t(4 * out)] = rows[r].x;
+            m[std::size_t(4 * out + 1)] = rows[r].y;
+            m[std::size_t(4 * out + 2)] = rows[r].z;
+            m[std::size_t(4 * out + 3)] = -glm::dot(rows[r], origin_);
+        }
+        m[11] = 1.0f;
+        return m;
+    }
 
     /// The film position (pixels) of the ray leaving lens point `o` along `d` (unit, towards
     /// the scene), or nullopt if it misses the film.

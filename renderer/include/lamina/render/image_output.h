@@ -4,6 +4,7 @@
 // renamed, so an interrupted write never leaves a broken file behind.
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -16,6 +17,7 @@ struct ImageMetadata {
     std::map<std::string, std::string> strings;  ///< written as "lamina:<key>"
     std::map<std::string, float> floats;
     std::map<std::string, int> ints;
+    std::map<std::string, std::array<float, 16>> matrices;  ///< row-major 4x4 (M44f)
 };
 
 /// Checks that `path` can be written (directory exists, extension known) before a long
@@ -33,17 +35,21 @@ void writeFloatExr(const std::filesystem::path& path, int width, int height,
 /// An 8-bit image (PNG, ...) of display-ready RGB values in [0, 1] (no transfer function).
 void writeRgb8(const std::filesystem::path& path, int width, int height,
                const std::vector<float>& rgb);
-/// A PNG heat map of a signed quantity: blue for -limit, black for 0, red for +limit.
-void writeSignedHeatMap(const std::filesystem::path& path, int width, int height,
-                        const std::vector<float>& values, double limit);
-
 /// A float RGB image read back (tests, comparisons).
 struct RgbImage {
     int width = 0, height = 0;
-    std::vector<float> pixels;  ///< RGB interleaved
+    std::vector<float> pixels;  ///< linear RGB interleaved
     std::map<std::string, std::string> metadata;
+    /// The file was sRGB-encoded (8- or 16-bit PNG, JPEG, ...): its pixels are decoded to
+    /// linear, but it was tone-mapped and clipped for display, so it is not comparable with a
+    /// linear render.
+    bool displayReferred = false;
     float at(int x, int y, int c) const { return pixels[(std::size_t(y) * width + x) * 3 + c]; }
 };
+/// Channels R, G and B by name (an InputError names the channels found otherwise); an
+/// sRGB-encoded file is decoded to linear and marked displayReferred.
 RgbImage readRgbImage(const std::filesystem::path& path);
+/// The same for a reference of a linear render: refuses a display-referred image.
+RgbImage readLinearRgbImage(const std::filesystem::path& path);
 
 }  // namespace lamina::render

@@ -146,6 +146,9 @@ struct LightDesc {
 
 struct SceneDesc {
     std::filesystem::path file;
+    /// The scene file itself, then every file its readers opened (meshes, textures, n/k
+    /// tables, environment maps), in reading order: what the provenance hash covers.
+    std::vector<std::filesystem::path> inputFiles;
     CameraDesc camera;
     FilmDesc film;
     RenderSettings settings;

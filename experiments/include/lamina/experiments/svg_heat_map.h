@@ -1,0 +1,54 @@
+// False-colour maps as SVG figures that stand alone: a title, the map itself (one rectangle
+// per run of equal colour in a row), named axes with tick values, and a colour bar with
+// numbers. The PNG maps beside them use the same palettes (falseColour), so a PNG can be read
+// with its SVG's colour bar.
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace lamina::experiments {
+
+enum class Palette {
+    Sequential,  ///< 0 .. 1: black, blue, magenta, yellow, white
+    Diverging,   ///< -1 .. 1: blue, black at 0, red (square-root ramp: small values show)
+};
+
+/// The colour of t (clamped to the palette's domain), RGB in [0, 1].
+std::array<float, 3> falseColour(Palette palette, double t);
+
+class SvgHeatMap {
+  public:
+    /// An axis of the map: its name with the unit, and the values at the centres of the
+    /// first and last cells (columns left to right, rows top to bottom), or category names
+    /// (one per cell) that replace the numbers.
+    struct Axis {
+        std::string label;
+        double first = 0, last = 0;
+        std::vector<std::string> categories;
+    };
+
+    /// `values`: width x height, row-major from the top row; NaN cells are drawn grey.
+    SvgHeatMap(std::string title, int width, int height, std::vector<float> values);
+    void setAxes(Axis x, Axis y);
+    /// The colour bar: `lo` and `hi` are the ends of the palette (for Diverging, lo = -hi).
+    void setScale(Palette palette, double lo, double hi, std::string label);
+    /// The SVG figure.
+    void write(const std::filesystem::path& path) const;
+    /// The map alone as an 8-bit image (PNG), one pixel per cell, the same colours.
+    void writePng(const std::filesystem::path& path) const;
+
+  private:
+    std::array<float, 3> colourOf(float value) const;
+    std::string title_;
+    int width_, height_;
+    std::vector<float> values_;
+    Axis x_, y_;
+    Palette palette_ = Palette::Sequential;
+    double lo_ = 0, hi_ = 1;
+    std::string scaleLabel_;
+};
+
+}  // namespace lamina::experiments
