@@ -257,7 +257,7 @@ IorSpectrum loadCsv(const std::filesystem::path& path) {
     return IorSpectrum(name, tabulatedCurve(nm, n, name), tabulatedCurve(nm, k, name), dispersive);
 }
 
-IorSpectrum loadYaml(const std::filesystem::path& path) {
+IorSpectrum readYaml(const std::filesystem::path& path) {
     YAML::Node root;
     try {
         root = YAML::LoadFile(path.string());
@@ -392,7 +392,15 @@ std::vector<std::string> namedGlassNames() {
 IorSpectrum loadIorFile(const std::filesystem::path& path) {
     if (!std::filesystem::exists(path)) fileError(path, "no such file");
     const std::string ext = path.extension().string();
-    if (ext == ".yml" || ext == ".yaml") return loadYaml(path);
+    if (ext == ".yml" || ext == ".yaml") {
+        // A node of the wrong kind (a map where text was expected) throws from deep inside
+        // yaml-cpp: its message becomes the file's one line.
+        try {
+            return readYaml(path);
+        } catch (const YAML::Exception& e) {
+            fileError(path, "line " + std::to_string(e.mark.line + 1) + ": " + e.msg);
+        }
+    }
     if (ext == ".csv" || ext == ".txt") return loadCsv(path);
     fileError(path, "unknown n/k file type \"" + ext + "\" (expected .yml, .yaml or .csv)");
 }

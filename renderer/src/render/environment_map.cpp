@@ -7,6 +7,7 @@
 
 #include "lamina/core/error.h"
 #include "lamina/core/math.h"
+#include "lamina/render/stderr_capture.h"
 
 namespace lamina::render {
 
@@ -40,6 +41,7 @@ double PiecewiseConstant1D::pdf(double x) const {
 }
 
 EnvironmentMap::EnvironmentMap(const std::filesystem::path& file, double rotationDegrees) {
+    const StderrCapture quiet;  // libpng writes its warnings to stderr
     auto in = OIIO::ImageInput::open(file.string());
     if (!in)
         throw InputError(file.string() + ": cannot read the environment map: " + OIIO::geterror());

@@ -89,7 +89,16 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
 
     int done = 0, passes = 0;
     auto& interrupted = renderInterruptFlag();
-    while (done < targetSpp && !interrupted.load()) {
+    // The first pass always runs, so an interrupted render still has an image to write; an
+    // interruption stops the loop after the pass in flight. `complete`: the requested samples
+    // or time were used up (a render interrupted before that is partial, timed or not).
+    bool complete = false;
+    while (true) {
+        if (done >= targetSpp) {
+            complete = true;
+            break;
+        }
+        if (done > 0 && interrupted.load()) break;
         // Passes double in size (1, 1, 2, 4, ... up to 64 spp), so early progress is quick
         // and an interruption or a time limit loses little work.
         const int passSpp = std::min({targetSpp - done, std::max(1, std::min(done, 64))});
@@ -118,10 +127,13 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
             progress(p);
             callbackSeconds += std::chrono::duration<double>(Clock::now() - before).count();
         }
-        if (timed && elapsed() >= *options.seconds) break;
+        if (timed && elapsed() >= *options.seconds) {
+            complete = true;
+            break;
+        }
     }
     result.spp = done;
-    result.partial = interrupted.load() && !timed;
+    result.partial = !complete;
     result.seconds = elapsed();
     result.rays = rays.load();
     result.paths = pixelsDone.load();

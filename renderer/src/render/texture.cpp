@@ -5,11 +5,13 @@
 #include <cmath>
 
 #include "lamina/core/error.h"
+#include "lamina/render/stderr_capture.h"
 
 namespace lamina::render {
 
 ImageTexture::ImageTexture(const std::filesystem::path& file, const Vec2<float>& scale, bool srgb)
     : scale_(scale) {
+    const StderrCapture quiet;  // libpng writes its warnings to stderr
     auto in = OIIO::ImageInput::open(file.string());
     if (!in) throw InputError(file.string() + ": cannot read the texture: " + OIIO::geterror());
     const OIIO::ImageSpec& spec = in->spec();
