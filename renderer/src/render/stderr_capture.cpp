@@ -7,7 +7,11 @@
 
 namespace lamina::render {
 
-StderrCapture::StderrCapture() {
+namespace {
+std::recursive_mutex descriptor2;
+}  // namespace
+
+StderrCapture::StderrCapture() : turn_(descriptor2) {
     std::fflush(stderr);
     char name[] = "/tmp/lamina-stderr-XXXXXX";
     file_ = ::mkstemp(name);

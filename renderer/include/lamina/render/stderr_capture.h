@@ -5,6 +5,7 @@
 // read can name the library's reason on lamina's own line, and a successful one stays quiet.
 #pragma once
 
+#include <mutex>
 #include <string>
 
 namespace lamina::render {
@@ -20,6 +21,9 @@ class StderrCapture {
     std::string text() const;
 
   private:
+    // Descriptor 2 is one per process: captures in two threads would restore each other's
+    // descriptors, so they take turns (nested ones in one thread restore in order).
+    std::unique_lock<std::recursive_mutex> turn_;
     int saved_ = -1;  // the original descriptor 2, -1 if the capture could not start
     int file_ = -1;   // the unlinked temporary file descriptor 2 points at
 };
