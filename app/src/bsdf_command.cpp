@@ -13,6 +13,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "json_lines.h"
 #include "lamina/bsdf/material_builder.h"
 #include "lamina/core/chi_square_test.h"
 #include "lamina/core/error.h"
@@ -57,24 +58,6 @@ Vec3d parseDirection(const std::string& text, const std::string& what) {
     return glm::normalize(d);
 }
 
-// A spectrum as a JSON array of its first `channels` values.
-template <typename S>
-std::string jsonArray(const S& s, int channels) {
-    std::string out = "[";
-    char buf[32];
-    for (int i = 0; i < channels; ++i) {
-        std::snprintf(buf, sizeof buf, "%.9g", double(s[i]));
-        out += (i ? "," : "") + std::string(buf);
-    }
-    return out + "]";
-}
-
-std::string jsonVec(const Vec3d& v) {
-    char buf[96];
-    std::snprintf(buf, sizeof buf, "[%.9g,%.9g,%.9g]", v.x, v.y, v.z);
-    return buf;
-}
-
 // Colour map for the heat map: black - red - yellow - white ("hot").
 void hot(double t, float* rgb) {
     t = std::clamp(t, 0.0, 1.0);
@@ -106,8 +89,9 @@ class BsdfTool {
             r.finish();
             const Vec3d o = normalized(wo, r, "wo"), i = normalized(wi, r, "wi");
             const S f = bxdf_->eval(o, i, mode_);
-            std::printf("{\"f\":%s,\"pdf\":%.9g,\"pdf_reverse\":%.9g}\n",
-                        jsonArray(f, channels_).c_str(), bxdf_->pdf(o, i), bxdf_->pdf(i, o));
+            std::printf("{\"f\":%s,\"pdf\":%s,\"pdf_reverse\":%s}\n",
+                        jsonArray(f, channels_).c_str(), jsonNumber(bxdf_->pdf(o, i)).c_str(),
+                        jsonNumber(bxdf_->pdf(i, o)).c_str());
         }
     }
 
@@ -137,8 +121,9 @@ class BsdfTool {
             } else if (!s) {
                 std::printf("{\"wi\":null}\n");
             } else {
-                std::printf("{\"wi\":%s,\"weight\":%s,\"pdf\":%.9g,\"lobe\":\"%s\"}\n",
-                            jsonVec(s->wi).c_str(), jsonArray(s->weight, channels_).c_str(), s->pdf,
+                std::printf("{\"wi\":%s,\"weight\":%s,\"pdf\":%s,\"lobe\":\"%s\"}\n",
+                            jsonVec(s->wi).c_str(), jsonArray(s->weight, channels_).c_str(),
+                            jsonNumber(s->pdf).c_str(),
                             std::string(kLobeKindNames.name(LobeFlags(s->flags))).c_str());
             }
         }

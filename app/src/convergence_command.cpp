@@ -79,11 +79,11 @@ void registerConvergenceCommand(CLI::App& app) {
                     "Comma-separated list of " + render::kRenderModeNames.list())
         ->capture_default_str();
     cmd->add_option("--time", a->seconds, "Render time of each combination, seconds")
-        ->check(CLI::PositiveNumber)
+        ->check(positiveNumber("seconds"))
         ->capture_default_str();
     cmd->add_option("--reference-time", a->referenceSeconds,
                     "Render time of each rendered reference (default: 20 x --time)")
-        ->check(CLI::PositiveNumber);
+        ->check(positiveNumber("seconds"));
     cmd->add_option("--reference-integrator", a->referenceIntegrator,
                     "Integrator of the rendered references (bdpt for caustics)")
         ->check(CLI::IsMember(render::kIntegratorNames.names()))

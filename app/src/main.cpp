@@ -1,13 +1,38 @@
 // The `lamina` command: subcommands, help, and one error policy for all of them:
-// exit 0 on success, 2 on a usage error, 1 on any other error, with one clear line on stderr.
+// exit 0 on success, 2 on a usage error, 1 on any other error, with exactly one line on stderr
+// that starts with "lamina: error: " (control characters in it escaped, whatever the text
+// echoes).
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <iostream>
+#include <new>
+#include <string>
 
 #include "commands.h"
+#include "interruption.h"
 #include "lamina/core/error.h"
+#include "lamina/core/printable.h"
 #include "lamina/version.h"
 
+namespace {
+
+int fail(const std::string& message, int status) {
+    std::cerr << "lamina: error: " << lamina::escapeControl(message) << "\n";
+    return status;
+}
+
+// A filesystem error as the others read: the path first, then what went wrong (not the
+// library's "filesystem error: cannot ...: Reason [path]").
+std::string describe(const std::filesystem::filesystem_error& e) {
+    const std::string what = e.code().message();
+    if (e.path1().empty()) return what;
+    return e.path1().string() + ": " + what;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
+    lamina::app::installSignalCleanup();
     CLI::App app{"lamina " LAMINA_VERSION_STRING
                  " - an offline renderer for comparing material and light-transport models",
                  "lamina"};
@@ -28,15 +53,15 @@ int main(int argc, char** argv) {
     } catch (const CLI::RuntimeError& e) {
         return e.get_exit_code();  // a command's own verdict (e.g. reciprocity: 2)
     } catch (const CLI::ParseError& e) {
-        std::cerr << "lamina: error: " << e.what() << "\n"
-                  << "Run `lamina --help` for usage.\n";
-        return 2;
+        return fail(std::string(e.what()) + " (run `lamina --help` for usage)", 2);
     } catch (const lamina::InputError& e) {
-        std::cerr << "lamina: error: " << e.what() << "\n";
-        return 1;
+        return fail(e.what(), 1);
+    } catch (const std::filesystem::filesystem_error& e) {
+        return fail(describe(e), 1);
+    } catch (const std::bad_alloc&) {
+        return fail("out of memory (a smaller --resolution, or fewer --aovs, may fit)", 1);
     } catch (const std::exception& e) {
-        std::cerr << "lamina: error: " << e.what() << "\n";
-        return 1;
+        return fail(e.what(), 1);
     }
     return 0;
 }

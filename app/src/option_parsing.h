@@ -6,6 +6,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
+#include <cstdlib>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -42,6 +44,20 @@ std::vector<E> parseNameList(const NameTable<E, N>& table, const std::string& li
     for (const std::string& name : splitList(list))
         out.push_back(parseName(table, name, what, option));
     return out;
+}
+
+/// A finite number above zero, with a message that says so (CLI::PositiveNumber's names
+/// the largest double, 309 digits). `what` names the quantity: "seconds".
+inline CLI::Validator positiveNumber(const std::string& what) {
+    return CLI::Validator(
+        [what](std::string& text) -> std::string {
+            char* end = nullptr;
+            const double v = std::strtod(text.c_str(), &end);
+            if (text.empty() || *end != '\0' || !std::isfinite(v) || !(v > 0))
+                return "expected a positive number of " + what + ", got \"" + text + "\"";
+            return {};
+        },
+        "POSITIVE");
 }
 
 /// "WIDTHxHEIGHT", each in [1, 65536] as the scene's film.resolution (the memory it needs is

@@ -2,13 +2,15 @@
 #include <unistd.h>
 #include <CLI/CLI.hpp>
 
-#include <csignal>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 
+#include "interruption.h"
 #include "lamina/core/error.h"
+#include "lamina/core/output_files.h"
+#include "lamina/core/printable.h"
 #include "lamina/experiments/image_metrics.h"
 #include "lamina/render/image_output.h"
 #include "lamina/render/render_metadata.h"
@@ -39,11 +41,6 @@ struct RenderArgs {
     bool aovs = false;
     bool quiet = false;
 };
-
-void onInterrupt(int) {
-    render::renderInterruptFlag().store(true);
-    std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C stops at once
-}
 
 class ProgressPrinter {
   public:
@@ -103,12 +100,27 @@ void writeStrategyImages(const std::string& directory, const render::StrategyIma
     }
 }
 
+// Every file the render will write, checked before it starts (the scene and the reference
+// are inputs none of them may replace).
+void checkOutputs(const RenderArgs& a, const std::filesystem::path& output,
+                  const std::filesystem::path& preview) {
+    if (output.extension() != ".exr")
+        throw CLI::ValidationError(
+            "--output", escapeControl(output.string()) + ": the output is OpenEXR: name it .exr");
+    std::vector<std::filesystem::path> inputs = {a.scene};
+    if (!a.reference.empty()) inputs.emplace_back(a.reference);
+    render::checkOutputPath(output, inputs);
+    if (a.preview) render::checkOutputPath(preview, inputs);
+    if (!a.errorLog.empty()) checkOutputFile(a.errorLog, inputs);
+    if (!a.strategies.empty()) checkOutputDirectory(a.strategies);
+}
+
 void runRender(const RenderArgs& a) {
     const render::SceneDesc scene = render::loadScene(a.scene);
     std::filesystem::path output = a.output;
     if (output.empty()) output = std::filesystem::path(a.scene).stem().string() + ".exr";
-    render::checkOutputPath(output);
     const std::filesystem::path preview = std::filesystem::path(output).replace_extension(".png");
+    checkOutputs(a, output, preview);
 
     render::RenderOptions o;
     o.mode = parseName(render::kRenderModeNames, a.mode, "mode", "--mode");
@@ -141,22 +153,25 @@ void runRender(const RenderArgs& a) {
     }
 
     ProgressPrinter printer(a.quiet);
-    std::signal(SIGINT, onInterrupt);
+    const RenderInterruption interruption;  // until the files are written
     const render::RenderResult r =
         render::renderScene(scene, o, [&](const render::RenderProgress& p) {
             if (errors) errors->record(p.seconds, p.sppDone, *p.film);
             printer(p);
         });
-    std::signal(SIGINT, SIG_DFL);
     printer.finish();
 
     const render::ImageMetadata meta =
         render::renderMetadata(scene, o, r, {LAMINA_VERSION_STRING, LAMINA_GIT_COMMIT});
     render::writeExr(output, *r.film, a.aovs, meta);
     if (errors) {
-        std::ofstream csv(a.errorLog);
-        csv << experiments::ErrorLog::csvHeader() << errors->csvRows();
-        if (!csv) throw InputError(a.errorLog + ": cannot write");
+        TemporaryFile tmp(a.errorLog);
+        {
+            std::ofstream csv(tmp.path());
+            csv << experiments::ErrorLog::csvHeader() << errors->csvRows();
+            if (!csv) throw InputError(a.errorLog + ": cannot write");
+        }
+        tmp.commit();
     }
     if (r.strategies) writeStrategyImages(a.strategies, *r.strategies, *r.film, r.spp, meta);
     if (a.preview) render::writePngPreview(preview, *r.film, a.exposure);
@@ -175,6 +190,7 @@ void runRender(const RenderArgs& a) {
             r.partial ? " (interrupted: partial image)" : "");
         if (a.preview) std::fprintf(stderr, "preview: %s\n", preview.string().c_str());
     }
+    if (interruption.signal() != 0) throw CLI::RuntimeError(interruption.exitStatus());
 }
 
 }  // namespace
@@ -208,7 +224,7 @@ void registerRenderCommand(CLI::App& app) {
     auto* spp = cmd->add_option("--spp", args->spp, "Samples per pixel (overrides the scene's)")
                     ->check(CLI::Range(1, 1 << 24));
     cmd->add_option("--time", args->seconds, "Render progressive passes for this many seconds")
-        ->check(CLI::PositiveNumber)
+        ->check(positiveNumber("seconds"))
         ->excludes(spp);
     cmd->add_option("--seed", args->seed, "Random seed (overrides the scene's)")
         ->check(CLI::Range(0LL, 2147483647LL));

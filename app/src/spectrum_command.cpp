@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "json_lines.h"
 #include "lamina/core/error.h"
 #include "lamina/spectral/blackbody.h"
 #include "lamina/spectral/cie.h"
@@ -34,6 +35,18 @@ struct Curves {
 };
 
 Curves resolve(const std::string& name) {
+    // Before the file test: "blackbody:6500.5" holds a '.' but names no file.
+    if (name.rfind("blackbody:", 0) == 0) {
+        const std::string value = name.substr(10);
+        char* end = nullptr;
+        const double t = std::strtod(value.c_str(), &end);
+        if (value.empty() || *end != '\0' || !(t > 0) || !std::isfinite(t))
+            throw InputError(name + ": \"" + value +
+                             "\" is not a temperature in kelvin (e.g. blackbody:6500)");
+        return {name + " K (normalised to 1 at its peak)", {"value"}, {[t](double nm) {
+                    return blackbodyNormalized(nm, t);
+                }}};
+    }
     if (auto ior = namedIor(name);
         !ior && (name.find('.') != std::string::npos || name.find('/') != std::string::npos)) {
         auto loaded = std::make_shared<IorSpectrum>(loadIorFile(name));
@@ -46,15 +59,6 @@ Curves resolve(const std::string& name) {
         return {s->name(),
                 {"n", "k"},
                 {[s](double nm) { return s->n(nm); }, [s](double nm) { return s->k(nm); }}};
-    }
-    if (name.rfind("blackbody:", 0) == 0) {
-        char* end = nullptr;
-        const double t = std::strtod(name.c_str() + 10, &end);
-        if (*end != '\0' || !(t > 0) || !std::isfinite(t))
-            throw InputError("spectrum \"" + name + "\": expected blackbody:T with T in kelvin");
-        return {name + " K (normalised to 1 at its peak)", {"value"}, {[t](double nm) {
-                    return blackbodyNormalized(nm, t);
-                }}};
     }
     if (const TabulatedCurve* c = findCieIlluminant(name))
         return {"CIE illuminant " + name, {"value"}, {[c](double nm) { return (*c)(nm); }}};
@@ -136,11 +140,14 @@ void run(const SpectrumArgs& a) {
             nm.push_back(v);
         }
     }
-    std::printf("# %s\n", c.title.c_str());
+    // Every line is a JSON object: the first names the spectrum, one per wavelength follows,
+    // and with --rgb the RGB-mode reduction last.
+    std::printf("{\"spectrum\":%s}\n", jsonString(c.title).c_str());
     for (double l : nm) {
-        std::printf("{\"nm\":%g", l);
+        std::printf("{\"nm\":%s", jsonNumber(l).c_str());
         for (std::size_t i = 0; i < c.f.size(); ++i)
-            std::printf(",\"%s\":%.6g", c.labels[i].c_str(), c.f[i](l));
+            std::printf(",%s:%s", jsonString(c.labels[i]).c_str(),
+                        jsonNumber(c.f[i](l), 6).c_str());
         std::printf("}\n");
     }
     if (a.rgb) {
@@ -149,20 +156,20 @@ void run(const SpectrumArgs& a) {
             const IorSpectrum s = ior ? *ior : loadIorFile(a.name);
             if (s.k(550) > 0.5) {
                 const auto [f0, f82] = conductorF0F82(s);
-                std::printf(
-                    "{\"rgb_mode\":\"conductor\",\"f0\":[%.6f,%.6f,%.6f],"
-                    "\"f82\":[%.6f,%.6f,%.6f]}\n",
-                    f0[0], f0[1], f0[2], f82[0], f82[1], f82[2]);
+                std::printf("{\"rgb_mode\":\"conductor\",\"f0\":%s,\"f82\":%s}\n",
+                            jsonArray(f0, 3, 6).c_str(), jsonArray(f82, 3, 6).c_str());
             } else {
-                std::printf("{\"rgb_mode\":\"dielectric\",\"ior\":%.6f,\"at_nm\":%g}\n",
-                            s.n(kDLineNm), kDLineNm);
+                std::printf("{\"rgb_mode\":\"dielectric\",\"ior\":%s,\"at_nm\":%s}\n",
+                            jsonNumber(s.n(kDLineNm), 6).c_str(), jsonNumber(kDLineNm).c_str());
             }
         } else {
             // An emission spectrum's colour, scaled so that its luminance Y is 1.
+            // A spectrum with no visible emission (blackbody:1) has no colour: black, said so.
             const Vec3d xyz = integrateAgainstCmf([&](double l) { return c.f[0](l); });
-            const Vec3d rgb = RgbColorSpace::rec709().toRgb(xyz / xyz.y);
-            std::printf("{\"rgb_mode\":\"emission\",\"rgb\":[%.6f,%.6f,%.6f],\"note\":\"Y = 1\"}\n",
-                        rgb.x, rgb.y, rgb.z);
+            const bool visible = xyz.y > 0 && std::isfinite(xyz.y);
+            const Vec3d rgb = visible ? RgbColorSpace::rec709().toRgb(xyz / xyz.y) : Vec3d(0);
+            std::printf("{\"rgb_mode\":\"emission\",\"rgb\":%s,\"note\":\"%s\"}\n",
+                        jsonVec(rgb, 6).c_str(), visible ? "Y = 1" : "no visible emission");
         }
     }
     if (!a.plot.empty()) writePlot(a.plot, c);

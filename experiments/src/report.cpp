@@ -3,6 +3,7 @@
 #include <fstream>
 
 #include "lamina/core/error.h"
+#include "lamina/core/output_files.h"
 #include "lamina/experiments/progress.h"
 #include "lamina/experiments/svg_plot.h"
 
@@ -10,6 +11,11 @@ namespace lamina::experiments {
 
 void printToStderr(const std::string& text) {
     std::fputs(text.c_str(), stderr);
+}
+
+Report::Report(std::filesystem::path directory, std::FILE* console)
+    : directory_(std::move(directory)), console_(console) {
+    checkOutputDirectory(directory_);
 }
 
 std::filesystem::path Report::file(const std::string& name) const {

@@ -5,7 +5,8 @@
 // it, equal and opposite: eval, pdf and sample never return NaN, Inf or a negative value, and
 // the float result is within 1e-3 relative of the double one wherever the double value is
 // above 1e-6 of the configuration's peak. (alpha < 1e-3 is treated as smooth in both
-// precisions: kSmoothAlpha.)
+// precisions: kSmoothAlpha; anisotropic pairs with one alpha below it and the other above,
+// such as alpha_x 0 and alpha_y 1, are rough with the small one raised to kSmoothAlpha.)
 //
 // Where the function itself is ill-conditioned at float precision, no float code can meet
 // 1e-3: rough refraction within ~1e-5 of the critical angle (the Fresnel factor has a
@@ -62,6 +63,22 @@ std::vector<Config> configs() {
         out.push_back(
             {"standard_glass_a" + number(a), R"({"type":"standard","transmission":0.7,"alpha":)" +
                                                  number(a) + R"(,"base_color":1})"});
+    }
+    // Anisotropic extremes: smooth along one tangent axis and rough along the other (a legal
+    // alpha_x / alpha_y pair; the smooth axis takes the narrowest rough lobe, kSmoothAlpha).
+    const std::pair<double, double> anisotropic[] = {{0, 1},      {1, 0},       {0, 0.5},
+                                                     {1e-7, 0.3}, {5e-4, 0.01}, {1e-3, 1}};
+    for (const auto& [ax, ay] : anisotropic) {
+        const std::string alphaKeys = R"("alpha_x":)" + number(ax) + R"(,"alpha_y":)" + number(ay);
+        const std::string tag = "_ax" + number(ax) + "_ay" + number(ay);
+        for (const char* ndf : {"ggx", "beckmann"})
+            out.push_back({std::string("conductor_") + ndf + tag,
+                           R"({"type":"conductor","distribution":")" + std::string(ndf) + R"(",)" +
+                               alphaKeys + R"(,"eta":0.4,"k":3})"});
+        out.push_back(
+            {"dielectric" + tag, R"({"type":"dielectric",)" + alphaKeys + R"(,"ior":1.5})"});
+        out.push_back(
+            {"standard" + tag, R"({"type":"standard",)" + alphaKeys + R"(,"base_color":1})"});
     }
     for (const char* d : {"lambert", "oren_nayar", "burley", "frostbite"})
         for (double r : {0.0, 1e-5, 0.5, 1.0})

@@ -20,7 +20,9 @@ struct CommandRun {
     std::string output;  // stdout and stderr
 };
 
-inline CommandRun runLamina(const std::string& args, const std::string& input = "") {
+/// `streams`: which of its output the run captures (default stdout and stderr).
+inline CommandRun runLamina(const std::string& args, const std::string& input = "",
+                            const std::string& streams = " 2>&1") {
     std::string redirect;
     if (!input.empty()) {
         const fs::path in =
@@ -29,7 +31,7 @@ inline CommandRun runLamina(const std::string& args, const std::string& input = 
         redirect = " < " + in.string();
     }
     const std::string cmd =
-        std::string(LAMINA_BINARY_DIR) + "/app/lamina " + args + redirect + " 2>&1";
+        std::string(LAMINA_BINARY_DIR) + "/app/lamina " + args + redirect + streams;
     FILE* pipe = ::popen(cmd.c_str(), "r");
     std::string out;
     std::array<char, 4096> buf{};
@@ -37,6 +39,11 @@ inline CommandRun runLamina(const std::string& args, const std::string& input = 
         out += buf.data();
     const int status = pipe ? ::pclose(pipe) : -1;
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+/// Runs lamina with stdout discarded: `output` is what it printed on stderr alone.
+inline CommandRun runLaminaStderr(const std::string& args, const std::string& input = "") {
+    return runLamina(args, input, " 2>&1 >/dev/null");
 }
 
 class CliTest : public ::testing::Test {

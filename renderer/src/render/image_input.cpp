@@ -7,13 +7,17 @@
 
 #include "lamina/core/error.h"
 #include "lamina/core/input_file.h"
+#include "lamina/render/stderr_capture.h"
 
 namespace lamina::render {
 
 InputImage readInputImage(const std::filesystem::path& file, const std::string& what) {
     checkInputFile(file, kMaxImageFileBytes);
+    const StderrCapture quiet;  // libpng writes its warnings and errors to stderr
     auto fail = [&](const std::string& why) {
-        throw InputError(file.string() + ": cannot read the " + what + ": " + why);
+        const std::string library = quiet.text();  // libpng's reason, if it gave one
+        throw InputError(file.string() + ": cannot read the " + what + ": " + why +
+                         (library.empty() ? "" : " (" + library + ")"));
     };
     auto in = OIIO::ImageInput::open(file.string());
     if (!in) fail(OIIO::geterror());

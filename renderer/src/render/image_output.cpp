@@ -1,7 +1,6 @@
 #include "lamina/render/image_output.h"
 
 #include <OpenImageIO/imageio.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
@@ -9,40 +8,26 @@
 
 #include "lamina/core/error.h"
 #include "lamina/core/input_file.h"
+#include "lamina/core/output_files.h"
+#include "lamina/render/stderr_capture.h"
 #include "lamina/spectral/color_space.h"
 
 namespace lamina::render {
 
 namespace {
 
-std::filesystem::path temporaryName(const std::filesystem::path& path) {
-    // Same directory (rename is atomic there) and the same extension (OIIO picks the format
-    // from it).
-    std::string name = ".";
-    name += path.stem().string();
-    name += ".tmp";
-    name += std::to_string(::getpid());
-    name += path.extension().string();
-    return path.parent_path() / name;
-}
-
 void writeAtomically(const std::filesystem::path& path, const OIIO::ImageSpec& spec,
                      const std::vector<float>& data) {
-    const auto tmp = temporaryName(path);
+    const StderrCapture quiet;  // libpng writes its warnings to stderr
+    TemporaryFile tmp(path);    // removed if anything below fails
     auto out = OIIO::ImageOutput::create(path.string());
     if (!out) throw InputError(path.string() + ": cannot write this image format");
-    if (!out->open(tmp.string(), spec)) {
-        std::filesystem::remove(tmp);
+    if (!out->open(tmp.path().string(), spec))
         throw InputError(path.string() + ": cannot write: " + out->geterror());
-    }
     const bool ok = out->write_image(OIIO::TypeDesc::FLOAT, data.data());
     const bool closed = out->close();
-    if (!ok || !closed) {
-        std::error_code ec;
-        std::filesystem::remove(tmp, ec);
-        throw InputError(path.string() + ": write failed: " + out->geterror());
-    }
-    std::filesystem::rename(tmp, path);
+    if (!ok || !closed) throw InputError(path.string() + ": write failed: " + out->geterror());
+    tmp.commit();
 }
 
 void addMetadata(OIIO::ImageSpec& spec, const ImageMetadata& metadata) {
@@ -58,12 +43,9 @@ void addMetadata(OIIO::ImageSpec& spec, const ImageMetadata& metadata) {
 
 }  // namespace
 
-void checkOutputPath(const std::filesystem::path& path) {
-    const auto dir = path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path();
-    if (!std::filesystem::is_directory(dir))
-        throw InputError(path.string() + ": the directory " + dir.string() + " does not exist");
-    if (::access(dir.c_str(), W_OK) != 0)
-        throw InputError(path.string() + ": the directory " + dir.string() + " is not writable");
+void checkOutputPath(const std::filesystem::path& path,
+                     const std::vector<std::filesystem::path>& inputs) {
+    checkOutputFile(path, inputs);
     auto out = OIIO::ImageOutput::create(path.string());
     if (!out)
         throw InputError(path.string() + ": unknown image format \"" + path.extension().string() +
@@ -171,6 +153,7 @@ double srgbToLinear(double e) {
 
 RgbImage readRgbImage(const std::filesystem::path& path) {
     checkInputFile(path, kMaxImageFileBytes);
+    const StderrCapture quiet;  // libpng writes its warnings to stderr
     auto in = OIIO::ImageInput::open(path.string());
     if (!in) throw InputError(path.string() + ": cannot read image: " + OIIO::geterror());
     const OIIO::ImageSpec& spec = in->spec();
@@ -197,8 +180,11 @@ RgbImage readRgbImage(const std::filesystem::path& path) {
     img.displayReferred = isSrgbEncoded(spec);
     const std::size_t nc = std::size_t(spec.nchannels), n = std::size_t(spec.width) * spec.height;
     std::vector<float> all(n * nc);
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, all.data()))
-        throw InputError(path.string() + ": cannot read image: " + in->geterror());
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, all.data())) {
+        const std::string library = quiet.text();  // libpng's reason, if it gave one
+        throw InputError(path.string() + ": cannot read image: " + in->geterror() +
+                         (library.empty() ? "" : " (" + library + ")"));
+    }
     img.pixels.resize(n * 3);
     for (std::size_t i = 0; i < n; ++i)
         for (int c = 0; c < 3; ++c) {

@@ -91,9 +91,17 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
     PassSchedule schedule(settings.spp, options.seconds);
     int done = 0, passes = 0;
     auto& interrupted = renderInterruptFlag();
-    while (!interrupted.load()) {
+    // The first pass always runs, so an interrupted render still has an image to write; an
+    // interruption stops the loop after the pass in flight. `complete`: the requested samples
+    // or time were used up (a render interrupted before that is partial, timed or not).
+    bool complete = false;
+    while (true) {
+        if (done > 0 && interrupted.load()) break;
         const int passSpp = schedule.next(done, elapsed());
-        if (passSpp == 0) break;
+        if (passSpp == 0) {
+            complete = true;
+            break;
+        }
         const double passStart = elapsed();
         if (!splats) {
             renderSamples(done, passSpp);
@@ -123,7 +131,7 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
         }
     }
     result.spp = done;
-    result.partial = interrupted.load() && !timed;
+    result.partial = !complete;
     result.seconds = elapsed();
     result.rays = rays.load();
     result.paths = pixelsDone.load();

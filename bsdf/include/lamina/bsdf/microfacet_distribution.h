@@ -66,6 +66,14 @@ class MicrofacetDistribution {
     MicrofacetDistribution(NdfKind kind, T alphaX, T alphaY,
                            SmithLambda lambda = SmithLambda::Exact)
         : kind_(kind), ax_(alphaX), ay_(alphaY), lambdaForm_(lambda) {
+        if (!effectivelySmooth()) {
+            // Smooth along one tangent axis and rough along the other (alpha_x 0, alpha_y 1):
+            // D, Lambda and the samplers divide by each alpha, so the smooth axis takes the
+            // narrowest lobe that is still rough, kSmoothAlpha (pbrt-v4 does the same with
+            // 1e-4). The lobe is then a thin ridge whose eval, pdf and samples stay finite.
+            ax_ = std::max(ax_, T(kSmoothAlpha));
+            ay_ = std::max(ay_, T(kSmoothAlpha));
+        }
         if (kind_ == NdfKind::BlinnPhong) {  // isotropic: the mean alpha sets the exponent
             const T a = std::clamp(T(0.5) * (ax_ + ay_), T(kSmoothAlpha), T(1));
             ax_ = ay_ = a;

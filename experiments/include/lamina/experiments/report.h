@@ -16,9 +16,9 @@ class SvgPlot;
 class Report {
   public:
     /// `console`: where print() and finish() echo (nullptr: nowhere). The directory is
-    /// created when the first file is written.
-    explicit Report(std::filesystem::path directory, std::FILE* console = stdout)
-        : directory_(std::move(directory)), console_(console) {}
+    /// checked now (checkOutputDirectory: InputError before the experiment runs if it cannot
+    /// be written) and created when the first file is written.
+    explicit Report(std::filesystem::path directory, std::FILE* console = stdout);
 
     const std::filesystem::path& directory() const { return directory_; }
     /// The path of a file of the report (the directory created if need be).

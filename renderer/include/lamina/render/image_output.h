@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "lamina/render/film.h"
 
@@ -20,9 +21,11 @@ struct ImageMetadata {
     std::map<std::string, std::array<float, 16>> matrices;  ///< row-major 4x4 (M44f)
 };
 
-/// Checks that `path` can be written (directory exists, extension known) before a long
-/// render starts; InputError otherwise.
-void checkOutputPath(const std::filesystem::path& path);
+/// Checks that the image `path` can be written before a long render starts (checkOutputFile:
+/// a writable directory, not a directory, not one of `inputs`, a name that fits; and a format
+/// OpenImageIO knows from the extension); InputError otherwise.
+void checkOutputPath(const std::filesystem::path& path,
+                     const std::vector<std::filesystem::path>& inputs = {});
 
 void writeExr(const std::filesystem::path& path, const Film& film, bool aovs,
               const ImageMetadata& metadata);

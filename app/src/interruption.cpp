@@ -1,0 +1,49 @@
+#include "interruption.h"
+
+#include <atomic>
+#include <csignal>
+
+#include "lamina/core/output_files.h"
+#include "lamina/render/renderer.h"
+
+namespace lamina::app {
+
+namespace {
+
+std::atomic<bool> graceful{false};
+std::atomic<int> received{0};
+
+// Only async-signal-safe work here: atomics, unlink (removeTemporaryFilesNow), signal, raise.
+void onSignal(int sig) {
+    int none = 0;
+    if (graceful.load() && received.compare_exchange_strong(none, sig)) {
+        render::renderInterruptFlag().store(true);
+        return;
+    }
+    removeTemporaryFilesNow();
+    std::signal(sig, SIG_DFL);
+    std::raise(sig);  // ends the process with the signal's own status
+}
+
+}  // namespace
+
+void installSignalCleanup() {
+    std::signal(SIGINT, onSignal);
+    std::signal(SIGTERM, onSignal);
+}
+
+RenderInterruption::RenderInterruption() {
+    received.store(0);
+    render::renderInterruptFlag().store(false);
+    graceful.store(true);
+}
+
+RenderInterruption::~RenderInterruption() {
+    graceful.store(false);
+}
+
+int RenderInterruption::signal() const {
+    return received.load();
+}
+
+}  // namespace lamina::app

@@ -1,0 +1,146 @@
+// Ctrl-C and SIGTERM lose no work (issue 14, "Lost work"): the first signal finishes the pass
+// in flight and writes the image, marked lamina:partial 1, and lamina exits with 128 + the
+// signal (130 for SIGINT); a signal that arrives while the EXR is being written lets the write
+// finish; no temporary file is ever left behind.
+#include <fcntl.h>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include <chrono>
+#include <thread>
+
+#include "cli_helpers.h"
+#include "lamina/render/image_output.h"
+
+extern char** environ;
+
+namespace lamina {
+namespace {
+
+using namespace std::chrono_literals;
+
+// A scene that takes a while per pass at the resolution given.
+std::string scene(int width, int height) {
+    return R"({
+  "camera": {"position": [0, 0, -4], "look_at": [0, 0, 0]},
+  "film": {"resolution": [)" +
+           std::to_string(width) + ", " + std::to_string(height) + R"(]},
+  "materials": {"m": {"type": "standard", "roughness": 0.3}},
+  "shapes": [
+    {"type": "sphere", "radius": 1, "material": "m"},
+    {"type": "rectangle", "material": "m", "transform": [{"translate": [0, 3, 0]}],
+     "emission": {"radiance": 1}}
+  ]
+})";
+}
+
+class Interruption : public CliTest {
+  protected:
+    // Starts lamina with `args` (stdout and stderr to files in the scratch directory).
+    pid_t start(const std::vector<std::string>& args) {
+        std::vector<std::string> argv = {std::string(LAMINA_BINARY_DIR) + "/app/lamina"};
+        argv.insert(argv.end(), args.begin(), args.end());
+        std::vector<char*> cargv;
+        for (auto& a : argv)
+            cargv.push_back(a.data());
+        cargv.push_back(nullptr);
+        posix_spawn_file_actions_t actions;
+        posix_spawn_file_actions_init(&actions);
+        posix_spawn_file_actions_addopen(&actions, 2, (dir_ / "stderr.txt").c_str(),
+                                         O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        pid_t pid = -1;
+        EXPECT_EQ(posix_spawn(&pid, cargv[0], &actions, nullptr, cargv.data(), environ), 0);
+        posix_spawn_file_actions_destroy(&actions);
+        return pid;
+    }
+    // Waits for the process; its exit status (-1 if a signal ended it).
+    static int wait(pid_t pid) {
+        int status = 0;
+        ::waitpid(pid, &status, 0);
+        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    }
+    // Temporaries are the hidden files beside the image.
+    bool temporaryPresent() const {
+        for (const auto& e : fs::directory_iterator(dir_))
+            if (e.path().filename().string().rfind(".out", 0) == 0) return true;
+        return false;
+    }
+    std::string stderrText() const {
+        std::ifstream in(dir_ / "stderr.txt");
+        return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    }
+};
+
+TEST_F(Interruption, CtrlCDuringATimedRenderWritesAPartialImageAndExits130) {
+    const auto s = write("scene.json", scene(32, 32));
+    const auto out = dir_ / "out.exr";
+    const pid_t pid = start({"render", s, "-o", out.string(), "--time", "60"});
+    std::this_thread::sleep_for(1500ms);
+    ::kill(pid, SIGINT);
+    EXPECT_EQ(wait(pid), 130) << stderrText();
+    ASSERT_TRUE(fs::exists(out)) << stderrText();
+    const auto img = render::readRgbImage(out);
+    EXPECT_EQ(img.metadata.at("lamina:partial"), "1");
+    EXPECT_FALSE(temporaryPresent());
+}
+
+TEST_F(Interruption, SigtermDuringAnSppRenderWritesAPartialImageAndExits143) {
+    const auto s = write("scene.json", scene(32, 32));
+    const auto out = dir_ / "out.exr";
+    const pid_t pid = start({"render", s, "-o", out.string(), "--spp", "16000000", "-q"});
+    std::this_thread::sleep_for(1500ms);
+    ::kill(pid, SIGTERM);
+    EXPECT_EQ(wait(pid), 143) << stderrText();
+    ASSERT_TRUE(fs::exists(out)) << stderrText();
+    EXPECT_EQ(render::readRgbImage(out).metadata.at("lamina:partial"), "1");
+    EXPECT_FALSE(temporaryPresent());
+}
+
+TEST_F(Interruption, ASignalDuringTheExrWriteLetsTheWriteFinish) {
+    // A large image of one sample per pixel: the write takes long enough to be caught while
+    // the temporary exists.
+    const auto s = write("scene.json", scene(2048, 2048));
+    const auto out = dir_ / "out.exr";
+    const pid_t pid = start({"render", s, "-o", out.string(), "--spp", "1", "--aovs", "-q"});
+    const auto deadline = std::chrono::steady_clock::now() + 60s;
+    while (!temporaryPresent() && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(1ms);
+    ASSERT_TRUE(temporaryPresent()) << "the write was not seen";
+    ::kill(pid, SIGTERM);
+    EXPECT_EQ(wait(pid), 143) << stderrText();
+    ASSERT_TRUE(fs::exists(out)) << stderrText();
+    const auto img = render::readRgbImage(out);
+    EXPECT_EQ(img.width, 2048);
+    EXPECT_EQ(img.metadata.at("lamina:partial"), "0");  // every requested sample was taken
+    EXPECT_FALSE(temporaryPresent());
+}
+
+TEST_F(Interruption, ASecondSignalEndsAtOnceAndLeavesNoTemporary) {
+    const auto s = write("scene.json", scene(2048, 2048));
+    const auto out = dir_ / "out.exr";
+    const pid_t pid = start({"render", s, "-o", out.string(), "--spp", "1", "--aovs", "-q"});
+    const auto deadline = std::chrono::steady_clock::now() + 60s;
+    while (!temporaryPresent() && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(1ms);
+    ASSERT_TRUE(temporaryPresent()) << "the write was not seen";
+    ::kill(pid, SIGINT);
+    std::this_thread::sleep_for(5ms);
+    ::kill(pid, SIGINT);
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    // Either the write finished between the signals (exit 130, the image complete) or the
+    // second signal ended the process (no image); never a temporary left behind.
+    if (WIFSIGNALED(status)) {
+        EXPECT_EQ(WTERMSIG(status), SIGINT);
+        EXPECT_FALSE(fs::exists(out));
+    } else {
+        EXPECT_EQ(WEXITSTATUS(status), 130);
+    }
+    EXPECT_FALSE(temporaryPresent());
+}
+
+}  // namespace
+}  // namespace lamina
