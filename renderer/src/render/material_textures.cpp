@@ -46,14 +46,16 @@ std::shared_ptr<const Texture> readTexture(const JsonReader& t) {
 }
 
 // Replaces {"texture": name} in the material's texturable keys by a constant the material
-// parser accepts, then checks that the material can take the textures it names.
+// parser accepts, then checks that the material can take the textures it names. Any other
+// object ({"spectrum": [[nm, value], ...]}, a measured reflectance) is the material parser's.
 std::pair<MaterialDesc, MaterialTextures> readTexturedMaterial(const JsonReader& r,
                                                                const TextureLookup& textureIndex) {
     if (!r.value().is_object()) return {parseMaterial(r), {}};
     Json copy = r.value();
     MaterialTextures tex;
     for (const char* key : {"base_color", "reflectance", "roughness"}) {
-        if (!copy.contains(key) || !copy[key].is_object()) continue;
+        if (!copy.contains(key) || !copy[key].is_object() || !copy[key].contains("texture"))
+            continue;
         const JsonReader t(r.value()[key], r.childPath(key), r.source());
         const std::string name = t.requiredString("texture");
         t.finish();
