@@ -14,36 +14,16 @@
 #include "lamina/core/input_file.h"
 #include "lamina/core/json_reader.h"
 
+#include "scratch_directory.h"
+
 namespace lamina {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::errorOf;
 using ::testing::HasSubstr;
 
-template <typename F>
-std::string errorOf(F&& f) {
-    try {
-        f();
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "(accepted)";
-}
-
-class InputFiles : public ::testing::Test {
-  protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("lamina-input-file-" + std::to_string(::getpid()));
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-    fs::path write(const std::string& name, const std::string& text) {
-        const fs::path p = dir_ / name;
-        std::ofstream(p, std::ios::binary) << text;
-        return p;
-    }
-    fs::path dir_;
-};
+class InputFiles : public testing::ScratchDirectoryTest {};
 
 TEST_F(InputFiles, ADirectoryAFifoAndADeviceAreRefusedBeforeOpening) {
     EXPECT_THAT(errorOf([&] { readInputFile(dir_, kMaxTextFileBytes); }),

@@ -21,34 +21,17 @@
 #include "lamina/render/mesh_files.h"
 #include "lamina/render/texture.h"
 
+#include "scratch_directory.h"
+
 namespace lamina::render {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::errorOf;
 using ::testing::HasSubstr;
 
-template <typename F>
-std::string errorOf(F&& f) {
-    try {
-        f();
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "(accepted)";
-}
-
-class InputFiles : public ::testing::Test {
+class InputFiles : public testing::ScratchDirectoryTest {
   protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("lamina-input-files-" + std::to_string(::getpid()));
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-    fs::path write(const std::string& name, const std::string& text) {
-        const fs::path p = dir_ / name;
-        std::ofstream(p, std::ios::binary) << text;
-        return p;
-    }
     std::string plyError(const std::string& name, const std::string& text) {
         return errorOf([&] {
             MeshDesc mesh;
@@ -61,7 +44,6 @@ class InputFiles : public ::testing::Test {
             readObj(write(name, text), mesh);
         });
     }
-    fs::path dir_;
 };
 
 const std::string kPlyHeader =
