@@ -47,7 +47,16 @@ void writeCsv(const ConvergenceResult& result, const Report& report) {
     std::string csv = ErrorLog::csvHeader("integrator,mode");
     for (const ConvergenceCurve& c : result.curves)
         csv += c.log.csvRows(nameOf(c.integrator) + "," + nameOf(c.mode));
-    report.writeText("convergence.csv", csv);
+    TablePlot plot;
+    plot.title =
+        "relMSE against render time: " + std::filesystem::path(result.inputs.scene).stem().string();
+    plot.x = "seconds";
+    plot.y = {"relmse"};
+    plot.groupBy = {"integrator", "mode"};
+    plot.xLabel = "render time (s)";
+    plot.yLabel = "relMSE (epsilon 1e-2)";
+    plot.logX = plot.logY = true;
+    report.writeTable("convergence.csv", csv, plot);
 }
 
 void writePlot(const ConvergenceResult& result, const Report& report) {

@@ -29,7 +29,12 @@ void writeCsvs(const FresnelMaterial& m, const Report& report) {
                 csv << "," << model.rgb[std::size_t(a)][ch];
         csv << "\n";
     }
-    report.writeText(m.stem + ".csv", csv.str());
+    TablePlot models;
+    models.title = "Fresnel reflectance of " + m.name + ": the RGB models";
+    models.x = "degrees";
+    models.xLabel = "angle of incidence (degrees)";
+    models.yLabel = "reflectance per channel (linear Rec.709)";
+    report.writeTable(m.stem + ".csv", csv.str(), models);
 
     std::ostringstream spec;
     spec << "degrees";
@@ -42,7 +47,12 @@ void writeCsvs(const FresnelMaterial& m, const Report& report) {
             spec << "," << c.reflectance[std::size_t(a)];
         spec << "\n";
     }
-    report.writeText(m.stem + "_spectral.csv", spec.str());
+    TablePlot exact;
+    exact.title = "Fresnel reflectance of " + m.name + ": exact, per wavelength";
+    exact.x = "degrees";
+    exact.xLabel = "angle of incidence (degrees)";
+    exact.yLabel = "reflectance";
+    report.writeTable(m.stem + "_spectral.csv", spec.str(), exact);
 }
 
 /// Luminance of each model against angle, and the exact curve at three wavelengths.

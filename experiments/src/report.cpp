@@ -34,6 +34,13 @@ void Report::writeText(const std::string& name, std::string_view text) const {
     if (!out) throw InputError(path.string() + ": cannot write");
 }
 
+void Report::writeTable(const std::string& name, std::string_view csv,
+                        const TablePlot& plot) const {
+    writeText(name, csv);
+    writeText(std::filesystem::path(name).replace_extension(".py").string(),
+              tablePlotScript(name, plot));
+}
+
 void Report::writeFigure(const std::string& name, const SvgPlot& plot) const {
     plot.write(file(name));
 }

@@ -4,7 +4,9 @@
 // radiance 1 reflects exactly the radiance it receives).
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <fstream>
+#include <iostream>
 #include <regex>
 #include <sstream>
 
@@ -74,8 +76,20 @@ TEST_F(ExperimentCli, ConvergenceSlopeOfAnUnbiasedEstimatorIsMinusOne) {
                                    "--sampler independent --reference " + exactReference() +
                                    " -o " + (dir_ / "conv").string() + " 2>/dev/null");
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    for (const char* f : {"convergence.csv", "convergence.svg", "summary.md"})
+    for (const char* f : {"convergence.csv", "convergence.py", "convergence.svg", "summary.md"})
         EXPECT_TRUE(fs::exists(dir_ / "conv" / f)) << f;
+    // The matplotlib script beside the CSV draws it (with Debian's python3-matplotlib).
+    if (std::system("/usr/bin/python3 -c 'import matplotlib' 2>/dev/null") == 0) {
+        const fs::path figure = dir_ / "conv" / "figure.png";
+        const std::string command = "/usr/bin/python3 " +
+                                    (dir_ / "conv" / "convergence.py").string() + " " +
+                                    figure.string() + " >/dev/null 2>&1";
+        EXPECT_EQ(std::system(command.c_str()), 0) << command;
+        EXPECT_TRUE(fs::exists(figure) && fs::file_size(figure) > 1000) << figure;
+    } else {
+        std::cerr << "skipped: /usr/bin/python3 has no matplotlib (python3-matplotlib), the "
+                     "generated convergence.py is not run\n";
+    }
     // | path | rgb | samples/s | spp | relMSE | MSE | slope | ...
     const std::regex row(
         R"(\| (path|bdpt) \| rgb \| [^|]+ \| [^|]+ \| [^|]+ \| [^|]+ \| ([-0-9.]+) \|)");

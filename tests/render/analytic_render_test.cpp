@@ -230,6 +230,8 @@ TEST(Progressive, InterruptionFinishesThePassInFlightAndMarksThePartialImage) {
     EXPECT_GT(r.film->pixel(8, 8)[1], 0.0);
 }
 
+// A time budget is used up in whole passes that end close to it (pass_schedule.h: within half
+// a sample per pixel, which is microseconds here; the tolerance is for a loaded machine).
 TEST(Progressive, TimeLimitRendersWholePassesUntilTheTimeIsUsed) {
     auto scene = render::loadScene(testing::sharedCornellBox());
     render::RenderOptions o;
@@ -237,7 +239,7 @@ TEST(Progressive, TimeLimitRendersWholePassesUntilTheTimeIsUsed) {
     o.resolution = std::make_pair(16, 16);
     const auto r = render::renderScene(scene, o);
     EXPECT_FALSE(r.partial);
-    EXPECT_GE(r.seconds, 0.3);
+    EXPECT_NEAR(r.seconds, 0.3, 0.1);
     EXPECT_GT(r.spp, 1);
 }
 

@@ -9,6 +9,8 @@
 #include <string>
 #include <string_view>
 
+#include "lamina/experiments/table_plot_script.h"
+
 namespace lamina::experiments {
 
 class SvgPlot;
@@ -30,8 +32,11 @@ class Report {
     void addSummary(std::string_view markdown) { summary_ += markdown; }
     const std::string& summary() const { return summary_; }
 
-    /// Writes a text file (a CSV table); InputError if it cannot be written.
+    /// Writes a text file; InputError if it cannot be written.
     void writeText(const std::string& name, std::string_view text) const;
+    /// Writes a CSV table and, beside it (same stem, .py), the matplotlib script that draws
+    /// it as `plot` says (table_plot_script.h).
+    void writeTable(const std::string& name, std::string_view csv, const TablePlot& plot) const;
     void writeFigure(const std::string& name, const SvgPlot& plot) const;
 
     /// The ending: summary.md, and the summary on the console. Nothing without a summary.
