@@ -128,8 +128,7 @@ std::string writeScene(const FresnelSceneComparison& c, const Report& report) {
                           c.ciede2000);
     SvgHeatMap map("CIEDE2000, RGB against spectral mode", a.width, a.height, c.ciede2000);
     map.setScale(Palette::Diverging, -10, 10, "CIEDE2000 (saturated at 10)");
-    map.writePng(report.file("scene_ciede2000.png"));
-    map.write(report.file("scene_ciede2000.svg"));
+    map.write(report.file("scene_ciede2000.svg"), report.file("scene_ciede2000.png"));
     return formatText(
         "### The scene in both modes: %s\n\n%d spp each (path integrator). RGB mode "
         "against spectral mode: relMSE %.4g, MAE %.4g; CIEDE2000 mean %.2f, max %.2f "

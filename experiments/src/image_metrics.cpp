@@ -59,8 +59,7 @@ void writeDifferenceImage(const std::filesystem::path& path, const render::RgbIm
     }
     SvgHeatMap map("|image - reference|, mean over R, G, B", a.width, a.height, std::move(d));
     map.setScale(Palette::Sequential, 0, scale > 0 ? scale : 1, "|difference| (linear radiance)");
-    map.writePng(path);
-    map.write(std::filesystem::path(path).replace_extension(".svg"));
+    map.write(std::filesystem::path(path).replace_extension(".svg"), path);
 }
 
 render::RgbImage filmImage(const render::Film& film) {

@@ -52,8 +52,7 @@ void writePair(const PairAgreement& p, double alpha, const Report& report) {
             width, height, pixels ? r.pixelT : r.blockT);
         map.setScale(Palette::Diverging, -4, 4, "t (saturated at |t| = 4)");
         const std::string name = stem + (pixels ? "_pixels" : "_blocks");
-        map.writePng(report.file(name + ".png"));
-        map.write(report.file(name + ".svg"));
+        map.write(report.file(name + ".svg"), report.file(name + ".png"));
     }
 }
 

@@ -14,6 +14,8 @@ namespace lamina::experiments {
 namespace {
 
 constexpr double kMapSize = 400;  // the longer side of the map, in SVG units
+// Maps with more cells than this (images rather than parameter grids) are drawn from a PNG.
+constexpr std::size_t kMaxVectorCells = 64 * 64;
 constexpr double kLeft = 90, kTop = 40, kBottom = 60, kBarWidth = 18, kBarGap = 24;
 
 std::string escape(const std::string& s) {
@@ -95,7 +97,8 @@ void SvgHeatMap::writePng(const std::filesystem::path& path) const {
     render::writeRgb8(path, width_, height_, rgb);
 }
 
-void SvgHeatMap::write(const std::filesystem::path& path) const {
+void SvgHeatMap::write(const std::filesystem::path& path,
+                       const std::optional<std::filesystem::path>& png) const {
     const double cell = kMapSize / std::max(width_, height_);
     const double mapW = cell * width_, mapH = cell * height_;
     const double x0 = kLeft, y0 = kTop, barX = x0 + mapW + kBarGap;
@@ -103,24 +106,39 @@ void SvgHeatMap::write(const std::filesystem::path& path) const {
     const double totalW = barX + kBarWidth + 80;
     const double totalH = y0 + mapH + kBottom;
     std::ostringstream svg;
-    svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << totalW << "\" height=\""
-        << totalH << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
+    svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" "
+           "xmlns:xlink=\"http://www.w3.org/1999/xlink\" width=\""
+        << totalW << "\" height=\"" << totalH << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
         << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
         << "<text x=\"" << totalW / 2 << "\" y=\"22\" text-anchor=\"middle\" font-size=\"14\">"
         << escape(title_) << "</text>\n";
-    // The map: runs of equal colour per row keep large maps small.
-    const auto colourAt = [&](float v) { return hex(colourOf(v)); };
-    for (int y = 0; y < height_; ++y)
-        for (int x = 0; x < width_;) {
-            const std::string c = colourAt(values_[std::size_t(y) * width_ + x]);
-            int end = x + 1;
-            while (end < width_ && colourAt(values_[std::size_t(y) * width_ + end]) == c)
-                ++end;
-            svg << "<rect x=\"" << x0 + cell * x << "\" y=\"" << y0 + cell * y << "\" width=\""
-                << cell * (end - x) + 0.05 << "\" height=\"" << cell + 0.05 << "\" fill=\"" << c
-                << "\"/>\n";
-            x = end;
-        }
+    if (png || std::size_t(width_) * std::size_t(height_) > kMaxVectorCells) {
+        // The map as a PNG (same colours, one pixel per cell) that the figure shows: an
+        // image-sized map as vector cells would take megabytes.
+        const std::filesystem::path raster =
+            png ? *png : std::filesystem::path(path).replace_extension(".png");
+        writePng(raster);
+        const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+        const std::string href =
+            escape(raster.parent_path() == parent ? raster.filename().string() : raster.string());
+        svg << "<image x=\"" << x0 << "\" y=\"" << y0 << "\" width=\"" << mapW << "\" height=\""
+            << mapH << "\" preserveAspectRatio=\"none\" style=\"image-rendering:pixelated\" href=\""
+            << href << "\" xlink:href=\"" << href << "\"/>\n";
+    } else {
+        // A small grid: runs of equal colour per row as rectangles.
+        const auto colourAt = [&](float v) { return hex(colourOf(v)); };
+        for (int y = 0; y < height_; ++y)
+            for (int x = 0; x < width_;) {
+                const std::string c = colourAt(values_[std::size_t(y) * width_ + x]);
+                int end = x + 1;
+                while (end < width_ && colourAt(values_[std::size_t(y) * width_ + end]) == c)
+                    ++end;
+                svg << "<rect x=\"" << x0 + cell * x << "\" y=\"" << y0 + cell * y << "\" width=\""
+                    << cell * (end - x) + 0.05 << "\" height=\"" << cell + 0.05 << "\" fill=\"" << c
+                    << "\"/>\n";
+                x = end;
+            }
+    }
     svg << "<rect x=\"" << x0 << "\" y=\"" << y0 << "\" width=\"" << mapW << "\" height=\"" << mapH
         << "\" fill=\"none\" stroke=\"black\"/>\n";
     // Axes: category names at every cell, or 1-2-5 ticks of the value range.

@@ -1,11 +1,13 @@
-// False-colour maps as SVG figures that stand alone: a title, the map itself (one rectangle
-// per run of equal colour in a row), named axes with tick values, and a colour bar with
-// numbers. The PNG maps beside them use the same palettes (falseColour), so a PNG can be read
-// with its SVG's colour bar.
+// False-colour maps as SVG figures that stand alone: a title, the map itself, named axes with
+// tick values, and a colour bar with numbers. A small grid (a parameter sweep) is drawn as
+// rectangles, one per run of equal colour in a row; an image-sized map is written as a PNG
+// beside the figure (same stem, same palette, one pixel per cell) that the figure shows, so
+// the PNG can also be read alone with the figure's colour bar.
 #pragma once
 
 #include <array>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,12 +37,14 @@ class SvgHeatMap {
     void setAxes(Axis x, Axis y);
     /// The colour bar: `lo` and `hi` are the ends of the palette (for Diverging, lo = -hi).
     void setScale(Palette palette, double lo, double hi, std::string label);
-    /// The SVG figure.
-    void write(const std::filesystem::path& path) const;
-    /// The map alone as an 8-bit image (PNG), one pixel per cell, the same colours.
-    void writePng(const std::filesystem::path& path) const;
+    /// The SVG figure. With `png`, the map is also written there and the figure shows it;
+    /// without, an image-sized map goes to the PNG of the figure's stem beside it.
+    void write(const std::filesystem::path& path,
+               const std::optional<std::filesystem::path>& png = std::nullopt) const;
 
   private:
+    /// The map alone as an 8-bit image, one pixel per cell, the same colours.
+    void writePng(const std::filesystem::path& path) const;
     std::array<float, 3> colourOf(float value) const;
     std::string title_;
     int width_, height_;
