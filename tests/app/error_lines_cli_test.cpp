@@ -10,17 +10,6 @@
 namespace lamina {
 namespace {
 
-const char* const kScene = R"({
-  "camera": {"position": [0, 0, -4], "look_at": [0, 0, 0]},
-  "film": {"resolution": [8, 8]},
-  "materials": {"m": {"type": "lambert"}},
-  "shapes": [
-    {"type": "sphere", "radius": 1, "material": "m"},
-    {"type": "rectangle", "material": "m", "transform": [{"translate": [0, 3, 0]}],
-     "emission": {"radiance": 1}}
-  ]
-})";
-
 struct BadRun {
     const char* name;
     std::string args;  // after `lamina`; SCENE is replaced by a valid scene, DIR by the scratch
@@ -40,7 +29,7 @@ std::string substitute(std::string text, const std::string& from, const std::str
 
 TEST_P(ErrorLines, ExactlyOneLineStartingWithLaminaError) {
     const BadRun& c = GetParam();
-    const std::string sceneFile = write("scene.json", kScene);
+    const std::string sceneFile = write("scene.json", kLitSphereScene);
     if (!c.file.empty()) write(c.fileName, c.file);
     const std::string args =
         substitute(substitute(c.args, "SCENE", sceneFile), "DIR", dir_.string());
@@ -53,7 +42,7 @@ TEST_P(ErrorLines, ExactlyOneLineStartingWithLaminaError) {
 
 // A scene whose material table holds `material` under the name `name` (JSON text).
 std::string sceneWith(const std::string& name, const std::string& material) {
-    return substitute(kScene, R"("m": {"type": "lambert"})", name + ": " + material);
+    return substitute(kLitSphereScene, R"("m": {"type": "lambert"})", name + ": " + material);
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -70,7 +59,8 @@ INSTANTIATE_TEST_SUITE_P(
                       BadRun{"unknown_mode", "render SCENE --mode infrared", "", "", 2, "infrared"},
                       BadRun{"output_not_exr", "render SCENE -o DIR/x.jpg", "", "", 2, "x.jpg"},
                       BadRun{"newline_in_key", "render DIR/input.json -o DIR/o.exr -q",
-                             substitute(kScene, R"("film": {)", R"("film": {"res\nolution": 1, )"),
+                             substitute(kLitSphereScene, R"("film": {)",
+                                        R"("film": {"res\nolution": 1, )"),
                              "input.json", 1, "res\\nolution"},
                       BadRun{"escape_in_material_name", "render DIR/input.json -o DIR/o.exr -q",
                              sceneWith(R"("m\u001b[31m")", R"({"type": "lambert"})"), "input.json",

@@ -14,17 +14,6 @@
 namespace lamina {
 namespace {
 
-const char* const kScene = R"({
-  "camera": {"position": [0, 0, -4], "look_at": [0, 0, 0]},
-  "film": {"resolution": [8, 8]},
-  "materials": {"m": {"type": "lambert"}},
-  "shapes": [
-    {"type": "sphere", "radius": 1, "material": "m"},
-    {"type": "rectangle", "material": "m", "transform": [{"translate": [0, 3, 0]}],
-     "emission": {"radiance": 1}}
-  ]
-})";
-
 class OutputPaths : public CliTest {
   protected:
     // Runs `render SCENE ARGS --time 20 -q`, expecting a refusal within seconds.
@@ -41,7 +30,7 @@ class OutputPaths : public CliTest {
     }
     void SetUp() override {
         CliTest::SetUp();
-        scene_ = write("scene.json", kScene);
+        scene_ = write("scene.json", kLitSphereScene);
     }
     std::string scene_;
 };
@@ -94,14 +83,14 @@ TEST_F(OutputPaths, TheInputSceneIsNeverTheOutput) {
     fs::create_hard_link(scene_, dir_ / "link.exr");
     EXPECT_THAT(refused("-o " + (dir_ / "link.exr").string()).output,
                 ::testing::HasSubstr("is the input"));
-    const auto exrScene = write("scene.exr", kScene);
+    const auto exrScene = write("scene.exr", kLitSphereScene);
     const CommandRun r = runLaminaStderr("render " + exrScene + " -o " +
                                          (dir_ / "." / "scene.exr").string() + " --spp 1 -q");
     EXPECT_EQ(r.exitCode, 1) << r.output;
     EXPECT_THAT(r.output, ::testing::HasSubstr("is the input"));
     std::ifstream in(exrScene);
     EXPECT_EQ(std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()),
-              kScene);
+              kLitSphereScene);
 }
 
 TEST_F(OutputPaths, AnOutputThatIsNotExrIsAUsageError) {

@@ -46,6 +46,18 @@ inline CommandRun runLaminaStderr(const std::string& args, const std::string& in
     return runLamina(args, input, " 2>&1 >/dev/null");
 }
 
+/// An 8 x 8 scene that renders in milliseconds: a Lambertian sphere under a rectangle light.
+inline const char* const kLitSphereScene = R"({
+  "camera": {"position": [0, 0, -4], "look_at": [0, 0, 0]},
+  "film": {"resolution": [8, 8]},
+  "materials": {"m": {"type": "lambert"}},
+  "shapes": [
+    {"type": "sphere", "radius": 1, "material": "m"},
+    {"type": "rectangle", "material": "m", "transform": [{"translate": [0, 3, 0]}],
+     "emission": {"radiance": 1}}
+  ]
+})";
+
 class CliTest : public ::testing::Test {
   protected:
     void SetUp() override {

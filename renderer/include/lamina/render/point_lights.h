@@ -7,15 +7,21 @@
 
 namespace lamina::render {
 
-class PointLight final : public Light {
+/// What a light at a point answers the same way whatever its distribution: no surface can
+/// hit it (density 0, no radiance), and it is a delta light.
+class DeltaPositionLight : public Light {
+  public:
+    float pdf(const Vec3f&, const SurfaceHit&) const override { return 0.0f; }
+    Emission radiance(const SurfaceHit&, const Vec3f&) const override { return {}; }
+    bool isDelta() const override { return true; }
+};
+
+class PointLight final : public DeltaPositionLight {
   public:
     explicit PointLight(const LightDesc& d);
 
     std::optional<LightSample> sample(const Vec3f& ref, const Vec2f& u) const override;
-    float pdf(const Vec3f&, const SurfaceHit&) const override { return 0.0f; }
-    Emission radiance(const SurfaceHit&, const Vec3f&) const override { return {}; }
     double power() const override;
-    bool isDelta() const override { return true; }
 
     std::optional<EmissionSample> sampleEmission(const Vec2f& uPosition,
                                                  const Vec2f& uDirection) const override;
@@ -29,15 +35,12 @@ class PointLight final : public Light {
 
 /// A spot light (pbrt-v4's convention): intensity I inside a cone, with a smoothstep falloff
 /// in cos(theta) between the falloff start and the cone's edge.
-class SpotLight final : public Light {
+class SpotLight final : public DeltaPositionLight {
   public:
     explicit SpotLight(const LightDesc& d);
 
     std::optional<LightSample> sample(const Vec3f& ref, const Vec2f& u) const override;
-    float pdf(const Vec3f&, const SurfaceHit&) const override { return 0.0f; }
-    Emission radiance(const SurfaceHit&, const Vec3f&) const override { return {}; }
     double power() const override;
-    bool isDelta() const override { return true; }
 
     /// Directions uniform in the cone (the falloff is in the weight).
     std::optional<EmissionSample> sampleEmission(const Vec2f& uPosition,
