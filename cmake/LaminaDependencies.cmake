@@ -38,6 +38,19 @@ if(LAMINA_BUILD_APP)
   endforeach()
   lamina_require(CLI11 libcli11-dev)
   lamina_require(tinyobjloader libtinyobjloader-dev)
+  if(LAMINA_BUILD_PYTHON AND NOT LAMINA_SANITIZE AND NOT LAMINA_FUZZ)
+    # The system interpreter, whatever python3 comes first on PATH (pyenv, a venv): Debian's
+    # pybind11, NumPy and pytest are installed for it.
+    set(LAMINA_PYTHON "/usr/bin/python3" CACHE FILEPATH "The interpreter of the Python module")
+    set(Python3_EXECUTABLE "${LAMINA_PYTHON}")
+    find_package(Python3 COMPONENTS Interpreter Development.Module QUIET)
+    if(NOT Python3_FOUND)
+      message(FATAL_ERROR
+        "lamina: the Python module needs ${LAMINA_PYTHON} and its headers (Debian package "
+        "'python3-dev'): ${LAMINA_SETUP_HINT}, or configure with -DLAMINA_BUILD_PYTHON=OFF.")
+    endif()
+    lamina_require(pybind11 pybind11-dev)
+  endif()
 endif()
 if(LAMINA_BUILD_TESTS)
   lamina_require(GTest libgtest-dev)

@@ -12,6 +12,7 @@ packages=(
   colord-data libtinyobjloader-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-matplotlib python3-numpy
+  python3-dev pybind11-dev python3-pybind11 python3-pytest
   clang libclang-rt-14-dev
 )
 

@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "json_lines.h"
+#include "lamina/bsdf/albedo_estimate.h"
 #include "lamina/bsdf/material_builder.h"
 #include "lamina/core/chi_square_test.h"
 #include "lamina/core/error.h"
@@ -105,8 +106,11 @@ class BsdfTool {
             std::printf("\n");
         }
         for (std::size_t n = 0; n < a_.count; ++n) {
+            // Drawn in the order uc, u.x, u.y (a constructor's arguments have no order of
+            // evaluation): lamina.random_numbers(count, 3, seed) gives the same rows.
             const double uc = rng.nextDouble();
-            const Vec2d u(rng.nextDouble(), rng.nextDouble());
+            const double ux = rng.nextDouble();
+            const Vec2d u(ux, rng.nextDouble());
             const auto s = bxdf_->sample(wo, uc, u, mode_);
             if (a_.format == "csv") {
                 if (!s) {
@@ -130,32 +134,15 @@ class BsdfTool {
     }
 
     void albedo() const {
-        // Monte Carlo estimate of the directional albedo: the mean of the sample weights,
-        // split by the side wi leaves on, with its standard error per channel.
         for (int step = 1; step <= 20; ++step) {
             const double c = 0.05 * step;
-            const Vec3d wo(std::sqrt(std::max(0.0, 1 - c * c)), 0.0, c);
-            Pcg32 rng(a_.seed + std::uint64_t(step));
-            S reflection(0.0), transmission(0.0), sumSq(0.0);
-            for (std::size_t n = 0; n < a_.samples; ++n) {
-                const double uc = rng.nextDouble();
-                const Vec2d u(rng.nextDouble(), rng.nextDouble());
-                const auto s = bxdf_->sample(wo, uc, u, mode_);
-                if (!s) continue;
-                (s->wi.z > 0 ? reflection : transmission) += s->weight;
-                sumSq += s->weight * s->weight;
-            }
-            const double n = double(a_.samples);
-            const S mean = (reflection + transmission) / n;
-            S stderrs;
-            for (int k = 0; k < S::kSize; ++k)
-                stderrs[k] =
-                    std::sqrt(std::max(0.0, double(sumSq[k]) / n - sqr(double(mean[k]))) / n);
+            const auto e =
+                estimateAlbedo(*bxdf_, c, a_.samples, a_.seed + std::uint64_t(step), mode_);
             std::printf(
                 "{\"cos_theta_o\":%.2f,\"reflection\":%s,\"transmission\":%s,\"stderr\":%s}\n", c,
-                jsonArray(reflection / n, channels_).c_str(),
-                jsonArray(transmission / n, channels_).c_str(),
-                jsonArray(stderrs, channels_).c_str());
+                jsonArray(e.reflection, channels_).c_str(),
+                jsonArray(e.transmission, channels_).c_str(),
+                jsonArray(e.standardError, channels_).c_str());
         }
     }
 
@@ -168,7 +155,8 @@ class BsdfTool {
             config,
             [&](Pcg32& rng) -> std::optional<Vec3d> {
                 const double uc = rng.nextDouble();
-                const Vec2d u(rng.nextDouble(), rng.nextDouble());
+                const double ux = rng.nextDouble();
+                const Vec2d u(ux, rng.nextDouble());
                 const auto s = bxdf_->sample(wo, uc, u, mode_);
                 if (!s || s->isSpecular()) return std::nullopt;
                 return s->wi;

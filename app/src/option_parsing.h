@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "lamina/core/name_table.h"
+#include "lamina/render/render_limits.h"
 #include "lamina/render/renderer.h"
 
 namespace lamina::app {
@@ -60,16 +61,11 @@ inline CLI::Validator positiveNumber(const std::string& what) {
         "POSITIVE");
 }
 
-/// "WIDTHxHEIGHT", each in [1, 65536] as the scene's film.resolution (the memory it needs is
-/// checked when the render starts, render_memory.h).
+/// "WIDTHxHEIGHT", each in [1, 65536] as the scene's film.resolution (render_limits.h).
 inline std::pair<int, int> parseResolution(const std::string& text) {
-    int w = 0, h = 0;
-    char x = 0;
-    std::istringstream in(text);
-    if (!(in >> w >> x >> h) || x != 'x' || w < 1 || h < 1 || w > 65536 || h > 65536 || !in.eof())
-        throw CLI::ValidationError("--resolution",
-                                   "expected WIDTHxHEIGHT, each in [1, 65536], e.g. 512x512");
-    return {w, h};
+    if (const auto r = render::parseResolutionText(text)) return *r;
+    throw CLI::ValidationError("--resolution",
+                               "expected WIDTHxHEIGHT, each in [1, 65536], e.g. 512x512");
 }
 
 /// The options that override a scene's render settings, shared by the commands that render.
@@ -90,11 +86,11 @@ inline void addResolutionOption(CLI::App* cmd, RenderOverrides& o) {
 }
 inline void addMaxDepthOption(CLI::App* cmd, RenderOverrides& o) {
     cmd->add_option("--max-depth", o.maxDepth, "Maximum scattering events per path")
-        ->check(CLI::Range(1, 1024));
+        ->check(CLI::Range(1, render::kMaxDepthOverride));
 }
 inline void addThreadsOption(CLI::App* cmd, RenderOverrides& o) {
     cmd->add_option("--threads", o.threads, "Worker threads (default: all cores)")
-        ->check(CLI::Range(1, 1024));
+        ->check(CLI::Range(1, render::kMaxThreadsOverride));
 }
 
 /// An experiment's output directory (-o, --output), where its report goes.

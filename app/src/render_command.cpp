@@ -222,12 +222,12 @@ void registerRenderCommand(CLI::App& app) {
                     "bdpt: also write one EXR per (s, t) strategy, MIS-weighted and "
                     "unweighted, path depth <= 4, into this directory");
     auto* spp = cmd->add_option("--spp", args->spp, "Samples per pixel (overrides the scene's)")
-                    ->check(CLI::Range(1, 1 << 24));
+                    ->check(CLI::Range(1, render::kMaxSppOverride));
     cmd->add_option("--time", args->seconds, "Render progressive passes for this many seconds")
         ->check(positiveNumber("seconds"))
         ->excludes(spp);
     cmd->add_option("--seed", args->seed, "Random seed (overrides the scene's)")
-        ->check(CLI::Range(0LL, 2147483647LL));
+        ->check(CLI::Range(0LL, render::kMaxSeedOverride));
     addThreadsOption(cmd, args->overrides);
     addResolutionOption(cmd, args->overrides);
     addMaxDepthOption(cmd, args->overrides);

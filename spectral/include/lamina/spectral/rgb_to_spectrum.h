@@ -11,6 +11,7 @@
 #include <functional>
 #include <span>
 
+#include "lamina/core/name_table.h"
 #include "lamina/core/spectrum.h"
 #include "lamina/spectral/sigmoid_polynomial.h"
 
@@ -34,6 +35,10 @@ class RgbToSpectrumTable {
 };
 
 enum class RgbSpectrumKind { Reflectance, Unbounded, Illuminant };
+inline constexpr NameTable kRgbSpectrumKindNames{
+    std::array{NameEntry{RgbSpectrumKind::Reflectance, "reflectance"},
+               NameEntry{RgbSpectrumKind::Unbounded, "unbounded"},
+               NameEntry{RgbSpectrumKind::Illuminant, "illuminant"}}};
 
 /// A spectrum upsampled from RGB, evaluated at any wavelength.
 class RgbSpectrum {

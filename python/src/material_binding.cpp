@@ -1,0 +1,388 @@
+// lamina.Material: one material of the JSON material reader (docs/bsdf.md), built as the
+// command line's `lamina bsdf` builds it (double precision, local frame, directions
+// normalised), evaluated over NumPy arrays with the GIL released.
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <optional>
+
+#include "arrays.h"
+#include "bindings.h"
+#include "lamina/bsdf/albedo_estimate.h"
+#include "lamina/bsdf/material_builder.h"
+#include "lamina/core/error.h"
+#include "lamina/render/renderer.h"
+
+namespace lamina::python {
+
+namespace {
+
+using RgbD = Rgb<double>;
+using SpectralD = SampledSpectrum<double>;
+constexpr int kHero = SpectralD::kSize;  // wavelengths one spectral BSDF carries
+
+/// A spectral BSDF and the wavelengths it was built for (the builder keeps a reference to
+/// them: a dispersive glass terminates the secondary wavelengths).
+struct SpectralBsdf {
+    SampledWavelengths<double> lambda;
+    std::unique_ptr<Bxdf<SpectralD>> bxdf;
+};
+
+std::unique_ptr<SpectralBsdf> buildSpectral(const MaterialDesc& desc,
+                                            const std::array<double, kHero>& nm) {
+    auto b = std::make_unique<SpectralBsdf>();
+    b->lambda = SampledWavelengths<double>::fixed(nm);
+    const SpectrumContext<SpectralD> context{b->lambda};
+    b->bxdf = buildBxdf(desc, context);
+    return b;
+}
+
+Vec3d direction(const Rows& rows, std::size_t i, const char* what) {
+    const double* p = rows.row(i);
+    const Vec3d d(p[0], p[1], p[2]);
+    const double length = glm::length(d);
+    if (!(length > 0) || !std::isfinite(length))
+        throw py::value_error(std::string(what) + "[" + std::to_string(rows.shared ? 0 : i) +
+                              "]: expected a finite direction that is not zero");
+    return glm::normalize(d);
+}
+
+/// The rows of directions, normalised, or ValueError naming the first bad one.
+std::vector<Vec3d> directions(const Rows& rows, std::size_t n, const char* what) {
+    std::vector<Vec3d> out(rows.shared ? 1 : n);
+    for (std::size_t i = 0; i < out.size(); ++i)
+        out[i] = direction(rows, i, what);
+    return out;
+}
+const Vec3d& at(const std::vector<Vec3d>& v, std::size_t i) {
+    return v.size() == 1 ? v[0] : v[i];
+}
+
+TransportMode transportMode(const std::string& name) {
+    if (const auto t = kTransportModeNames.find(name)) return *t;
+    throw py::value_error("transport: expected one of " + kTransportModeNames.list() + ", got \"" +
+                          name + "\"");
+}
+
+class Material {
+  public:
+    Material(const py::object& spec, const std::string& mode) {
+        if (const auto m = render::kRenderModeNames.find(mode))
+            mode_ = *m;
+        else
+            throw py::value_error("mode: expected one of " + render::kRenderModeNames.list() +
+                                  ", got \"" + mode + "\"");
+        if (py::isinstance<py::str>(spec)) {
+            desc_ = parseMaterialArgument(spec.cast<std::string>());
+        } else if (py::isinstance<py::dict>(spec)) {
+            static const JsonSource source{"<material dict>", "."};
+            desc_ = parseMaterial(JsonReader(parseJsonText(jsonText(spec), source), "", source));
+        } else {
+            throw py::type_error("Material: expected a dict or a string (JSON or \"@file.json\")");
+        }
+        if (mode_ == render::RenderModeKind::Rgb)
+            rgb_ = buildBxdf(desc_, SpectrumContext<RgbD>{});
+        else
+            defaultSpectral_ = buildSpectral(desc_, {450, 550, 650, 650});
+    }
+
+    bool spectral() const { return mode_ == render::RenderModeKind::Spectral; }
+    std::uint32_t flags() const {
+        return spectral() ? defaultSpectral_->bxdf->flags() : rgb_->flags();
+    }
+
+    py::array_t<double> eval(const DoubleArray& wo, const DoubleArray& wi,
+                             const std::optional<DoubleArray>& wavelengths,
+                             const std::string& transport) const {
+        const TransportMode t = transportMode(transport);
+        const Rows o = rowsOf(wo, 3, "wo"), i = rowsOf(wi, 3, "wi");
+        if (!spectral()) {
+            if (wavelengths) throw py::value_error("wavelengths: only in spectral mode");
+            const std::size_t n = commonCount({{&o, "wo"}, {&i, "wi"}});
+            const auto vo = directions(o, n, "wo"), vi = directions(i, n, "wi");
+            auto out = newDoubles({py::ssize_t(n), 3});
+            double* f = out.mutable_data();
+            {
+                py::gil_scoped_release release;
+                for (std::size_t k = 0; k < n; ++k) {
+                    const RgbD v = rgb_->eval(at(vo, k), at(vi, k), t);
+                    for (int c = 0; c < 3; ++c)
+                        f[k * 3 + std::size_t(c)] = v[c];
+                }
+            }
+            return out;
+        }
+        const DoubleArray nm = wavelengths ? *wavelengths : defaultWavelengths();
+        if (nm.ndim() < 1 || nm.ndim() > 2 || nm.shape(nm.ndim() - 1) < 1)
+            throw py::value_error("wavelengths: expected shape (k,) or (N, k)");
+        const std::size_t k = std::size_t(nm.shape(nm.ndim() - 1));
+        const Rows l = rowsOf(nm, k, "wavelengths");
+        const std::size_t n = commonCount({{&o, "wo"}, {&i, "wi"}, {&l, "wavelengths"}});
+        const auto vo = directions(o, n, "wo"), vi = directions(i, n, "wi");
+        checkWavelengths(l);
+        auto out = newDoubles({py::ssize_t(n), py::ssize_t(k)});
+        double* f = out.mutable_data();
+        py::gil_scoped_release release;
+        // One set of BSDFs for shared wavelengths, else one per row.
+        std::vector<std::pair<std::size_t, std::unique_ptr<SpectralBsdf>>> bsdfs;
+        for (std::size_t row = 0; row < (l.shared ? 1 : n); ++row) {
+            bsdfs = bsdfsAt(l.row(row), k);
+            const std::size_t first = l.shared ? 0 : row, last = l.shared ? n : row + 1;
+            for (std::size_t r = first; r < last; ++r)
+                for (const auto& [offset, b] : bsdfs) {
+                    const SpectralD v = b->bxdf->eval(at(vo, r), at(vi, r), t);
+                    for (int c = 0; c < kHero && offset + std::size_t(c) < k; ++c) {
+                        if (b->lambda.secondaryTerminated() && c > 0) break;
+                        f[r * k + offset + std::size_t(c)] = v[c];
+                    }
+                }
+        }
+        return out;
+    }
+
+    py::array_t<double> pdf(const DoubleArray& wo, const DoubleArray& wi,
+                            const std::optional<DoubleArray>& wavelengths) const {
+        const Rows o = rowsOf(wo, 3, "wo"), i = rowsOf(wi, 3, "wi");
+        const std::size_t n = commonCount({{&o, "wo"}, {&i, "wi"}});
+        const auto vo = directions(o, n, "wo"), vi = directions(i, n, "wi");
+        const auto spectralBsdf = sampledBsdf(wavelengths);
+        const Bxdf<SpectralD>* s = spectralBsdf ? spectralBsdf->bxdf.get() : nullptr;
+        auto out = newDoubles({py::ssize_t(n)});
+        double* p = out.mutable_data();
+        py::gil_scoped_release release;
+        for (std::size_t k = 0; k < n; ++k)
+            p[k] = s ? s->pdf(at(vo, k), at(vi, k)) : rgb_->pdf(at(vo, k), at(vi, k));
+        return out;
+    }
+
+    py::dict sample(const DoubleArray& wo, const DoubleArray& uLobe, const DoubleArray& uDir,
+                    const std::optional<DoubleArray>& wavelengths,
+                    const std::string& transport) const {
+        const TransportMode t = transportMode(transport);
+        const Rows o = rowsOf(wo, 3, "wo"), uc = rowsOf(uLobe, 1, "u_lobe"),
+                   u = rowsOf(uDir, 2, "u_dir");
+        const std::size_t n = commonCount({{&o, "wo"}, {&uc, "u_lobe"}, {&u, "u_dir"}});
+        const auto vo = directions(o, n, "wo");
+        const auto spectralBsdf = sampledBsdf(wavelengths);
+        const int channels = spectralBsdf ? sampledChannels(wavelengths) : 3;
+        auto wi = newDoubles({py::ssize_t(n), 3}), weight = newDoubles({py::ssize_t(n), channels}),
+             pdf = newDoubles({py::ssize_t(n)}), eta = newDoubles({py::ssize_t(n)});
+        py::array_t<std::int8_t> lobe({py::ssize_t(n)});
+        double *pWi = wi.mutable_data(), *pWeight = weight.mutable_data(),
+               *pPdf = pdf.mutable_data(), *pEta = eta.mutable_data();
+        std::int8_t* pLobe = lobe.mutable_data();
+        {
+            py::gil_scoped_release release;
+            const auto store = [&](std::size_t k, const auto& s) {
+                for (int c = 0; c < 3; ++c)
+                    pWi[k * 3 + std::size_t(c)] = s ? double(s->wi[c]) : 0.0;
+                for (int c = 0; c < channels; ++c)
+                    pWeight[k * std::size_t(channels) + std::size_t(c)] =
+                        s ? double(s->weight[c]) : 0.0;
+                pPdf[k] = s ? double(s->pdf) : 0.0;
+                pEta[k] = s ? double(s->eta) : 1.0;
+                pLobe[k] = -1;
+                if (s)
+                    for (std::size_t e = 0; e < kLobeKindNames.entries().size(); ++e)
+                        if (kLobeKindNames.entries()[e].value == s->flags)
+                            pLobe[k] = std::int8_t(e);
+            };
+            for (std::size_t k = 0; k < n; ++k) {
+                const double* ud = u.row(k);
+                if (spectralBsdf)
+                    store(k, spectralBsdf->bxdf->sample(at(vo, k), uc.value(k), {ud[0], ud[1]}, t));
+                else
+                    store(k, rgb_->sample(at(vo, k), uc.value(k), {ud[0], ud[1]}, t));
+            }
+        }
+        py::dict d;
+        d["wi"] = wi;
+        d["weight"] = weight;
+        d["pdf"] = pdf;
+        d["lobe"] = lobeNames(lobe);
+        d["eta"] = eta;
+        d["valid"] = py::array(lobe).attr("__ge__")(0);
+        return d;
+    }
+
+    py::dict albedo(const DoubleArray& cosThetaO, std::size_t samples, std::uint64_t seed,
+                    const std::optional<DoubleArray>& wavelengths,
+                    const std::string& transport) const {
+        const TransportMode t = transportMode(transport);
+        const Rows c = rowsOf(cosThetaO, 1, "cos_theta");
+        const std::size_t n = c.count;
+        for (std::size_t k = 0; k < n; ++k)
+            if (!(c.value(k) >= 0 && c.value(k) <= 1))
+                throw py::value_error("cos_theta: expected values in [0, 1]");
+        if (samples < 1) throw py::value_error("samples: expected at least 1");
+        const auto spectralBsdf = sampledBsdf(wavelengths);
+        const int channels = spectralBsdf ? sampledChannels(wavelengths) : 3;
+        auto reflection = newDoubles({py::ssize_t(n), channels}),
+             transmission = newDoubles({py::ssize_t(n), channels}),
+             standardError = newDoubles({py::ssize_t(n), channels});
+        double *r = reflection.mutable_data(), *tr = transmission.mutable_data(),
+               *se = standardError.mutable_data();
+        {
+            py::gil_scoped_release release;
+            const auto store = [&](std::size_t k, const auto& e) {
+                for (int ch = 0; ch < channels; ++ch) {
+                    const std::size_t j = k * std::size_t(channels) + std::size_t(ch);
+                    r[j] = e.reflection[ch];
+                    tr[j] = e.transmission[ch];
+                    se[j] = e.standardError[ch];
+                }
+            };
+            // Seeds seed + 1, seed + 2, ... as `lamina bsdf albedo` for its angles 0.05, 0.1...
+            for (std::size_t k = 0; k < n; ++k) {
+                const std::uint64_t s = seed + k + 1;
+                if (spectralBsdf)
+                    store(k, estimateAlbedo(*spectralBsdf->bxdf, c.value(k), samples, s, t));
+                else
+                    store(k, estimateAlbedo(*rgb_, c.value(k), samples, s, t));
+            }
+        }
+        py::dict d;
+        d["reflection"] = reflection;
+        d["transmission"] = transmission;
+        d["stderr"] = standardError;
+        return d;
+    }
+
+    std::vector<std::string> lobes() const {
+        std::vector<std::string> out;
+        for (const auto& e : kLobeKindNames.entries())
+            if ((flags() & e.value) == e.value) out.emplace_back(e.name);
+        return out;
+    }
+
+    py::dict info() const {
+        py::dict d;
+        d["type"] = desc_.type;
+        d["mode"] = std::string(render::kRenderModeNames.name(mode_));
+        d["lobes"] = lobes();
+        d["description"] = describeLobes(flags());
+        d["delta"] = isSpecular(flags());
+        return d;
+    }
+
+  private:
+    static DoubleArray defaultWavelengths() {
+        DoubleArray a(3);
+        double* p = a.mutable_data();
+        p[0] = 450;
+        p[1] = 550;
+        p[2] = 650;
+        return a;
+    }
+
+    static void checkWavelengths(const Rows& l) {
+        const std::size_t total = l.shared ? l.width : l.count * l.width;
+        for (std::size_t j = 0; j < total; ++j)
+            if (!(l.data[j] >= kLambdaMin && l.data[j] <= kLambdaMax))
+                throw py::value_error("wavelengths: expected values in [360, 830] nm, got " +
+                                      std::to_string(l.data[j]));
+    }
+
+    /// BSDFs covering k wavelengths, four at a time (the last group padded with its last
+    /// wavelength); a dispersive material, whose BSDF keeps only its hero wavelength, gets one
+    /// BSDF per wavelength. Each with the offset of its first wavelength.
+    std::vector<std::pair<std::size_t, std::unique_ptr<SpectralBsdf>>> bsdfsAt(
+        const double* nm, std::size_t k) const {
+        std::vector<std::pair<std::size_t, std::unique_ptr<SpectralBsdf>>> out;
+        for (std::size_t first = 0; first < k;) {
+            std::array<double, kHero> l{};
+            for (std::size_t c = 0; c < std::size_t(kHero); ++c)
+                l[c] = nm[std::min(first + c, k - 1)];
+            auto b = buildSpectral(desc_, l);
+            const std::size_t step = b->lambda.secondaryTerminated() ? 1 : std::size_t(kHero);
+            out.emplace_back(first, std::move(b));
+            first += step;
+        }
+        return out;
+    }
+
+    /// The spectral BSDF for sample/pdf/albedo (1 to 4 wavelengths; the first is the hero),
+    /// nullptr in RGB mode.
+    std::unique_ptr<SpectralBsdf> sampledBsdf(const std::optional<DoubleArray>& wavelengths) const {
+        if (!spectral()) {
+            if (wavelengths) throw py::value_error("wavelengths: only in spectral mode");
+            return nullptr;
+        }
+        const DoubleArray nm = wavelengths ? *wavelengths : defaultWavelengths();
+        if (nm.ndim() != 1 || nm.shape(0) < 1 || nm.shape(0) > kHero)
+            throw py::value_error("wavelengths: expected 1 to 4 wavelengths, shape (k,)");
+        const Rows l = rowsOf(nm, std::size_t(nm.shape(0)), "wavelengths");
+        checkWavelengths(l);
+        std::array<double, kHero> a{};
+        for (std::size_t c = 0; c < std::size_t(kHero); ++c)
+            a[c] = nm.data()[std::min<std::size_t>(c, std::size_t(nm.shape(0)) - 1)];
+        return buildSpectral(desc_, a);
+    }
+    static int sampledChannels(const std::optional<DoubleArray>& wavelengths) {
+        return wavelengths ? int(wavelengths->shape(0)) : 3;
+    }
+
+    static py::object lobeNames(const py::array_t<std::int8_t>& codes) {
+        py::list names;
+        for (const auto& e : kLobeKindNames.entries())
+            names.append(std::string(e.name));
+        names.append(std::string());  // code -1: absorbed
+        const py::module_ np = py::module_::import("numpy");
+        return np.attr("array")(names)[codes];
+    }
+
+    MaterialDesc desc_;
+    render::RenderModeKind mode_ = render::RenderModeKind::Rgb;
+    std::unique_ptr<Bxdf<RgbD>> rgb_;
+    std::unique_ptr<SpectralBsdf> defaultSpectral_;
+};
+
+}  // namespace
+
+void bindMaterial(py::module_& m) {
+    m.def(
+        "random_numbers",
+        [](std::size_t count, std::size_t dims, std::uint64_t seed) {
+            auto out = newDoubles({py::ssize_t(count), py::ssize_t(dims)});
+            Pcg32 rng(seed);
+            double* p = out.mutable_data();
+            for (std::size_t i = 0; i < count * dims; ++i)
+                p[i] = rng.nextDouble();
+            return out;
+        },
+        py::arg("count"), py::arg("dims") = 3, py::arg("seed") = 0,
+        "Uniform numbers in [0, 1), (count, dims), row by row from PCG32(seed): the sequence "
+        "`lamina bsdf sample --seed` draws (u_lobe, then u_dir) for each sample");
+    py::class_<Material>(m, "Material",
+                         "A material of the JSON material reader (docs/bsdf.md) in RGB or "
+                         "spectral mode; directions in the local frame (z = normal)")
+        .def(py::init<const py::object&, const std::string&>(), py::arg("material"),
+             py::arg("mode") = "rgb")
+        .def("eval", &Material::eval, py::arg("wo"), py::arg("wi"),
+             py::arg("wavelengths") = py::none(), py::arg("transport") = "radiance",
+             "f(wo, wi) |cos theta_i|: (N, 3) in RGB mode, (N, k) at the wavelengths")
+        .def("pdf", &Material::pdf, py::arg("wo"), py::arg("wi"),
+             py::arg("wavelengths") = py::none(), "Solid-angle density of sample(wo) at wi, (N,)")
+        .def(
+            "pdf_reverse",
+            [](const Material& self, const DoubleArray& wo, const DoubleArray& wi,
+               const std::optional<DoubleArray>& wavelengths) {
+                return self.pdf(wi, wo, wavelengths);
+            },
+            py::arg("wo"), py::arg("wi"), py::arg("wavelengths") = py::none(),
+            "pdf(wi, wo): the density of the reverse direction (BDPT)")
+        .def("sample", &Material::sample, py::arg("wo"), py::arg("u_lobe"), py::arg("u_dir"),
+             py::arg("wavelengths") = py::none(), py::arg("transport") = "radiance",
+             "Draws wi: a dict of wi (N, 3), weight, pdf, lobe, eta, valid")
+        .def("albedo", &Material::albedo, py::arg("cos_theta"), py::arg("samples") = 100000,
+             py::arg("seed") = 0, py::arg("wavelengths") = py::none(),
+             py::arg("transport") = "radiance",
+             "Directional albedo: a dict of reflection, transmission, stderr (M, channels)")
+        .def_property_readonly("lobes", &Material::lobes)
+        .def("info", &Material::info);
+}
+
+}  // namespace lamina::python

@@ -1,0 +1,283 @@
+// lamina.render: a scene (a dict or a file) rendered with the command line's overrides, the
+// GIL released. After every pass the calling thread takes the GIL back to look for a pending
+// Ctrl-C (PyErr_CheckSignals) and to call the progress callback; either one stopping the
+// render raises the renderer's interruption flag, so the render ends after the pass in flight
+// exactly as `lamina render` does on SIGINT, and the partial image is returned with the
+// exception (the Python layer raises it, lamina/__init__.py).
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "arrays.h"
+#include "bindings.h"
+#include "lamina/core/error.h"
+#include "lamina/render/image_output.h"
+#include "lamina/render/render_limits.h"
+#include "lamina/render/render_metadata.h"
+#include "lamina/render/renderer.h"
+#include "lamina/version.h"
+
+namespace lamina::python {
+
+namespace {
+
+using render::RenderOptions;
+
+/// A finished (or interrupted) render: the film, what the EXR's metadata says, and the
+/// images as NumPy arrays (float32, as the EXR stores them).
+class RenderedImage {
+  public:
+    RenderedImage(render::RenderResult result, render::ImageMetadata metadata, bool aovs)
+        : result_(std::make_shared<render::RenderResult>(std::move(result))),
+          metadata_(std::move(metadata)),
+          aovs_(aovs) {}
+
+    py::array_t<float> rgb() const {
+        const render::Film& film = *result_->film;
+        const py::ssize_t w = film.width(), h = film.height();
+        py::array_t<float> out({h, w, py::ssize_t(3)});
+        float* p = out.mutable_data();
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const Rgb<double> v = film.pixel(x, y);
+                for (int c = 0; c < 3; ++c)
+                    *p++ = float(v[c]);
+            }
+        return out;
+    }
+
+    /// Albedo (H, W, 3), N (H, W, 3), Z (H, W) and Variance.Y (H, W) with aovs=True;
+    /// Variance.Y (the variance of each pixel's mean luminance) always.
+    py::dict aovs() const {
+        const render::Film& film = *result_->film;
+        const py::ssize_t w = film.width(), h = film.height();
+        py::dict d;
+        py::array_t<float> variance({h, w});
+        float* v = variance.mutable_data();
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x)
+                *v++ = float(film.varianceOfMean(x, y));
+        d["variance"] = variance;
+        if (!aovs_) return d;
+        py::array_t<float> albedo({h, w, py::ssize_t(3)}), normal({h, w, py::ssize_t(3)}),
+            depth({h, w});
+        float *a = albedo.mutable_data(), *n = normal.mutable_data(), *z = depth.mutable_data();
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const render::PixelAovs p = film.aovs(x, y);
+                for (int c = 0; c < 3; ++c) {
+                    *a++ = float(p.albedo[c]);
+                    *n++ = float(p.normal[c]);
+                }
+                *z++ = float(p.depth);
+            }
+        d["albedo"] = albedo;
+        d["normal"] = normal;
+        d["depth"] = depth;
+        return d;
+    }
+
+    /// Every "lamina:<key>" of the EXR, by key.
+    py::dict metadata() const {
+        py::dict d;
+        for (const auto& [k, v] : metadata_.strings)
+            d[py::str(k)] = v;
+        for (const auto& [k, v] : metadata_.floats)
+            d[py::str(k)] = v;
+        for (const auto& [k, v] : metadata_.ints)
+            d[py::str(k)] = v;
+        for (const auto& [k, v] : metadata_.matrices) {
+            py::array_t<float> m({py::ssize_t(4), py::ssize_t(4)});
+            std::copy(v.begin(), v.end(), m.mutable_data());
+            d[py::str(k)] = m;
+        }
+        return d;
+    }
+
+    /// The EXR `lamina render` writes (with the AOV layers when rendered with aovs=True), or
+    /// its PNG preview for a .png name.
+    void save(const std::string& path, double exposure) const {
+        const std::filesystem::path p = path;
+        render::checkOutputPath(p);
+        py::gil_scoped_release release;
+        if (p.extension() == ".png")
+            render::writePngPreview(p, *result_->film, exposure);
+        else if (p.extension() == ".exr")
+            render::writeExr(p, *result_->film, aovs_, metadata_);
+        else
+            throw InputError(path + ": expected a .exr or .png name");
+    }
+
+    int spp() const { return result_->spp; }
+    double seconds() const { return result_->seconds; }
+    bool partial() const { return result_->partial; }
+    std::uint64_t rejected() const { return result_->film->rejectedSamples(); }
+
+  private:
+    std::shared_ptr<render::RenderResult> result_;
+    render::ImageMetadata metadata_;
+    bool aovs_;
+};
+
+template <typename E, std::size_t N>
+E nameOf(const NameTable<E, N>& table, const py::handle& value, const char* key) {
+    const std::string name = py::str(value);
+    if (const auto e = table.find(name)) return *e;
+    throw py::value_error(std::string(key) + ": expected one of " + table.list() + ", got \"" +
+                          name + "\"");
+}
+
+long long integerIn(const py::handle& value, const char* key, long long min, long long max) {
+    if (!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value))
+        throw py::value_error(std::string(key) + ": expected an integer");
+    const long long v = value.cast<long long>();
+    if (v < min || v > max)
+        throw py::value_error(std::string(key) + ": expected an integer in [" +
+                              std::to_string(min) + ", " + std::to_string(max) + "], got " +
+                              std::to_string(v));
+    return v;
+}
+
+std::pair<int, int> resolutionOf(const py::handle& value) {
+    if (py::isinstance<py::str>(value)) {
+        if (const auto r = render::parseResolutionText(value.cast<std::string>())) return *r;
+    } else if (py::isinstance<py::sequence>(value) && py::len(value) == 2) {
+        const auto s = value.cast<py::sequence>();
+        const int max = render::kMaxResolutionOverride;
+        return {int(integerIn(s[0], "resolution", 1, max)),
+                int(integerIn(s[1], "resolution", 1, max))};
+    }
+    throw py::value_error(
+        "resolution: expected (width, height) or \"WIDTHxHEIGHT\", each in [1, 65536]");
+}
+
+/// The command line's overrides (`lamina render --spp --time --mode ...`) from keywords.
+RenderOptions optionsOf(const py::kwargs& kwargs, py::object& progress) {
+    RenderOptions o;
+    for (const auto& [k, value] : kwargs) {
+        const std::string key = py::str(k);
+        if (value.is_none()) continue;
+        if (key == "spp") {
+            o.spp = int(integerIn(value, "spp", 1, render::kMaxSppOverride));
+        } else if (key == "time") {
+            const double t = value.cast<double>();
+            if (!(t > 0) || !std::isfinite(t))
+                throw py::value_error("time: expected a positive number of seconds");
+            o.seconds = t;
+        } else if (key == "mode") {
+            o.mode = nameOf(render::kRenderModeNames, value, "mode");
+        } else if (key == "integrator") {
+            o.integrator = nameOf(render::kIntegratorNames, value, "integrator");
+        } else if (key == "mis") {
+            o.mis = nameOf(render::kMisHeuristicNames, value, "mis");
+        } else if (key == "sampler") {
+            o.sampler = nameOf(render::kSamplerNames, value, "sampler");
+        } else if (key == "seed") {
+            o.seed = std::uint64_t(integerIn(value, "seed", 0, render::kMaxSeedOverride));
+        } else if (key == "threads") {
+            o.threads = int(integerIn(value, "threads", 1, render::kMaxThreadsOverride));
+        } else if (key == "max_depth") {
+            o.maxDepth = int(integerIn(value, "max_depth", 1, render::kMaxDepthOverride));
+        } else if (key == "resolution") {
+            o.resolution = resolutionOf(value);
+        } else if (key == "aovs") {
+            o.aovs = value.cast<bool>();
+        } else if (key == "progress") {
+            if (!PyCallable_Check(value.ptr()))
+                throw py::value_error("progress: expected a callable");
+            progress = py::reinterpret_borrow<py::object>(value);
+        } else {
+            throw py::type_error("render() got an unexpected keyword argument '" + key +
+                                 "'; expected spp, time, mode, integrator, mis, sampler, seed, "
+                                 "threads, max_depth, resolution, aovs, progress");
+        }
+    }
+    if (o.spp && o.seconds) throw py::value_error("time: excludes spp (as --time excludes --spp)");
+    return o;
+}
+
+render::SceneDesc sceneOf(const py::object& scene) {
+    if (py::isinstance<py::dict>(scene)) {
+        // Relative file names in a dict resolve against the working directory.
+        const JsonSource source{"<scene dict>", std::filesystem::current_path()};
+        return render::parseScene(jsonText(scene), source);
+    }
+    const py::object path = py::module_::import("os").attr("fspath")(scene);
+    return render::loadScene(path.cast<std::string>());
+}
+
+/// Returns (image, exception or None): the exception that stopped the render (a
+/// KeyboardInterrupt, or what the progress callback raised).
+py::tuple renderScene(const py::object& sceneArgument, const py::kwargs& kwargs) {
+    py::object progress = py::none();
+    const RenderOptions o = optionsOf(kwargs, progress);
+    const render::SceneDesc scene = sceneOf(sceneArgument);
+    std::atomic<bool>& interrupt = render::renderInterruptFlag();
+    interrupt.store(false);
+    py::object stoppedBy = py::none();
+    const auto onPass = [&](const render::RenderProgress& p) {
+        py::gil_scoped_acquire acquire;
+        if (!stoppedBy.is_none()) return;
+        try {
+            if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+            if (!progress.is_none()) {
+                py::dict d;
+                d["fraction"] = p.fraction;
+                d["seconds"] = p.seconds;
+                d["passes"] = p.passesDone;
+                d["spp"] = p.sppDone;
+                progress(d);
+            }
+        } catch (py::error_already_set& e) {
+            stoppedBy = e.value();
+            interrupt.store(true);
+        }
+    };
+    render::RenderResult r;
+    {
+        py::gil_scoped_release release;
+        try {
+            r = render::renderScene(scene, o, onPass);
+        } catch (...) {
+            interrupt.store(false);
+            throw;
+        }
+        interrupt.store(false);
+    }
+    render::ImageMetadata meta =
+        render::renderMetadata(scene, o, r, {LAMINA_VERSION_STRING, LAMINA_GIT_COMMIT});
+    return py::make_tuple(RenderedImage(std::move(r), std::move(meta), o.aovs), stoppedBy);
+}
+
+}  // namespace
+
+void bindRender(py::module_& m) {
+    py::class_<RenderedImage>(m, "Image", "A render: rgb, aovs, metadata, save(path)")
+        .def_property_readonly("rgb", &RenderedImage::rgb, "Linear Rec.709, (H, W, 3) float32")
+        .def_property_readonly("aovs", &RenderedImage::aovs)
+        .def_property_readonly("metadata", &RenderedImage::metadata)
+        .def_property_readonly("spp", &RenderedImage::spp)
+        .def_property_readonly("seconds", &RenderedImage::seconds)
+        .def_property_readonly("partial", &RenderedImage::partial)
+        .def_property_readonly("rejected_samples", &RenderedImage::rejected)
+        .def("save", &RenderedImage::save, py::arg("path"), py::arg("exposure") = 0.0,
+             "Writes the EXR lamina render writes (.exr) or its PNG preview (.png)");
+    m.def("_render", &renderScene, py::arg("scene"));
+    m.def(
+        "read_image",
+        [](const std::string& path) {
+            const render::RgbImage img = render::readRgbImage(path);
+            py::array_t<float> out(
+                {py::ssize_t(img.height), py::ssize_t(img.width), py::ssize_t(3)});
+            std::copy(img.pixels.begin(), img.pixels.end(), out.mutable_data());
+            py::dict meta;
+            for (const auto& [k, v] : img.metadata)
+                meta[py::str(k)] = v;
+            return py::make_tuple(out, meta);
+        },
+        py::arg("path"), "An image's R, G, B as (H, W, 3) float32, and its metadata");
+}
+
+}  // namespace lamina::python

@@ -1,0 +1,64 @@
+"""The experiments as functions: compare against NumPy's metrics; fresnel, stability,
+convergence and reciprocity return their results (kept small: seconds each)."""
+
+import os
+
+import numpy as np
+import pytest
+
+import lamina
+
+
+@pytest.fixture(scope="module")
+def scene(source_dir):
+    return os.path.join(source_dir, "scenes", "cornell-box.json")
+
+
+def test_compare_equals_numpy():
+    rng = np.random.default_rng(3)
+    a = rng.random((8, 6, 3)).astype(np.float32)
+    b = rng.random((8, 6, 3)).astype(np.float32) + 0.1
+    d = (a.astype(float) - b.astype(float))
+    m = lamina.compare(a, b)
+    assert m["mse"] == pytest.approx(np.mean(d**2), rel=1e-12)
+    assert m["mae"] == pytest.approx(np.mean(np.abs(d)), rel=1e-12)
+    assert m["max"] == pytest.approx(np.max(np.abs(d)), rel=1e-12)
+    assert m["relmse"] == pytest.approx(np.mean(d**2 / (b.astype(float) ** 2 + 1e-2)), rel=1e-12)
+    assert lamina.compare(a, b, metric="rmse") == pytest.approx(np.sqrt(np.mean(d**2)))
+    assert lamina.compare(a, a, metric="max") == 0
+    with pytest.raises(ValueError):
+        lamina.compare(a, b[:4])
+
+
+def test_fresnel():
+    (au,) = lamina.fresnel(["Au"])
+    assert au["degrees"].shape == (91,)
+    exact = au["models"][0]
+    assert exact["max_error"] == 0 and exact["rgb"].shape == (91, 3)
+    # Every model is 1 at grazing incidence and errs somewhere in between.
+    for model in au["models"][1:]:
+        np.testing.assert_allclose(model["rgb"][-1], 1, atol=1e-9)
+        assert model["max_error"] > 0
+
+
+def test_stability():
+    (model,) = lamina.stability(['{"type":"conductor","material":"Au","alpha":0.3}'], samples=64)
+    assert model["issues"].shape == (len(model["alphas"]), len(model["cosines"]))
+    assert model["nan"] == 0 and model["inf"] == 0
+
+
+def test_convergence(scene):
+    r = lamina.convergence(scene, integrators=["path"], seconds=0.4, reference_seconds=1.0,
+                           resolution=(16, 16))
+    (curve,) = r["curves"]
+    assert curve["integrator"] == "path" and curve["seconds"].size >= 2
+    # Error falls with time.
+    assert curve["relmse"][-1] < curve["relmse"][0]
+
+
+def test_reciprocity(scene):
+    r = lamina.reciprocity(scene, integrators=["path", "light"], spp=8, batches=4,
+                           resolution=(12, 12), max_depth=3)
+    (pair,) = r["pairs"]
+    assert {pair["a"], pair["b"]} == {"path", "light"} and isinstance(r["agree"], bool)
+    assert len(r["materials"]) > 0
