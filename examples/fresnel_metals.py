@@ -1,5 +1,6 @@
-"""Exact spectral Fresnel reflectance against RGB mode's F82-tint model for three metals:
-the luminance of each model's colour against the angle of incidence (lamina.fresnel).
+"""Exact spectral Fresnel reflectance against RGB mode's models (Schlick, shadowed F90,
+Hoffman's F82, Lagarde's spherical Gaussian) for three metals: the luminance of each model's
+colour against the angle of incidence, and its largest RGB error (lamina.fresnel).
 
     PYTHONPATH=build/python python3 examples/fresnel_metals.py fresnel.png
 """

@@ -87,9 +87,11 @@ def test_the_gil_is_released_during_a_render(cornell):
     during = [x for x in ticks[before:] if start < x < end]
     stop.set()
     t.join()
-    # A thread that held no GIL would tick about once per millisecond of the render.
+    # The thread ticks about once per millisecond when it gets the GIL; had the render held
+    # the GIL, it could tick only at the seven pass boundaries. A tenth of the rate (at least
+    # 30 ticks) leaves room for a loaded machine.
     assert end - start > 0.05
-    assert len(during) > 0.25 * (end - start) / 0.001
+    assert len(during) > max(30, 0.1 * (end - start) / 0.001)
 
 
 def test_ctrl_c_raises_keyboard_interrupt_with_the_partial_image(cornell):
