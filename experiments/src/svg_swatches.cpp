@@ -12,7 +12,9 @@ namespace lamina::experiments {
 
 namespace {
 
-constexpr double kSwatch = 44, kGap = 4, kTop = 64, kBottom = 20, kCharWidth = 7.2;
+constexpr double kSwatch = 44, kGap = 4, kTop = 64, kBottom = 20;
+// About 7.2 units per character of the 12-unit font, 8 of the 14-unit title.
+constexpr double kCharWidth = 7.2, kTitleCharWidth = 8.0;
 
 // The sRGB transfer function (IEC 61966-2-1) of a linear value clamped to [0, 1].
 double encodeSrgb(double linear) {
@@ -38,7 +40,7 @@ void SvgSwatches::write(const std::filesystem::path& path) const {
     const double x0 = 40 + kCharWidth * double(longestRow) + 10;
     const double gridW = double(columns.size()) * (kSwatch + kGap) - kGap;
     const double gridH = double(rows.size()) * (kSwatch + kGap) - kGap;
-    const double width = std::max(x0 + gridW + 20, kCharWidth * double(title.size()) + 40);
+    const double width = std::max(x0 + gridW + 20, kTitleCharWidth * double(title.size()) + 20);
     const double height = kTop + gridH + kBottom;
     std::ostringstream svg;
     svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
