@@ -11,7 +11,7 @@ packages=(
   libglm-dev nlohmann-json3-dev libcli11-dev libyaml-cpp-dev
   colord-data libtinyobjloader-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  python3 python3-matplotlib python3-numpy
+  python3 python3-matplotlib python3-numpy python3-jsonschema
   python3-dev pybind11-dev python3-pybind11 python3-pytest
   clang libclang-rt-14-dev
 )

@@ -3,13 +3,12 @@
 //   sample  draws wi for one wo           -> one line per sample (JSON Lines or CSV)
 //   albedo  directional albedo for cos theta_o = 0.05 ... 1, reflection and transmission
 //   chi2    the chi-square goodness-of-fit test of sample() against pdf()
-//   plot    a PNG: the lobe in the plane of incidence and a heat map over the hemisphere
+//   plot    SVG figures: the lobe in the plane of incidence, and a map over the hemisphere
 // Directions are in the local frame (z = normal) and are normalised by the tool.
-#include <OpenImageIO/imageio.h>
-
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
+#include <glm/trigonometric.hpp>
 #include <iostream>
 #include <sstream>
 
@@ -18,6 +17,9 @@
 #include "lamina/bsdf/material_builder.h"
 #include "lamina/core/chi_square_test.h"
 #include "lamina/core/error.h"
+#include "lamina/core/output_files.h"
+#include "lamina/experiments/svg_heat_map.h"
+#include "lamina/experiments/svg_plot.h"
 #include "option_parsing.h"
 
 namespace lamina::app {
@@ -34,7 +36,7 @@ struct BsdfArgs {
     std::uint64_t seed = 0;
     std::string format = "jsonl";
     std::size_t samples = 1000000;
-    std::string output = "lobe.png";
+    std::string output = "lobe.svg";
 };
 
 std::vector<double> parseNumbers(const std::string& text, const std::string& what) {
@@ -59,12 +61,38 @@ Vec3d parseDirection(const std::string& text, const std::string& what) {
     return glm::normalize(d);
 }
 
-// Colour map for the heat map: black - red - yellow - white ("hot").
-void hot(double t, float* rgb) {
-    t = std::clamp(t, 0.0, 1.0);
-    rgb[0] = float(std::min(1.0, 3 * t));
-    rgb[1] = float(std::clamp(3 * t - 1, 0.0, 1.0));
-    rgb[2] = float(std::clamp(3 * t - 2, 0.0, 1.0));
+double round3(double v) {
+    return std::round(v * 1000) / 1000;
+}
+
+// The material as a figure names it: the @file, or the JSON literal cut short, and the mode.
+std::string materialLabel(const BsdfArgs& a) {
+    constexpr std::size_t kMaxChars = 48;
+    std::string m = a.material;
+    if (m.size() > kMaxChars) m = m.substr(0, kMaxChars) + "...";
+    return m + " (" + a.mode + " mode" +
+           (a.mode == render::kRenderModeNames.name(render::RenderModeKind::Spectral)
+                ? ", " + a.wavelengths + " nm"
+                : std::string()) +
+           ")";
+}
+
+// `bsdf plot -o NAME.svg` writes NAME.svg (the plane of incidence) and NAME-hemisphere.svg
+// with the map's pixels in NAME-hemisphere.png.
+struct PlotFiles {
+    std::filesystem::path plane, hemisphere, hemispherePng;
+};
+
+PlotFiles plotFiles(const std::string& output) {
+    const std::filesystem::path plane = output;
+    if (plane.extension() != ".svg")
+        throw CLI::ValidationError("--output", "expected a .svg file name, got \"" + output + "\"");
+    std::filesystem::path hemisphere = plane;
+    hemisphere.replace_filename(plane.stem().string() + "-hemisphere.svg");
+    PlotFiles files{plane, hemisphere, std::filesystem::path(hemisphere).replace_extension(".png")};
+    for (const auto& f : {files.plane, files.hemisphere, files.hemispherePng})
+        checkOutputFile(f);
+    return files;
 }
 
 template <typename S>
@@ -170,81 +198,70 @@ class BsdfTool {
         if (!r.passed) std::printf("%s\n", r.message.c_str());
     }
 
+    // Two figures that stand alone: f cos theta_i along the plane of incidence (the normal and
+    // wo's tangential direction u, x when wo is the normal), and a false-colour map of it over
+    // the upper hemisphere with its colour bar.
     void plot() const {
         const Vec3d wo = parseDirection(a_.wo, "--wo");
-        constexpr int size = 400;
-        std::vector<float> img(std::size_t(2 * size) * size * 3, 1.0f);
-        auto put = [&](int x, int y, float r, float g, float b) {
-            if (x < 0 || y < 0 || x >= 2 * size || y >= size) return;
-            float* p = &img[(std::size_t(y) * 2 * size + std::size_t(x)) * 3];
-            p[0] = r;
-            p[1] = g;
-            p[2] = b;
-        };
-        auto value = [&](const Vec3d& wi) {
+        const auto value = [&](const Vec3d& wi) {
             return std::max(0.0, double(bxdf_->eval(wo, wi, mode_).average()));
         };
-        // Left: the plane of incidence, spanned by the normal (z) and wo's tangential direction
-        // u (x when wo is the normal), f cos over theta_i in [-180, 180] degrees, positive
-        // towards u: the mirror direction of wo lies in it at theta = -theta_o.
+        const std::string what = materialLabel(a_) + ", wo = (" + formatNumber(round3(wo.x)) +
+                                 ", " + formatNumber(round3(wo.y)) + ", " +
+                                 formatNumber(round3(wo.z)) + ")";
+        // theta_i in [-180, 180] degrees from the normal, positive towards u: wo lies at
+        // +theta_o and its mirror direction at -theta_o.
         const double tangential = std::hypot(wo.x, wo.y);
         const Vec3d u = tangential > 0 ? Vec3d(wo.x / tangential, wo.y / tangential, 0.0)
                                        : Vec3d(1.0, 0.0, 0.0);
-        const int steps = 2000;
-        std::vector<double> polar(steps);
+        experiments::SvgPlot::Series lobe{"f cos theta_i", {}, {}};
         double peak = 0;
-        for (int k = 0; k < steps; ++k) {
-            const double t = -kPi<double> + 2 * kPi<double> * (k + 0.5) / steps;
-            polar[std::size_t(k)] = value(std::sin(t) * u + Vec3d(0.0, 0.0, std::cos(t)));
-            peak = std::max(peak, polar[std::size_t(k)]);
+        for (int k = 0; k <= 720; ++k) {
+            const double degrees = -180.0 + 0.5 * k, t = glm::radians(degrees);
+            lobe.x.push_back(degrees);
+            lobe.y.push_back(value(std::sin(t) * u + Vec3d(0.0, 0.0, std::cos(t))));
+            peak = std::max(peak, lobe.y.back());
         }
-        const double cx = size / 2.0, cy = size / 2.0, radius = size * 0.45;
-        for (int k = 0; k < 720; ++k) {  // unit circle and the surface line
-            const double t = 2 * kPi<double> * k / 720;
-            put(int(cx + radius * std::cos(t)), int(cy + radius * std::sin(t)), 0.7f, 0.7f, 0.7f);
-        }
-        for (int x = int(cx - radius); x <= int(cx + radius); ++x)
-            put(x, int(cy), 0.4f, 0.4f, 0.4f);
-        for (int k = 0; k < 200; ++k) {  // wo
-            const double s = radius * k / 200.0;
-            put(int(cx + s * tangential), int(cy - s * wo.z), 0.1f, 0.3f, 0.9f);
-        }
-        for (int k = 0; k < steps; ++k) {
-            const double t = -kPi<double> + 2 * kPi<double> * (k + 0.5) / steps;
-            const double r = peak > 0 ? radius * polar[std::size_t(k)] / peak : 0;
-            for (int dx = 0; dx < 2; ++dx)
-                put(int(cx + r * std::sin(t)) + dx, int(cy - r * std::cos(t)), 0.85f, 0.1f, 0.1f);
-        }
-        // Right: a heat map of f cos over the projected upper hemisphere (x, y) -> wi.
+        const double thetaO = glm::degrees(std::atan2(tangential, wo.z));
+        experiments::SvgPlot plane("Plane of incidence: " + what,
+                                   "theta_i from the normal, towards (" +
+                                       formatNumber(round3(u.x)) + ", " +
+                                       formatNumber(round3(u.y)) + ", 0) (degrees)",
+                                   "f cos theta_i (1/sr)");
+        plane.add(std::move(lobe));
+        plane.add({"wo (theta_o = " + formatNumber(round3(thetaO)) + " deg)",
+                   {thetaO, thetaO},
+                   {0.0, peak},
+                   true});
+        plane.add({"mirror direction", {-thetaO, -thetaO}, {0.0, peak}, true});
+        // The hemisphere, seen from above: wi = (x, y, sqrt(1 - x^2 - y^2)), +y at the top;
+        // cells outside the unit disk are NaN (grey).
+        constexpr int kCells = 200;
+        std::vector<float> heat(std::size_t(kCells) * kCells, std::nanf(""));
         double peak2 = 0;
-        std::vector<double> heat(std::size_t(size) * size, -1.0);
-        for (int y = 0; y < size; ++y)
-            for (int x = 0; x < size; ++x) {
-                const double px = (x + 0.5) / size * 2 - 1, py = 1 - (y + 0.5) / size * 2;
+        for (int y = 0; y < kCells; ++y)
+            for (int x = 0; x < kCells; ++x) {
+                const double px = (x + 0.5) / kCells * 2 - 1, py = 1 - (y + 0.5) / kCells * 2;
                 const double r2 = px * px + py * py;
                 if (r2 >= 1) continue;
                 const double v = value(Vec3d(px, py, std::sqrt(1 - r2)));
-                heat[std::size_t(y) * size + std::size_t(x)] = v;
+                heat[std::size_t(y) * kCells + std::size_t(x)] = float(v);
                 peak2 = std::max(peak2, v);
             }
-        for (int y = 0; y < size; ++y)
-            for (int x = 0; x < size; ++x) {
-                const double v = heat[std::size_t(y) * size + std::size_t(x)];
-                float rgb[3] = {1, 1, 1};
-                if (v >= 0) hot(peak2 > 0 ? v / peak2 : 0, rgb);
-                put(size + x, y, rgb[0], rgb[1], rgb[2]);
-            }
-        auto out = OIIO::ImageOutput::create(a_.output);
-        if (!out) throw InputError(a_.output + ": cannot write this image format (use .png)");
-        OIIO::ImageSpec spec(2 * size, size, 3, OIIO::TypeDesc::UINT8);
-        if (!out->open(a_.output, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, img.data()) ||
-            !out->close())
-            throw InputError(a_.output + ": cannot write: " + out->geterror());
+        const double edge = 1.0 - 1.0 / kCells;  // the centres of the outermost cells
+        experiments::SvgHeatMap hemisphere("Upper hemisphere: " + what, kCells, kCells,
+                                           std::move(heat));
+        hemisphere.setAxes({"wi.x (direction cosine)", -edge, edge},
+                           {"wi.y (direction cosine)", edge, -edge});
+        hemisphere.setScale(experiments::Palette::Sequential, 0, peak2 > 0 ? peak2 : 1,
+                            "f cos theta_i (1/sr)");
+        const PlotFiles files = plotFiles(a_.output);
+        plane.write(files.plane);
+        hemisphere.write(files.hemisphere, files.hemispherePng);
         std::fprintf(stderr,
-                     "%s: left, f cos in the plane of incidence (the normal and (%.3g, %.3g, 0); "
-                     "wo in blue, peak %.4g); right, f cos over the upper hemisphere (peak "
-                     "%.4g)\n",
-                     a_.output.c_str(), u.x, u.y, peak, peak2);
+                     "%s: f cos theta_i in the plane of incidence (the normal and (%.3g, %.3g, "
+                     "0); peak %.4g); %s: over the upper hemisphere (peak %.4g)\n",
+                     files.plane.c_str(), u.x, u.y, peak, files.hemisphere.c_str(), peak2);
     }
 
   private:
@@ -342,10 +359,13 @@ void registerBsdfCommand(CLI::App& app) {
     chi2->add_option("--seed", a->seed, "Random seed")->capture_default_str();
     chi2->callback([a] { withTool(*a, [](auto& t) { t.chi2(); }); });
 
-    CLI::App* plot = bsdf->add_subcommand("plot", "Picture of the lobe (PNG)");
+    CLI::App* plot = bsdf->add_subcommand(
+        "plot", "Figures of the lobe (SVG): the plane of incidence, the upper hemisphere");
     addCommon(plot, *a);
     plot->add_option("--wo", a->wo, "Outgoing direction x,y,z (local frame)")->required();
-    plot->add_option("-o,--output", a->output, "Output PNG")->capture_default_str();
+    plot->add_option("-o,--output", a->output,
+                     "Output NAME.svg (also NAME-hemisphere.svg and .png)")
+        ->capture_default_str();
     plot->callback([a] { withTool(*a, [](auto& t) { t.plot(); }); });
 }
 

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "interruption.h"
 #include "lamina/core/error.h"
 #include "lamina/experiments/image_metrics.h"
 #include "option_parsing.h"
@@ -68,7 +69,7 @@ void registerCompareCommand(CLI::App& app) {
     cmd->add_option("--diff-scale", a->diffScale,
                     "The difference shown white in --diff (default: the largest)")
         ->check(CLI::PositiveNumber);
-    cmd->callback([a] { run(*a); });
+    cmd->callback([a] { runInterruptible("compare", [&] { run(*a); }); });
 }
 
 }  // namespace lamina::app

@@ -2,6 +2,7 @@
 // integrator and render mode (experiments/convergence.h).
 #include <CLI/CLI.hpp>
 
+#include "interruption.h"
 #include "lamina/experiments/convergence.h"
 #include "lamina/version.h"
 #include "option_parsing.h"
@@ -99,8 +100,10 @@ void registerConvergenceCommand(CLI::App& app) {
     cmd->callback([a] {
         const experiments::ConvergenceInputs in = inputs(*a);
         experiments::Report report(a->output);
-        experiments::writeConvergenceReport(experiments::runConvergence(in), report);
-        report.finish();
+        runInterruptible("convergence", [&] {
+            experiments::writeConvergenceReport(experiments::runConvergence(in), report);
+            report.finish();
+        });
     });
 }
 

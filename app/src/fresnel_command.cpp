@@ -2,6 +2,7 @@
 // spectral Fresnel reflectance (experiments/fresnel.h).
 #include <CLI/CLI.hpp>
 
+#include "interruption.h"
 #include "lamina/experiments/fresnel.h"
 #include "option_parsing.h"
 
@@ -25,8 +26,10 @@ void registerFresnelCommand(CLI::App& app) {
     cmd->callback([a, output] {
         a->progress = experiments::printToStderr;
         experiments::Report report(*output);
-        experiments::writeFresnelReport(experiments::runFresnel(*a), report);
-        report.finish();
+        runInterruptible("fresnel", [&] {
+            experiments::writeFresnelReport(experiments::runFresnel(*a), report);
+            report.finish();
+        });
     });
 }
 

@@ -1,9 +1,12 @@
 #include "interruption.h"
 
+#include <CLI/CLI.hpp>
 #include <atomic>
 #include <csignal>
+#include <cstdio>
 
 #include "lamina/core/output_files.h"
+#include "lamina/experiments/interrupted.h"
 #include "lamina/render/renderer.h"
 
 namespace lamina::app {
@@ -44,6 +47,24 @@ RenderInterruption::~RenderInterruption() {
 
 int RenderInterruption::signal() const {
     return received.load();
+}
+
+void runInterruptible(const std::string& command, const std::function<void()>& work) {
+    const RenderInterruption interruption;
+    const auto signalName = [&] { return interruption.signal() == SIGTERM ? "SIGTERM" : "SIGINT"; };
+    try {
+        work();
+    } catch (const experiments::Interrupted&) {
+        std::fprintf(stderr,
+                     "lamina %s: interrupted by %s: stopped before the report, nothing written\n",
+                     command.c_str(), signalName());
+        throw CLI::RuntimeError(interruption.exitStatus());
+    }
+    if (interruption.signal() != 0) {
+        std::fprintf(stderr, "lamina %s: interrupted by %s while writing: the report is complete\n",
+                     command.c_str(), signalName());
+        throw CLI::RuntimeError(interruption.exitStatus());
+    }
 }
 
 }  // namespace lamina::app

@@ -3,6 +3,7 @@
 // disagrees.
 #include <CLI/CLI.hpp>
 
+#include "interruption.h"
 #include "lamina/experiments/reciprocity.h"
 #include "option_parsing.h"
 
@@ -83,9 +84,13 @@ void registerReciprocityCommand(CLI::App& app) {
     cmd->callback([a] {
         const experiments::ReciprocityInputs in = inputs(*a);
         experiments::Report report(a->output);
-        const experiments::ReciprocityResult result = experiments::runReciprocity(in);
-        experiments::writeReciprocityReport(result, report);
-        if (!result.allAgree) throw CLI::RuntimeError(2);
+        bool agree = true;
+        runInterruptible("reciprocity", [&] {
+            const experiments::ReciprocityResult result = experiments::runReciprocity(in);
+            experiments::writeReciprocityReport(result, report);
+            agree = result.allAgree;
+        });
+        if (!agree) throw CLI::RuntimeError(2);
     });
 }
 

@@ -2,14 +2,14 @@
 // mode. NAME is a metal (Au, Ag, ... : n, k from the Lorentz-Drude model), a glass (bk7,
 // fused_silica, water, diamond: n), a CIE illuminant (D65, A, ...), or blackbody:T (kelvin);
 // FILE is a refractiveindex.info YAML or CSV n/k file.
-#include <OpenImageIO/imageio.h>
-
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <sstream>
 
 #include "json_lines.h"
 #include "lamina/core/error.h"
+#include "lamina/core/output_files.h"
+#include "lamina/experiments/svg_plot.h"
 #include "lamina/spectral/blackbody.h"
 #include "lamina/spectral/cie.h"
 #include "lamina/spectral/color_space.h"
@@ -27,12 +27,15 @@ struct SpectrumArgs {
     std::string plot;
 };
 
-// One or two curves over wavelength, with labels.
+// One or two curves over wavelength, with labels and what their values are (with units).
 struct Curves {
     std::string title;
     std::vector<std::string> labels;
     std::vector<std::function<double(double)>> f;
+    std::string yLabel;
 };
+
+constexpr const char* kIorLabel = "refractive index n, extinction coefficient k (dimensionless)";
 
 Curves resolve(const std::string& name) {
     // Before the file test: "blackbody:6500.5" holds a '.' but names no file.
@@ -43,9 +46,10 @@ Curves resolve(const std::string& name) {
         if (value.empty() || *end != '\0' || !(t > 0) || !std::isfinite(t))
             throw InputError(name + ": \"" + value +
                              "\" is not a temperature in kelvin (e.g. blackbody:6500)");
-        return {name + " K (normalised to 1 at its peak)", {"value"}, {[t](double nm) {
-                    return blackbodyNormalized(nm, t);
-                }}};
+        return {name + " K (normalised to 1 at its peak)",
+                {"value"},
+                {[t](double nm) { return blackbodyNormalized(nm, t); }},
+                "spectral radiance / its peak (dimensionless)"};
     }
     if (auto ior = namedIor(name);
         !ior && (name.find('.') != std::string::npos || name.find('/') != std::string::npos)) {
@@ -53,15 +57,20 @@ Curves resolve(const std::string& name) {
         return {loaded->name(),
                 {"n", "k"},
                 {[loaded](double nm) { return loaded->n(nm); },
-                 [loaded](double nm) { return loaded->k(nm); }}};
+                 [loaded](double nm) { return loaded->k(nm); }},
+                kIorLabel};
     } else if (ior) {
         auto s = std::make_shared<IorSpectrum>(*ior);
         return {s->name(),
                 {"n", "k"},
-                {[s](double nm) { return s->n(nm); }, [s](double nm) { return s->k(nm); }}};
+                {[s](double nm) { return s->n(nm); }, [s](double nm) { return s->k(nm); }},
+                kIorLabel};
     }
     if (const TabulatedCurve* c = findCieIlluminant(name))
-        return {"CIE illuminant " + name, {"value"}, {[c](double nm) { return (*c)(nm); }}};
+        return {"CIE illuminant " + name,
+                {"value"},
+                {[c](double nm) { return (*c)(nm); }},
+                "relative spectral power (dimensionless)"};
     std::string names;
     for (const auto& n : namedMetalNames())
         names += n + " ";
@@ -75,56 +84,31 @@ Curves resolve(const std::string& name) {
                      names);
 }
 
-void writePlot(const std::string& path, const Curves& c) {
-    constexpr int w = 640, h = 400, margin = 40;
-    std::vector<float> img(std::size_t(w) * h * 3, 1.0f);
-    auto put = [&](int x, int y, const float* col) {
-        if (x < 0 || y < 0 || x >= w || y >= h) return;
-        float* p = &img[(std::size_t(y) * w + std::size_t(x)) * 3];
-        for (int k = 0; k < 3; ++k)
-            p[k] = col[k];
-    };
-    const float grey[3] = {0.6f, 0.6f, 0.6f};
-    const float colours[2][3] = {{0.8f, 0.1f, 0.1f}, {0.1f, 0.3f, 0.85f}};
-    double top = 0;
-    for (const auto& f : c.f)
-        for (double nm = kLambdaMin; nm <= kLambdaMax; nm += 1)
-            top = std::max(top, f(nm));
-    top = top > 0 ? top * 1.05 : 1.0;
-    for (int x = margin; x < w - margin; ++x) {
-        put(x, h - margin, grey);
-        put(x, margin, grey);
-    }
-    for (int y = margin; y <= h - margin; ++y) {
-        put(margin, y, grey);
-        put(w - margin, y, grey);
-    }
-    for (int tick = 400; tick <= 800; tick += 100) {  // wavelength ticks every 100 nm
-        const int x =
-            margin + int((tick - kLambdaMin) / (kLambdaMax - kLambdaMin) * (w - 2 * margin));
-        for (int y = h - margin; y < h - margin + 6; ++y)
-            put(x, y, grey);
-    }
-    for (std::size_t i = 0; i < c.f.size(); ++i)
-        for (int x = margin; x < w - margin; ++x) {
-            const double nm =
-                kLambdaMin + (x - margin) / double(w - 2 * margin) * (kLambdaMax - kLambdaMin);
-            const int y = h - margin - int(c.f[i](nm) / top * (h - 2 * margin));
-            put(x, y, colours[i % 2]);
-            put(x, y + 1, colours[i % 2]);
+void checkPlotFile(const std::string& plot) {
+    if (plot.empty()) return;
+    if (std::filesystem::path(plot).extension() != ".svg")
+        throw CLI::ValidationError("--plot", "expected a .svg file name, got \"" + plot + "\"");
+    checkOutputFile(plot);
+}
+
+// The curves over 360-830 nm in 1 nm steps, through the experiments' plot writer.
+void writePlot(const std::filesystem::path& path, const Curves& c) {
+    experiments::SvgPlot plot(c.title, "wavelength (nm)", c.yLabel);
+    for (std::size_t i = 0; i < c.f.size(); ++i) {
+        experiments::SvgPlot::Series s{c.labels[i], {}, {}};
+        for (double nm = kLambdaMin; nm <= kLambdaMax; nm += 1) {
+            s.x.push_back(nm);
+            s.y.push_back(c.f[i](nm));
         }
-    auto out = OIIO::ImageOutput::create(path);
-    if (!out) throw InputError(path + ": cannot write this image format (use .png)");
-    OIIO::ImageSpec spec(w, h, 3, OIIO::TypeDesc::UINT8);
-    if (!out->open(path, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, img.data()) ||
-        !out->close())
-        throw InputError(path + ": cannot write: " + out->geterror());
-    std::fprintf(
-        stderr, "%s: %s over 360-830 nm (ticks every 100 nm from 400), y from 0 to %.4g; %s\n",
-        path.c_str(), c.title.c_str(), top, c.f.size() == 2 ? "n red, k blue" : "value red");
+        plot.add(std::move(s));
+    }
+    plot.write(path);
+    std::fprintf(stderr, "%s: %s over %g-%g nm\n", path.c_str(), c.title.c_str(), kLambdaMin,
+                 kLambdaMax);
 }
 
 void run(const SpectrumArgs& a) {
+    checkPlotFile(a.plot);
     const Curves c = resolve(a.name);
     std::vector<double> nm;
     if (a.wavelengths.empty()) {
@@ -190,7 +174,7 @@ void registerSpectrumCommand(CLI::App& app) {
     cmd->add_flag("--rgb", a->rgb,
                   "Also print what RGB mode uses: F0/F82 (metals), the d-line ior (glasses), "
                   "the colour (illuminants)");
-    cmd->add_option("--plot", a->plot, "Write a PNG plot of the curve(s)");
+    cmd->add_option("--plot", a->plot, "Write an SVG plot of the curve(s)");
     cmd->callback([a] { run(*a); });
 }
 

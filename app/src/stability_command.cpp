@@ -2,6 +2,7 @@
 // float and double, and firefly statistics of stiff scenes (experiments/stability.h).
 #include <CLI/CLI.hpp>
 
+#include "interruption.h"
 #include "lamina/experiments/stability.h"
 #include "option_parsing.h"
 
@@ -29,8 +30,10 @@ void registerStabilityCommand(CLI::App& app) {
     cmd->callback([a, output] {
         a->progress = experiments::printToStderr;
         experiments::Report report(*output);
-        experiments::writeStabilityReport(experiments::runStability(*a), report);
-        report.finish();
+        runInterruptible("stability", [&] {
+            experiments::writeStabilityReport(experiments::runStability(*a), report);
+            report.finish();
+        });
     });
 }
 

@@ -63,10 +63,8 @@ FresnelChoice readFresnel(const JsonReader& r, FresnelChoice defaultValue, bool 
     static constexpr auto kWithoutAuto = kFresnelChoiceNames.subset(std::array{
         FresnelChoice::Schlick, FresnelChoice::SchlickShadowed,
         FresnelChoice::SchlickSphericalGaussian, FresnelChoice::F82, FresnelChoice::Exact});
-    const FresnelChoice f = r.choice("fresnel", defaultValue, kFresnelChoiceNames);
-    if (f == FresnelChoice::Auto && !allowAuto)
-        r.failAt("fresnel", "expected one of " + kWithoutAuto.list());
-    return f;
+    return allowAuto ? r.choice("fresnel", defaultValue, kFresnelChoiceNames)
+                     : r.choice("fresnel", defaultValue, kWithoutAuto);
 }
 
 std::string knownNames(const std::vector<std::string>& names) {

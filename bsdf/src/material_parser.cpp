@@ -49,6 +49,7 @@ std::vector<std::string> materialTypeNames() {
 MaterialDesc parseMaterial(const JsonReader& r) {
     r.expectObject();
     MaterialDesc desc;
+    r.noteNames("type", materialTypeNames());
     desc.type = r.requiredString("type");
     const auto type = std::find_if(std::begin(kMaterialTypes), std::end(kMaterialTypes),
                                    [&](const MaterialType& t) { return t.name == desc.type; });

@@ -36,6 +36,9 @@ std::string knownNames(const std::vector<std::string>& names);
 template <typename E, std::size_t N>
 std::optional<E> choiceOrNone(const JsonReader& r, const std::string& key,
                               std::optional<E> defaultValue, const NameTable<E, N>& table) {
+    std::vector<std::string> names = table.names();
+    names.emplace_back("none");
+    r.noteNames(key, std::move(names));
     if (!r.has(key)) return defaultValue;
     const std::string s = r.string(key, "");
     if (s == "none") return std::nullopt;

@@ -117,15 +117,24 @@ void JsonReader::expectObject() const {
     if (!value_.is_object()) fail("expected a JSON object, got " + typeName(value_));
 }
 
-const Json* JsonReader::find(const std::string& key) const {
+void JsonReader::noteKey(const std::string& key) const {
     used_.insert(key);  // every key asked for is a known one, present or not
+    if (source_.keyLog) source_.keyLog->keys.push_back({path_, key, {}});
+}
+
+void JsonReader::noteNames(const std::string& key, std::vector<std::string> names) const {
+    if (source_.keyLog) source_.keyLog->keys.push_back({path_, key, std::move(names)});
+}
+
+const Json* JsonReader::find(const std::string& key) const {
+    noteKey(key);
     if (!value_.is_object()) return nullptr;
     const auto it = value_.find(key);
     return it == value_.end() ? nullptr : &*it;
 }
 
 bool JsonReader::has(const std::string& key) const {
-    used_.insert(key);
+    noteKey(key);
     return value_.is_object() && value_.contains(key);
 }
 

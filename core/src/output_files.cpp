@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <climits>
 #include <cstring>
+#include <fstream>
 #include <string>
 #include <system_error>
 
@@ -133,6 +134,17 @@ void TemporaryFile::commit() {
     fs::rename(temporary_, final_, ec);
     if (ec) throw InputError(final_.string() + ": cannot write: " + ec.message());
     temporary_.clear();
+}
+
+void writeTextFile(const fs::path& path, std::string_view text) {
+    TemporaryFile tmp(path);
+    {
+        std::ofstream out(tmp.path(), std::ios::binary);
+        out.write(text.data(), std::streamsize(text.size()));
+        out.flush();
+        if (!out) throw InputError(path.string() + ": cannot write");
+    }
+    tmp.commit();
 }
 
 void removeTemporaryFilesNow() noexcept {

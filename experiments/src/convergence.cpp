@@ -1,4 +1,5 @@
 #include "lamina/experiments/convergence.h"
+#include "lamina/experiments/interrupted.h"
 
 #include <algorithm>
 #include <cmath>
@@ -111,7 +112,7 @@ ConvergenceResult runConvergence(const ConvergenceInputs& in) {
                      std::string(render::kRenderModeNames.name(m)).c_str(),
                      std::string(render::kIntegratorNames.name(in.referenceIntegrator)).c_str(),
                      refSeconds));
-            render::RenderResult r = render::renderScene(scene, o);
+            render::RenderResult r = renderWhole(scene, o);
             references[m] = filmImage(*r.film);
             render::ImageMetadata meta = render::renderMetadata(scene, o, r, in.build);
             result.references.push_back({m, std::move(r), std::move(meta)});
@@ -130,7 +131,7 @@ ConvergenceResult runConvergence(const ConvergenceInputs& in) {
                             std::string(render::kIntegratorNames.name(i)).c_str(),
                             std::string(render::kRenderModeNames.name(m)).c_str(), in.seconds));
             const render::RenderResult r =
-                render::renderScene(scene, o, [&](const render::RenderProgress& p) {
+                renderWhole(scene, o, [&](const render::RenderProgress& p) {
                     log.record(p.seconds, p.sppDone, *p.film);
                 });
             result.curves.push_back({i, m, std::move(log), double(r.paths) / r.seconds, r.spp});

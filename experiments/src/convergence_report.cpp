@@ -62,7 +62,7 @@ void writeCsv(const ConvergenceResult& result, const Report& report) {
 void writePlot(const ConvergenceResult& result, const Report& report) {
     const ConvergenceInputs& in = result.inputs;
     SvgPlot plot("relMSE against render time: " + std::filesystem::path(in.scene).stem().string(),
-                 "seconds", "relMSE (epsilon 1e-2)");
+                 "render time (seconds)", "relMSE (epsilon 1e-2)");
     plot.setLogX(true);
     plot.setLogY(true);
     for (const ConvergenceCurve& c : result.curves) {

@@ -1,4 +1,5 @@
 #include "lamina/experiments/estimator_agreement.h"
+#include "lamina/experiments/interrupted.h"
 
 #include <algorithm>
 #include <cmath>
@@ -211,7 +212,7 @@ BatchImages renderBatches(const render::SceneDesc& scene, render::RenderOptions 
     options.spp = std::max(1, spp / batches);
     for (int k = 0; k < batches; ++k) {
         options.seed = hashValues({base, std::uint64_t(k), 0x6261746368ull}) & 0x7fffffffull;
-        const render::RenderResult r = render::renderScene(scene, options);
+        const render::RenderResult r = renderWhole(scene, options);
         images.add(*r.film);
         if (onBatch) onBatch(k);
     }

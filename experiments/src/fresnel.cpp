@@ -1,4 +1,5 @@
 #include "lamina/experiments/fresnel.h"
+#include "lamina/experiments/interrupted.h"
 
 #include <cmath>
 
@@ -114,10 +115,10 @@ FresnelSceneComparison compareModes(const std::string& scenePath, int spp,
     tell(progress, "rendering " + scenePath + " in RGB mode...\n");
     FresnelSceneComparison c;
     c.scene = scenePath;
-    c.rgb = render::renderScene(scene, o);
+    c.rgb = renderWhole(scene, o);
     o.mode = render::RenderModeKind::Spectral;
     tell(progress, "rendering " + scenePath + " in spectral mode...\n");
-    c.spectral = render::renderScene(scene, o);
+    c.spectral = renderWhole(scene, o);
     const render::RgbImage a = filmImage(*c.rgb.film), b = filmImage(*c.spectral.film);
     c.metrics = compareImages(a, b);
     c.ciede2000.resize(std::size_t(a.width) * a.height);

@@ -1,5 +1,5 @@
 // The report of `lamina fresnel`: per material MATERIAL.csv, MATERIAL_spectral.csv,
-// MATERIAL.svg and MATERIAL_swatches.png; with a scene, its renders and difference maps; and
+// MATERIAL.svg and MATERIAL_swatches.svg; with a scene, its renders and difference maps; and
 // summary.md.
 #include <cmath>
 #include <sstream>
@@ -7,6 +7,7 @@
 #include "lamina/experiments/fresnel.h"
 #include "lamina/experiments/svg_heat_map.h"
 #include "lamina/experiments/svg_plot.h"
+#include "lamina/experiments/svg_swatches.h"
 #include "lamina/experiments/text_format.h"
 #include "lamina/render/image_output.h"
 #include "lamina/spectral/color_space.h"
@@ -78,28 +79,24 @@ void writePlot(const FresnelMaterial& m, const Report& report) {
     report.writeFigure(m.stem + ".svg", plot);
 }
 
-/// Rows: the models; columns: a few angles; sRGB-encoded.
+/// Rows: the models (the exact spectral reflectance's colour, and the RGB-mode models built
+/// from it); columns: a few angles of incidence.
 void writeSwatches(const FresnelMaterial& m, const Report& report) {
     const int angles[] = {0, 30, 60, 75, 82, 87};
-    constexpr int kSwatch = 40;
-    const int w = kSwatch * int(std::size(angles)), h = kSwatch * int(m.models.size());
-    std::vector<float> px(std::size_t(w) * h * 3);
-    for (std::size_t row = 0; row < m.models.size(); ++row)
-        for (std::size_t col = 0; col < std::size(angles); ++col) {
-            const Rgb<double>& c = m.models[row].rgb[std::size_t(angles[col])];
-            for (int y = 0; y < kSwatch; ++y)
-                for (int x = 0; x < kSwatch; ++x)
-                    for (int ch = 0; ch < 3; ++ch) {
-                        const double l = std::clamp(c[ch], 0.0, 1.0);
-                        const double e =
-                            l <= 0.0031308 ? 12.92 * l : 1.055 * std::pow(l, 1 / 2.4) - 0.055;
-                        px[((std::size_t(row) * kSwatch + std::size_t(y)) * std::size_t(w) +
-                            col * kSwatch + std::size_t(x)) *
-                               3 +
-                           std::size_t(ch)] = float(e);
-                    }
-        }
-    render::writeRgb8(report.file(m.stem + "_swatches.png"), w, h, px);
+    SvgSwatches s;
+    s.title = "Fresnel reflectance of " + m.name + " seen as a colour (" + m.stem +
+              ", under D65, sRGB display)";
+    s.xLabel = "angle of incidence (degrees)";
+    s.yLabel = "model";
+    for (int a : angles)
+        s.columns.push_back(std::to_string(a));
+    for (std::size_t row = 0; row < m.models.size(); ++row) {
+        // The first model is the exact spectral curve (its colour); the others are RGB mode's.
+        s.rows.push_back(row == 0 ? m.models[row].name : m.models[row].name + " (RGB mode)");
+        for (int a : angles)
+            s.colours.push_back(m.models[row].rgb[std::size_t(a)]);
+    }
+    s.write(report.file(m.stem + "_swatches.svg"));
 }
 
 std::string table(const FresnelMaterial& m) {
@@ -113,7 +110,7 @@ std::string table(const FresnelMaterial& m) {
                          model.meanError, model.maxDeltaE, model.meanDeltaE);
     }
     md << "\n![" << m.stem << " reflectance](" << m.stem << ".svg)\n\n![" << m.stem << " swatches]("
-       << m.stem << "_swatches.png)\n\n";
+       << m.stem << "_swatches.svg)\n\n";
     return md.str();
 }
 

@@ -1,8 +1,5 @@
 #include "lamina/experiments/report.h"
 
-#include <fstream>
-
-#include "lamina/core/error.h"
 #include "lamina/core/output_files.h"
 #include "lamina/experiments/progress.h"
 #include "lamina/experiments/svg_plot.h"
@@ -28,10 +25,7 @@ void Report::print(std::string_view text) const {
 }
 
 void Report::writeText(const std::string& name, std::string_view text) const {
-    const std::filesystem::path path = file(name);
-    std::ofstream out(path);
-    out << text;
-    if (!out) throw InputError(path.string() + ": cannot write");
+    writeTextFile(file(name), text);
 }
 
 void Report::writeTable(const std::string& name, std::string_view csv,

@@ -1,4 +1,5 @@
 #include "lamina/experiments/stability.h"
+#include "lamina/experiments/interrupted.h"
 
 #include <nlohmann/json.hpp>
 
@@ -61,7 +62,7 @@ StiffSceneRender renderStiffScene(const std::string& path, int spp) {
     const render::SceneDesc scene = render::loadScene(path);
     render::RenderOptions o;
     o.spp = spp;
-    const render::RenderResult r = render::renderScene(scene, o);
+    const render::RenderResult r = renderWhole(scene, o);
     double mean = 0;
     for (int y = 0; y < r.film->height(); ++y)
         for (int x = 0; x < r.film->width(); ++x)
@@ -77,6 +78,7 @@ StabilityResult runStability(const StabilityInputs& in) {
     const std::vector<std::string>& materials =
         in.materials.empty() ? defaultStabilityMaterials() : in.materials;
     for (const std::string& json : materials) {
+        stopIfInterrupted();
         result.models.push_back({json, audit(json, in.samples)});
         tell(in.progress, "audited " + json + "\n");
     }

@@ -4,6 +4,7 @@
 
 #include "lamina/core/pcg32.h"
 #include "lamina/core/warp.h"
+#include "lamina/experiments/interrupted.h"
 
 namespace lamina::experiments {
 
@@ -34,6 +35,7 @@ StabilityReport auditStability(const StabilityModel& model, std::vector<double> 
     report.cosines = std::move(cosines);
     report.cells.resize(report.alphas.size() * report.cosines.size());
     for (std::size_t ai = 0; ai < report.alphas.size(); ++ai) {
+        stopIfInterrupted();  // a row of the sweep takes a while
         const auto d = model.makeDouble(report.alphas[ai]);
         const auto f = model.makeFloat(report.alphas[ai]);
         for (std::size_t ci = 0; ci < report.cosines.size(); ++ci) {

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 
-#include "lamina/core/error.h"
+#include "lamina/core/output_files.h"
 #include "lamina/render/image_output.h"
+#include "svg_text.h"
 
 namespace lamina::experiments {
 
@@ -17,13 +17,6 @@ constexpr double kMapSize = 400;  // the longer side of the map, in SVG units
 // Maps with more cells than this (images rather than parameter grids) are drawn from a PNG.
 constexpr std::size_t kMaxVectorCells = 64 * 64;
 constexpr double kLeft = 90, kTop = 40, kBottom = 60, kBarWidth = 18, kBarGap = 24;
-
-std::string escape(const std::string& s) {
-    std::string out;
-    for (char c : s)
-        out += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : std::string(1, c);
-    return out;
-}
 
 std::string number(double v) {
     if (std::abs(v) < 1e-12) v = 0;
@@ -102,8 +95,10 @@ void SvgHeatMap::write(const std::filesystem::path& path,
     const double cell = kMapSize / std::max(width_, height_);
     const double mapW = cell * width_, mapH = cell * height_;
     const double x0 = kLeft, y0 = kTop, barX = x0 + mapW + kBarGap;
-    // The bar's numbers (at most "-0.000123") and its rotated label fit in 80 units.
-    const double totalW = barX + kBarWidth + 80;
+    // The bar's numbers (at most "-0.000123") and its rotated label fit in 80 units; a long
+    // title (about 8 units per character at 14 units) widens the figure.
+    const double barEnd = barX + kBarWidth + 80;
+    const double totalW = std::max(barEnd, 8.0 * double(title_.size()) + 20);
     const double totalH = y0 + mapH + kBottom;
     std::ostringstream svg;
     svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" "
@@ -111,7 +106,7 @@ void SvgHeatMap::write(const std::filesystem::path& path,
         << totalW << "\" height=\"" << totalH << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
         << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
         << "<text x=\"" << totalW / 2 << "\" y=\"22\" text-anchor=\"middle\" font-size=\"14\">"
-        << escape(title_) << "</text>\n";
+        << svgEscape(title_) << "</text>\n";
     if (png || std::size_t(width_) * std::size_t(height_) > kMaxVectorCells) {
         // The map as a PNG (same colours, one pixel per cell) that the figure shows: an
         // image-sized map as vector cells would take megabytes.
@@ -119,8 +114,8 @@ void SvgHeatMap::write(const std::filesystem::path& path,
             png ? *png : std::filesystem::path(path).replace_extension(".png");
         writePng(raster);
         const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-        const std::string href =
-            escape(raster.parent_path() == parent ? raster.filename().string() : raster.string());
+        const std::string href = svgEscape(
+            raster.parent_path() == parent ? raster.filename().string() : raster.string());
         svg << "<image x=\"" << x0 << "\" y=\"" << y0 << "\" width=\"" << mapW << "\" height=\""
             << mapH << "\" preserveAspectRatio=\"none\" style=\"image-rendering:pixelated\" href=\""
             << href << "\" xlink:href=\"" << href << "\"/>\n";
@@ -169,15 +164,15 @@ void SvgHeatMap::write(const std::filesystem::path& path,
     for (const auto& [px, text] : ticks(x_, width_, true))
         svg << "<line x1=\"" << px << "\" y1=\"" << y0 + mapH << "\" x2=\"" << px << "\" y2=\""
             << y0 + mapH + 5 << "\" stroke=\"black\"/>\n<text x=\"" << px << "\" y=\""
-            << y0 + mapH + 18 << "\" text-anchor=\"middle\">" << escape(text) << "</text>\n";
+            << y0 + mapH + 18 << "\" text-anchor=\"middle\">" << svgEscape(text) << "</text>\n";
     for (const auto& [py, text] : ticks(y_, height_, false))
         svg << "<line x1=\"" << x0 - 5 << "\" y1=\"" << py << "\" x2=\"" << x0 << "\" y2=\"" << py
             << "\" stroke=\"black\"/>\n<text x=\"" << x0 - 8 << "\" y=\"" << py + 4
-            << "\" text-anchor=\"end\">" << escape(text) << "</text>\n";
+            << "\" text-anchor=\"end\">" << svgEscape(text) << "</text>\n";
     svg << "<text x=\"" << x0 + mapW / 2 << "\" y=\"" << y0 + mapH + 40
-        << "\" text-anchor=\"middle\">" << escape(x_.label) << "</text>\n"
+        << "\" text-anchor=\"middle\">" << svgEscape(x_.label) << "</text>\n"
         << "<text transform=\"translate(18," << y0 + mapH / 2
-        << ") rotate(-90)\" text-anchor=\"middle\">" << escape(y_.label) << "</text>\n";
+        << ") rotate(-90)\" text-anchor=\"middle\">" << svgEscape(y_.label) << "</text>\n";
     // The colour bar: hi at the top, with its numbers and its label.
     constexpr int kSteps = 64;
     const double lo = palette_ == Palette::Diverging ? -hi_ : lo_;
@@ -196,12 +191,10 @@ void SvgHeatMap::write(const std::filesystem::path& path,
             << barX + kBarWidth + 4 << "\" y2=\"" << py << "\" stroke=\"black\"/>\n<text x=\""
             << barX + kBarWidth + 7 << "\" y=\"" << py + 4 << "\">" << number(v) << "</text>\n";
     }
-    svg << "<text transform=\"translate(" << totalW - 10 << "," << y0 + mapH / 2
-        << ") rotate(-90)\" text-anchor=\"middle\">" << escape(scaleLabel_) << "</text>\n"
+    svg << "<text transform=\"translate(" << barEnd - 10 << "," << y0 + mapH / 2
+        << ") rotate(-90)\" text-anchor=\"middle\">" << svgEscape(scaleLabel_) << "</text>\n"
         << "</svg>\n";
-    std::ofstream out(path);
-    out << svg.str();
-    if (!out) throw InputError(path.string() + ": cannot write");
+    writeTextFile(path, svg.str());
 }
 
 }  // namespace lamina::experiments

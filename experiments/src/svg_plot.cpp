@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <limits>
 #include <sstream>
 
-#include "lamina/core/error.h"
+#include "lamina/core/output_files.h"
+#include "svg_text.h"
 
 namespace lamina::experiments {
 
@@ -18,24 +18,11 @@ constexpr double kLeft = 80, kTop = 40, kBottom = 60;
 // The legend right of the plot: a 30-unit line sample, then the name at about 7 units per
 // character of the 12-unit font, so that no name is cut.
 constexpr double kLegendSample = 42, kCharWidth = 7.2;
+// About 8 units per character of the 14-unit title font.
+constexpr double kTitleCharWidth = 8.0;
 // A qualitative palette that stays distinguishable in print (Okabe and Ito 2008).
 constexpr const char* kColors[] = {"#0072B2", "#D55E00", "#009E73", "#CC79A7",
                                    "#E69F00", "#56B4E9", "#F0E442", "#000000"};
-
-std::string escape(const std::string& s) {
-    std::string out;
-    for (char c : s) {
-        if (c == '<')
-            out += "&lt;";
-        else if (c == '>')
-            out += "&gt;";
-        else if (c == '&')
-            out += "&amp;";
-        else
-            out += c;
-    }
-    return out;
-}
 
 struct Axis {
     bool log;
@@ -102,16 +89,20 @@ void SvgPlot::write(const std::filesystem::path& path) const {
     std::size_t longest = 0;
     for (const Series& s : series_)
         longest = std::max(longest, s.name.size());
-    const double width =
-        kLeft + kPlotWidth + std::max(120.0, kLegendSample + 20 + kCharWidth * double(longest));
+    // The title is centred over the plot unless it is wider: then the figure widens for it.
+    const double titleHalf = 0.5 * kTitleCharWidth * double(title_.size());
+    const double titleX = std::max(kLeft + kPlotWidth / 2, titleHalf + 10);
+    const double width = std::max(
+        kLeft + kPlotWidth + std::max(120.0, kLegendSample + 20 + kCharWidth * double(longest)),
+        titleX + titleHalf + 10);
     const double x0 = kLeft, x1 = kLeft + kPlotWidth, y0 = kHeight - kBottom, y1 = kTop;
 
     std::ostringstream svg;
     svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\""
         << kHeight << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
         << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-        << "<text x=\"" << (x0 + x1) / 2 << "\" y=\"22\" text-anchor=\"middle\" font-size=\"14\">"
-        << escape(title_) << "</text>\n";
+        << "<text x=\"" << titleX << "\" y=\"22\" text-anchor=\"middle\" font-size=\"14\">"
+        << svgEscape(title_) << "</text>\n";
     for (double t : ax.ticks()) {
         const double x = ax.map(t, x0, x1);
         svg << "<line x1=\"" << x << "\" y1=\"" << y0 << "\" x2=\"" << x << "\" y2=\"" << y1
@@ -127,9 +118,9 @@ void SvgPlot::write(const std::filesystem::path& path) const {
     svg << "<rect x=\"" << x0 << "\" y=\"" << y1 << "\" width=\"" << x1 - x0 << "\" height=\""
         << y0 - y1 << "\" fill=\"none\" stroke=\"black\"/>\n"
         << "<text x=\"" << (x0 + x1) / 2 << "\" y=\"" << kHeight - 18
-        << "\" text-anchor=\"middle\">" << escape(xLabel_) << "</text>\n"
+        << "\" text-anchor=\"middle\">" << svgEscape(xLabel_) << "</text>\n"
         << "<text transform=\"translate(20," << (y0 + y1) / 2
-        << ") rotate(-90)\" text-anchor=\"middle\">" << escape(yLabel_) << "</text>\n";
+        << ") rotate(-90)\" text-anchor=\"middle\">" << svgEscape(yLabel_) << "</text>\n";
     for (std::size_t k = 0; k < series_.size(); ++k) {
         const Series& s = series_[k];
         const char* color = kColors[k % std::size(kColors)];
@@ -149,12 +140,10 @@ void SvgPlot::write(const std::filesystem::path& path) const {
         svg << "<line x1=\"" << x1 + 12 << "\" y1=\"" << ly - 4 << "\" x2=\"" << x1 + 36
             << "\" y2=\"" << ly - 4 << "\" stroke=\"" << color << "\" stroke-width=\"2\""
             << (s.dashed ? " stroke-dasharray=\"6,4\"" : "") << "/>\n<text x=\"" << x1 + 42
-            << "\" y=\"" << ly << "\">" << escape(s.name) << "</text>\n";
+            << "\" y=\"" << ly << "\">" << svgEscape(s.name) << "</text>\n";
     }
     svg << "</svg>\n";
-    std::ofstream out(path);
-    out << svg.str();
-    if (!out) throw InputError(path.string() + ": cannot write");
+    writeTextFile(path, svg.str());
 }
 
 }  // namespace lamina::experiments

@@ -124,7 +124,7 @@ TEST_F(ExperimentCli, FresnelExactCurveIsTheBsdfsConductorFresnel) {
     const CommandRun r = runLamina("fresnel Au bk7 -o " + dir_.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("Hoffman F82"), std::string::npos);
-    for (const char* f : {"Au.csv", "Au.svg", "Au_swatches.png", "bk7_spectral.csv", "summary.md"})
+    for (const char* f : {"Au.csv", "Au.svg", "Au_swatches.svg", "bk7_spectral.csv", "summary.md"})
         EXPECT_TRUE(fs::exists(dir_ / f)) << f;
     const auto rows = readCsv(dir_ / "Au_spectral.csv");  // degrees, 380, 400, ..., 780 nm
     ASSERT_EQ(rows.size(), 91u);

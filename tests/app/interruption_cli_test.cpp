@@ -1,7 +1,8 @@
 // Ctrl-C and SIGTERM lose no work (issue 14, "Lost work"): the first signal finishes the pass
 // in flight and writes the image, marked lamina:partial 1, and lamina exits with 128 + the
 // signal (130 for SIGINT); a signal that arrives while the EXR is being written lets the write
-// finish; no temporary file is ever left behind.
+// finish; no temporary file is ever left behind. The experiment commands stop before their
+// report and write nothing (their results would be incomplete), with the same exit status.
 #include <fcntl.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -140,6 +141,34 @@ TEST_F(Interruption, ASecondSignalEndsAtOnceAndLeavesNoTemporary) {
         EXPECT_EQ(WEXITSTATUS(status), 130);
     }
     EXPECT_FALSE(temporaryPresent());
+}
+
+// The experiment commands: the first signal lets the render in flight finish its pass, then
+// stops the experiment before its report (half a computation gives misleading numbers), so
+// nothing is written, no temporary stays, and lamina exits with 128 + the signal.
+TEST_F(Interruption, CtrlCDuringConvergenceStopsWithoutAReportAndExits130) {
+    const auto s = write("scene.json", scene(32, 32));
+    const auto report = dir_ / "report";
+    const pid_t pid = start({"convergence", s, "-o", report.string(), "--integrators", "path",
+                             "--modes", "rgb", "--time", "30", "--reference-time", "60"});
+    std::this_thread::sleep_for(1500ms);
+    ::kill(pid, SIGINT);
+    EXPECT_EQ(wait(pid), 130) << stderrText();
+    EXPECT_THAT(stderrText(), ::testing::HasSubstr("interrupted by SIGINT"));
+    EXPECT_FALSE(fs::exists(report) && !fs::is_empty(report)) << "a report was written";
+    EXPECT_FALSE(temporaryPresent());
+}
+
+TEST_F(Interruption, SigtermDuringAFresnelSceneRenderExits143WithoutAReport) {
+    const auto s = write("scene.json", scene(32, 32));
+    const auto report = dir_ / "report";
+    const pid_t pid =
+        start({"fresnel", "Au", "--scene", s, "--spp", "16000000", "-o", report.string()});
+    std::this_thread::sleep_for(1500ms);
+    ::kill(pid, SIGTERM);
+    EXPECT_EQ(wait(pid), 143) << stderrText();
+    EXPECT_THAT(stderrText(), ::testing::HasSubstr("interrupted by SIGTERM"));
+    EXPECT_FALSE(fs::exists(report) && !fs::is_empty(report)) << "a report was written";
 }
 
 }  // namespace

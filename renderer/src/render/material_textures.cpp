@@ -9,6 +9,7 @@ namespace lamina::render {
 
 std::shared_ptr<const Texture> readTexture(const JsonReader& t) {
     t.expectObject();
+    t.noteNames("type", kTextureKindNames.names());
     const std::string type = t.requiredString("type");
     Vec2<float> scale(1.0f);
     if (t.has("scale")) {

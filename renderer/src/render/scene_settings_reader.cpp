@@ -7,6 +7,7 @@ namespace lamina::render {
 CameraDesc readCamera(const JsonReader& r) {
     r.expectObject();
     CameraDesc c;
+    r.noteNames("type", kCameraKindNames.names());
     const std::string type = r.string("type", "perspective");
     const auto kind = kCameraKindNames.find(type);
     if (!kind)

@@ -227,6 +227,7 @@ void finishMesh(const JsonReader& r, MeshDesc mesh, const Mat4& m, SceneDesc& sc
 
 void readShape(const JsonReader& r, SceneMaterials& materials, SceneDesc& scene) {
     r.expectObject();
+    r.noteNames("type", kShapeKindNames.names());
     const std::string type = r.requiredString("type");
     const std::string name = r.string("name", r.path());
     const auto kind = kShapeKindNames.find(type);

@@ -21,6 +21,18 @@ namespace lamina {
 
 using Json = nlohmann::json;
 
+/// What readers asked of a JSON document: every key, present or not, with the path of the
+/// object it was asked of, and for a key read as a name the names it accepts. The test that
+/// holds docs/scene.schema.json to the readers (tests/render/scene_schema_test.cpp) reads it.
+struct JsonKeyLog {
+    struct Key {
+        std::string objectPath;  ///< as JsonReader::path(): "shapes[2].material"
+        std::string key;
+        std::vector<std::string> names;  ///< empty unless the key is read as a name
+    };
+    std::vector<Key> keys;
+};
+
 /// Where JSON came from: the file name used in messages and the directory relative paths
 /// inside it are resolved against.
 struct JsonSource {
@@ -29,6 +41,8 @@ struct JsonSource {
     /// When set, every file a reader names (JsonReader::filePath) is appended: the scene's
     /// provenance hash covers what the scene read, not only its JSON text.
     std::vector<std::filesystem::path>* readFiles = nullptr;
+    /// When set, every key a reader asks for is appended (JsonKeyLog).
+    JsonKeyLog* keyLog = nullptr;
 };
 
 /// The deepest nesting of arrays and objects a JSON input may have (scenes need about 6).
@@ -102,9 +116,13 @@ class JsonReader {
     template <std::size_t N>
     std::array<double, N> requiredArray(const std::string& key, Range range = Range::any()) const;
 
+    /// Records in the key log (if any) that `key` is read as one of `names`.
+    void noteNames(const std::string& key, std::vector<std::string> names) const;
+
     /// One of the names of an enumeration's table (name_table.h).
     template <typename E, std::size_t N>
     E choice(const std::string& key, E defaultValue, const NameTable<E, N>& names) const {
+        noteNames(key, names.names());
         if (!has(key)) return defaultValue;
         const std::string s = string(key, "");
         if (const auto e = names.find(s)) return *e;
@@ -124,6 +142,7 @@ class JsonReader {
 
   private:
     const Json* find(const std::string& key) const;
+    void noteKey(const std::string& key) const;
 
     const Json& value_;
     std::string path_;

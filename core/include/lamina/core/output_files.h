@@ -6,6 +6,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string_view>
 #include <vector>
 
 namespace lamina {
@@ -39,6 +40,10 @@ class TemporaryFile {
     std::filesystem::path final_, temporary_;
     int slot_ = -1;  // its entry for removeTemporaryFilesNow, -1 if none was free
 };
+
+/// Writes `text` to `path` through a TemporaryFile: the file is complete or not there at all.
+/// InputError naming `path` if it cannot be written.
+void writeTextFile(const std::filesystem::path& path, std::string_view text);
 
 /// Removes the temporaries of every write in progress. Async-signal-safe: for a signal
 /// handler that is about to end the process.

@@ -1,0 +1,27 @@
+// Experiments stopped by SIGINT or SIGTERM (render::renderInterruptFlag, raised by the command
+// line's handler). An experiment's results are whole or not at all: a render cut short, or a
+// sweep stopped half-way, would give numbers that mislead (a reference with too few samples, a
+// verdict on half the batches). So the render in flight finishes its pass, and the experiment
+// throws Interrupted from its next check instead of returning; the caller writes no report.
+#pragma once
+
+#include <functional>
+#include <stdexcept>
+
+#include "lamina/render/renderer.h"
+
+namespace lamina::experiments {
+
+struct Interrupted : std::runtime_error {
+    Interrupted() : std::runtime_error("the experiment was interrupted") {}
+};
+
+/// Throws Interrupted if the interrupt flag is raised.
+void stopIfInterrupted();
+
+/// render::renderScene for an experiment: Interrupted instead of a render cut short.
+render::RenderResult renderWhole(
+    const render::SceneDesc& scene, const render::RenderOptions& options,
+    const std::function<void(const render::RenderProgress&)>& progress = {});
+
+}  // namespace lamina::experiments
