@@ -51,9 +51,12 @@ float LightBounds::importance(const Vec3f& p, const Vec3f& n) const {
     const float cosThetaP = cosOfClampedDifference(cosX, sinX, cosU, sinU);
     if (cosThetaP <= cosThetaE) return 0.0f;
 
-    // The distance is the centre's, but no less than the bounding radius: inside the box the
-    // centre's distance says little, and a point on a light would weigh infinitely.
-    float value = intensity * cosThetaP / std::max({d2, r2, std::numeric_limits<float>::min()});
+    // The distance is the centre's, but no less than half the bounding radius: near the
+    // centre of a cluster its distance says little, and a point on a light would weigh
+    // infinitely. (A bound of the whole radius, measured on scenes/many-lights.json, gives
+    // 4x the variance: it makes every cluster around the point look equally far.)
+    float value =
+        intensity * cosThetaP / std::max({d2, 0.25f * r2, std::numeric_limits<float>::min()});
     if (n != Vec3f(0.0f)) {
         // The receiver's cosine, |cos| so that transmission is not culled, at the smallest
         // angle a direction into the bounding sphere can make with n.

@@ -130,33 +130,29 @@ int LightBvh::build(std::vector<Entry>& lights, std::size_t begin, std::size_t e
     return index;
 }
 
-std::optional<float> LightBvh::leftProbability(const Node& node, const Vec3f& p,
-                                               const Vec3f& n) const {
+float LightBvh::leftProbability(const Node& node, const Vec3f& p, const Vec3f& n) const {
     const double l = nodes_[std::size_t(node.left)].bounds.importance(p, n);
     const double r = nodes_[std::size_t(node.right)].bounds.importance(p, n);
-    if (!(l + r > 0.0)) return std::nullopt;
+    // Neither child can send light to p although the node's looser bounds allowed it: halves,
+    // so that the probabilities still sum to 1 (the lights reached contribute nothing).
+    if (!(l + r > 0.0)) return 0.5f;
     return float(l / (l + r));
 }
 
 std::optional<LightChoice> LightBvh::choose(const Vec3f& p, const Vec3f& n, float u) const {
     if (nodes_.empty()) return std::nullopt;
     const Node* node = &nodes_.front();
-    if (node->leaf()) {
-        if (!(node->bounds.importance(p, n) > 0.0f)) return std::nullopt;
-        return LightChoice{node->light, 1.0f};
-    }
     float probability = 1.0f;
     while (!node->leaf()) {
-        const auto pLeft = leftProbability(*node, p, n);
-        if (!pLeft) return std::nullopt;
+        const float pLeft = leftProbability(*node, p, n);
         // u is reused below: rescaled to [0, 1) within the part of it that chose the child.
-        if (u < *pLeft) {
-            u = std::min(u / *pLeft, kOneMinusEpsilon<float>);
-            probability *= *pLeft;
+        if (u < pLeft) {
+            u = std::min(u / pLeft, kOneMinusEpsilon<float>);
+            probability *= pLeft;
             node = &nodes_[std::size_t(node->left)];
         } else {
-            u = std::min((u - *pLeft) / (1.0f - *pLeft), kOneMinusEpsilon<float>);
-            probability *= 1.0f - *pLeft;
+            u = std::min((u - pLeft) / (1.0f - pLeft), kOneMinusEpsilon<float>);
+            probability *= 1.0f - pLeft;
             node = &nodes_[std::size_t(node->right)];
         }
     }
@@ -170,13 +166,11 @@ float LightBvh::probability(std::size_t light, const Vec3f& p, const Vec3f& n) c
     int length = 0;
     for (int i = leafOf_[light]; i >= 0; i = nodes_[std::size_t(i)].parent)
         trail[std::size_t(length++)] = i;
-    if (length == 1) return nodes_.front().bounds.importance(p, n) > 0.0f ? 1.0f : 0.0f;
     float probability = 1.0f;
     for (int k = length - 1; k >= 1; --k) {
         const Node& node = nodes_[std::size_t(trail[std::size_t(k)])];
-        const auto pLeft = leftProbability(node, p, n);
-        if (!pLeft) return 0.0f;
-        probability *= trail[std::size_t(k - 1)] == node.left ? *pLeft : 1.0f - *pLeft;
+        const float pLeft = leftProbability(node, p, n);
+        probability *= trail[std::size_t(k - 1)] == node.left ? pLeft : 1.0f - pLeft;
     }
     return probability;
 }

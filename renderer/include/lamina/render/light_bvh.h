@@ -37,7 +37,9 @@ class LightBvh {
 
     bool empty() const { return nodes_.empty(); }
     /// Picks a light for point `p` with surface normal `n` (the zero vector: none); nullopt
-    /// when no light of the tree can send light to p.
+    /// only for an empty tree. A light that cannot send light to p has probability 0 unless
+    /// its cluster's bounds could and none of the cluster's parts can (then the parts are
+    /// taken half and half), so the probabilities always sum to 1.
     std::optional<LightChoice> choose(const Vec3f& p, const Vec3f& n, float u) const;
     /// The probability that choose(p, n, u) returns `light` for a uniform u (0 for a light
     /// that is not in the tree).
@@ -57,9 +59,9 @@ class LightBvh {
     /// Builds the subtree of lights [begin, end) at `depth` under `parent`; returns its node.
     int build(std::vector<Entry>& lights, std::size_t begin, std::size_t end, int parent,
               int depth);
-    /// The probability of taking the left child of interior node `node` at (p, n); nullopt
-    /// when neither child can send light to p.
-    std::optional<float> leftProbability(const Node& node, const Vec3f& p, const Vec3f& n) const;
+    /// The probability of taking the left child of interior node `node` at (p, n), in
+    /// proportion to the children's importance (1/2 when both are 0).
+    float leftProbability(const Node& node, const Vec3f& p, const Vec3f& n) const;
 
     /// Past this depth the build splits at the median (at most 32 more levels), so that a
     /// path from a leaf to the root always fits kMaxDepth.

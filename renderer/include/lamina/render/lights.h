@@ -95,7 +95,7 @@ class LightSet {
     std::size_t size() const { return lights_.size(); }
     const Light& light(std::size_t i) const { return *lights_[i]; }
     /// Chooses a light for next-event estimation at `p` with surface normal `n` (the zero
-    /// vector: none); nullopt when no light can reach p.
+    /// vector: none); nullopt when the set is empty.
     std::optional<LightChoice> choose(const Vec3f& p, const Vec3f& n, float u) const;
     /// The probability that choose(p, n, u) returns light i for a uniform u.
     float probability(std::size_t i, const Vec3f& p, const Vec3f& n) const;
