@@ -32,6 +32,7 @@ struct RenderArgs {
     std::string reference;
     std::string errorLog;
     std::string sampler;
+    std::string lightSelection;
     int spp = 0;
     double seconds = 0;
     long long seed = -1;
@@ -129,6 +130,9 @@ void runRender(const RenderArgs& a) {
     if (a.seed >= 0) o.seed = std::uint64_t(a.seed);
     if (!a.sampler.empty())
         o.sampler = parseName(render::kSamplerNames, a.sampler, "sampler", "--sampler");
+    if (!a.lightSelection.empty())
+        o.lightSelection = parseName(render::kLightSelectionNames, a.lightSelection,
+                                     "light selection", "--light-selection");
     if (!a.integrator.empty())
         o.integrator =
             parseName(render::kIntegratorNames, a.integrator, "integrator", "--integrator");
@@ -233,6 +237,9 @@ void registerRenderCommand(CLI::App& app) {
     addMaxDepthOption(cmd, args->overrides);
     cmd->add_option("--sampler", args->sampler, "Sample generator")
         ->check(CLI::IsMember(render::kSamplerNames.names()));
+    cmd->add_option("--light-selection", args->lightSelection,
+                    "How next-event estimation picks a light (overrides the scene's)")
+        ->check(CLI::IsMember(render::kLightSelectionNames.names()));
     cmd->add_flag("--preview", args->preview, "Also write a PNG preview beside the EXR");
     cmd->add_option("--exposure", args->exposure, "Exposure of the preview in stops")
         ->capture_default_str();

@@ -103,6 +103,54 @@ double sidakCorrectedAlpha(double alpha, int testCount) {
     return 1.0 - std::pow(1.0 - alpha, 1.0 / std::max(1, testCount));
 }
 
+bool pearsonStatistic(std::size_t sampleCount, ChiSquareResult& result) {
+    // Pool cells with an expected count below 5 (Pearson's statistic is only chi-square
+    // distributed when every expected count is reasonably large).
+    const std::size_t cells = result.expected.size();
+    std::vector<std::size_t> order(cells);
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        return result.expected[a] < result.expected[b];
+    });
+    constexpr double kMinExpected = 5.0;
+    double pooledExpected = 0.0, pooledObserved = 0.0, statistic = 0.0;
+    int bins = 0;
+    for (std::size_t idx : order) {
+        const double e = result.expected[idx], o = result.observed[idx];
+        if (e == 0.0 && o > static_cast<double>(sampleCount) * 1e-5) {
+            std::ostringstream msg;
+            msg << o << " samples fell in cell " << idx << " where the density is 0";
+            result.message = msg.str();
+            return false;
+        }
+        if (e < kMinExpected) {
+            pooledExpected += e;
+            pooledObserved += o;
+        } else if (pooledExpected > 0.0 && pooledExpected < kMinExpected) {
+            // Fold a still-too-small pool into the smallest regular cell.
+            statistic += sqr(o + pooledObserved - e - pooledExpected) / (e + pooledExpected);
+            pooledExpected = pooledObserved = 0.0;
+            ++bins;
+        } else {
+            statistic += sqr(o - e) / e;
+            ++bins;
+        }
+    }
+    if (pooledExpected >= kMinExpected) {
+        statistic += sqr(pooledObserved - pooledExpected) / pooledExpected;
+        ++bins;
+    }
+    result.statistic = statistic;
+    result.degreesOfFreedom = bins - 1;
+    if (result.degreesOfFreedom < 1) {
+        result.message = "too few populated cells for a chi-square test";
+        return false;
+    }
+    result.pValue = chiSquarePValue(statistic, result.degreesOfFreedom);
+    result.passed = result.pValue >= result.alpha;
+    return true;
+}
+
 ChiSquareResult runChiSquareTest(const ChiSquareConfig& config, const ChiSquareSampler& sampler,
                                  const ChiSquarePdf& pdf) {
     ChiSquareResult result;
@@ -153,51 +201,10 @@ ChiSquareResult runChiSquareTest(const ChiSquareConfig& config, const ChiSquareS
         return result;
     }
 
-    // 3. Pool cells with an expected count below 5 (Pearson's statistic is only chi-square
-    //    distributed when every expected count is reasonably large).
-    std::vector<std::size_t> order(cells);
-    std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-        return result.expected[a] < result.expected[b];
-    });
-    constexpr double kMinExpected = 5.0;
-    double pooledExpected = 0.0, pooledObserved = 0.0, statistic = 0.0;
-    int bins = 0;
-    for (std::size_t idx : order) {
-        const double e = result.expected[idx], o = result.observed[idx];
-        if (e == 0.0 && o > static_cast<double>(config.sampleCount) * 1e-5) {
-            std::ostringstream msg;
-            msg << o << " samples fell in cell " << idx << " where the density is 0";
-            result.message = msg.str();
-            return result;
-        }
-        if (e < kMinExpected) {
-            pooledExpected += e;
-            pooledObserved += o;
-        } else if (pooledExpected > 0.0 && pooledExpected < kMinExpected) {
-            // Fold a still-too-small pool into the smallest regular cell.
-            statistic += sqr(o + pooledObserved - e - pooledExpected) / (e + pooledExpected);
-            pooledExpected = pooledObserved = 0.0;
-            ++bins;
-        } else {
-            statistic += sqr(o - e) / e;
-            ++bins;
-        }
-    }
-    if (pooledExpected >= kMinExpected) {
-        statistic += sqr(pooledObserved - pooledExpected) / pooledExpected;
-        ++bins;
-    }
-    result.statistic = statistic;
-    result.degreesOfFreedom = bins - 1;
-    if (result.degreesOfFreedom < 1) {
-        result.message = "too few populated cells for a chi-square test";
-        return result;
-    }
-    result.pValue = chiSquarePValue(statistic, result.degreesOfFreedom);
-    result.passed = result.pValue >= result.alpha;
+    // 3. Pearson's statistic over the cells.
+    if (!pearsonStatistic(config.sampleCount, result)) return result;
     std::ostringstream msg;
-    msg << "chi2 = " << statistic << " with " << result.degreesOfFreedom
+    msg << "chi2 = " << result.statistic << " with " << result.degreesOfFreedom
         << " degrees of freedom, p = " << result.pValue << " (alpha = " << result.alpha << ", "
         << (result.passed ? "accepted" : "rejected") << "), " << result.validSamples << " of "
         << config.sampleCount << " samples valid, density integral " << integral;

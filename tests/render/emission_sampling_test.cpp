@@ -43,7 +43,7 @@ const char* kLights = R"({
 TEST(EmissionSampling, ParticlesCarryEachLightsPowerWithTheReportedDensities) {
     const SceneDesc scene = testing::sceneFromText(kLights);
     Geometry geometry(scene);
-    const LightSet lights(scene, geometry, false);
+    const LightSet lights(scene, geometry, render::LightSelection::Power);
     ASSERT_EQ(lights.size(), 9u);
     constexpr int kSamples = 400000;
     for (std::size_t i = 0; i < lights.size(); ++i) {

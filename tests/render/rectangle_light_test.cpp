@@ -22,7 +22,7 @@ const char* kScene = R"({
 TEST(RectangleLight, SamplingMatchesItsDensity) {
     const auto scene = testing::sceneFromText(kScene);
     render::Geometry geometry(scene);
-    const render::LightSet lights(scene, geometry, false);
+    const render::LightSet lights(scene, geometry, render::LightSelection::Power);
     ASSERT_EQ(lights.size(), 1u);  // one light for the whole rectangle
     const render::Light& light = lights.light(0);
     const Vec3f refs[] = {{0, 0, 0}, {1.5f, -0.5f, 1.2f}, {0.2f, 0.1f, 2.6f}};
@@ -51,7 +51,7 @@ TEST(RectangleLight, FarAwayTheAreaFallbackIsUnbiased) {
     // its samples is the solid angle, A cos(theta) / d^2 to first order.
     const auto scene = testing::sceneFromText(kScene);
     render::Geometry geometry(scene);
-    const render::LightSet lights(scene, geometry, false);
+    const render::LightSet lights(scene, geometry, render::LightSelection::Power);
     const Vec3f ref(0.2f, 0.1f, -120.0f);
     Pcg32 rng(3);
     double sum = 0;

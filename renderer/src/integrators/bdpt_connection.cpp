@@ -77,7 +77,10 @@ BdptConnection<S> BdptConnector<S>::connect(const std::vector<Vertex>& lightPath
         const float uLight = sampler.get1D();
         const Vec2f uPoint = sampler.get2D();
         if (c_.lights.empty()) return result;
-        const auto [index, pmf] = c_.lights.choose(uLight);
+        const auto choice = c_.lights.choose(cv.p, cv.ns, uLight);
+        if (!choice) return result;
+        const std::size_t index = choice->index;
+        const float pmf = choice->probability;
         const Light& light = c_.lights.light(index);
         const auto ls = light.sample(cv.p, uPoint);
         if (!ls || !(ls->pdf > 0.0f) || ls->radiance.isZero()) return result;

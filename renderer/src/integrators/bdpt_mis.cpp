@@ -22,10 +22,10 @@ float BdptMisWeights<S>::pdfLight(const Vertex& v, const Vertex& next) const {
 
 template <SpectrumType S>
 float BdptMisWeights<S>::pdfLightOrigin(const Vertex& v) const {
-    if (v.infinite && v.deltaLight) return c_.lights.probability(std::size_t(v.light));
+    if (v.infinite && v.deltaLight) return c_.lights.emitterProbability(std::size_t(v.light));
     if (v.infinite) return infiniteLightDensity(-v.p);
     const Light& light = c_.lights.light(std::size_t(v.light));
-    return c_.lights.probability(std::size_t(v.light)) *
+    return c_.lights.emitterProbability(std::size_t(v.light)) *
            light.emissionPdf(v.p, v.ng, Vec3f(0.0f, 0.0f, 1.0f)).position;
 }
 
@@ -36,9 +36,18 @@ float BdptMisWeights<S>::infiniteLightDensity(const Vec3f& direction) const {
     float pdf = 0.0f;
     for (std::size_t i : c_.lights.infiniteLights())
         if (!c_.lights.light(i).isDelta())
-            pdf += c_.lights.probability(i) *
+            pdf += c_.lights.emitterProbability(i) *
                    c_.lights.light(i).emissionPdf(Vec3f(0.0f), Vec3f(0.0f), direction).direction;
     return pdf;
+}
+
+template <SpectrumType S>
+float BdptMisWeights<S>::selectionRatio(const Vertex& lightVertex, const Vertex& receiver) const {
+    // An environment vertex of a camera path does not say which light it is: the ratio is the
+    // same for all lights at infinity (LightSet).
+    const std::size_t i = lightVertex.light >= 0 ? std::size_t(lightVertex.light)
+                                                 : c_.lights.infiniteLights().front();
+    return c_.lights.probability(i, receiver.p, receiver.ns) / c_.lights.emitterProbability(i);
 }
 
 /// Density (area at `next`) with which vertex `v`, reached from `prev`, samples `next`.
@@ -109,18 +118,31 @@ float BdptMisWeights<S>::weight(const std::vector<Vertex>& lightPath, int s,
         const float r = (num != 0.0f ? num : 1.0f) / (den != 0.0f ? den : 1.0f);
         return heuristic_ == MisHeuristic::Power ? r * r : r;
     };
+    // The densities above choose the light vertex x0 as a particle does (emitterProbability);
+    // next-event estimation (s = 1) chooses it from the surface vertex x1 next to it
+    // (LightSet::probability). The term of strategy s = 1 is scaled by the ratio of the two.
+    const Vertex& x0 = s == 0 ? pt : s == 1 ? sampled : lightPath[0];
+    const Vertex* x1 = s == 0 ? ptMinus : s == 1 ? &pt : &lightPath[1];
+    float nextEvent = 1.0f;
+    if (x1 && x1->type == BdptVertexType::Surface) {
+        const float q = selectionRatio(x0, *x1);
+        nextEvent = heuristic_ == MisHeuristic::Power ? q * q : q;
+    }
     float sum = 0.0f, r = 1.0f;
     for (int i = t - 1; i > 0; --i) {
         r *= ratio(cameraD[std::size_t(i)].pdfRev, cameraD[std::size_t(i)].pdfFwd);
-        if (!cameraD[std::size_t(i)].delta && !cameraD[std::size_t(i - 1)].delta) sum += r;
+        if (!cameraD[std::size_t(i)].delta && !cameraD[std::size_t(i - 1)].delta)
+            sum += s == 0 && i == t - 1 ? r * nextEvent : r;
     }
     r = 1.0f;
     for (int i = s - 1; i >= 0; --i) {
         r *= ratio(lightD[std::size_t(i)].pdfRev, lightD[std::size_t(i)].pdfFwd);
         const bool deltaBefore = i > 0 ? lightD[std::size_t(i - 1)].delta
                                        : (freshLight ? sampled : lightPath[0]).deltaLight;
-        if (!lightD[std::size_t(i)].delta && !deltaBefore) sum += r;
+        if (!lightD[std::size_t(i)].delta && !deltaBefore) sum += i == 1 ? r * nextEvent : r;
     }
+    // Strategy s = 1 itself: every other strategy's ratio to it is over its own density.
+    if (s == 1 && nextEvent > 0.0f) sum /= nextEvent;
     return 1.0f / (1.0f + sum);
 }
 

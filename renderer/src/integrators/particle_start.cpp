@@ -11,7 +11,7 @@ std::optional<ParticleStart<S>> startParticle(const LightSet& lights, const Geom
     const float uLight = sampler.get1D();
     const Vec2f uPosition = sampler.get2D(), uDirection = sampler.get2D();
     if (lights.empty()) return std::nullopt;
-    const auto [index, pmf] = lights.choose(uLight);
+    const auto [index, pmf] = lights.chooseEmitter(uLight);
     const Light& light = lights.light(index);
     const auto e = light.sampleEmission(uPosition, uDirection);
     if (!e || !(e->pdfPosition > 0.0f) || !(e->pdfDirection > 0.0f) || e->radiance.isZero())

@@ -40,7 +40,7 @@ S PathIntegrator<S>::radiance(const Vec3f& rayOrigin, const Vec3f& rayDirection,
     float etaScale = 1.0f;
     bool specularBounce = true;
     float prevPdf = 0.0f;
-    Vec3f prevPoint(0.0f);
+    Vec3f prevPoint(0.0f), prevNormal(0.0f);  // where the last light was chosen
     Vec3f o = rayOrigin, d = rayDirection;
     for (int depth = 0;; ++depth) {
         ++stats.rays;
@@ -50,10 +50,11 @@ S PathIntegrator<S>::radiance(const Vec3f& rayOrigin, const Vec3f& rayDirection,
                 const Light& light = c_.lights.light(i);
                 const Emission Le = light.environment(-d);
                 if (Le.isZero()) continue;
-                const float w = specularBounce
-                                    ? 1.0f
-                                    : powerHeuristic(prevPdf, c_.lights.probability(i) *
-                                                                  light.environmentPdf(-d));
+                const float w =
+                    specularBounce
+                        ? 1.0f
+                        : powerHeuristic(prevPdf, c_.lights.probability(i, prevPoint, prevNormal) *
+                                                      light.environmentPdf(-d));
                 L += beta * mode_.emission(Le, path) * w;
             }
             break;
@@ -65,7 +66,8 @@ S PathIntegrator<S>::radiance(const Vec3f& rayOrigin, const Vec3f& rayDirection,
                 const float w =
                     specularBounce
                         ? 1.0f
-                        : powerHeuristic(prevPdf, c_.lights.probability(std::size_t(li)) *
+                        : powerHeuristic(prevPdf, c_.lights.probability(std::size_t(li), prevPoint,
+                                                                        prevNormal) *
                                                       light.pdf(prevPoint, *hit));
                 L += beta * mode_.emission(Le, path) * w;
             }
@@ -101,6 +103,7 @@ S PathIntegrator<S>::radiance(const Vec3f& rayOrigin, const Vec3f& rayDirection,
         specularBounce = step.sample->isSpecular();
         prevPdf = step.sample->pdf;
         prevPoint = hit->p;
+        prevNormal = hit->ns;
         o = step.next->origin;
         d = step.next->direction;
     }
@@ -111,8 +114,10 @@ template <SpectrumType S>
 S PathIntegrator<S>::directLight(const SurfaceHit& hit, const ShadingPoint& at, const Bxdf<S>& bsdf,
                                  float uLight, const Vec2f& uPoint, typename Mode::Path& path,
                                  PathStatistics& stats) const {
-    const auto [index, pmf] = c_.lights.choose(uLight);
-    const Light& light = c_.lights.light(index);
+    const auto choice = c_.lights.choose(hit.p, hit.ns, uLight);
+    if (!choice) return S(0.0f);
+    const float pmf = choice->probability;
+    const Light& light = c_.lights.light(choice->index);
     const auto ls = light.sample(hit.p, uPoint);
     if (!ls || !(ls->pdf > 0.0f) || ls->radiance.isZero()) return S(0.0f);
     if (!sidesAgree(at.frame.toWorld(at.wo), ls->wi, hit.ng, hit.ns)) return S(0.0f);

@@ -50,6 +50,22 @@ double AreaLight::power() const {
     return (twoSided_ ? 2.0 : 1.0) * kPi<double> * area_ * luminance(color_.rgbDouble());
 }
 
+float AreaLight::radianceLuminance() const {
+    return float(luminance(color_.rgbDouble()));
+}
+
+LightBounds AreaLight::flatBounds(const Vec3f& lower, const Vec3f& upper, const Vec3f& n) const {
+    LightBounds b;
+    b.lower = lower;
+    b.upper = upper;
+    b.axis = n;
+    b.cosThetaO = 1.0f;
+    b.cosThetaE = 0.0f;
+    b.intensity = radianceLuminance() * float(area_);
+    b.twoSided = twoSided_;
+    return b;
+}
+
 std::optional<EmissionSample> AreaLight::sampleEmission(const Vec2f& uPosition,
                                                         const Vec2f& uDirection) const {
     if (!(area_ > 0)) return std::nullopt;
@@ -110,6 +126,11 @@ TriangleLight::TriangleLight(const MeshDesc& mesh, std::size_t triangle)
     const Vec3d c = glm::cross(Vec3d(p1_ - p0_), Vec3d(p2_ - p0_));
     area_ = 0.5 * glm::length(c);
     n_ = Vec3f(glm::normalize(c));
+}
+
+std::optional<LightBounds> TriangleLight::bounds() const {
+    if (!(area_ > 0)) return std::nullopt;
+    return flatBounds(glm::min(p0_, glm::min(p1_, p2_)), glm::max(p0_, glm::max(p1_, p2_)), n_);
 }
 
 AreaLight::AreaPoint TriangleLight::samplePoint(const Vec2f& u) const {
@@ -174,6 +195,16 @@ float RectangleLight::pdf(const Vec3f& refF, const SurfaceHit& hit) const {
     return AreaLight::pdf(refF, hit);
 }
 
+std::optional<LightBounds> RectangleLight::bounds() const {
+    if (!(area_ > 0)) return std::nullopt;
+    const Vec3d ex = lx_ * x_, ey = ly_ * y_;
+    const Vec3d lower =
+        glm::min(glm::min(corner_, corner_ + ex), glm::min(corner_ + ey, corner_ + ex + ey));
+    const Vec3d upper =
+        glm::max(glm::max(corner_, corner_ + ex), glm::max(corner_ + ey, corner_ + ex + ey));
+    return flatBounds(Vec3f(lower), Vec3f(upper), Vec3f(n_));
+}
+
 AreaLight::AreaPoint RectangleLight::samplePoint(const Vec2f& u) const {
     return {corner_ + double(u.x) * lx_ * x_ + double(u.y) * ly_ * y_, n_};
 }
@@ -226,6 +257,16 @@ std::optional<LightSample> DiskLight::sample(const Vec3f& refF, const Vec2f& u) 
     const double dist = glm::length(d);
     const double cosL = glm::dot(disk_.normal, -d) / dist;
     return towards(ref, p, disk_.normal, dist * dist / (std::abs(cosL) * area_));
+}
+
+std::optional<LightBounds> DiskLight::bounds() const {
+    if (!(area_ > 0)) return std::nullopt;
+    // Along each axis the disk reaches r sqrt(1 - n_k^2) from its centre.
+    const Vec3d n = disk_.normal;
+    const Vec3d reach = disk_.radius * Vec3d(std::sqrt(std::max(0.0, 1.0 - n.x * n.x)),
+                                             std::sqrt(std::max(0.0, 1.0 - n.y * n.y)),
+                                             std::sqrt(std::max(0.0, 1.0 - n.z * n.z)));
+    return flatBounds(Vec3f(disk_.center - reach), Vec3f(disk_.center + reach), Vec3f(n));
 }
 
 AreaLight::AreaPoint DiskLight::samplePoint(const Vec2f& u) const {
@@ -294,6 +335,18 @@ float SphereLight::pdf(const Vec3f& refF, const SurfaceHit& hit) const {
         return float(1.0 / (2.0 * kPi<double> * sin2Max / (1.0 + cosMax)));
     }
     return AreaLight::pdf(refF, hit);
+}
+
+std::optional<LightBounds> SphereLight::bounds() const {
+    if (!(sphere_.radius > 0)) return std::nullopt;
+    const Vec3d c = sphere_.center, r(sphere_.radius);
+    LightBounds b;
+    b.lower = Vec3f(c - r);
+    b.upper = Vec3f(c + r);
+    b.cosThetaO = -1.0f;
+    b.cosThetaE = 0.0f;
+    b.intensity = radianceLuminance() * float(kPi<double> * sqr(sphere_.radius));
+    return b;
 }
 
 AreaLight::AreaPoint SphereLight::samplePoint(const Vec2f& u) const {

@@ -16,7 +16,7 @@ bool emits(const std::optional<EmissionDesc>& e) {
 
 }  // namespace
 
-LightSet::LightSet(const SceneDesc& scene, const Geometry& geometry, bool uniformSelection) {
+LightSet::LightSet(const SceneDesc& scene, const Geometry& geometry, LightSelection selection) {
     // The area lights, shape by shape: one per triangle of a mesh, one for a whole rectangle,
     // disk or sphere.
     const auto& shapes = geometry.shapes();
@@ -69,8 +69,10 @@ LightSet::LightSet(const SceneDesc& scene, const Geometry& geometry, bool unifor
                 break;
         }
     }
-    // Selection proportional to power (or uniform); a light of zero luminance but non-zero
-    // colour (pure blue, say) still gets a share so it is never starved.
+    // The point-independent distribution: proportional to power (or uniform); a light of
+    // zero luminance but non-zero colour (pure blue, say) still gets a share so it is never
+    // starved.
+    const bool uniformSelection = selection == LightSelection::Uniform;
     double total = 0;
     std::vector<double> w(lights_.size());
     for (std::size_t i = 0; i < lights_.size(); ++i) {
@@ -88,12 +90,81 @@ LightSet::LightSet(const SceneDesc& scene, const Geometry& geometry, bool unifor
         cdf_[i] = float(running);
     }
     if (!cdf_.empty()) cdf_.back() = 1.0f;
+    if (selection == LightSelection::Bvh) buildBvh();
 }
 
-std::pair<std::size_t, float> LightSet::choose(float u) const {
-    const auto it = std::upper_bound(cdf_.begin(), cdf_.end(), u);
-    const std::size_t i = std::min(std::size_t(it - cdf_.begin()), cdf_.size() - 1);
+void LightSet::buildBvh() {
+    useBvh_ = true;
+    std::vector<LightBvh::Entry> bounded;
+    float strongest = 0.0f;
+    for (std::size_t i = 0; i < lights_.size(); ++i) {
+        if (lights_[i]->isInfinite()) continue;
+        const auto b = lights_[i]->bounds();
+        if (!b) continue;
+        bounded.push_back({i, *b});
+        if (std::isfinite(b->intensity)) strongest = std::max(strongest, b->intensity);
+    }
+    // As for the power distribution: a light whose luminance is zero keeps a small weight.
+    const float floor = strongest > 0.0f ? 1e-6f * strongest : 1.0f;
+    for (LightBvh::Entry& e : bounded)
+        if (!(e.bounds.intensity >= floor) || !std::isfinite(e.bounds.intensity))
+            e.bounds.intensity = floor;
+    bvh_ = LightBvh(std::move(bounded));
+
+    // The lights at infinity take a fixed share, as much as one light of the tree (pbrt-v4's
+    // BVHLightSampler), and among themselves follow their power distribution, so that
+    // probability / emitterProbability is the same for all of them.
+    const std::size_t n = infinite_.size();
+    infiniteShare_ = n == 0 ? 0.0f : bvh_.empty() ? 1.0f : float(n) / float(n + 1);
+    infiniteSlot_.assign(lights_.size(), -1);
+    double sum = 0;
+    for (std::size_t i : infinite_)
+        sum += pmf_[i];
+    double running = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+        infiniteSlot_[infinite_[k]] = int(k);
+        infinitePmf_.push_back(float(pmf_[infinite_[k]] / sum));
+        running += pmf_[infinite_[k]] / sum;
+        infiniteCdf_.push_back(float(running));
+    }
+    if (!infiniteCdf_.empty()) infiniteCdf_.back() = 1.0f;
+}
+
+namespace {
+
+/// The index whose cdf interval holds u.
+std::size_t pick(const std::vector<float>& cdf, float u) {
+    const auto it = std::upper_bound(cdf.begin(), cdf.end(), u);
+    return std::min(std::size_t(it - cdf.begin()), cdf.size() - 1);
+}
+
+}  // namespace
+
+LightChoice LightSet::chooseEmitter(float u) const {
+    const std::size_t i = pick(cdf_, u);
     return {i, pmf_[i]};
+}
+
+std::optional<LightChoice> LightSet::choose(const Vec3f& p, const Vec3f& n, float u) const {
+    if (lights_.empty()) return std::nullopt;
+    if (!useBvh_) return chooseEmitter(u);
+    if (u < infiniteShare_) {
+        const std::size_t k =
+            pick(infiniteCdf_, std::min(u / infiniteShare_, kOneMinusEpsilon<float>));
+        return LightChoice{infinite_[k], infiniteShare_ * infinitePmf_[k]};
+    }
+    const float uTree =
+        std::min((u - infiniteShare_) / (1.0f - infiniteShare_), kOneMinusEpsilon<float>);
+    auto c = bvh_.choose(p, n, uTree);
+    if (c) c->probability *= 1.0f - infiniteShare_;
+    return c;
+}
+
+float LightSet::probability(std::size_t i, const Vec3f& p, const Vec3f& n) const {
+    if (!useBvh_) return pmf_[i];
+    if (const int k = infiniteSlot_[i]; k >= 0)
+        return infiniteShare_ * infinitePmf_[std::size_t(k)];
+    return bvh_.probability(i, p, n) * (1.0f - infiniteShare_);
 }
 
 int LightSet::lightAt(const SurfaceHit& hit) const {

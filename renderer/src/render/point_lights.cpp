@@ -19,6 +19,15 @@ double PointLight::power() const {
     return 4.0 * kPi<double> * luminance(color_.rgbDouble());
 }
 
+std::optional<LightBounds> PointLight::bounds() const {
+    LightBounds b;
+    b.lower = b.upper = position_;
+    b.cosThetaO = -1.0f;
+    b.cosThetaE = 0.0f;
+    b.intensity = float(luminance(color_.rgbDouble()));
+    return b;
+}
+
 std::optional<EmissionSample> PointLight::sampleEmission(const Vec2f&, const Vec2f& u) const {
     EmissionSample e;
     e.point = position_;
@@ -56,6 +65,16 @@ double SpotLight::power() const {
     // band on average (pbrt-v4, SpotLight::Phi).
     return 2.0 * kPi<double> * luminance(color_.rgbDouble()) *
            ((1.0 - cosStart_) + (cosStart_ - cosEdge_) / 2.0);
+}
+
+std::optional<LightBounds> SpotLight::bounds() const {
+    LightBounds b;
+    b.lower = b.upper = position_;
+    b.axis = axis_;
+    b.cosThetaO = cosStart_;
+    b.cosThetaE = std::cos(safeAcos(cosEdge_) - safeAcos(cosStart_));
+    b.intensity = float(luminance(color_.rgbDouble()));
+    return b;
 }
 
 std::optional<EmissionSample> SpotLight::sampleEmission(const Vec2f&, const Vec2f& u) const {

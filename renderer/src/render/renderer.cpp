@@ -37,7 +37,7 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
     Film& film = *result.film;
 
     Geometry geometry(scene);
-    const LightSet lights(scene, geometry, settings.lightSelection == LightSelection::Uniform);
+    const LightSet lights(scene, geometry, settings.lightSelection);
     const Camera camera(scene.camera, width, height);
     const PixelFilter filter(scene.film);
     const RenderMode<S> mode(scene);
@@ -149,6 +149,7 @@ RenderResult renderScene(const SceneDesc& scene, const RenderOptions& options,
     if (options.sampler) settings.sampler = *options.sampler;
     if (options.integrator) settings.integrator = *options.integrator;
     if (options.mis) settings.mis = *options.mis;
+    if (options.lightSelection) settings.lightSelection = *options.lightSelection;
     int width = scene.film.width, height = scene.film.height;
     if (options.resolution) std::tie(width, height) = *options.resolution;
     checkRenderMemory(

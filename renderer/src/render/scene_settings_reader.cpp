@@ -84,7 +84,7 @@ void readIntegrator(const JsonReader& r, RenderSettings& settings) {
     settings.maxDepth = r.integer("max_depth", 16, 1, 1024);
     settings.russianRouletteDepth = r.integer("rr_depth", 5, 1, 1024);
     settings.lightSelection =
-        r.choice("light_selection", LightSelection::Power, kLightSelectionNames);
+        r.choice("light_selection", LightSelection::Bvh, kLightSelectionNames);
     r.finish();
 }
 

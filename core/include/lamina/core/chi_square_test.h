@@ -63,6 +63,12 @@ using ChiSquarePdf = std::function<double(const Vec3d&)>;
 /// Per-test significance that keeps the family-wise level at `alpha` over `testCount` tests.
 double sidakCorrectedAlpha(double alpha, int testCount);
 
+/// Pearson's test of result.observed against result.expected (counts of `sampleCount` draws;
+/// cells expected below 5 pooled) at result.alpha: fills statistic, degreesOfFreedom, pValue
+/// and passed; false, with the reason in message, when the counts cannot be tested (samples
+/// where nothing was expected, too few cells).
+bool pearsonStatistic(std::size_t sampleCount, ChiSquareResult& result);
+
 ChiSquareResult runChiSquareTest(const ChiSquareConfig& config, const ChiSquareSampler& sampler,
                                  const ChiSquarePdf& pdf);
 

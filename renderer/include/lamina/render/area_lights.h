@@ -32,6 +32,11 @@ class AreaLight : public Light {
     };
     /// A point uniform by area.
     virtual AreaPoint samplePoint(const Vec2f& u) const = 0;
+    /// The bounds of a flat light in box [lower, upper] with front normal `n`: its normal as
+    /// the axis (theta_o = 0), emission over the hemisphere (theta_e = pi/2), intensity L A.
+    LightBounds flatBounds(const Vec3f& lower, const Vec3f& upper, const Vec3f& n) const;
+    /// The luminance of the radiance.
+    float radianceLuminance() const;
 
     AreaLight(const EmissionDesc& e, double area);
 
@@ -53,6 +58,8 @@ class TriangleLight final : public AreaLight {
   public:
     TriangleLight(const MeshDesc& mesh, std::size_t triangle);
 
+    std::optional<LightBounds> bounds() const override;
+
   private:
     AreaPoint samplePoint(const Vec2f& u) const override;
 
@@ -72,6 +79,7 @@ class RectangleLight final : public AreaLight {
 
     std::optional<LightSample> sample(const Vec3f& ref, const Vec2f& u) const override;
     float pdf(const Vec3f& ref, const SurfaceHit& hit) const override;
+    std::optional<LightBounds> bounds() const override;
 
   private:
     AreaPoint samplePoint(const Vec2f& u) const override;
@@ -96,6 +104,7 @@ class DiskLight final : public AreaLight {
     explicit DiskLight(const DiskDesc& d);
 
     std::optional<LightSample> sample(const Vec3f& ref, const Vec2f& u) const override;
+    std::optional<LightBounds> bounds() const override;
 
   private:
     AreaPoint samplePoint(const Vec2f& u) const override;
@@ -112,6 +121,9 @@ class SphereLight final : public AreaLight {
 
     std::optional<LightSample> sample(const Vec3f& ref, const Vec2f& u) const override;
     float pdf(const Vec3f& ref, const SurfaceHit& hit) const override;
+    /// Its box, normals in every direction (theta_o = pi) and intensity L pi r^2 (the
+    /// projected area seen from outside).
+    std::optional<LightBounds> bounds() const override;
 
   private:
     AreaPoint samplePoint(const Vec2f& u) const override;

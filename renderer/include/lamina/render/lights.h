@@ -13,6 +13,8 @@
 
 #include "lamina/render/emitter_color.h"
 #include "lamina/render/geometry.h"
+#include "lamina/render/light_bounds.h"
+#include "lamina/render/light_bvh.h"
 
 namespace lamina::render {
 
@@ -56,6 +58,9 @@ class Light {
     virtual Emission radiance(const SurfaceHit& hit, const Vec3f& w) const = 0;
     /// Total emitted power (for light selection), in RGB luminance.
     virtual double power() const = 0;
+    /// Where the light is, which way and how strongly it emits, for the light BVH; nullopt
+    /// for lights at infinity.
+    virtual std::optional<LightBounds> bounds() const { return std::nullopt; }
     virtual bool isDelta() const { return false; }
     virtual bool isInfinite() const { return false; }
     /// Infinite lights: radiance arriving along -w (w points away from the scene) and density.
@@ -73,18 +78,32 @@ class Light {
                                     const Vec3f& direction) const = 0;
 };
 
-/// Lights of the scene and the distribution they are chosen with (light_set.cpp). The set
+/// Lights of the scene and the distributions they are chosen with (light_set.cpp). The set
 /// also knows which area light each shape of the geometry carries.
+///
+/// Next-event estimation chooses at a shading point (choose, probability): with `bvh`
+/// selection the lights with a position through the light BVH and the lights at infinity with
+/// a fixed share, in proportion to their power among themselves; with `power` and `uniform`
+/// the same distribution everywhere. Particles (light tracing, BDPT's light subpaths) start
+/// from a light chosen independently of any point (chooseEmitter, emitterProbability): by
+/// power, or uniformly under `uniform` selection.
 class LightSet {
   public:
-    LightSet(const SceneDesc& scene, const Geometry& geometry, bool uniformSelection);
+    LightSet(const SceneDesc& scene, const Geometry& geometry, LightSelection selection);
 
     bool empty() const { return lights_.empty(); }
     std::size_t size() const { return lights_.size(); }
     const Light& light(std::size_t i) const { return *lights_[i]; }
-    /// Chooses a light; returns its index and probability.
-    std::pair<std::size_t, float> choose(float u) const;
-    float probability(std::size_t i) const { return pmf_[i]; }
+    /// Chooses a light for next-event estimation at `p` with surface normal `n` (the zero
+    /// vector: none); nullopt when the set is empty.
+    std::optional<LightChoice> choose(const Vec3f& p, const Vec3f& n, float u) const;
+    /// The probability that choose(p, n, u) returns light i for a uniform u.
+    float probability(std::size_t i, const Vec3f& p, const Vec3f& n) const;
+    /// Chooses the light a particle starts from.
+    LightChoice chooseEmitter(float u) const;
+    float emitterProbability(std::size_t i) const { return pmf_[i]; }
+    /// Under every selection, probability(i, p, n) / emitterProbability(i) is the same for
+    /// all lights at infinity at a given point (BDPT's MIS relies on it).
     const std::vector<std::size_t>& infiniteLights() const { return infinite_; }
     /// The area light of a hit primitive, or -1.
     int lightAt(const SurfaceHit& hit) const;
@@ -96,10 +115,19 @@ class LightSet {
         bool perPrimitive = false;  ///< one light per triangle (meshes other than rectangles)
     };
 
+    void buildBvh();
+
     std::vector<std::unique_ptr<Light>> lights_;
-    std::vector<float> pmf_, cdf_;
+    std::vector<float> pmf_, cdf_;  ///< point-independent (power or uniform)
     std::vector<std::size_t> infinite_;
     std::vector<ShapeLights> shapeLights_;  ///< indexed like Geometry::shapes()
+    // `bvh` selection: the lights with a position, and the lights at infinity with the share
+    // infiniteShare_, among themselves by infiniteCdf_ (their pmf_ renormalised).
+    bool useBvh_ = false;
+    LightBvh bvh_;
+    float infiniteShare_ = 0.0f;
+    std::vector<float> infinitePmf_, infiniteCdf_;  ///< indexed like infinite_
+    std::vector<int> infiniteSlot_;                 ///< per light: its index in infinite_, or -1
 };
 
 }  // namespace lamina::render

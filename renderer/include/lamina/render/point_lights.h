@@ -22,6 +22,8 @@ class PointLight final : public DeltaPositionLight {
 
     std::optional<LightSample> sample(const Vec3f& ref, const Vec2f& u) const override;
     double power() const override;
+    /// A point, every direction (theta_o = pi), intensity I.
+    std::optional<LightBounds> bounds() const override;
 
     std::optional<EmissionSample> sampleEmission(const Vec2f& uPosition,
                                                  const Vec2f& uDirection) const override;
@@ -41,6 +43,9 @@ class SpotLight final : public DeltaPositionLight {
 
     std::optional<LightSample> sample(const Vec3f& ref, const Vec2f& u) const override;
     double power() const override;
+    /// A point, the axis with theta_o the falloff start and theta_e the rest of the cone
+    /// (pbrt-v4's SpotLight::Bounds), intensity I.
+    std::optional<LightBounds> bounds() const override;
 
     /// Directions uniform in the cone (the falloff is in the weight).
     std::optional<EmissionSample> sampleEmission(const Vec2f& uPosition,

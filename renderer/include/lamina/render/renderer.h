@@ -29,6 +29,7 @@ struct RenderOptions {
     std::optional<SamplerKind> sampler;
     std::optional<IntegratorKind> integrator;
     std::optional<MisHeuristic> mis;
+    std::optional<LightSelection> lightSelection;
     int threads = 0;    ///< 0: all cores
     bool aovs = false;  ///< path integrator only
     TransportAblations ablations;

@@ -61,10 +61,12 @@ enum class MisHeuristic { Power, Balance };
 inline constexpr NameTable kMisHeuristicNames{std::array{
     NameEntry{MisHeuristic::Power, "power"}, NameEntry{MisHeuristic::Balance, "balance"}}};
 
-/// How next-event estimation picks a light: proportional to its power, or uniformly.
-enum class LightSelection { Power, Uniform };
-inline constexpr NameTable kLightSelectionNames{std::array{
-    NameEntry{LightSelection::Power, "power"}, NameEntry{LightSelection::Uniform, "uniform"}}};
+/// How next-event estimation picks a light: by the light BVH from the shading point (light_bvh.h),
+/// proportional to its power, or uniformly.
+enum class LightSelection { Bvh, Power, Uniform };
+inline constexpr NameTable kLightSelectionNames{
+    std::array{NameEntry{LightSelection::Bvh, "bvh"}, NameEntry{LightSelection::Power, "power"},
+               NameEntry{LightSelection::Uniform, "uniform"}}};
 
 struct RenderSettings {
     IntegratorKind integrator = IntegratorKind::Path;
@@ -74,7 +76,7 @@ struct RenderSettings {
     int spp = 16;
     std::uint64_t seed = 0;
     SamplerKind sampler = SamplerKind::Sobol;
-    LightSelection lightSelection = LightSelection::Power;
+    LightSelection lightSelection = LightSelection::Bvh;
 };
 
 /// Emission of an area light: RGB radiance (linear Rec.709) or a spectrum, one- or two-sided.

@@ -33,6 +33,9 @@ class BdptMisWeights {
   private:
     float pdfLight(const Vertex& v, const Vertex& next) const;
     float infiniteLightDensity(const Vec3f& direction) const;
+    /// How much likelier next-event estimation at `receiver` chooses the light of
+    /// `lightVertex` than a particle starts from it.
+    float selectionRatio(const Vertex& lightVertex, const Vertex& receiver) const;
     float pdf(const Vertex& v, const Vertex* prev, const Vertex& next,
               typename Mode::Path& path) const;
 

@@ -1,0 +1,198 @@
+// The light BVH's distribution (light_bvh.h, LightSet's `bvh` selection) at shading points:
+// choose() must draw each light with the probability probability() reports, exactly the
+// value it returns with the light, and the probabilities of all lights must sum to 1. Scenes: one
+// light of every kind (with a directional light and an environment, which take the fixed share) and
+// scenes/many-lights.json (1056 lights). Chi-square: 400 000 draws per point, cells with an
+// expected count below 5 pooled, 8 points at a family-wise significance of 1% (Sidak).
+#include <gtest/gtest.h>
+
+#include "chi2_helpers.h"
+#include "lamina/core/pcg32.h"
+#include "lamina/render/lights.h"
+#include "render_helpers.h"
+
+namespace lamina::render {
+namespace {
+
+// One emitter of every kind, as in emission_sampling_test.cpp, with a spot light that faces
+// away from some of the points below and a one-sided triangle seen from behind by others.
+const char* kLights = R"({
+  "camera": {"position": [0, 0, -5], "look_at": [0, 0, 0]},
+  "film": {"resolution": [8, 8]},
+  "materials": {"m": {"type": "lambert", "reflectance": 0.5}},
+  "shapes": [
+    {"type": "mesh", "material": "m", "emission": {"radiance": [1, 2, 3]},
+     "positions": [[0, 0, 0], [1, 0, 0], [0.2, 1.5, 0.3]], "faces": [[0, 1, 2]]},
+    {"type": "rectangle", "material": "m", "emission": {"radiance": 2},
+     "transform": [{"scale": [0.5, 0.25, 1]}, {"translate": [0, 2, 0]}]},
+    {"type": "disk", "material": "m", "radius": 0.3, "emission": {"radiance": 1.5}},
+    {"type": "sphere", "material": "m", "center": [3, 0, 0], "radius": 0.4,
+     "emission": {"radiance": 0.7}},
+    {"type": "mesh", "material": "m", "emission": {"radiance": 1, "two_sided": true},
+     "positions": [[0, -2, 0], [1, -2, 0], [0, -2, 1]], "faces": [[0, 2, 1]]}
+  ],
+  "lights": [
+    {"type": "point", "position": [0, 1, 0], "intensity": 3},
+    {"type": "spot", "position": [0, 1, 0], "look_at": [0, 0, 0], "intensity": 2,
+     "cone_angle": 30, "falloff_start": 20},
+    {"type": "directional", "direction": [0, -1, 0.2], "irradiance": 1.2},
+    {"type": "environment", "radiance": [0.2, 0.3, 0.4]}
+  ]
+})";
+
+struct ShadingPoint {
+    Vec3f p, n;
+};
+
+const ShadingPoint kMixedPoints[] = {{{0.0f, -1.0f, 0.0f}, {0.0f, 1.0f, 0.0f}},
+                                     {{2.0f, 0.5f, -1.0f}, {-1.0f, 0.0f, 0.0f}},
+                                     {{0.0f, 0.0f, -2.0f}, {0.0f, 0.0f, 0.0f}},
+                                     {{0.2f, 0.5f, 0.1f}, {0.0f, 0.0f, -1.0f}}};
+const ShadingPoint kManyLightPoints[] = {{{0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}},
+                                         {{5.0f, 0.0f, -3.0f}, {0.0f, 1.0f, 0.0f}},
+                                         {{-2.5f, 2.0f, 1.0f}, {0.0f, 1.0f, 0.0f}},
+                                         {{1.0f, 1.0f, 1.0f}, {0.0f, 0.0f, 0.0f}}};
+constexpr int kChiSquareTests = 8;
+
+SceneDesc manyLights() {
+    return loadScene(std::string(LAMINA_SOURCE_DIR) + "/scenes/many-lights.json");
+}
+
+/// Pearson's test of choose()'s frequencies at `at` against probability().
+ChiSquareResult selectionChiSquare(const LightSet& lights, const ShadingPoint& at,
+                                   std::uint64_t seed) {
+    constexpr std::size_t kDraws = 400000;
+    ChiSquareResult r;
+    r.alpha = sidakCorrectedAlpha(testing::kSignificance, kChiSquareTests);
+    r.observed.assign(lights.size(), 0.0);
+    r.expected.assign(lights.size(), 0.0);
+    Pcg32 rng(seed);
+    for (std::size_t k = 0; k < kDraws; ++k)
+        if (const auto c = lights.choose(at.p, at.n, rng.nextFloat())) {
+            r.observed[c->index] += 1.0;
+            ++r.validSamples;
+        }
+    for (std::size_t i = 0; i < lights.size(); ++i)
+        r.expected[i] = double(lights.probability(i, at.p, at.n)) * double(kDraws);
+    if (pearsonStatistic(kDraws, r))
+        r.message = "chi2 = " + std::to_string(r.statistic) + ", " +
+                    std::to_string(r.degreesOfFreedom) + " dof, p = " + std::to_string(r.pValue);
+    return r;
+}
+
+TEST(LightBvh, SelectionFrequenciesFollowTheProbabilities) {
+    const SceneDesc mixed = testing::sceneFromText(kLights), many = manyLights();
+    const Geometry mixedGeometry(mixed), manyGeometry(many);
+    const LightSet mixedLights(mixed, mixedGeometry, LightSelection::Bvh);
+    const LightSet manyLightSet(many, manyGeometry, LightSelection::Bvh);
+    ASSERT_EQ(mixedLights.size(), 9u);
+    ASSERT_EQ(manyLightSet.size(), 1056u);
+    std::uint64_t seed = 1;
+    for (const ShadingPoint& at : kMixedPoints)
+        EXPECT_TRUE(testing::passes(selectionChiSquare(mixedLights, at, seed++)))
+            << "mixed lights at " << at.p.x << " " << at.p.y << " " << at.p.z;
+    for (const ShadingPoint& at : kManyLightPoints)
+        EXPECT_TRUE(testing::passes(selectionChiSquare(manyLightSet, at, seed++)))
+            << "many lights at " << at.p.x << " " << at.p.y << " " << at.p.z;
+}
+
+/// Random shading points in and around the scene's bounds, half of them with a normal.
+std::vector<ShadingPoint> randomPoints(const Geometry& g, int count, std::uint64_t seed) {
+    Pcg32 rng(seed);
+    std::vector<ShadingPoint> points;
+    for (int k = 0; k < count; ++k) {
+        const Vec3f u(rng.nextFloat(), rng.nextFloat(), rng.nextFloat());
+        const Vec3f p = g.boundsCenter() + 1.2f * g.boundsRadius() * (2.0f * u - 1.0f);
+        Vec3f n(0.0f);
+        if (k % 2 == 0)
+            n = safeNormalize(Vec3f(rng.nextFloat(), rng.nextFloat(), rng.nextFloat()) - 0.5f);
+        points.push_back({p, n});
+    }
+    return points;
+}
+
+// Both scenes have point lights, which reach every point: the sum is 1 everywhere.
+void expectANormalisedDistribution(const LightSet& lights, const Geometry& g, const char* what) {
+    for (const ShadingPoint& at : randomPoints(g, 200, 3)) {
+        double sum = 0;
+        for (std::size_t i = 0; i < lights.size(); ++i)
+            sum += lights.probability(i, at.p, at.n);
+        EXPECT_NEAR(sum, 1.0, 1e-4) << what << " at " << at.p.x << " " << at.p.y << " " << at.p.z;
+    }
+}
+
+TEST(LightBvh, ProbabilitiesSumToOne) {
+    const SceneDesc mixed = testing::sceneFromText(kLights), many = manyLights();
+    const Geometry mixedGeometry(mixed), manyGeometry(many);
+    for (LightSelection s : {LightSelection::Bvh, LightSelection::Power, LightSelection::Uniform}) {
+        expectANormalisedDistribution(LightSet(mixed, mixedGeometry, s), mixedGeometry,
+                                      "mixed lights");
+        expectANormalisedDistribution(LightSet(many, manyGeometry, s), manyGeometry, "many lights");
+    }
+}
+
+TEST(LightBvh, ProbabilityIsExactlyWhatChooseReturns) {
+    const SceneDesc mixed = testing::sceneFromText(kLights), many = manyLights();
+    const Geometry mixedGeometry(mixed), manyGeometry(many);
+    const LightSet mixedLights(mixed, mixedGeometry, LightSelection::Bvh);
+    const LightSet manyLightSet(many, manyGeometry, LightSelection::Bvh);
+    Pcg32 rng(5);
+    for (const auto& [lights, geometry] :
+         {std::pair{&mixedLights, &mixedGeometry}, std::pair{&manyLightSet, &manyGeometry}}) {
+        int chosen = 0;
+        for (const ShadingPoint& at : randomPoints(*geometry, 200, 4))
+            for (int k = 0; k < 50; ++k) {
+                const auto c = lights->choose(at.p, at.n, rng.nextFloat());
+                if (!c) continue;
+                ++chosen;
+                ASSERT_GT(c->probability, 0.0f);
+                ASSERT_EQ(c->probability, lights->probability(c->index, at.p, at.n));
+            }
+        EXPECT_GT(chosen, 7500);
+    }
+}
+
+// Lights at infinity take a fixed share n / (n + 1) whatever the point, split in proportion
+// to their power distribution (which BDPT's MIS weights rely on).
+TEST(LightBvh, LightsAtInfinityTakeAFixedShare) {
+    const SceneDesc mixed = testing::sceneFromText(kLights);
+    const Geometry geometry(mixed);
+    const LightSet lights(mixed, geometry, LightSelection::Bvh);
+    ASSERT_EQ(lights.infiniteLights().size(), 2u);
+    for (const ShadingPoint& at : randomPoints(geometry, 50, 6)) {
+        double share = 0;
+        for (std::size_t i : lights.infiniteLights())
+            share += lights.probability(i, at.p, at.n);
+        EXPECT_NEAR(share, 2.0 / 3.0, 1e-6);
+        const std::size_t a = lights.infiniteLights()[0], b = lights.infiniteLights()[1];
+        EXPECT_NEAR(lights.probability(a, at.p, at.n) / lights.emitterProbability(a),
+                    lights.probability(b, at.p, at.n) / lights.emitterProbability(b), 1e-5);
+    }
+}
+
+// A light that cannot send light to the point is never chosen: the spot light's cone points
+// down from (0, 1, 0), so a point above it gets none; the one-sided rectangle at y = 2 faces
+// +z (its winding), so a point behind it gets none.
+TEST(LightBvh, LightsThatCannotReachThePointAreNeverChosen) {
+    const SceneDesc mixed = testing::sceneFromText(kLights);
+    const Geometry geometry(mixed);
+    const LightSet lights(mixed, geometry, LightSelection::Bvh);
+    std::size_t spot = lights.size(), rectangle = lights.size();
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        const auto b = lights.light(i).bounds();
+        if (!b) continue;
+        if (b->cosThetaO > -1.0f && b->cosThetaO < 1.0f) spot = i;
+        if (b->cosThetaO == 1.0f && b->lower.y > 1.5f) rectangle = i;
+    }
+    ASSERT_LT(spot, lights.size());
+    ASSERT_LT(rectangle, lights.size());
+    EXPECT_EQ(lights.probability(spot, Vec3f(0.0f, 3.0f, 0.0f), Vec3f(0.0f)), 0.0f);
+    EXPECT_GT(lights.probability(spot, Vec3f(0.0f, -1.0f, 0.0f), Vec3f(0.0f)), 0.0f);
+    const Vec3f n = lights.light(rectangle).bounds()->axis;
+    const Vec3f centre = lights.light(rectangle).bounds()->center();
+    EXPECT_EQ(lights.probability(rectangle, centre - 2.0f * n, Vec3f(0.0f)), 0.0f);
+    EXPECT_GT(lights.probability(rectangle, centre + 2.0f * n, Vec3f(0.0f)), 0.0f);
+}
+
+}  // namespace
+}  // namespace lamina::render
