@@ -241,6 +241,44 @@ TEST_P(CoatedChi2, SampleMatchesTheAveragedDensityEstimate) {
     }
 }
 
+TEST_P(CoatedChi2, EvalIntegratesToTheSampledAlbedo) {
+    // sample() and eval() are two estimators of one BSDF: the mean sample weight of the
+    // non-delta samples equals the integral of eval over the hemisphere, per channel and in
+    // both transport modes.
+    const Bxdf<Spec>& b = *GetParam().bxdf;
+    for (TransportMode mode : {TransportMode::Radiance, TransportMode::Importance})
+        for (double theta : {10.0, 50.0, 80.0}) {
+            const Vec3d wo = testing::directionAt(theta);
+            for (int c = 0; c < 3; ++c) {
+                Pcg32 rng(41);
+                double sum = 0, sum2 = 0;
+                const int n = 30000;
+                for (int i = 0; i < n; ++i) {
+                    const double uc = rng.nextDouble();
+                    const Vec2d u(rng.nextDouble(), rng.nextDouble());
+                    const auto s = b.sample(wo, uc, u, mode);
+                    const double w = s && !s->isSpecular() ? s->weight[c] : 0.0;
+                    sum += w, sum2 += w * w;
+                }
+                MeanAndError sampled{sum / n, 0};
+                sampled.error = std::sqrt(std::max(0.0, sum2 / n - sqr(sampled.mean)) / n);
+                Pcg32 rng2(43);
+                double esum = 0, esum2 = 0;
+                for (int i = 0; i < n; ++i) {
+                    const Vec3d wi =
+                        squareToCosineHemisphere(Vec2d(rng2.nextDouble(), rng2.nextDouble()));
+                    const double w = b.eval(wo, wi, mode)[c] / cosineHemispherePdf(wi);
+                    esum += w, esum2 += w * w;
+                }
+                const double emean = esum / n;
+                const double eerr = std::sqrt(std::max(0.0, esum2 / n - emean * emean) / n);
+                EXPECT_TRUE(agrees(sampled, emean, eerr))
+                    << GetParam().name << " theta " << theta << " channel " << c << " mode "
+                    << int(mode);
+            }
+        }
+}
+
 TEST_P(CoatedChi2, SampledPdfIsPdfAndValuesAreFinite) {
     const Bxdf<Spec>& b = *GetParam().bxdf;
     Pcg32 rng(3);
