@@ -32,6 +32,15 @@ constexpr Named kMaterials[] = {
     {"standard_albedo_multiscatter",
      R"({"type":"standard","base_color":[0.8,0.4,0.2],"roughness":0.5,"coupling":"albedo","multiscatter":true})"},
     {"standard_glass", R"({"type":"standard","transmission":1,"roughness":0.3})"},
+    // The random-walk coat against its analytic twins (same interface and base).
+    {"layered_albedo_twin",
+     R"({"type":"layered","interface":{"roughness":0.3,"ior":1.5,"fresnel":"exact"},"base":{"type":"lambert","reflectance":[0.8,0.4,0.2]},"coupling":"albedo"})"},
+    {"coated_rough_lambert",
+     R"({"type":"coated","roughness":0.3,"base":{"type":"lambert","reflectance":[0.8,0.4,0.2]}})"},
+    {"coated_rough_lambert_4_samples",
+     R"({"type":"coated","roughness":0.3,"samples":4,"base":{"type":"lambert","reflectance":[0.8,0.4,0.2]}})"},
+    {"coated_medium_gold",
+     R"({"type":"coated","roughness":0.1,"thickness":0.5,"albedo":[0.9,0.7,0.4],"g":0.3,"base":{"type":"conductor","material":"Au","roughness":0.3}})"},
 };
 
 enum class Op { Eval, Pdf, Sample };

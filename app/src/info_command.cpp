@@ -20,6 +20,7 @@ void collectSpectral(const MaterialDesc& m, std::vector<std::string>& out) {
         collectSpectral(*x->a, out);
         collectSpectral(*x->b, out);
     }
+    if (const auto* c = std::get_if<CoatedMaterial>(&m.model)) collectSpectral(*c->base, out);
 }
 
 void run(const std::string& file) {

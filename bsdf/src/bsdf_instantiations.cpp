@@ -1,6 +1,7 @@
 // Explicit instantiations of the BSDF templates for the four variants of DESIGN.md
 // (RGB/float, RGB/double, spectral/float, spectral/double): every model is compiled in all
 // of them, so a change that breaks one variant fails the build, not a later render.
+#include "lamina/bsdf/coated.h"
 #include "lamina/bsdf/conductor.h"
 #include "lamina/bsdf/dielectric.h"
 #include "lamina/bsdf/diffuse.h"
@@ -21,6 +22,7 @@ LAMINA_INSTANTIATE_BSDF(DielectricBxdf)
 LAMINA_INSTANTIATE_BSDF(LayeredBxdf)
 LAMINA_INSTANTIATE_BSDF(MicrofacetReflectionLobe)
 LAMINA_INSTANTIATE_BSDF(MixBxdf)
+LAMINA_INSTANTIATE_BSDF(CoatedBxdf)
 template class MaterialBuilder<Rgb<float>>;
 template class MaterialBuilder<Rgb<double>>;
 template class MaterialBuilder<SampledSpectrum<float>>;

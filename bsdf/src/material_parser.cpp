@@ -35,6 +35,7 @@ constexpr MaterialType kMaterialTypes[] = {
     {"phong", readPhong},
     {"layered", readLayered},
     {"mix", readMix},
+    {"coated", readCoated},
 };
 
 }  // namespace

@@ -54,6 +54,7 @@ MaterialModel readConductor(const JsonReader& r);                    // conducto
 MaterialModel readDielectric(const JsonReader& r);                   // dielectric_reader.cpp
 MaterialModel readDiffuse(const JsonReader& r, DiffuseModel model);  // lobe_readers.cpp
 MaterialModel readPhong(const JsonReader& r);                        // lobe_readers.cpp
+MaterialModel readCoated(const JsonReader& r);                       // coated_reader.cpp
 
 /// readDiffuse for one model, for the table of material types.
 template <DiffuseModel Model>

@@ -196,6 +196,21 @@ TEST(MaterialErrors, NameTheJsonPathAndWhatWasExpected) {
     expectError(R"({"type":"layered"})", "needs an interface, a base or transmission");
     expectError(R"({"type":"mix","a":{"type":"lambert"},"b":{"type":"lambert","reflectance":2}})",
                 "b.reflectance: expected a number in [0, 1], got 2");
+    expectError(R"({"type":"coated"})", "base: missing");
+    expectError(R"({"type":"coated","base":{"type":"dielectric"}})",
+                "base: expected a material without transmission");
+    expectError(R"({"type":"coated","base":{"type":"standard","transmission":0.5}})",
+                "base: expected a material without transmission");
+    expectError(R"({"type":"coated","g":1,"base":{"type":"lambert"}})",
+                "g: expected a number in [-0.99, 0.99], got 1");
+    expectError(R"({"type":"coated","samples":0,"base":{"type":"lambert"}})", "samples");
+    expectError(R"({"type":"coated","base":{"type":"lambert","reflectance":[1,2,0]}})",
+                "base.reflectance[1]: expected a number in [0, 1], got 2");
+    expectError(R"({"type":"coated","thickness":1,"albedo":0.5,"base":{"type":"conductor",)"
+                R"("f0":0.9}})",
+                "base: a smooth coat over a base with a smooth (delta) lobe");
+    expectError(R"({"type":"coated","base":{"type":"standard","roughness":0}})",
+                "base: a smooth coat over a base with a smooth (delta) lobe");
     expectError(R"({"type":"standard", "roughness": 0.2,})", "malformed JSON at line 1");
     expectError(R"({"type":"standard","roughness":0.2,"alpha":0.1})", "only one of");
     expectError(R"({"type":"conductor","distribution":"beckmann","sampling":"caps","eta":1,"k":1})",

@@ -158,6 +158,30 @@ inline std::vector<BsdfCase> bsdfCases() {
     return cases;
 }
 
+/// The coated (random-walk) materials: their eval and pdf are estimates, so the exact
+/// properties run over bsdfCases() do not apply; tests/bsdf/coated_test.cpp runs the
+/// statistical ones over these (docs/bsdf.md, "coated").
+inline std::vector<BsdfCase> coatedCases() {
+    auto material = [](const std::string& json) {
+        return std::shared_ptr<const Bxdf<Spec>>(
+            buildBxdf(parseMaterialArgument(json), SpectrumContext<Spec>{}));
+    };
+    return {
+        {"coated_rough_lambert",
+         material(R"({"type":"coated","roughness":0.4,"base":{"type":"lambert",)"
+                  R"("reflectance":[0.8,0.5,0.3]}})")},
+        {"coated_smooth_rough_gold",
+         material(R"({"type":"coated","ior":1.5,"base":{"type":"conductor","material":"Au",)"
+                  R"("roughness":0.4}})")},
+        {"coated_rough_medium",
+         material(R"({"type":"coated","roughness":0.3,"thickness":0.5,"albedo":[0.9,0.6,0.3],)"
+                  R"("g":0.4,"base":{"type":"lambert","reflectance":0.7}})")},
+        {"coated_rough_medium_over_mirror",
+         material(R"({"type":"coated","roughness":0.3,"thickness":1,"albedo":0.8,"g":-0.3,)"
+                  R"("base":{"type":"conductor","f0":0.9}})")},
+    };
+}
+
 /// Directions of wo at the given polar angle (degrees), off the xz-plane so anisotropy shows.
 inline Vec3d directionAt(double thetaDeg, double phiDeg = 20.0) {
     const double t = radians(thetaDeg), p = radians(phiDeg);

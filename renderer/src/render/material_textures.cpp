@@ -79,7 +79,7 @@ std::pair<MaterialDesc, MaterialTextures> readTexturedMaterial(const JsonReader&
                      "multiscatter or the albedo coupling");
         if (copy.contains("anisotropy")) r.failAt("roughness", "a textured roughness is isotropic");
     }
-    if (tex.any() && (desc.type == "mix" || desc.type == "layered" ||
+    if (tex.any() && (desc.type == "mix" || desc.type == "layered" || desc.type == "coated" ||
                       (tex.color >= 0 && (desc.type == "conductor" || desc.type == "dielectric"))))
         r.fail(
             "textures apply to base_color / reflectance / roughness of standard, diffuse "

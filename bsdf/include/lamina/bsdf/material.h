@@ -138,8 +138,21 @@ struct MixMaterial {
     double weight = 0.5;
 };
 
+/// `coated`: a dielectric coat over a base without transmission, with an optional medium
+/// between them; evaluated by a random walk (coated.h).
+struct CoatedMaterial {
+    double ior = 1.5;
+    MicrofacetParams microfacet;  ///< the coat's roughness (0: smooth)
+    std::shared_ptr<const MaterialDesc> base;
+    double thickness = 0;  ///< optical thickness of the medium at normal incidence; 0: none
+    ColorInput albedo{RgbInput(0.0)};  ///< single-scattering albedo of the medium
+    double g = 0;                      ///< Henyey-Greenstein asymmetry
+    int maxDepth = 10;
+    int samples = 1;
+};
+
 using MaterialModel = std::variant<StandardMaterial, DiffuseMaterial, ConductorMaterial,
-                                   DielectricMaterial, PhongMaterial, MixMaterial>;
+                                   DielectricMaterial, PhongMaterial, MixMaterial, CoatedMaterial>;
 
 struct MaterialDesc {
     std::string type;  ///< the JSON "type", for messages and `lamina info`

@@ -5,6 +5,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "lamina/bsdf/coated.h"
 #include "lamina/bsdf/conductor.h"
 #include "lamina/bsdf/dielectric.h"
 #include "lamina/bsdf/layered.h"
@@ -65,6 +66,16 @@ class MaterialBuilder {
 
     std::unique_ptr<Bxdf<S>> buildModel(const MixMaterial& m) const {
         return std::make_unique<MixBxdf<S>>(build(*m.a), build(*m.b), Float(m.weight));
+    }
+
+    std::unique_ptr<Bxdf<S>> buildModel(const CoatedMaterial& c) const {
+        typename CoatedBxdf<S>::Medium medium;
+        medium.thickness = Float(c.thickness);
+        medium.albedo = ctx_.reflectance(c.albedo);
+        medium.g = Float(c.g);
+        return std::make_unique<CoatedBxdf<S>>(
+            CoatInterface<S>(Float(c.ior), distribution(c.microfacet), c.microfacet.g2),
+            build(*c.base), medium, c.maxDepth, c.samples);
     }
 
     Fresnel<S> conductorFresnel(const ConductorMaterial& c) const {

@@ -1,0 +1,161 @@
+// `coated`: a dielectric coat (smooth or rough, index `eta`) over a base BSDF without
+// transmission, with an optional homogeneous medium between them (optical thickness
+// `thickness` at unit extinction, single-scattering `albedo`, Henyey-Greenstein `g`).
+//
+// Light bounces between the two boundaries any number of times, so f has no closed form: it is
+// estimated by the position-free random walk of Guo, Hasan and Zhao 2018 ("Position-Free Monte
+// Carlo Simulation for Arbitrary Layered BSDFs", ACM TOG 37(6)). A path is a sequence of
+// directions only (the slab is laterally infinite and homogeneous); its contribution is the
+// product of the interface terms f |cos| and of the transmittance exp(-d / |cos|) over each
+// vertical distance d (their eq. 5 and 6). The walk starts from wo, and at every event inside
+// the slab connects to wi (next-event estimation through the top boundary, sampled from wi's
+// side with the adjoint transport mode) and also continues by sampling the event's own BSDF; the
+// two ways of reaching wi are combined by the power heuristic (their section 5.2).
+//
+//   sample(): traces one exact path (the full samplers of every event, Russian roulette on the
+//     throughput after 4 events, at most max_depth events); its weight, the path throughput, is
+//     an unbiased estimate of eval / p where p is the true density of the returned wi.
+//   eval(), pdf(): one walk (repeated `samples` times) estimates both f |cos| and the true
+//     density p of sample() at wi. The walk uses the same samplers, roulette and depth limit as
+//     sample(), except that at the entry it always refracts and inside the top boundary it
+//     always reflects; it keeps the probability that sample() would have taken those branches,
+//     so that the same path weighted by probabilities instead of f |cos| estimates p without
+//     bias. pdf() returns 0.9 p^ + 0.1 / (2 pi) (see docs/bsdf.md, "coated").
+//
+// The walk's random numbers come from a PCG32 seeded by a hash of (seed, wo, wi) and a stream
+// per function: eval and pdf estimates at the same pair are independent, and both are the same
+// at every call with the same arguments, so MIS weights computed by different strategies for
+// the same path agree and sum to one, whatever the thread count.
+#pragma once
+
+#include <bit>
+#include <memory>
+
+#include "lamina/bsdf/bxdf.h"
+#include "lamina/bsdf/coat_interface.h"
+#include "lamina/bsdf/henyey_greenstein.h"
+#include "lamina/core/hash.h"
+#include "lamina/core/pcg32.h"
+#include "lamina/core/warp.h"
+
+namespace lamina {
+
+template <SpectrumType S>
+class CoatedBxdf final : public Bxdf<S> {
+  public:
+    using typename Bxdf<S>::Float;
+    using typename Bxdf<S>::V3;
+    using typename Bxdf<S>::V2;
+
+    /// The slab between the coat and the base. thickness 0: no medium.
+    struct Medium {
+        Float thickness = 0;
+        S albedo = S(Float(0));
+        Float g = 0;
+    };
+
+    /// One walk's estimates at (wo, wi): f |cos theta_i| and the density of sample().
+    struct Estimate {
+        S value = S(Float(0));
+        Float density = 0;
+    };
+
+    CoatedBxdf(const CoatInterface<S>& top, std::unique_ptr<Bxdf<S>> base, const Medium& medium,
+               int maxDepth, int samples, std::uint64_t seed = 0)
+        : top_(top),
+          base_(std::move(base)),
+          medium_(medium),
+          maxDepth_(maxDepth),
+          samples_(samples),
+          seed_(seed) {}
+
+    S eval(const V3& wo, const V3& wi, TransportMode mode) const override {
+        if (!continuous() || !sameHemisphere(wo, wi)) return S(Float(0));
+        Pcg32 rng(hashPair(wo, wi, 0));
+        return estimate(wo, wi, mode, rng).value;
+    }
+
+    Float pdf(const V3& wo, const V3& wi) const override {
+        if (!continuous() || !sameHemisphere(wo, wi)) return Float(0);
+        Pcg32 rng(hashPair(wo, wi, 1));
+        // The density of sample() depends on the transport mode only through the roulette,
+        // which sees the throughput: the radiance walk is the one estimated.
+        const Float p = estimate(wo, wi, TransportMode::Radiance, rng).density;
+        return Float(0.9) * p + Float(0.1) * kInvPi<Float> * Float(0.5);
+    }
+
+    std::optional<BsdfSample<S>> sample(const V3& wo, Float uc, const V2& u,
+                                        TransportMode mode) const override;
+
+    std::uint32_t flags() const override {
+        std::uint32_t f = top_.smooth() ? kLobeSpecularReflection : kLobeGlossyReflection;
+        f |= base_->flags() & ~kLobeTransmission;
+        if (scattering()) f |= kLobeGlossyReflection;
+        return f;
+    }
+
+    /// The average of `samples` walks from `rng` (eval and pdf seed it from the directions;
+    /// tests pass their own to average independent estimates). wo and wi on the same side.
+    Estimate estimate(V3 wo, V3 wi, TransportMode mode, Pcg32& rng) const;
+
+    /// True when some path through the stack is not a chain of delta events: eval and pdf are
+    /// zero otherwise.
+    bool continuous() const {
+        return !top_.smooth() || scattering() ||
+               (base_->flags() & (kLobeDiffuse | kLobeGlossy)) != 0;
+    }
+
+  private:
+    bool scattering() const { return medium_.thickness > Float(0) && !medium_.albedo.isZero(); }
+
+    // exp(-dz / |cos|) over a vertical distance dz at unit extinction (Guo et al., eq. 6).
+    Float transmittance(Float dz, const V3& w) const {
+        if (medium_.thickness == Float(0) || dz == Float(0)) return Float(1);
+        return std::exp(-std::abs(dz) / std::max(std::abs(w.z), Float(1e-8)));
+    }
+
+    // Survival probability of the roulette before event `depth` with throughput beta (pbrt-v4's
+    // rule for the same walk: from the fifth event, paths of throughput below 0.25 survive with
+    // probability equal to it).
+    static Float survival(int depth, const S& beta) {
+        if (depth <= 3) return Float(1);
+        const Float m = beta.maxValue();
+        return m < Float(0.25) ? std::max(m, Float(0)) : Float(1);
+    }
+
+    static TransportMode adjoint(TransportMode mode) {
+        return mode == TransportMode::Radiance ? TransportMode::Importance
+                                               : TransportMode::Radiance;
+    }
+
+    static std::uint64_t bits(Float x) {
+        if constexpr (std::is_same_v<Float, double>)
+            return std::bit_cast<std::uint64_t>(x);
+        else
+            return std::bit_cast<std::uint32_t>(x);
+    }
+
+    std::uint64_t hashPair(const V3& wo, const V3& wi, std::uint64_t stream) const {
+        return hashValues({seed_, stream, bits(wo.x), bits(wo.y), bits(wo.z), bits(wi.x),
+                           bits(wi.y), bits(wi.z)});
+    }
+
+    static Float power(Float a, Float b) {
+        const Float a2 = a * a, b2 = b * b;
+        return a2 + b2 > Float(0) ? a2 / (a2 + b2) : Float(0);
+    }
+
+    // One walk of estimate(): its value and density estimates, added to `out`.
+    void walk(const V3& wo, const V3& wi, TransportMode mode, Pcg32& rng, Estimate& out) const;
+
+    CoatInterface<S> top_;
+    std::unique_ptr<Bxdf<S>> base_;
+    Medium medium_;
+    int maxDepth_;
+    int samples_;
+    std::uint64_t seed_;
+};
+
+}  // namespace lamina
+
+#include "lamina/bsdf/coated_walk.h"
