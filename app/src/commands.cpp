@@ -33,6 +33,7 @@ void requireFiniteFloats(CLI::App& app) {
 
 void registerRenderCommand(CLI::App& app);
 void registerMergeCommand(CLI::App& app);
+void registerFarmCommand(CLI::App& app);
 void registerBsdfCommand(CLI::App& app);
 void registerSpectrumCommand(CLI::App& app);
 void registerInfoCommand(CLI::App& app);
@@ -47,6 +48,7 @@ void registerStabilityCommand(CLI::App& app);
 void registerCommands(CLI::App& app) {
     registerRenderCommand(app);
     registerMergeCommand(app);
+    registerFarmCommand(app);
     registerBsdfCommand(app);
     registerInfoCommand(app);
     registerBenchCommand(app);
