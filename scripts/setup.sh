@@ -13,6 +13,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-matplotlib python3-numpy
   clang libclang-rt-14-dev
+  slurm-wlm munge
 )
 
 missing=()
