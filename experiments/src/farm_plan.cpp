@@ -73,12 +73,12 @@ std::vector<render::SampleRange> planSampleRanges(int shards, int spp, bool time
 
 std::vector<std::filesystem::path> writeFarmPlan(const FarmPlanInputs& in) {
     checkOutputDirectory(in.directory);
+    const auto ranges = planSampleRanges(in.shards, in.spp, in.seconds.has_value());
     std::filesystem::create_directories(in.directory / "shards");
     std::filesystem::create_directories(in.directory / "logs");
     const std::filesystem::path dir = std::filesystem::absolute(in.directory);
     const std::string scene = std::filesystem::absolute(in.scene).string();
     const std::string exe = std::filesystem::absolute(in.executable).string();
-    const auto ranges = planSampleRanges(in.shards, in.spp, in.seconds.has_value());
     std::vector<int> firsts, counts;
     for (const auto& r : ranges) {
         firsts.push_back(r.first);

@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
 
 #include "cli_helpers.h"
 
@@ -92,6 +95,68 @@ TEST_F(CliTest, MalformedSampleRangesAndCropsAreUsageErrors) {
         EXPECT_EQ(r.exitCode, 2) << bad << ": " << r.output;
         EXPECT_EQ(r.output.rfind("lamina: error: ", 0), 0u) << r.output;
     }
+    EXPECT_EQ(filesIn(), 0u);
+}
+
+// The plan's scripts need no Slurm: run by hand with each index (as any batch system would),
+// then merge.sh, they give the single render.
+TEST_F(CliTest, FarmPlanScriptsRunWithoutSlurmAndMergeToTheSingleRender) {
+    const fs::path plan = dir_ / "plan";
+    const CommandRun p = runLamina("farm plan " + kCornell +
+                                   " --shards 3 --spp 7 --resolution 16x16 --max-depth 3 "
+                                   "--threads 1 -o " +
+                                   plan.string());
+    ASSERT_EQ(p.exitCode, 0) << p.output;
+    std::ifstream sbatch(plan / "render.sbatch");
+    const std::string array((std::istreambuf_iterator<char>(sbatch)), {});
+    EXPECT_NE(array.find("#SBATCH --array=0-2\n"), std::string::npos) << array;
+    EXPECT_NE(array.find("#SBATCH --cpus-per-task=1\n"), std::string::npos) << array;
+    std::ifstream shardScript(plan / "render-shard.sh");
+    const std::string shard((std::istreambuf_iterator<char>(shardScript)), {});
+    EXPECT_NE(shard.find("first=(0 3 5)\ncount=(3 2 2)\n"), std::string::npos) << shard;
+    for (int i = 0; i < 3; ++i)
+        ASSERT_EQ(
+            std::system(
+                ("bash " + (plan / "render-shard.sh").string() + " " + std::to_string(i)).c_str()),
+            0);
+    EXPECT_NE(
+        std::system(("bash " + (plan / "render-shard.sh").string() + " 3 2>/dev/null").c_str()), 0);
+    ASSERT_EQ(std::system(("bash " + (plan / "merge.sh").string() + " 2>/dev/null").c_str()), 0);
+    const std::string full = (dir_ / "full.exr").string();
+    ASSERT_EQ(runLamina("render " + kCornell + kSmall + "--spp 7 -o " + full).exitCode, 0);
+    const Channels a = readChannels(full), b = readChannels((plan / "image.exr").string());
+    for (const char* name : {"R", "G", "B"}) {
+        const auto& x = a.values.at(name);
+        const auto& y = b.values.at(name);
+        ASSERT_EQ(x.size(), y.size());
+        for (std::size_t i = 0; i < x.size(); ++i)
+            ASSERT_LE(std::abs(x[i] - y[i]), 1e-6 * std::abs(x[i]) + 1e-12f) << name << i;
+    }
+
+    // `lamina convergence --merged` measures it against a reference.
+    const std::string reference = (dir_ / "reference.exr").string();
+    ASSERT_EQ(
+        runLamina("render " + kCornell + kSmall + "--spp 32 --seed 9 -o " + reference).exitCode, 0);
+    const CommandRun c =
+        runLamina("convergence " + kCornell + " --merged " + (plan / "image.exr").string() +
+                  " --reference " + reference + " -o " + (dir_ / "conv").string());
+    ASSERT_EQ(c.exitCode, 0) << c.output;
+    std::ifstream csv(dir_ / "conv" / "merged.csv");
+    std::string header, row;
+    std::getline(csv, header);
+    std::getline(csv, row);
+    EXPECT_EQ(header,
+              "image,shards,spp,render_seconds,longest_shard_seconds,partial,relmse,mse,"
+              "mae");
+    EXPECT_EQ(row.rfind("image.exr,3,7,", 0), 0u) << row;
+}
+
+TEST_F(CliTest, FarmPlanRefusesMoreShardsThanSamples) {
+    const CommandRun r =
+        runLamina("farm plan " + kCornell + " --shards 9 --spp 8 -o " + (dir_ / "plan").string());
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_EQ(r.output,
+              "lamina: error: --shards 9: more shards than the 8 samples per pixel to split\n");
     EXPECT_EQ(filesIn(), 0u);
 }
 

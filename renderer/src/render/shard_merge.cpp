@@ -97,7 +97,7 @@ MergedShards mergeShards(const std::vector<std::filesystem::path>& paths) {
     std::vector<long long> held(std::size_t(width) * height, 0);
     std::vector<std::pair<int, int>> ranges;
     std::string partialShards;
-    double seconds = 0;
+    double seconds = 0, longest = 0;
     long long rejected = 0;
     for (const ShardFile& s : shards) {
         const PixelBounds& c = s.crop;
@@ -108,6 +108,7 @@ MergedShards mergeShards(const std::vector<std::filesystem::path>& paths) {
             }
         ranges.push_back(heldRange(s));
         seconds += s.seconds;
+        longest = std::max(longest, s.seconds);
         if (s.metadata.ints.contains("rejected_samples"))
             rejected += s.metadata.ints.at("rejected_samples");
         if (s.partial) {
@@ -157,7 +158,10 @@ MergedShards mergeShards(const std::vector<std::filesystem::path>& paths) {
     m.ints["merged_shards"] = int(shards.size());
     m.ints["partial"] = partialShards.empty() ? 0 : 1;
     m.strings["partial_shards"] = partialShards.empty() ? "none" : partialShards;
+    // The shards' render times: summed (the work), and the longest (the wall time of a farm
+    // that runs every shard at once, without scene loading and the merge).
     m.floats["seconds"] = float(seconds);
+    m.floats["longest_shard_seconds"] = float(longest);
     m.ints["rejected_samples"] = int(std::min<long long>(rejected, 1 << 30));
     out.aovs = first.settings.find(" aovs=1") != std::string::npos;
     return out;
