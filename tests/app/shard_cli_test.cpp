@@ -68,6 +68,8 @@ TEST_F(CliTest, FourShardsMergeToTheSingleRender) {
             ASSERT_LE(std::abs(x[i] - y[i]), 1e-6 * std::abs(x[i]) + 1e-12f)
                 << name << " pixel " << i;
     }
+    for (const char* name : {"Variance.R", "Variance.G", "Variance.B"})
+        EXPECT_TRUE(b.values.contains(name)) << name;
     EXPECT_EQ(b.metadata.at("lamina:samples"), "0:6");
     EXPECT_EQ(b.metadata.at("lamina:spp"), "6");
     EXPECT_EQ(b.metadata.at("lamina:merged_shards"), "4");

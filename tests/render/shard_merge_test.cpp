@@ -85,12 +85,37 @@ TEST_F(Shards, EveryIntegratorAndModeMergesToTheSingleRender) {
                         expectClose(m.pixel(x, y)[c], full.film->pixel(x, y)[c], at);
                     expectClose(m.varianceOfMean(x, y), full.film->varianceOfMean(x, y),
                                 at + " variance");
+                    for (int c = 0; c < 3; ++c)
+                        expectClose(m.varianceOfMeanRgb(x, y)[c],
+                                    full.film->varianceOfMeanRgb(x, y)[c], at + " variance RGB");
                     EXPECT_EQ(m.samples(x, y), full.film->samples(x, y)) << at;
                     EXPECT_EQ(m.sums(x, y).splatCount, full.film->sums(x, y).splatCount) << at;
                     sum += full.film->pixel(x, y)[1];
                 }
             EXPECT_GT(sum, 0) << label << ": the comparison needs a lit image";
         }
+}
+
+// Variance.R/G/B: the unbiased sample variance of each channel over n, from the sums the film
+// keeps, exactly as computed by hand for four samples.
+TEST(FilmVariance, PerChannelVarianceOfTheMeanIsTheSampleVarianceOverN) {
+    Film film(2, 1, FilmSpace::Rec709);
+    const double r[4] = {1, 2, 4, 7}, g[4] = {0.5, 0.5, 0.5, 0.5}, b[4] = {3, 0, 0, 1};
+    for (int i = 0; i < 4; ++i)
+        film.addSample(1, 0, Rgb<double>(r[i], g[i], b[i]), 1.0);
+    const auto variance = [](const double* v) {
+        double mean = 0, sq = 0;
+        for (int i = 0; i < 4; ++i)
+            mean += v[i] / 4;
+        for (int i = 0; i < 4; ++i)
+            sq += (v[i] - mean) * (v[i] - mean);
+        return sq / 3 / 4;
+    };
+    const Rgb<double> got = film.varianceOfMeanRgb(1, 0);
+    EXPECT_NEAR(got[0], variance(r), 1e-12);
+    EXPECT_NEAR(got[1], 0.0, 1e-12);
+    EXPECT_NEAR(got[2], variance(b), 1e-12);
+    EXPECT_EQ(film.varianceOfMeanRgb(0, 0)[0], 0.0);
 }
 
 TEST_F(Shards, PathCropsTileTheFilmBitForBit) {

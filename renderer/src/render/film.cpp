@@ -21,6 +21,8 @@ void PixelSums::add(const PixelSums& o) {
     splatYSum += o.splatYSum;
     splatYSqSum += o.splatYSqSum;
     splatCount += o.splatCount;
+    sqSum += o.sqSum;
+    splatSqSum += o.splatSqSum;
 }
 
 Film::Film(int width, int height, FilmSpace space)
@@ -50,6 +52,8 @@ bool Film::addSample(int x, int y, const Rgb<double>& value, double weight) {
     p.ySum += lum * weight;
     p.ySqSum += lum * lum * weight;
     p.yMax = std::max(p.yMax, lum);
+    const Rgb<double> rgb = toRec709(value);
+    p.sqSum += rgb * rgb * weight;
     ++p.count;
     return true;
 }
@@ -91,6 +95,8 @@ void Film::endSplatIteration(double scale) {
         p.splatSum += v;
         p.splatYSum += lum;
         p.splatYSqSum += lum * lum;
+        const Rgb<double> rgb = toRec709(v);
+        p.splatSqSum += rgb * rgb;
         ++p.splatCount;
     }
     ++splatIterations_;
@@ -124,6 +130,17 @@ double Film::varianceOfMean(int x, int y) const {
     const double n = double(p.splatCount);
     return varianceOfMeanFromSums(p.ySum, p.ySqSum, p.weightSum, double(p.count)) +
            varianceOfMeanFromSums(p.splatYSum, p.splatYSqSum, n, n);
+}
+
+Rgb<double> Film::varianceOfMeanRgb(int x, int y) const {
+    const Pixel& p = at(x, y);
+    const double n = double(p.splatCount);
+    const Rgb<double> sum = toRec709(p.sum), splat = toRec709(p.splatSum);
+    Rgb<double> v(0.0);
+    for (int c = 0; c < 3; ++c)
+        v[c] = varianceOfMeanFromSums(sum[c], p.sqSum[c], p.weightSum, double(p.count)) +
+               varianceOfMeanFromSums(splat[c], p.splatSqSum[c], n, n);
+    return v;
 }
 
 PixelAovs Film::aovs(int x, int y) const {

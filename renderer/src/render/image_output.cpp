@@ -71,6 +71,7 @@ void writeExr(const std::filesystem::path& path, const Film& film, bool aovs,
                                          "Z", "Variance.Y"});
     else if (variance)
         channels.push_back("Variance.Y");
+    if (variance) channels.insert(channels.end(), {"Variance.R", "Variance.G", "Variance.B"});
     const std::size_t nc = channels.size();
     OIIO::ImageSpec spec(w, h, int(nc), OIIO::TypeDesc::FLOAT);
     setDataWindow(spec, film.window(), film.fullWidth(), film.fullHeight());
@@ -93,6 +94,11 @@ void writeExr(const std::filesystem::path& path, const Film& film, bool aovs,
             const Rgb<double> v = film.pixel(x, y);
             for (int c = 0; c < 3; ++c)
                 p[c] = float(v[c]);
+            if (variance) {
+                const Rgb<double> var = film.varianceOfMeanRgb(x, y);
+                for (int c = 0; c < 3; ++c)
+                    p[nc - 3 + std::size_t(c)] = float(var[c]);
+            }
             if (!aovs) {
                 if (variance) p[3] = float(film.varianceOfMean(x, y));
                 continue;

@@ -41,6 +41,12 @@ const std::vector<SumChannel>& sumChannels() {
         {"Splat.B", [](PixelSums& p) -> double& { return p.splatSum[2]; }},
         {"Splat.YSum", [](PixelSums& p) -> double& { return p.splatYSum; }},
         {"Splat.YSqSum", [](PixelSums& p) -> double& { return p.splatYSqSum; }},
+        {"SqSum.R", [](PixelSums& p) -> double& { return p.sqSum[0]; }},
+        {"SqSum.G", [](PixelSums& p) -> double& { return p.sqSum[1]; }},
+        {"SqSum.B", [](PixelSums& p) -> double& { return p.sqSum[2]; }},
+        {"SplatSqSum.R", [](PixelSums& p) -> double& { return p.splatSqSum[0]; }},
+        {"SplatSqSum.G", [](PixelSums& p) -> double& { return p.splatSqSum[1]; }},
+        {"SplatSqSum.B", [](PixelSums& p) -> double& { return p.splatSqSum[2]; }},
     };
     return channels;
 }

@@ -54,6 +54,10 @@ struct PixelSums {
     Rgb<double> splatSum{0.0};
     double splatYSum = 0, splatYSqSum = 0;
     std::uint64_t splatCount = 0;
+    /// Per channel of linear Rec.709: the weighted sum of the camera samples' squares and the
+    /// splat iterations' sum of squares (Variance.R/G/B of merged shards).
+    Rgb<double> sqSum{0.0};
+    Rgb<double> splatSqSum{0.0};
     /// Adds another film's sums of the same pixel (disjoint samples).
     void add(const PixelSums& o);
 };
@@ -93,6 +97,8 @@ class Film {
     /// plus that of the splat iterations (the two are independent but for the one light path
     /// BDPT traces for the pixel's own sample, whose covariance this neglects).
     double varianceOfMean(int x, int y) const;
+    /// The same per channel of linear Rec.709 (Variance.R/G/B).
+    Rgb<double> varianceOfMeanRgb(int x, int y) const;
     PixelAovs aovs(int x, int y) const;
     std::uint64_t samples(int x, int y) const { return at(x, y).count; }
     /// The pixel's raw sums (shard files).

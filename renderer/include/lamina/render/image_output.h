@@ -28,7 +28,7 @@ void checkOutputPath(const std::filesystem::path& path,
                      const std::vector<std::filesystem::path>& inputs = {});
 
 /// A cropped film is written as its window of the whole image (the EXR data window).
-/// `variance` adds Variance.Y without the other AOVs (merged shards).
+/// `variance` adds Variance.R/G/B and Variance.Y (merged shards).
 void writeExr(const std::filesystem::path& path, const Film& film, bool aovs,
               const ImageMetadata& metadata, bool variance = false);
 void writePngPreview(const std::filesystem::path& path, const Film& film, double exposure);
