@@ -1,5 +1,6 @@
 // `lamina merge SHARD... -o out.exr`: the image one render of all the shards' samples and
-// pixels gives (shard_merge.h), with Variance.R/G/B and Variance.Y, and metadata saying which samples it holds.
+// pixels gives (shard_merge.h), with Variance.R/G/B and Variance.Y, and metadata saying which
+// samples it holds.
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
