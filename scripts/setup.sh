@@ -14,6 +14,7 @@ packages=(
   python3 python3-matplotlib python3-numpy python3-jsonschema
   python3-dev pybind11-dev python3-pybind11 python3-pytest
   clang libclang-rt-14-dev
+  slurm-wlm munge
 )
 
 missing=()

@@ -32,6 +32,8 @@ void requireFiniteFloats(CLI::App& app) {
 }  // namespace
 
 void registerRenderCommand(CLI::App& app);
+void registerMergeCommand(CLI::App& app);
+void registerFarmCommand(CLI::App& app);
 void registerBsdfCommand(CLI::App& app);
 void registerSpectrumCommand(CLI::App& app);
 void registerInfoCommand(CLI::App& app);
@@ -45,6 +47,8 @@ void registerStabilityCommand(CLI::App& app);
 // Every subcommand is registered here, in the order `lamina --help` lists them.
 void registerCommands(CLI::App& app) {
     registerRenderCommand(app);
+    registerMergeCommand(app);
+    registerFarmCommand(app);
     registerBsdfCommand(app);
     registerInfoCommand(app);
     registerBenchCommand(app);

@@ -4,6 +4,7 @@
 
 #include "interruption.h"
 #include "lamina/experiments/convergence.h"
+#include "lamina/experiments/merged_convergence.h"
 #include "lamina/version.h"
 #include "option_parsing.h"
 
@@ -24,6 +25,7 @@ struct ConvergenceArgs {
     double referenceSeconds = 0;
     bool allowCorrelatedReference = false;
     RenderOverrides overrides;
+    std::string merged;
 };
 
 std::vector<experiments::ErrorLevel> parseLevels(const std::string& list) {
@@ -97,7 +99,20 @@ void registerConvergenceCommand(CLI::App& app) {
         ->check(CLI::IsMember(render::kSamplerNames.names()));
     addMaxDepthOption(cmd, a->overrides);
     addThreadsOption(cmd, a->overrides);
+    cmd->add_option("--merged", a->merged,
+                    "Comma-separated images of `lamina merge`: measure them against "
+                    "--reference instead of rendering (merged.csv)");
     cmd->callback([a] {
+        if (!a->merged.empty()) {
+            if (a->reference.empty()) throw CLI::ValidationError("--merged", "needs --reference");
+            experiments::MergedSetInputs in{a->scene, {}, a->reference};
+            for (const std::string& image : splitList(a->merged))
+                in.images.emplace_back(image);
+            experiments::Report report(a->output);
+            experiments::writeMergedSetReport(experiments::measureMergedSets(in), report);
+            report.finish();
+            return;
+        }
         const experiments::ConvergenceInputs in = inputs(*a);
         experiments::Report report(a->output);
         runInterruptible("convergence", [&] {

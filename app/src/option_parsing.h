@@ -68,6 +68,41 @@ inline std::pair<int, int> parseResolution(const std::string& text) {
                                "expected WIDTHxHEIGHT, each in [1, 65536], e.g. 512x512");
 }
 
+/// "FIRST:COUNT" (`render --samples`): sample indices [FIRST, FIRST + COUNT).
+inline render::SampleRange parseSampleRange(const std::string& text) {
+    long long first = -1, count = 0;
+    char colon = 0;
+    std::istringstream in(text);
+    if (!(in >> first >> colon >> count) || colon != ':' || !in.eof() || first < 0 || count < 1 ||
+        first + count > 2147483647LL)
+        throw CLI::ValidationError("--samples",
+                                   "expected FIRST:COUNT with FIRST >= 0, COUNT >= 1 "
+                                   "and FIRST + COUNT < 2^31, e.g. 0:64, got \"" +
+                                       text + "\"");
+    return {int(first), int(count)};
+}
+
+/// "X0,X1,Y0,Y1" (`render --crop`): half-open pixel bounds (checked against the film when the
+/// render starts).
+inline render::PixelBounds parsePixelBounds(const std::string& text) {
+    const std::vector<std::string> parts = splitList(text);
+    render::PixelBounds b;
+    int* fields[4] = {&b.x0, &b.x1, &b.y0, &b.y1};
+    bool ok = parts.size() == 4;
+    for (std::size_t i = 0; ok && i < 4; ++i) {
+        char* end = nullptr;
+        const long v = std::strtol(parts[i].c_str(), &end, 10);
+        ok = *end == '\0' && v >= 0 && v <= 65536;
+        *fields[i] = int(v);
+    }
+    if (!ok || b.x0 >= b.x1 || b.y0 >= b.y1)
+        throw CLI::ValidationError("--crop",
+                                   "expected X0,X1,Y0,Y1 with X0 < X1 and Y0 < Y1 "
+                                   "(half-open pixel bounds), e.g. 0,32,0,32, got \"" +
+                                       text + "\"");
+    return b;
+}
+
 /// The options that override a scene's render settings, shared by the commands that render.
 struct RenderOverrides {
     std::string resolution;

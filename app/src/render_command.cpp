@@ -15,6 +15,7 @@
 #include "lamina/render/image_output.h"
 #include "lamina/render/render_metadata.h"
 #include "lamina/render/renderer.h"
+#include "lamina/render/shard_file.h"
 #include "lamina/version.h"
 #include "option_parsing.h"
 
@@ -33,6 +34,8 @@ struct RenderArgs {
     std::string errorLog;
     std::string sampler;
     std::string lightSelection;
+    std::string samples;
+    std::string crop;
     int spp = 0;
     double seconds = 0;
     long long seed = -1;
@@ -144,6 +147,13 @@ void runRender(const RenderArgs& a) {
         throw CLI::ValidationError("--strategies", "needs the bdpt integrator");
     a.overrides.applyTo(o);
     o.aovs = a.aovs;
+    if (!a.samples.empty()) o.samples = parseSampleRange(a.samples);
+    if (!a.crop.empty()) o.crop = parsePixelBounds(a.crop);
+    const bool shard = o.samples || o.crop;
+    if (shard && !a.reference.empty())
+        throw CLI::ValidationError("--error-log",
+                                   "measures whole renders: not with --samples "
+                                   "or --crop (merge the shards, then compare)");
 
     std::optional<experiments::ErrorLog> errors;
     if (!a.reference.empty()) errors.emplace(render::readLinearRgbImage(a.reference));
@@ -165,9 +175,14 @@ void runRender(const RenderArgs& a) {
         });
     printer.finish();
 
-    const render::ImageMetadata meta =
+    render::ImageMetadata meta =
         render::renderMetadata(scene, o, r, {LAMINA_VERSION_STRING, LAMINA_GIT_COMMIT});
-    render::writeExr(output, *r.film, a.aovs, meta);
+    if (shard) {
+        render::addShardMetadata(meta, scene, o, r);
+        render::writeShardExr(output, *r.film, meta);
+    } else {
+        render::writeExr(output, *r.film, a.aovs, meta);
+    }
     if (errors) {
         TemporaryFile tmp(a.errorLog);
         {
@@ -230,6 +245,13 @@ void registerRenderCommand(CLI::App& app) {
     cmd->add_option("--time", args->seconds, "Render progressive passes for this many seconds")
         ->check(positiveNumber("seconds"))
         ->excludes(spp);
+    cmd->add_option("--samples", args->samples,
+                    "FIRST:COUNT: render sample indices [FIRST, FIRST+COUNT) of every pixel "
+                    "into a shard EXR for `lamina merge` (with --time: at most COUNT)")
+        ->excludes(spp);
+    cmd->add_option("--crop", args->crop,
+                    "X0,X1,Y0,Y1: render pixels [X0,X1) x [Y0,Y1) of the film into a shard EXR "
+                    "for `lamina merge`");
     cmd->add_option("--seed", args->seed, "Random seed (overrides the scene's)")
         ->check(CLI::Range(0LL, render::kMaxSeedOverride));
     addThreadsOption(cmd, args->overrides);

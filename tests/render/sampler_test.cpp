@@ -4,6 +4,8 @@
 // slow way. Equal bits, so images do not change when the implementation gets faster.
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include "lamina/core/pcg32.h"
 #include "lamina/render/sampler.h"
 
@@ -72,6 +74,47 @@ TEST(SobolSampler, FastPathGivesThePlainDefinitionsNumbers) {
                     ASSERT_EQ(got.y, expected.y) << index << " " << dim;
                 }
             }
+        }
+    }
+}
+
+// Shards of a long render (`render --samples FIRST:COUNT`, `farm plan --time`) start far into
+// the sequence. Every aligned block of 2^m consecutive sample indices, however far, is a
+// (0, m, 2)-net in each dimension pair (the index shuffle maps aligned blocks onto aligned
+// blocks, Sobol's (0, 2)-sequence makes each a net, Owen scrambling keeps it one): each of
+// the 2^m cells of any shape 2^-a x 2^-(m-a) holds exactly one point, so no point repeats
+// within a block; and no block repeats the first (an index wrapping at 2^20 would).
+TEST(SobolSampler, AlignedBlocksBeyondTwoToTheTwentyAreNets) {
+    constexpr int m = 20;
+    constexpr std::uint32_t n = 1u << m;
+    const auto point = [](std::uint32_t index) {
+        PixelSampler sampler(SamplerKind::Sobol, 3, 5, 9, index);
+        sampler.get2D();  // the pair after the first, as an integrator asks for them
+        return sampler.get2D();
+    };
+    std::vector<Vec2<float>> first(n);
+    for (std::uint32_t i = 0; i < n; ++i)
+        first[i] = point(i);
+    for (const std::uint32_t block : {1u, 5u, 2047u}) {  // indices from 2^20 to 2^31 - 2^20
+        std::vector<std::uint8_t> square(n), wide(n), strata(n);
+        std::uint32_t repeats = 0;
+        for (std::uint32_t i = 0; i < n; ++i) {
+            const Vec2<float> u = point(block * n + i);
+            if (u == first[i]) ++repeats;
+            const auto cell = [&](int bitsX) {
+                const std::uint32_t cx = std::uint32_t(u.x * float(1u << bitsX));
+                const std::uint32_t cy = std::uint32_t(u.y * float(1u << (m - bitsX)));
+                return (cx << (m - bitsX)) | cy;
+            };
+            ++square[cell(m / 2)];
+            ++wide[cell(4)];
+            ++strata[cell(m)];
+        }
+        EXPECT_EQ(repeats, 0u) << "block " << block;
+        for (std::uint32_t c = 0; c < n; ++c) {
+            ASSERT_EQ(square[c], 1) << "block " << block << " cell " << c;
+            ASSERT_EQ(wide[c], 1) << "block " << block << " cell " << c;
+            ASSERT_EQ(strata[c], 1) << "block " << block << " cell " << c;
         }
     }
 }

@@ -7,26 +7,53 @@
 
 namespace lamina::render {
 
+void PixelSums::add(const PixelSums& o) {
+    sum += o.sum;
+    weightSum += o.weightSum;
+    ySum += o.ySum;
+    ySqSum += o.ySqSum;
+    yMax = std::max(yMax, o.yMax);
+    count += o.count;
+    aovSum.albedo += o.aovSum.albedo;
+    aovSum.normal += o.aovSum.normal;
+    aovSum.depth += o.aovSum.depth;
+    splatSum += o.splatSum;
+    splatYSum += o.splatYSum;
+    splatYSqSum += o.splatYSqSum;
+    splatCount += o.splatCount;
+    sqSum += o.sqSum;
+    splatSqSum += o.splatSqSum;
+}
+
 Film::Film(int width, int height, FilmSpace space)
-    : width_(width),
-      height_(height),
+    : Film(width, height, PixelBounds{0, width, 0, height}, space) {}
+
+Film::Film(int fullWidth, int fullHeight, const PixelBounds& window, FilmSpace space)
+    : width_(window.width()),
+      height_(window.height()),
+      fullWidth_(fullWidth),
+      fullHeight_(fullHeight),
+      window_(window),
       space_(space),
-      pixels_(std::size_t(width) * std::size_t(height)),
-      splatIteration_(std::size_t(width) * std::size_t(height), Rgb<double>(0.0)) {}
+      pixels_(std::size_t(width_) * std::size_t(height_)),
+      splatIteration_(std::size_t(width_) * std::size_t(height_), Rgb<double>(0.0)) {}
 
 bool Film::addSample(int x, int y, const Rgb<double>& value, double weight) {
+    if (!window_.contains(x, y)) return false;
     // XYZ may legitimately have no negative components either: reject both the same way.
     if (!value.isFinite() || value.hasNegative() || !std::isfinite(weight)) {
         rejected_.fetch_add(1, std::memory_order_relaxed);
         return false;
     }
-    Pixel& p = at(x, y);
+    Pixel& p = at(x - window_.x0, y - window_.y0);
     p.sum += value * weight;
     p.weightSum += weight;
     const double lum = space_ == FilmSpace::Xyz ? value[1] : luminance(value);
     p.ySum += lum * weight;
     p.ySqSum += lum * lum * weight;
     p.yMax = std::max(p.yMax, lum);
+    const Rgb<double> rgb = toRec709(value);
+    p.sqSum += rgb * rgb * weight;
     ++p.count;
     return true;
 }
@@ -39,19 +66,21 @@ double Film::largestSampleLuminance() const {
 }
 
 void Film::addAovs(int x, int y, const PixelAovs& a) {
-    Pixel& p = at(x, y);
+    if (!window_.contains(x, y)) return;
+    Pixel& p = at(x - window_.x0, y - window_.y0);
     p.aovSum.albedo += a.albedo;
     p.aovSum.normal += a.normal;
     p.aovSum.depth += a.depth;
 }
 
 bool Film::addSplat(int x, int y, const Rgb<double>& value) {
-    if (x < 0 || y < 0 || x >= width_ || y >= height_) return false;
+    if (!window_.contains(x, y)) return false;
     if (!value.isFinite() || value.hasNegative()) {
         rejected_.fetch_add(1, std::memory_order_relaxed);
         return false;
     }
-    Rgb<double>& target = splatIteration_[std::size_t(y) * width_ + x];
+    Rgb<double>& target =
+        splatIteration_[std::size_t(y - window_.y0) * width_ + std::size_t(x - window_.x0)];
     for (int c = 0; c < 3; ++c)
         std::atomic_ref<double>(target[c]).fetch_add(value[c], std::memory_order_relaxed);
     return true;
@@ -66,6 +95,9 @@ void Film::endSplatIteration(double scale) {
         p.splatSum += v;
         p.splatYSum += lum;
         p.splatYSqSum += lum * lum;
+        const Rgb<double> rgb = toRec709(v);
+        p.splatSqSum += rgb * rgb;
+        ++p.splatCount;
     }
     ++splatIterations_;
 }
@@ -79,7 +111,7 @@ Rgb<double> Film::toRec709(const Rgb<double>& v) const {
 Rgb<double> Film::pixel(int x, int y) const {
     const Pixel& p = at(x, y);
     Rgb<double> v = p.weightSum > 0 ? p.sum / p.weightSum : Rgb<double>(0.0);
-    if (splatIterations_ > 0) v += p.splatSum / double(splatIterations_);
+    if (p.splatCount > 0) v += p.splatSum / double(p.splatCount);
     return toRec709(v);
 }
 
@@ -95,9 +127,20 @@ double varianceOfMeanFromSums(double sum, double sqSum, double weightSum, double
 
 double Film::varianceOfMean(int x, int y) const {
     const Pixel& p = at(x, y);
-    const double n = double(splatIterations_);
+    const double n = double(p.splatCount);
     return varianceOfMeanFromSums(p.ySum, p.ySqSum, p.weightSum, double(p.count)) +
            varianceOfMeanFromSums(p.splatYSum, p.splatYSqSum, n, n);
+}
+
+Rgb<double> Film::varianceOfMeanRgb(int x, int y) const {
+    const Pixel& p = at(x, y);
+    const double n = double(p.splatCount);
+    const Rgb<double> sum = toRec709(p.sum), splat = toRec709(p.splatSum);
+    Rgb<double> v(0.0);
+    for (int c = 0; c < 3; ++c)
+        v[c] = varianceOfMeanFromSums(sum[c], p.sqSum[c], p.weightSum, double(p.count)) +
+               varianceOfMeanFromSums(splat[c], p.splatSqSum[c], n, n);
+    return v;
 }
 
 PixelAovs Film::aovs(int x, int y) const {

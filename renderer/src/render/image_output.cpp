@@ -41,6 +41,16 @@ void addMetadata(OIIO::ImageSpec& spec, const ImageMetadata& metadata) {
         spec.attribute("lamina:" + k, OIIO::TypeMatrix44, v.data());
 }
 
+/// Places the image at `window` of a fullWidth x fullHeight image.
+void setDataWindow(OIIO::ImageSpec& spec, const PixelBounds& window, int fullWidth,
+                   int fullHeight) {
+    spec.x = window.x0;
+    spec.y = window.y0;
+    spec.full_x = spec.full_y = 0;
+    spec.full_width = fullWidth;
+    spec.full_height = fullHeight;
+}
+
 }  // namespace
 
 void checkOutputPath(const std::filesystem::path& path,
@@ -53,14 +63,18 @@ void checkOutputPath(const std::filesystem::path& path,
 }
 
 void writeExr(const std::filesystem::path& path, const Film& film, bool aovs,
-              const ImageMetadata& metadata) {
+              const ImageMetadata& metadata, bool variance) {
     const int w = film.width(), h = film.height();
     std::vector<std::string> channels = {"R", "G", "B"};
     if (aovs)
         channels.insert(channels.end(), {"Albedo.R", "Albedo.G", "Albedo.B", "N.X", "N.Y", "N.Z",
                                          "Z", "Variance.Y"});
+    else if (variance)
+        channels.push_back("Variance.Y");
+    if (variance) channels.insert(channels.end(), {"Variance.R", "Variance.G", "Variance.B"});
     const std::size_t nc = channels.size();
     OIIO::ImageSpec spec(w, h, int(nc), OIIO::TypeDesc::FLOAT);
+    setDataWindow(spec, film.window(), film.fullWidth(), film.fullHeight());
     spec.channelnames = channels;
     spec.attribute("compression", "zip");
     addMetadata(spec, metadata);
@@ -80,7 +94,15 @@ void writeExr(const std::filesystem::path& path, const Film& film, bool aovs,
             const Rgb<double> v = film.pixel(x, y);
             for (int c = 0; c < 3; ++c)
                 p[c] = float(v[c]);
-            if (!aovs) continue;
+            if (variance) {
+                const Rgb<double> var = film.varianceOfMeanRgb(x, y);
+                for (int c = 0; c < 3; ++c)
+                    p[nc - 3 + std::size_t(c)] = float(var[c]);
+            }
+            if (!aovs) {
+                if (variance) p[3] = float(film.varianceOfMean(x, y));
+                continue;
+            }
             const PixelAovs a = film.aovs(x, y);
             for (int c = 0; c < 3; ++c) {
                 p[3 + c] = float(a.albedo[c]);
@@ -97,6 +119,18 @@ void writeFloatExr(const std::filesystem::path& path, int width, int height,
                    const ImageMetadata& metadata) {
     OIIO::ImageSpec spec(width, height, int(channels.size()), OIIO::TypeDesc::FLOAT);
     spec.channelnames = channels;
+    addMetadata(spec, metadata);
+    writeAtomically(path, spec, data);
+}
+
+void writeFloatExr(const std::filesystem::path& path, const PixelBounds& window, int fullWidth,
+                   int fullHeight, const std::vector<std::string>& channels,
+                   const std::vector<float>& data, const ImageMetadata& metadata) {
+    OIIO::ImageSpec spec(window.width(), window.height(), int(channels.size()),
+                         OIIO::TypeDesc::FLOAT);
+    setDataWindow(spec, window, fullWidth, fullHeight);
+    spec.channelnames = channels;
+    spec.attribute("compression", "zip");
     addMetadata(spec, metadata);
     writeAtomically(path, spec, data);
 }

@@ -5,6 +5,7 @@
 #include <tbb/parallel_for.h>
 
 #include <chrono>
+#include <limits>
 
 #include "lamina/core/error.h"
 #include "lamina/render/integrator.h"
@@ -33,7 +34,8 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
     result.modeName = kRenderModeNames.name(options.mode);
     if (settings.integrator != IntegratorKind::Path && options.aovs)
         throw InputError("AOVs are written by the path integrator only");
-    result.film = std::make_unique<Film>(width, height, RenderMode<S>::kFilmSpace);
+    const PixelBounds window = options.crop.value_or(PixelBounds{0, width, 0, height});
+    result.film = std::make_unique<Film>(width, height, window, RenderMode<S>::kFilmSpace);
     Film& film = *result.film;
 
     Geometry geometry(scene);
@@ -47,8 +49,12 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
     const auto integrator = makeIntegrator<S>({context, mode, settings, filter, options.ablations,
                                                options.aovs, result.strategies.get()});
 
-    const int tilesX = (width + kTileSize - 1) / kTileSize;
-    const int tilesY = (height + kTileSize - 1) / kTileSize;
+    const bool splats = integrator->splats();
+    // Particles from every pixel may land in a crop, so a splatting integrator traces the
+    // whole film (the film keeps what falls in its window); the path integrator only the crop.
+    const PixelBounds traced = splats ? PixelBounds{0, width, 0, height} : window;
+    const int tilesX = (traced.width() + kTileSize - 1) / kTileSize;
+    const int tilesY = (traced.height() + kTileSize - 1) / kTileSize;
     std::atomic<std::uint64_t> rays{0};
     std::atomic<std::uint64_t> pixelsDone{0};
     const bool timed = options.seconds.has_value();
@@ -74,9 +80,10 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
         tbb::parallel_for(tbb::blocked_range<int>(0, tilesX * tilesY), [&](const auto& range) {
             PathStatistics stats;
             for (int tile = range.begin(); tile != range.end(); ++tile) {
-                const int x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
-                const int x1 = std::min(x0 + kTileSize, width),
-                          y1 = std::min(y0 + kTileSize, height);
+                const int x0 = traced.x0 + (tile % tilesX) * kTileSize,
+                          y0 = traced.y0 + (tile / tilesX) * kTileSize;
+                const int x1 = std::min(x0 + kTileSize, traced.x1),
+                          y1 = std::min(y0 + kTileSize, traced.y1);
                 for (int y = y0; y < y1; ++y)
                     for (int x = x0; x < x1; ++x)
                         for (int s = first; s < first + count; ++s)
@@ -86,9 +93,9 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
             rays.fetch_add(stats.rays);
         });
     };
-    const bool splats = integrator->splats();
 
     PassSchedule schedule(settings.spp, options.seconds);
+    const int first = options.samples ? options.samples->first : 0;
     int done = 0, passes = 0;
     auto& interrupted = renderInterruptFlag();
     // The first pass always runs, so an interrupted render still has an image to write; an
@@ -97,19 +104,21 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
     bool complete = false;
     while (true) {
         if (done > 0 && interrupted.load()) break;
-        const int passSpp = schedule.next(done, elapsed());
+        int passSpp = schedule.next(done, elapsed());
+        // A sample range bounds a timed render too.
+        if (options.samples) passSpp = std::min(passSpp, options.samples->count - done);
         if (passSpp == 0) {
             complete = true;
             break;
         }
         const double passStart = elapsed();
         if (!splats) {
-            renderSamples(done, passSpp);
+            renderSamples(first + done, passSpp);
         } else {
             // Splatting integrators run one sample per pixel at a time: each such iteration
             // (width x height light paths) is one sample of the splat layer's per-pixel
             // variance.
-            for (int s = done; s < done + passSpp; ++s) {
+            for (int s = first + done; s < first + done + passSpp; ++s) {
                 renderSamples(s, 1);
                 film.endSplatIteration(1.0 / (double(width) * double(height)));
             }
@@ -131,6 +140,7 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
         }
     }
     result.spp = done;
+    result.firstSample = first;
     result.partial = !complete;
     result.seconds = elapsed();
     result.rays = rays.load();
@@ -150,10 +160,29 @@ RenderResult renderScene(const SceneDesc& scene, const RenderOptions& options,
     if (options.integrator) settings.integrator = *options.integrator;
     if (options.mis) settings.mis = *options.mis;
     if (options.lightSelection) settings.lightSelection = *options.lightSelection;
+    if (options.samples) {
+        const SampleRange& r = *options.samples;
+        if (r.first < 0 || r.count < 1 || r.count > std::numeric_limits<int>::max() - r.first)
+            throw InputError("--samples " + std::to_string(r.first) + ":" +
+                             std::to_string(r.count) +
+                             ": expected FIRST >= 0 and COUNT >= 1 with FIRST + COUNT < 2^31");
+        settings.spp = r.count;
+    }
     int width = scene.film.width, height = scene.film.height;
     if (options.resolution) std::tie(width, height) = *options.resolution;
+    if (options.crop) {
+        const PixelBounds& c = *options.crop;
+        if (c.x0 < 0 || c.y0 < 0 || c.x1 > width || c.y1 > height || c.x0 >= c.x1 || c.y0 >= c.y1)
+            throw InputError("--crop " + std::to_string(c.x0) + "," + std::to_string(c.x1) + "," +
+                             std::to_string(c.y0) + "," + std::to_string(c.y1) +
+                             ": expected 0 <= X0 < X1 <= " + std::to_string(width) +
+                             " and 0 <= Y0 < Y1 <= " + std::to_string(height) + " (the film)");
+        if (options.strategies) throw InputError("--strategies renders the whole film: no --crop");
+    }
+    const int filmWidth = options.crop ? options.crop->width() : width;
+    const int filmHeight = options.crop ? options.crop->height() : height;
     checkRenderMemory(
-        estimateRenderMemory(width, height, options.aovs,
+        estimateRenderMemory(filmWidth, filmHeight, options.aovs,
                              options.strategies && settings.integrator == IntegratorKind::Bdpt),
         width, height,
         options.resolution ? "--resolution" : scene.file.string() + ": film.resolution");

@@ -6,9 +6,14 @@
 // folded into a running mean and sum of squares, so the splat layer has a per-pixel variance
 // estimate too (iterations are independent). A sample or splat with NaN, Inf or a negative
 // value is never added: it is counted and reported.
+// A film may hold a window of a larger image (a crop, `render --crop`): the add* functions take
+// coordinates on the whole image and ignore what falls outside the window, every reader takes
+// coordinates in the window (0 <= x < width()). Every pixel keeps its own sums and counts
+// (PixelSums), so films of disjoint sample ranges or windows add up exactly (`lamina merge`).
 #pragma once
 
 #include <atomic>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -25,21 +30,60 @@ struct PixelAovs {
     double depth = 0;
 };
 
+/// Half-open pixel bounds [x0, x1) x [y0, y1), like pbrt's --pixelbounds.
+struct PixelBounds {
+    int x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+    int width() const { return x1 - x0; }
+    int height() const { return y1 - y0; }
+    bool contains(int x, int y) const { return x >= x0 && x < x1 && y >= y0 && y < y1; }
+    bool overlaps(const PixelBounds& o) const {
+        return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1;
+    }
+    bool operator==(const PixelBounds&) const = default;
+};
+
+/// What a pixel accumulates: the camera samples' weighted sums (of the film-space value and of
+/// its luminance and squared luminance, for the variance), their weight sum and count, the AOV
+/// sums, and the splat layer's sums over its iterations with the number of iterations.
+struct PixelSums {
+    Rgb<double> sum{0.0};
+    double weightSum = 0;
+    double ySum = 0, ySqSum = 0, yMax = 0;
+    std::uint64_t count = 0;
+    PixelAovs aovSum;
+    Rgb<double> splatSum{0.0};
+    double splatYSum = 0, splatYSqSum = 0;
+    std::uint64_t splatCount = 0;
+    /// Per channel of linear Rec.709: the weighted sum of the camera samples' squares and the
+    /// splat iterations' sum of squares (Variance.R/G/B of merged shards).
+    Rgb<double> sqSum{0.0};
+    Rgb<double> splatSqSum{0.0};
+    /// Adds another film's sums of the same pixel (disjoint samples).
+    void add(const PixelSums& o);
+};
+
 class Film {
   public:
     Film(int width, int height, FilmSpace space);
+    /// The window `window` of a fullWidth x fullHeight image.
+    Film(int fullWidth, int fullHeight, const PixelBounds& window, FilmSpace space);
     /// What the film allocates per pixel (render_memory.h estimates from it).
     static constexpr std::size_t bytesPerPixel();
 
     int width() const { return width_; }
     int height() const { return height_; }
+    /// The whole image the window belongs to (width() x height() without a crop).
+    int fullWidth() const { return fullWidth_; }
+    int fullHeight() const { return fullHeight_; }
+    const PixelBounds& window() const { return window_; }
     FilmSpace space() const { return space_; }
 
-    /// Adds a camera sample to pixel (x, y). Returns false (and counts it) if rejected.
+    /// Adds a camera sample to pixel (x, y) of the whole image. Returns false if it is outside
+    /// the window, or if rejected (and counts it).
     bool addSample(int x, int y, const Rgb<double>& value, double weight);
     void addAovs(int x, int y, const PixelAovs& aovs);
-    /// Adds a value to pixel (x, y) of the current splat iteration (thread-safe). Returns
-    /// false (and counts it) if rejected.
+    /// Adds a value to pixel (x, y) of the whole image in the current splat iteration
+    /// (thread-safe). Returns false if it is outside the window, or if rejected (and counts it).
     bool addSplat(int x, int y, const Rgb<double>& value);
     /// Ends a splat iteration: its image times `scale` becomes one more sample of the splat
     /// layer's per-pixel mean and variance. Not thread-safe (call between iterations).
@@ -53,28 +97,31 @@ class Film {
     /// plus that of the splat iterations (the two are independent but for the one light path
     /// BDPT traces for the pixel's own sample, whose covariance this neglects).
     double varianceOfMean(int x, int y) const;
+    /// The same per channel of linear Rec.709 (Variance.R/G/B).
+    Rgb<double> varianceOfMeanRgb(int x, int y) const;
     PixelAovs aovs(int x, int y) const;
     std::uint64_t samples(int x, int y) const { return at(x, y).count; }
+    /// The pixel's raw sums (shard files).
+    const PixelSums& sums(int x, int y) const { return at(x, y); }
+    /// Adds another film's sums to pixel (x, y) of the whole image (`lamina merge`); ignored
+    /// outside the window.
+    void addSums(int x, int y, const PixelSums& sums) {
+        if (window_.contains(x, y)) at(x - window_.x0, y - window_.y0).add(sums);
+    }
 
     std::uint64_t rejectedSamples() const { return rejected_.load(); }
     /// The largest luminance (Y) of any camera sample added (fireflies).
     double largestSampleLuminance() const;
 
   private:
-    struct Pixel {
-        Rgb<double> sum{0.0};
-        double weightSum = 0;
-        double ySum = 0, ySqSum = 0, yMax = 0;
-        std::uint64_t count = 0;
-        PixelAovs aovSum;
-        Rgb<double> splatSum{0.0};
-        double splatYSum = 0, splatYSqSum = 0;
-    };
+    using Pixel = PixelSums;
     const Pixel& at(int x, int y) const { return pixels_[std::size_t(y) * width_ + x]; }
     Pixel& at(int x, int y) { return pixels_[std::size_t(y) * width_ + x]; }
     Rgb<double> toRec709(const Rgb<double>& v) const;
 
     int width_, height_;
+    int fullWidth_, fullHeight_;
+    PixelBounds window_;
     FilmSpace space_;
     std::vector<Pixel> pixels_;
     std::vector<Rgb<double>> splatIteration_;

@@ -27,14 +27,20 @@ struct ImageMetadata {
 void checkOutputPath(const std::filesystem::path& path,
                      const std::vector<std::filesystem::path>& inputs = {});
 
+/// A cropped film is written as its window of the whole image (the EXR data window).
+/// `variance` adds Variance.R/G/B and Variance.Y (merged shards).
 void writeExr(const std::filesystem::path& path, const Film& film, bool aovs,
-              const ImageMetadata& metadata);
+              const ImageMetadata& metadata, bool variance = false);
 void writePngPreview(const std::filesystem::path& path, const Film& film, double exposure);
 
 /// An EXR of named float channels (interleaved `data`, width x height x channels.size()).
 void writeFloatExr(const std::filesystem::path& path, int width, int height,
                    const std::vector<std::string>& channels, const std::vector<float>& data,
                    const ImageMetadata& metadata = {});
+/// The same for the pixels `window` of a fullWidth x fullHeight image (the EXR data window).
+void writeFloatExr(const std::filesystem::path& path, const PixelBounds& window, int fullWidth,
+                   int fullHeight, const std::vector<std::string>& channels,
+                   const std::vector<float>& data, const ImageMetadata& metadata = {});
 /// An 8-bit image (PNG, ...) of display-ready RGB values in [0, 1] (no transfer function).
 void writeRgb8(const std::filesystem::path& path, int width, int height,
                const std::vector<float>& rgb);

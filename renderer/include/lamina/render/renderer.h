@@ -19,6 +19,12 @@ enum class RenderModeKind { Rgb, Spectral };
 inline constexpr NameTable kRenderModeNames{std::array{
     NameEntry{RenderModeKind::Rgb, "rgb"}, NameEntry{RenderModeKind::Spectral, "spectral"}}};
 
+/// Sample indices [first, first + count) of every pixel (`render --samples FIRST:COUNT`).
+struct SampleRange {
+    int first = 0;
+    int count = 0;
+};
+
 struct RenderOptions {
     RenderModeKind mode = RenderModeKind::Rgb;
     std::optional<int> spp;         ///< overrides the scene's
@@ -34,6 +40,11 @@ struct RenderOptions {
     bool aovs = false;  ///< path integrator only
     TransportAblations ablations;
     bool strategies = false;  ///< bdpt: keep per-(s, t) images (RenderResult::strategies)
+    /// Renders only these sample indices (overrides spp; with `seconds`, at most `count`).
+    std::optional<SampleRange> samples;
+    /// Renders only these pixels of the film, with the numbers of the whole render: light
+    /// particles still start from every pixel, so a crop saves only the path integrator time.
+    std::optional<PixelBounds> crop;
 };
 
 struct RenderProgress {
@@ -46,7 +57,8 @@ struct RenderProgress {
 
 struct RenderResult {
     std::unique_ptr<Film> film;
-    int spp = 0;  ///< samples per pixel rendered
+    int spp = 0;          ///< samples per pixel rendered
+    int firstSample = 0;  ///< the index of the first (RenderOptions::samples)
     double seconds = 0;
     std::uint64_t rays = 0;
     std::uint64_t paths = 0;

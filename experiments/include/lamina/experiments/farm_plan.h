@@ -1,0 +1,44 @@
+// `lamina farm plan`: a render split into N sample-range shards for a batch system. It writes
+// a shell script that renders shard INDEX (render-shard.sh INDEX: any batch system that passes
+// an index can run it: Slurm's SLURM_ARRAY_TASK_ID, a Kubernetes indexed Job's
+// JOB_COMPLETION_INDEX), a merge script, and for Slurm a job-array script, a merge job and
+// submit.sh, which submits the array and the merge with --dependency=afterok on the array
+// (docs/distributed.md).
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lamina/render/renderer.h"
+
+namespace lamina::experiments {
+
+struct FarmPlanInputs {
+    std::filesystem::path scene;       ///< made absolute in the scripts
+    std::filesystem::path directory;   ///< where the scripts, shards, logs and image go
+    std::filesystem::path executable;  ///< the lamina binary the tasks run
+    int shards = 1;
+    int spp = 0;                    ///< split into `shards` ranges (or the scene's, when 0)
+    std::optional<double> seconds;  ///< instead: every shard renders this long
+    /// Passed to every `lamina render` as they are (already validated options: --mode rgb).
+    std::vector<std::string> renderArguments;
+    int cpusPerTask = 0;  ///< #SBATCH --cpus-per-task (0: not set)
+    std::string jobName = "lamina";
+};
+
+/// The sample ranges of the shards: `spp` split as evenly as possible (the first spp % shards
+/// ranges get one more sample); with a time budget, shard i starts at i * stride, where stride
+/// (2^24, or less for more than 127 shards) bounds the samples one shard may render, so the
+/// ranges never overlap.
+std::vector<render::SampleRange> planSampleRanges(int shards, int spp, bool timed);
+
+/// The files written, in order: render-shard.sh, merge.sh, render.sbatch, merge.sbatch,
+/// submit.sh. InputError if the directory cannot be written.
+std::vector<std::filesystem::path> writeFarmPlan(const FarmPlanInputs& in);
+
+/// A word quoted for the POSIX shell ('...' with ' written '\'').
+std::string shellQuote(const std::string& word);
+
+}  // namespace lamina::experiments
