@@ -1,9 +1,12 @@
 // `lamina bench SCENE...`: throughput of the `path` integrator on scenes, in both modes:
 // camera paths per second, rays per second, and the spectral / RGB time ratio measured in the
 // same run (the machine may be shared: compare ratios, not absolute numbers across runs).
+// --embree-limit adds raw Embree's incoherent closest-hit rays/s on each scene's geometry
+// (embree_limit.h) and the path tracer's RGB ray rate as a share of it.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 
+#include "lamina/render/embree_limit.h"
 #include "lamina/render/renderer.h"
 
 namespace lamina::app {
@@ -15,6 +18,7 @@ struct BenchArgs {
     int spp = 16;
     int threads = 0;
     int repeats = 3;
+    bool embreeLimit = false;
 };
 
 void run(const BenchArgs& a) {
@@ -23,6 +27,7 @@ void run(const BenchArgs& a) {
     for (const auto& file : a.scenes) {
         const render::SceneDesc scene = render::loadScene(file);
         double best[2] = {0, 0};
+        double rgbRaysPerSecond = 0;
         for (int m = 0; m < 2; ++m) {
             render::RenderOptions o;
             o.mode = m == 0 ? render::RenderModeKind::Rgb : render::RenderModeKind::Spectral;
@@ -39,11 +44,20 @@ void run(const BenchArgs& a) {
                 }
             }
             best[m] = bestSeconds;
+            if (m == 0) rgbRaysPerSecond = double(kept.rays) / bestSeconds;
             std::printf("%-36s %-9s %8d %12.4g %12.4g %10.3f\n", file.c_str(),
                         kept.modeName.c_str(), kept.spp, double(kept.paths) / bestSeconds,
                         double(kept.rays) / bestSeconds, bestSeconds);
         }
         std::printf("%-36s spectral / rgb time: %.2f\n", file.c_str(), best[1] / best[0]);
+        if (a.embreeLimit) {
+            const auto raw = render::measureRawRayRate(scene, a.threads);
+            std::printf(
+                "%-36s raw Embree: %.4g incoherent closest-hit rays/s (%.0f%% hit); "
+                "path tracer (rgb) at %.0f%% of it\n",
+                file.c_str(), raw.raysPerSecond(), 100.0 * double(raw.hits) / double(raw.rays),
+                100.0 * rgbRaysPerSecond / raw.raysPerSecond());
+        }
     }
 }
 
@@ -59,6 +73,8 @@ void registerBenchCommand(CLI::App& app) {
     cmd->add_option("--repeats", a->repeats, "Runs per scene and mode; the fastest counts")
         ->check(CLI::Range(1, 100))
         ->capture_default_str();
+    cmd->add_flag("--embree-limit", a->embreeLimit,
+                  "Also measure raw Embree closest-hit rays/s on each scene's geometry");
     cmd->callback([a] { run(*a); });
 }
 

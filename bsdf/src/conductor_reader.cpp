@@ -28,18 +28,15 @@ ConductorOptics readOptics(const JsonReader& r) {
             "a conductor's optics are exactly one of {\"material\": name}, {\"eta\", \"k\"}, "
             "{\"nk_file\": path} or {\"f0\", \"f82\"}");
     if (named || file) {
-        o.form = ConductorOptics::Form::Spectral;
         if (named) {
             const std::string name = r.requiredString("material");
             const auto ior = namedIor(name);
             if (!ior || ior->k(550) == 0)
                 r.failAt("material", "unknown metal \"" + name + "\"; expected one of " +
                                          knownNames(namedMetalNames()));
-            o.spectrum = std::make_shared<const IorSpectrum>(*ior);
-        } else {
-            o.spectrum = loadIorAt(r, "nk_file");
+            return ConductorOptics::fromSpectrum(std::make_shared<const IorSpectrum>(*ior));
         }
-        std::tie(o.f0, o.f82) = conductorF0F82(*o.spectrum);
+        return ConductorOptics::fromSpectrum(loadIorAt(r, "nk_file"));
     } else if (etaK && (isSpectrum(r, "eta") || isSpectrum(r, "k"))) {
         // eta and k as spectra: lists of [nm, value] (a number is a constant spectrum).
         if (!r.has("eta") || !r.has("k")) r.fail("give both eta and k");
@@ -54,10 +51,8 @@ ConductorOptics readOptics(const JsonReader& r) {
         };
         const auto eta = curve("eta", Range::positive());
         const auto k = curve("k", Range::nonNegative());
-        o.form = ConductorOptics::Form::Spectral;
-        o.spectrum = std::make_shared<const IorSpectrum>(r.path().empty() ? "eta/k" : r.path(), eta,
-                                                         k, true);
-        std::tie(o.f0, o.f82) = conductorF0F82(*o.spectrum);
+        return ConductorOptics::fromSpectrum(std::make_shared<const IorSpectrum>(
+            r.path().empty() ? "eta/k" : r.path(), eta, k, true));
     } else if (etaK) {
         o.form = ConductorOptics::Form::EtaK;
         o.eta = toRgb(r.optionalTriple("eta", Range::positive()).value_or(std::array<double, 3>{}));
@@ -91,6 +86,15 @@ MaterialModel readConductor(const JsonReader& r) {
 
 void prepareEnergyTables(ConductorMaterial& c) {
     if (c.microfacet.multiscatter) c.microfacet.energyF1 = microfacetEnergyTable(c.microfacet);
+}
+
+ConductorOptics ConductorOptics::fromSpectrum(std::shared_ptr<const IorSpectrum> spectrum) {
+    ConductorOptics o;
+    o.form = Form::Spectral;
+    o.table = std::make_shared<const NkTable>(spectrum);
+    std::tie(o.f0, o.f82) = conductorF0F82(*spectrum);
+    o.spectrum = std::move(spectrum);
+    return o;
 }
 
 bool ConductorOptics::etaKIsGrey() const {

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "lamina/spectral/sampled_wavelengths.h"
 
 namespace lamina {
@@ -25,6 +27,22 @@ TEST(SampledWavelengths, VisibleSamplingInvertsTheCdf) {
         EXPECT_NEAR(cdf, u, 2e-4) << "u = " << u;
     }
     EXPECT_NEAR(visible_wavelengths::sample(0.0), kLambdaMin, 1e-9);
+}
+
+// The wavelength and pdf the sampler returns together (one logarithm, sech^2 = 1 - t^2) are
+// the inverse cdf and the density: to 1e-9 in double, to float precision in float.
+TEST(SampledWavelengths, SampledPdfIsTheDensity) {
+    for (int i = 0; i <= 1000; ++i) {
+        const double u = std::min(i / 1000.0, 1.0 - 1e-12);
+        double p = 0;
+        const double nm = visible_wavelengths::sample(u, p);
+        EXPECT_NEAR(nm, visible_wavelengths::sample(u), 1e-9) << u;
+        EXPECT_NEAR(p, visible_wavelengths::pdf(nm), 1e-12 * visible_wavelengths::pdf(nm)) << u;
+        float pf = 0;
+        const float nmf = visible_wavelengths::sample(float(u), pf);
+        EXPECT_NEAR(nmf, visible_wavelengths::sample(double(float(u))), 2e-3) << u;
+        EXPECT_NEAR(pf, visible_wavelengths::pdf(nmf), 1e-5 * visible_wavelengths::pdf(nmf)) << u;
+    }
 }
 
 TEST(SampledWavelengths, HeroRotation) {

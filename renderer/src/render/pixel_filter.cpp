@@ -7,11 +7,16 @@ namespace lamina::render {
 
 namespace {
 constexpr int kBins = 512;
-}
+constexpr int kGuide = 512;
+}  // namespace
 
 PixelFilter::PixelFilter(const FilmDesc& film)
     : kind_(film.filter), radius_(float(film.filterRadius)) {
     if (kind_ == FilterKind::Box) return;
+    if (kind_ == FilterKind::Gaussian) {
+        const float s = radius_ / 3.0f;
+        gaussianFloor_ = std::exp(-radius_ * radius_ / (2 * s * s));
+    }
     func_.resize(kBins);
     cdf_.resize(kBins + 1);
     cdf_[0] = 0;
@@ -28,6 +33,13 @@ PixelFilter::PixelFilter(const FilmDesc& film)
     integral_ = cdf_.back();
     for (float& c : cdf_)
         c /= integral_;
+    guide_.resize(kGuide);
+    for (int j = 0, i = 0; j < kGuide; ++j) {
+        const float u = float(j) / float(kGuide);
+        while (i + 1 < kBins && cdf_[std::size_t(i) + 1] <= u)
+            ++i;
+        guide_[std::size_t(j)] = i;
+    }
 }
 
 float PixelFilter::evaluate1D(float x) const {
@@ -37,8 +49,7 @@ float PixelFilter::evaluate1D(float x) const {
             return 1.0f;
         case FilterKind::Gaussian: {
             const float s = radius_ / 3.0f;
-            return std::max(
-                0.0f, std::exp(-x * x / (2 * s * s)) - std::exp(-radius_ * radius_ / (2 * s * s)));
+            return std::max(0.0f, std::exp(-x * x / (2 * s * s)) - gaussianFloor_);
         }
         case FilterKind::BlackmanHarris: {
             const float t = 2.0f * kPi<float> * (x + radius_) / (2.0f * radius_);
@@ -55,8 +66,11 @@ float PixelFilter::normalizedWeight(const Vec2<float>& offset) const {
 }
 
 float PixelFilter::sample1D(float u, float& pdf) const {
-    const auto it = std::upper_bound(cdf_.begin(), cdf_.end(), u);
-    const int i = std::clamp(int(it - cdf_.begin()) - 1, 0, kBins - 1);
+    // The last bin i with cdf_[i] <= u (what upper_bound over the cdf gives, minus one),
+    // searched upwards from the guide's bin.
+    int i = guide_[std::size_t(std::clamp(int(u * float(kGuide)), 0, kGuide - 1))];
+    while (i + 1 < kBins && cdf_[std::size_t(i) + 1] <= u)
+        ++i;
     const float c0 = cdf_[std::size_t(i)], c1 = cdf_[std::size_t(i) + 1];
     const float t = c1 > c0 ? (u - c0) / (c1 - c0) : 0.5f;
     const float dx = 2.0f * radius_ / float(kBins);

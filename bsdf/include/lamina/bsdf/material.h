@@ -19,6 +19,7 @@
 #include "lamina/core/name_table.h"
 #include "lamina/core/spectrum.h"
 #include "lamina/spectral/ior_spectrum.h"
+#include "lamina/spectral/nk_table.h"
 
 namespace lamina {
 
@@ -107,7 +108,13 @@ struct ConductorOptics {
     RgbInput f0{0.9};             ///< F0F82: normal-incidence reflectance
     std::optional<RgbInput> f82;  ///< F0F82: reflectance at cos = 1/7 (absent: plain Schlick)
     std::shared_ptr<const IorSpectrum> spectrum;  ///< Spectral (f0 and f82 hold its reductions)
+    /// Spectral: `spectrum` tabulated at 1 nm, what spectral mode evaluates at every path's
+    /// wavelengths. Without it (a description built by hand) the spectrum is evaluated
+    /// directly.
+    std::shared_ptr<const NkTable> table;
     bool etaKIsGrey() const;
+    /// Spectral optics from n, k: the table and the RGB-mode reductions F0, F82 with it.
+    static ConductorOptics fromSpectrum(std::shared_ptr<const IorSpectrum> spectrum);
 };
 
 /// `conductor`. Fresnel: Auto is exact for eta/k optics and Hoffman's F82 for f0/f82.

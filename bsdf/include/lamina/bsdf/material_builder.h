@@ -86,10 +86,16 @@ class MaterialBuilder {
             // n, k (Hoffman 2019), so the two modes differ only by the approximation.
             if constexpr (SpectrumContext<S>::kSpectral) {
                 if (c.fresnel == FresnelChoice::Auto || c.fresnel == FresnelChoice::Exact) {
-                    const IorSpectrum& ior = *o.spectrum;
-                    return Fresnel<S>::conductor(
-                        ctx_.evaluate([&](double nm) { return ior.n(nm); }),
-                        ctx_.evaluate([&](double nm) { return ior.k(nm); }));
+                    S eta, k;
+                    for (int i = 0; i < S::kSize; ++i) {
+                        const double nm = double(ctx_.lambda[i]);
+                        const NkTable::Nk nk =
+                            o.table ? (*o.table)(nm)
+                                    : NkTable::Nk{o.spectrum->n(nm), o.spectrum->k(nm)};
+                        eta[i] = Float(nk.n);
+                        k[i] = Float(nk.k);
+                    }
+                    return Fresnel<S>::conductor(eta, k);
                 }
             }
             ConductorMaterial reduced = c;

@@ -28,6 +28,22 @@ T fresnelDielectric(T cosThetaI, T eta) {
     return T(0.5) * (sqr(rParallel) + sqr(rPerpendicular));
 }
 
+/// The principal square root of a complex number (real part >= 0), without the library
+/// call: sqrt(x + i y) = a + i b with a = sqrt((|z| + x) / 2), b = y / (2 a) for x >= 0, and
+/// the roles swapped for x < 0 so that neither half cancels.
+template <std::floating_point T>
+std::complex<T> principalSqrt(const std::complex<T>& z) {
+    const T x = z.real(), y = z.imag();
+    const T r = std::sqrt(x * x + y * y);
+    if (r == T(0)) return {T(0), T(0)};
+    if (x >= T(0)) {
+        const T a = std::sqrt(T(0.5) * (r + x));
+        return {a, y / (T(2) * a)};
+    }
+    const T b = std::copysign(std::sqrt(T(0.5) * (r - x)), y);
+    return {y / (T(2) * b), b};
+}
+
 /// Reflectance of a smooth conductor with complex relative index eta + i k, for
 /// cos(theta_i) in [0, 1] (the side of the light is irrelevant for an opaque conductor).
 /// Snell's law with a complex index gives a complex cos(theta_t); the amplitude
@@ -38,11 +54,15 @@ T fresnelConductor(T cosThetaI, T eta, T k) {
     cosThetaI = clamp(std::abs(cosThetaI), T(0), T(1));
     const C n(eta, k);
     const T sin2ThetaI = T(1) - sqr(cosThetaI);
-    const C sin2ThetaT = C(sin2ThetaI) / (n * n);
-    const C cosThetaT = std::sqrt(C(1) - sin2ThetaT);
-    const C rParallel = (n * cosThetaI - cosThetaT) / (n * cosThetaI + cosThetaT);
-    const C rPerpendicular = (C(cosThetaI) - n * cosThetaT) / (C(cosThetaI) + n * cosThetaT);
-    const T r = T(0.5) * (std::norm(rParallel) + std::norm(rPerpendicular));
+    // Only |r|^2 is needed, and |a / b|^2 = |a|^2 / |b|^2: no complex division (libgcc's
+    // __divsc3, with its C99 infinity handling, was a third of the cost in spectral renders).
+    const C n2 = n * n;
+    const C sin2ThetaT = std::conj(n2) * (sin2ThetaI / std::norm(n2));
+    const C cosThetaT = principalSqrt(C(1) - sin2ThetaT);
+    const C nCosI = n * cosThetaI, nCosT = n * cosThetaT;
+    const T rParallel2 = std::norm(nCosI - cosThetaT) / std::norm(nCosI + cosThetaT);
+    const T rPerpendicular2 = std::norm(cosThetaI - nCosT) / std::norm(cosThetaI + nCosT);
+    const T r = T(0.5) * (rParallel2 + rPerpendicular2);
     // n = 0 (and k = 0) is not a material: 0/0 above. Report total reflection.
     return std::isfinite(r) ? clamp(r, T(0), T(1)) : T(1);
 }

@@ -61,6 +61,8 @@ class Geometry {
     /// of one 1e8 times larger. Powers of two keep the offsets exact, and every scene of
     /// ordinary size renders as before, bit for bit.
     float rayOffsetScale() const { return rayOffsetScale_; }
+    /// The committed Embree scene (for the raw ray-rate measurement, embree_limit.h).
+    RTCScene embreeScene() const { return scene3_; }
 
   private:
     const SceneDesc& scene_;

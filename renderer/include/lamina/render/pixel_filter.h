@@ -39,8 +39,13 @@ class PixelFilter {
 
     FilterKind kind_;
     float radius_;
+    float gaussianFloor_ = 0;  ///< exp(-r^2 / (2 s^2)), what the Gaussian subtracts
     std::vector<float> cdf_;   ///< kBins + 1 entries
     std::vector<float> func_;  ///< kBins entries
+    /// guide_[j]: the last bin i with cdf_[i] <= j / kGuide, where the search for a u in
+    /// [j / kGuide, (j + 1) / kGuide) starts (a guide table: one or two steps instead of a
+    /// binary search over the whole cdf).
+    std::vector<int> guide_;
     float integral_ = 1;
 };
 
