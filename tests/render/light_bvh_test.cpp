@@ -14,32 +14,6 @@
 namespace lamina::render {
 namespace {
 
-// One emitter of every kind, as in emission_sampling_test.cpp, with a spot light that faces
-// away from some of the points below and a one-sided triangle seen from behind by others.
-const char* kLights = R"({
-  "camera": {"position": [0, 0, -5], "look_at": [0, 0, 0]},
-  "film": {"resolution": [8, 8]},
-  "materials": {"m": {"type": "lambert", "reflectance": 0.5}},
-  "shapes": [
-    {"type": "mesh", "material": "m", "emission": {"radiance": [1, 2, 3]},
-     "positions": [[0, 0, 0], [1, 0, 0], [0.2, 1.5, 0.3]], "faces": [[0, 1, 2]]},
-    {"type": "rectangle", "material": "m", "emission": {"radiance": 2},
-     "transform": [{"scale": [0.5, 0.25, 1]}, {"translate": [0, 2, 0]}]},
-    {"type": "disk", "material": "m", "radius": 0.3, "emission": {"radiance": 1.5}},
-    {"type": "sphere", "material": "m", "center": [3, 0, 0], "radius": 0.4,
-     "emission": {"radiance": 0.7}},
-    {"type": "mesh", "material": "m", "emission": {"radiance": 1, "two_sided": true},
-     "positions": [[0, -2, 0], [1, -2, 0], [0, -2, 1]], "faces": [[0, 2, 1]]}
-  ],
-  "lights": [
-    {"type": "point", "position": [0, 1, 0], "intensity": 3},
-    {"type": "spot", "position": [0, 1, 0], "look_at": [0, 0, 0], "intensity": 2,
-     "cone_angle": 30, "falloff_start": 20},
-    {"type": "directional", "direction": [0, -1, 0.2], "irradiance": 1.2},
-    {"type": "environment", "radiance": [0.2, 0.3, 0.4]}
-  ]
-})";
-
 struct ShadingPoint {
     Vec3f p, n;
 };
@@ -81,7 +55,8 @@ ChiSquareResult selectionChiSquare(const LightSet& lights, const ShadingPoint& a
 }
 
 TEST(LightBvh, SelectionFrequenciesFollowTheProbabilities) {
-    const SceneDesc mixed = testing::sceneFromText(kLights), many = manyLights();
+    const SceneDesc mixed = testing::sceneFromText(testing::kOneEmitterOfEveryKind),
+                    many = manyLights();
     const Geometry mixedGeometry(mixed), manyGeometry(many);
     const LightSet mixedLights(mixed, mixedGeometry, LightSelection::Bvh);
     const LightSet manyLightSet(many, manyGeometry, LightSelection::Bvh);
@@ -122,7 +97,8 @@ void expectANormalisedDistribution(const LightSet& lights, const Geometry& g, co
 }
 
 TEST(LightBvh, ProbabilitiesSumToOne) {
-    const SceneDesc mixed = testing::sceneFromText(kLights), many = manyLights();
+    const SceneDesc mixed = testing::sceneFromText(testing::kOneEmitterOfEveryKind),
+                    many = manyLights();
     const Geometry mixedGeometry(mixed), manyGeometry(many);
     for (LightSelection s : {LightSelection::Bvh, LightSelection::Power, LightSelection::Uniform}) {
         expectANormalisedDistribution(LightSet(mixed, mixedGeometry, s), mixedGeometry,
@@ -132,7 +108,8 @@ TEST(LightBvh, ProbabilitiesSumToOne) {
 }
 
 TEST(LightBvh, ProbabilityIsExactlyWhatChooseReturns) {
-    const SceneDesc mixed = testing::sceneFromText(kLights), many = manyLights();
+    const SceneDesc mixed = testing::sceneFromText(testing::kOneEmitterOfEveryKind),
+                    many = manyLights();
     const Geometry mixedGeometry(mixed), manyGeometry(many);
     const LightSet mixedLights(mixed, mixedGeometry, LightSelection::Bvh);
     const LightSet manyLightSet(many, manyGeometry, LightSelection::Bvh);
@@ -155,7 +132,7 @@ TEST(LightBvh, ProbabilityIsExactlyWhatChooseReturns) {
 // Lights at infinity take a fixed share n / (n + 1) whatever the point, split in proportion
 // to their power distribution (which BDPT's MIS weights rely on).
 TEST(LightBvh, LightsAtInfinityTakeAFixedShare) {
-    const SceneDesc mixed = testing::sceneFromText(kLights);
+    const SceneDesc mixed = testing::sceneFromText(testing::kOneEmitterOfEveryKind);
     const Geometry geometry(mixed);
     const LightSet lights(mixed, geometry, LightSelection::Bvh);
     ASSERT_EQ(lights.infiniteLights().size(), 2u);
@@ -174,7 +151,7 @@ TEST(LightBvh, LightsAtInfinityTakeAFixedShare) {
 // down from (0, 1, 0), so a point above it gets none; the one-sided rectangle at y = 2 faces
 // +z (its winding), so a point behind it gets none.
 TEST(LightBvh, LightsThatCannotReachThePointAreNeverChosen) {
-    const SceneDesc mixed = testing::sceneFromText(kLights);
+    const SceneDesc mixed = testing::sceneFromText(testing::kOneEmitterOfEveryKind);
     const Geometry geometry(mixed);
     const LightSet lights(mixed, geometry, LightSelection::Bvh);
     std::size_t spot = lights.size(), rectangle = lights.size();

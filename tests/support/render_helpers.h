@@ -7,6 +7,33 @@
 
 namespace lamina::testing {
 
+// One emitter of every kind (a triangle mesh, a rectangle, a disk, a sphere, a two-sided
+// triangle), point, spot, directional and environment lights; the spot light faces away from
+// some points and the one-sided triangle is seen from behind by others.
+inline constexpr const char* kOneEmitterOfEveryKind = R"({
+  "camera": {"position": [0, 0, -5], "look_at": [0, 0, 0]},
+  "film": {"resolution": [8, 8]},
+  "materials": {"m": {"type": "lambert", "reflectance": 0.5}},
+  "shapes": [
+    {"type": "mesh", "material": "m", "emission": {"radiance": [1, 2, 3]},
+     "positions": [[0, 0, 0], [1, 0, 0], [0.2, 1.5, 0.3]], "faces": [[0, 1, 2]]},
+    {"type": "rectangle", "material": "m", "emission": {"radiance": 2},
+     "transform": [{"scale": [0.5, 0.25, 1]}, {"translate": [0, 2, 0]}]},
+    {"type": "disk", "material": "m", "radius": 0.3, "emission": {"radiance": 1.5}},
+    {"type": "sphere", "material": "m", "center": [3, 0, 0], "radius": 0.4,
+     "emission": {"radiance": 0.7}},
+    {"type": "mesh", "material": "m", "emission": {"radiance": 1, "two_sided": true},
+     "positions": [[0, -2, 0], [1, -2, 0], [0, -2, 1]], "faces": [[0, 2, 1]]}
+  ],
+  "lights": [
+    {"type": "point", "position": [0, 1, 0], "intensity": 3},
+    {"type": "spot", "position": [0, 1, 0], "look_at": [0, 0, 0], "intensity": 2,
+     "cone_angle": 30, "falloff_start": 20},
+    {"type": "directional", "direction": [0, -1, 0.2], "irradiance": 1.2},
+    {"type": "environment", "radiance": [0.2, 0.3, 0.4]}
+  ]
+})";
+
 inline render::SceneDesc sceneFromText(const std::string& json) {
     static const JsonSource source{"<test scene>", "."};
     return render::parseScene(json, source);
