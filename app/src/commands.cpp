@@ -37,6 +37,7 @@ void registerFarmCommand(CLI::App& app);
 void registerBsdfCommand(CLI::App& app);
 void registerSpectrumCommand(CLI::App& app);
 void registerInfoCommand(CLI::App& app);
+void registerConvertCommand(CLI::App& app);
 void registerBenchCommand(CLI::App& app);
 void registerCompareCommand(CLI::App& app);
 void registerReciprocityCommand(CLI::App& app);
@@ -51,6 +52,7 @@ void registerCommands(CLI::App& app) {
     registerFarmCommand(app);
     registerBsdfCommand(app);
     registerInfoCommand(app);
+    registerConvertCommand(app);
     registerBenchCommand(app);
     registerCompareCommand(app);
     registerReciprocityCommand(app);

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "lamina/bsdf/material_builder.h"
+#include "lamina/core/printable.h"
 #include "lamina/render/render_memory.h"
 #include "lamina/render/scene_description.h"
 
@@ -46,6 +47,15 @@ void run(const std::string& file) {
     // Embree's BVH over triangles takes roughly 64 bytes per primitive (a rough guide).
     bytes += (triangles + scene.spheres.size()) * 64;
     std::printf("scene: %s\n", file.c_str());
+    if (scene.format != render::SceneFormat::Lamina) {
+        std::printf(
+            "format: %s, translated with %zu warnings (`lamina convert` writes the "
+            "translation)\n",
+            std::string(render::kSceneFormatNames.name(scene.format)).c_str(),
+            scene.importWarnings.size());
+        for (const std::string& w : scene.importWarnings)
+            std::printf("  %s\n", escapeControl(w).c_str());
+    }
     std::printf("image: %dx%d, %d spp, max depth %d, %s sampler, seed %llu\n", scene.film.width,
                 scene.film.height, scene.settings.spp, scene.settings.maxDepth,
                 std::string(render::kSamplerNames.name(scene.settings.sampler)).c_str(),

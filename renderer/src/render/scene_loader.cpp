@@ -1,5 +1,8 @@
 // Scene files (docs/scene-format.md) -> SceneDesc, validated, with every error naming the file
 // and the JSON path. The parts of the file are read by the units of scene_readers.h.
+#include <iostream>
+
+#include "lamina/core/printable.h"
 #include "lamina/render/scene_readers.h"
 
 namespace lamina::render {
@@ -54,6 +57,21 @@ SceneDesc parseScene(const std::string& text, const JsonSource& source) {
 }
 
 SceneDesc loadScene(const std::filesystem::path& file) {
+    if (detectSceneFormat(file) != SceneFormat::Lamina) {
+        ImportedScene imported = importScene(file, file.parent_path());
+        std::vector<std::filesystem::path> read = std::move(imported.inputFiles);
+        // Errors in the translated document name the file and the path in the document that
+        // `lamina convert` writes, which is where a user can look them up.
+        const JsonSource source{file.string() + " (translated)", file.parent_path(), &read};
+        SceneDesc scene = readScene(imported.scene, source);
+        scene.file = file;
+        scene.format = imported.format;
+        scene.inputFiles = std::move(read);
+        for (const std::string& warning : imported.warnings)
+            std::cerr << "lamina: warning: " << escapeControl(warning) << "\n";
+        scene.importWarnings = std::move(imported.warnings);
+        return scene;
+    }
     const Json root = readJsonFile(file);
     std::vector<std::filesystem::path> read{file};
     const JsonSource source{file.string(), file.parent_path(), &read};

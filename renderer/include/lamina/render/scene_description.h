@@ -14,6 +14,7 @@
 #include "lamina/core/name_table.h"
 #include "lamina/core/vector.h"
 #include "lamina/render/material_textures.h"
+#include "lamina/render/scene_import.h"
 #include "lamina/spectral/emission_spectrum.h"
 
 namespace lamina::render {
@@ -148,6 +149,10 @@ struct LightDesc {
 
 struct SceneDesc {
     std::filesystem::path file;
+    /// The format of `file`; a pbrt-v4 or Mitsuba file was translated (scene_import.h).
+    SceneFormat format = SceneFormat::Lamina;
+    /// What the translation mapped to something else, one line each ("FILE:LINE: ...").
+    std::vector<std::string> importWarnings;
     /// The scene file itself, then every file its readers opened (meshes, textures, n/k
     /// tables, environment maps), in reading order: what the provenance hash covers.
     std::vector<std::filesystem::path> inputFiles;
@@ -168,7 +173,9 @@ struct SceneDesc {
 };
 
 /// Reads and validates a scene file (scene_loader.cpp, with the readers of scene_readers.h).
-/// Errors name the file and the JSON path.
+/// Errors name the file and the JSON path. A pbrt-v4 or Mitsuba file is translated first
+/// (scene_import.h); its warnings are kept in `importWarnings` and printed to stderr, one
+/// "lamina: warning: ..." line each.
 SceneDesc loadScene(const std::filesystem::path& file);
 /// The same from text already in memory (tests); relative paths resolve against `directory`.
 SceneDesc parseScene(const std::string& text, const JsonSource& source);

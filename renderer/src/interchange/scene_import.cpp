@@ -1,0 +1,62 @@
+// Format detection and the table of importers (scene_import.h). A new format is one entry in
+// kImporters and one value in SceneFormat.
+#include "lamina/render/scene_import.h"
+
+#include <fstream>
+
+#include "lamina/core/error.h"
+
+namespace lamina::render {
+
+namespace {
+
+struct Importer {
+    SceneFormat format;
+    ImportedScene (*translate)(const std::filesystem::path& file,
+                               const std::filesystem::path& pathsRelativeTo);
+};
+
+// Every importer, by format. A format without an entry is refused with a clear error.
+constexpr Importer kImporters[] = {
+    {SceneFormat::Lamina, nullptr},
+};
+
+}  // namespace
+
+SceneFormat detectSceneFormat(const std::filesystem::path& file) {
+    const std::string extension = file.extension().string();
+    if (extension == ".json") return SceneFormat::Lamina;
+    if (extension == ".pbrt") return SceneFormat::Pbrt;
+    if (extension == ".xml") return SceneFormat::Mitsuba;
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw InputError(file.string() + ": cannot open the scene file");
+    // The first character that is not white space decides; pbrt-v4 files start with a
+    // directive or a comment.
+    char c = 0;
+    while (in.get(c))
+        if (c != ' ' && c != '\t' && c != '\r' && c != '\n') break;
+    if (c == '{') return SceneFormat::Lamina;
+    if (c == '<') return SceneFormat::Mitsuba;
+    return SceneFormat::Pbrt;
+}
+
+ImportedScene importScene(const std::filesystem::path& file,
+                          const std::filesystem::path& pathsRelativeTo) {
+    const SceneFormat format = detectSceneFormat(file);
+    if (format == SceneFormat::Lamina)
+        throw InputError(file.string() + ": is a lamina scene already; nothing to convert");
+    for (const Importer& importer : kImporters)
+        if (importer.format == format && importer.translate)
+            return importer.translate(file, pathsRelativeTo);
+    throw InputError(file.string() + ": reading " + std::string(kSceneFormatNames.name(format)) +
+                     " scenes is not supported by this build");
+}
+
+std::string documentPath(const std::filesystem::path& path, const std::filesystem::path& base) {
+    const std::filesystem::path absolute = std::filesystem::absolute(path).lexically_normal();
+    const std::filesystem::path relative =
+        absolute.lexically_relative(std::filesystem::absolute(base).lexically_normal());
+    return relative.empty() ? absolute.generic_string() : relative.generic_string();
+}
+
+}  // namespace lamina::render
