@@ -58,11 +58,14 @@ SceneDesc parseScene(const std::string& text, const JsonSource& source) {
 
 SceneDesc loadScene(const std::filesystem::path& file) {
     if (detectSceneFormat(file) != SceneFormat::Lamina) {
-        ImportedScene imported = importScene(file, file.parent_path());
+        // A scene named without a directory ("scene.pbrt") is relative to the working one.
+        const std::filesystem::path directory =
+            file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
+        ImportedScene imported = importScene(file, directory);
         std::vector<std::filesystem::path> read = std::move(imported.inputFiles);
         // Errors in the translated document name the file and the path in the document that
         // `lamina convert` writes, which is where a user can look them up.
-        const JsonSource source{file.string() + " (translated)", file.parent_path(), &read};
+        const JsonSource source{file.string() + " (translated)", directory, &read};
         SceneDesc scene = readScene(imported.scene, source);
         scene.file = file;
         scene.format = imported.format;
