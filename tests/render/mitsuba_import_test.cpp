@@ -278,6 +278,27 @@ TEST_F(MitsubaImport, Integrators) {
         1u);
 }
 
+TEST_F(MitsubaImport, ThinLensAndOtherIntegrators) {
+    const Json s = translated(R"(<sensor type="thinlens"><float name="aperture_radius" value="0.1"/>
+<float name="focus_distance" value="5"/><float name="fov" value="40"/>
+<string name="fov_axis" value="y"/></sensor>
+<integrator type="direct"/>)" +
+                              std::string(kLight));
+    EXPECT_EQ(s["camera"], Json::parse(R"({"type": "thin_lens", "aperture_radius": 0.1,
+        "focus_distance": 5, "fov": 40})"));
+    EXPECT_EQ(s["integrator"], Json::parse(R"({"type": "path", "max_depth": 1})"));
+    const ImportedScene volpath = import(
+        "<integrator type=\"volpath\"><integer name=\"max_depth\" "
+        "value=\"4\"/></integrator>" +
+        std::string(kLight));
+    EXPECT_EQ(volpath.scene["integrator"],
+              Json::parse(R"({"type": "path", "max_depth": 3, "rr_depth": 4})"));
+    EXPECT_EQ(warningsWith(volpath, "volpath became lamina's path").size(), 1u);
+    EXPECT_EQ(error("<integrator type=\"path\">\n<boolean name=\"hide_emitters\" value=\"true\"/>"
+                    "</integrator>"),
+              where(2) + ": <integrator type=\"path\">: hide_emitters is not supported");
+}
+
 // ---- shapes --------------------------------------------------------------------------------
 
 TEST_F(MitsubaImport, AnalyticShapes) {
@@ -459,6 +480,11 @@ TEST_F(MitsubaBsdf, ConductorOptics) {
                  "</bsdf>"),
         Json::parse(R"({"type": "conductor", "f0": 1, "distribution": "ggx",
                   "alpha_x": 0.1, "alpha_y": 0.3})"));
+    EXPECT_EQ(
+        material("<bsdf type=\"conductor\"><spectrum name=\"eta\" value=\"400:1.5, 700:0.2\"/>"
+                 "<spectrum name=\"k\" value=\"400:2, 700:4\"/></bsdf>"),
+        Json::parse(R"({"type": "conductor", "eta": [[400, 1.5], [700, 0.2]],
+                  "k": [[400, 2], [700, 4]]})"));
     EXPECT_EQ(error("<bsdf type=\"conductor\" id=\"m\"><string name=\"material\" value=\"Au\"/>\n"
                     "<rgb name=\"specular_reflectance\" value=\"0.5\"/></bsdf>"),
               where(2) +

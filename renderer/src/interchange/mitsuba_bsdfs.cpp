@@ -97,8 +97,13 @@ Json conductor(Plugin& p, bool rough) {
     const bool hasNk = p.has("eta") || p.has("k");
     if (hasNk && material != "none") p.fail("give either material or eta / k, not both");
     if (hasNk) {
-        m["eta"] = p.color("eta").value_or(Json(0.0));
-        m["k"] = p.color("k").value_or(Json(1.0));
+        // Lamina's eta and k take a spectrum as the bare list [[nm, value], ...].
+        auto optics = [&](const char* name, double fallback) {
+            Json v = p.color(name).value_or(Json(fallback));
+            return v.is_object() ? v["spectrum"] : v;
+        };
+        m["eta"] = optics("eta", 0.0);
+        m["k"] = optics("k", 1.0);
     } else if (material == "none") {
         // eta 0, k 1: |(eta - 1 + ik) / (eta + 1 + ik)|^2 = 1 at every angle, a perfect mirror.
         m["f0"] = 1.0;

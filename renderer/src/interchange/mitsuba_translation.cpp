@@ -242,7 +242,9 @@ ImportedScene importMitsubaScene(const std::filesystem::path& file,
     MitsubaDocument document;
     readMitsubaDocument(file, document);
     Diagnostics diagnostics;
-    Translation t{document, diagnostics, pathsRelativeTo};
+    // loadScene passes the scene's parent path, empty for a file in the working directory.
+    Translation t{document, diagnostics,
+                  pathsRelativeTo.empty() ? std::filesystem::path(".") : pathsRelativeTo};
     t.scene["shapes"] = Json::array();
     const Element& scene = document.scene;
     // Named BSDFs first: shapes anywhere in the file refer to them by id.
