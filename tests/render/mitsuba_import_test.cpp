@@ -184,6 +184,16 @@ TEST_F(MitsubaImport, LookAtCameraMatrix) {
     EXPECT_FALSE(s["camera"].contains("handedness"));
 }
 
+TEST_F(MitsubaImport, LookAtWithoutUpTakesMitsubasBasis) {
+    // Mitsuba picks up = the first vector of coordinate_system(dir): for dir = +z, (1, 0, 0);
+    // the camera's +x (up x dir) is then (0, -1, 0).
+    const Json s = translated(R"(<sensor type="perspective"><transform name="to_world">
+<lookat origin="0, 0, 0" target="0, 0, 2"/></transform></sensor>)" +
+                              std::string(kLight));
+    EXPECT_EQ(s["camera"]["matrix"],
+              Json::parse("[0, 1, 0, 0,  -1, 0, 0, 0,  0, 0, 1, 0,  0, 0, 0, 1]"));
+}
+
 TEST_F(MitsubaImport, MirroredCameraIsLeftHanded) {
     const Json s = translated(R"(<sensor type="perspective"><transform name="to_world">
 <scale x="-1"/></transform></sensor>)" +
@@ -312,6 +322,10 @@ TEST_F(MitsubaImport, AnalyticShapes) {
         "flip_normals": true, "material": {"type": "lambert", "reflectance": 0.5},
         "emission": {"radiance": [1, 2, 3]}})"));
     EXPECT_EQ(s["shapes"][1]["normal"], Json::parse("[0, 0, -1]"));
+    // An emitter's constant spectrum is equal energy: illuminant E of that luminance.
+    EXPECT_EQ(translated("<shape type=\"disk\"><emitter type=\"area\"><spectrum name=\"radiance\" "
+                         "value=\"3\"/></emitter></shape>")["shapes"][0]["emission"],
+              Json::parse(R"({"radiance": {"illuminant": "E", "scale": 3}})"));
     EXPECT_EQ(s["shapes"][2]["transform"],
               Json::parse(R"([{"rotate": {"axis": [1, 0, 0], "angle": 180}}])"));
     EXPECT_EQ(s["shapes"][3]["type"], "mesh");

@@ -67,6 +67,15 @@ glm::dvec3 readTriple(const Element& e, double fallback, const std::string& what
     return out;
 }
 
+// Mitsuba's up for a lookat without one: the first vector of coordinate_system(dir)
+// (mitsuba3 include/mitsuba/core/vector.h, Duff et al. 2017, "Building an orthonormal basis,
+// revisited"), with sign(0) = 1.
+glm::dvec3 mitsubaDefaultUp(const glm::dvec3& n) {
+    const double sign = n.z >= 0 ? 1.0 : -1.0;
+    const double a = -1.0 / (sign + n.z), b = n.x * n.y * a;
+    return {1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x};
+}
+
 Json tripleJson(const glm::dvec3& v) {
     return Json::array({v.x, v.y, v.z});
 }
@@ -190,14 +199,16 @@ Transform readTransform(const Element& transform) {
                 throw InputError(op.where() + ": <lookat> needs origin and target");
             const auto o = parseNumbers(*origin, op, "origin");
             const auto g = parseNumbers(*target, op, "target");
-            std::vector<double> u = {0, 1, 0};
+            std::vector<double> u = {0, 0, 0};
             if (const std::string* up = op.attribute("up")) u = parseNumbers(*up, op, "up");
             if (o.size() != 3 || g.size() != 3 || u.size() != 3)
                 throw InputError(op.where() + ": <lookat>: origin, target and up take 3 numbers");
-            const glm::dvec3 eye(o[0], o[1], o[2]), at(g[0], g[1], g[2]), up(u[0], u[1], u[2]);
+            const glm::dvec3 eye(o[0], o[1], o[2]), at(g[0], g[1], g[2]);
+            glm::dvec3 up(u[0], u[1], u[2]);
             if (glm::length(at - eye) == 0)
                 throw InputError(op.where() + ": <lookat>: target equals origin");
             const glm::dvec3 dir = glm::normalize(at - eye);
+            if (glm::length(up) == 0) up = mitsubaDefaultUp(dir);
             const glm::dvec3 cross = glm::cross(up, dir);
             if (glm::length(cross) == 0)
                 throw InputError(op.where() + ": <lookat>: up is parallel to the view direction");
@@ -331,7 +342,7 @@ std::optional<Transform> Plugin::transform(const std::string& name) {
     return readTransform(*e);
 }
 
-std::optional<Json> Plugin::color(const std::string& name) {
+std::optional<Json> Plugin::color(const std::string& name, bool emitted) {
     const Element* e = property(name, {"rgb", "srgb", "float", "spectrum", "texture"});
     if (!e) return std::nullopt;
     const std::string what = "parameter \"" + name + "\"";
@@ -369,6 +380,9 @@ std::optional<Json> Plugin::color(const std::string& name) {
         if (v.size() != 1)
             throw InputError(e->where() + ": " + what + ": expected one number, got \"" + *value +
                              "\"");
+        // An emitter's constant <spectrum> is equal energy per nm (mitsuba3 xml.cpp: its RGB is
+        // value x xyz_to_srgb(1, 1, 1)): CIE illuminant E of luminance `value`.
+        if (emitted && e->tag == "spectrum") return Json{{"illuminant", "E"}, {"scale", v[0]}};
         return Json(v[0]);
     }
     if (v.size() != 1 && v.size() != 3)

@@ -63,7 +63,8 @@ class Plugin {
     std::optional<Transform> transform(const std::string& name);
     /// A colour or spectrum parameter (`<rgb>`, `<srgb>`, `<float>`, `<spectrum>`) as a lamina
     /// colour: a number, [r, g, b] or {"spectrum": [[nm, value], ...]}. `<texture>` is refused.
-    std::optional<Json> color(const std::string& name);
+    /// `emitted`: an emitter's, where a constant `<spectrum>` is illuminant E.
+    std::optional<Json> color(const std::string& name, bool emitted = false);
     /// A file parameter, as the absolute path it names (resolved against the file's directory);
     /// a missing file is an error naming the line.
     std::optional<std::filesystem::path> file(const std::string& name);

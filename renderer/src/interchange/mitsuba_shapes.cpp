@@ -59,7 +59,7 @@ Json shapeMaterial(Translation& t, Plugin& p, std::optional<double>& alpha) {
 }
 
 Json radiance(Plugin& p, const char* name, double fallback) {
-    const Json value = p.color(name).value_or(Json(fallback));
+    const Json value = p.color(name, true).value_or(Json(fallback));
     const auto negative = [](const Json& v) {
         if (v.is_number()) return v.get<double>() < 0;
         if (v.is_array())
