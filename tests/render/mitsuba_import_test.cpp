@@ -103,6 +103,14 @@ TEST_F(MitsubaImport, SceneNeedsAVersion) {
               file.string() + ":1: <scene> needs a version attribute (e.g. version=\"3.0.0\")");
 }
 
+TEST_F(MitsubaImport, NewerVersionIsRefused) {
+    for (const char* version : {"4.0.0", "99999999999999999999"}) {
+        const auto file = write("v.xml", std::string("<scene version=\"") + version + "\"/>");
+        EXPECT_EQ(lamina::testing::errorOf([&] { importScene(file, dir_); }),
+                  file.string() + ":1: scene version " + version + " is newer than Mitsuba 3");
+    }
+}
+
 TEST_F(MitsubaImport, Version06NamesAreUpgraded) {
     // Mitsuba 0.6 spells parameters in camelCase: toWorld, intIOR, maxDepth, sampleCount.
     const Json s =
@@ -381,6 +389,10 @@ TEST_F(MitsubaImport, ShapeGroupsAndInstances) {
     EXPECT_EQ(s["shapes"][0], Json::parse(R"({"type": "instance", "object": "g",
         "transform": [{"translate": [0, 1, 0]}]})"));
     EXPECT_EQ(s["shapes"][1], Json::parse(R"({"type": "instance", "object": "g"})"));
+    EXPECT_EQ(error("<shape type=\"instance\"><shape type=\"shapegroup\"/></shape>"),
+              where(2) +
+                  ": <shape type=\"instance\">: an instance needs one <ref> to a shapegroup "
+                  "with an id");
     EXPECT_EQ(error("<shape type=\"shapegroup\" id=\"g\">\n<shape type=\"sphere\">"
                     "<emitter type=\"area\"/></shape></shape>"),
               where(3) +

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <fstream>
 #include <pugixml.hpp>
 
@@ -122,9 +123,10 @@ class Reader {
         const std::string v = version.value();
         if (v.empty() || !std::isdigit(static_cast<unsigned char>(v[0])))
             throw InputError(here + ": version \"" + v + "\" is not a version number");
-        const int major = std::atoi(v.c_str());
-        if (major > 3) throw InputError(here + ": scene version " + v + " is newer than Mitsuba 3");
-        Element scene = convert(root, source, major, depth, 0);
+        const long major = std::strtol(v.c_str(), nullptr, 10);
+        if (major > 3 || v.size() > 32)
+            throw InputError(here + ": scene version " + v + " is newer than Mitsuba 3");
+        Element scene = convert(root, source, int(major), depth, 0);
         return scene;
     }
 
@@ -240,7 +242,7 @@ void readMitsubaDocument(const std::filesystem::path& file, MitsubaDocument& doc
     Reader reader(document);
     reader.readScene(file);
     if (const std::string* v = document.scene.attribute("version"))
-        document.majorVersion = std::atoi(v->c_str());
+        document.majorVersion = int(std::strtol(v->c_str(), nullptr, 10));
     document.ids.clear();
     index(document.scene, document.ids);
 }

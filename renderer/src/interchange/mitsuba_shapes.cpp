@@ -133,8 +133,8 @@ void translateShape(Translation& t, const Element& e, Json& out, bool inGroup) {
     } else if (type == "instance") {
         const auto groups = p.objects("shape");
         if (groups.size() != 1 || groups[0]->attribute("type") == nullptr ||
-            *groups[0]->attribute("type") != "shapegroup")
-            p.fail("an instance needs one <ref> to a shapegroup");
+            *groups[0]->attribute("type") != "shapegroup" || !groups[0]->attribute("id"))
+            p.fail("an instance needs one <ref> to a shapegroup with an id");
         if (inGroup) p.fail("an instance inside a shapegroup is not supported");
         s = {{"type", "instance"}, {"object", *groups[0]->attribute("id")}};
     } else if (type == "serialized") {
