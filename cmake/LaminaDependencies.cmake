@@ -38,6 +38,7 @@ if(LAMINA_BUILD_APP)
   endforeach()
   lamina_require(CLI11 libcli11-dev)
   lamina_require(tinyobjloader libtinyobjloader-dev)
+  lamina_require(pugixml libpugixml-dev)
   if(LAMINA_BUILD_PYTHON AND NOT LAMINA_SANITIZE AND NOT LAMINA_FUZZ)
     # The system interpreter, whatever python3 comes first on PATH (pyenv, a venv): Debian's
     # pybind11, NumPy and pytest are installed for it.

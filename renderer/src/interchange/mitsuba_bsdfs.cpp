@@ -1,0 +1,227 @@
+// Mitsuba 3 BSDFs -> lamina materials (mitsuba_bsdfs.h). Defaults are those of the plugin
+// documentation in mitsuba3 src/bsdfs/*.cpp.
+#include "mitsuba_bsdfs.h"
+
+#include <array>
+#include <cctype>
+#include <utility>
+
+#include "lamina/core/error.h"
+
+namespace lamina::render::mitsuba {
+
+namespace {
+
+constexpr std::array<std::pair<const char*, double>, 23> kNamedIors{{
+    {"vacuum", 1.0},      {"helium", 1.000036},        {"hydrogen", 1.000132},
+    {"air", 1.000277},    {"carbon dioxide", 1.00045}, {"water", 1.3330},
+    {"acetone", 1.36},    {"ethanol", 1.361},          {"carbon tetrachloride", 1.461},
+    {"glycerol", 1.4729}, {"benzene", 1.501},          {"silicone oil", 1.52045},
+    {"bromine", 1.661},   {"water ice", 1.31},         {"fused quartz", 1.458},
+    {"pyrex", 1.470},     {"acrylic glass", 1.49},     {"polypropylene", 1.49},
+    {"bk7", 1.5046},      {"sodium chloride", 1.544},  {"amber", 1.55},
+    {"pet", 1.5750},      {"diamond", 2.419},
+}};
+
+// Mitsuba's conductor presets (mitsuba3 src/bsdfs/conductor.cpp, data/ior/*.spd) that lamina
+// has as Rakic 1998 Lorentz-Drude fits, by Mitsuba name -> lamina name.
+constexpr std::array<std::pair<const char*, const char*>, 8> kConductorPresets{{
+    {"Ag", "Ag"},
+    {"Al", "Al"},
+    {"Au", "Au"},
+    {"Be", "Be"},
+    {"Cr", "Cr"},
+    {"Cu", "Cu"},
+    {"W", "W"},
+    {"Ni_palik", "Ni"},
+}};
+
+// The index of refraction int_ior / ext_ior: each a <float> or one of Mitsuba's names
+// (mitsuba3 lookup_ior: the property's type decides).
+double relativeIor(Plugin& p, const char* defaultInterior, const char* defaultExterior) {
+    auto side = [&](const char* name, const char* fallback) {
+        if (p.tagOf(name) == "float" || p.tagOf(name) == "integer") {
+            const double v = p.number(name, 1.0);
+            if (!(v > 0)) p.fail(std::string("parameter \"") + name + "\" must be > 0");
+            return v;
+        }
+        const std::string n = p.string(name).value_or(fallback);
+        const auto v = namedIor(n);
+        if (!v) p.fail(std::string("parameter \"") + name + "\": unknown material \"" + n + "\"");
+        return *v;
+    };
+    const double interior = side("int_ior", defaultInterior);
+    return interior / side("ext_ior", defaultExterior);
+}
+
+// Microfacet roughness of the rough plugins: `alpha` (0.1) or `alpha_u` / `alpha_v`, and
+// `distribution` (`beckmann`, Mitsuba's default, or `ggx`). Written into `m`.
+void roughness(Plugin& p, Json& m, bool anisotropic) {
+    const std::string distribution = p.string("distribution").value_or("beckmann");
+    if (distribution != "beckmann" && distribution != "ggx")
+        p.fail("distribution \"" + distribution + "\" is not supported (beckmann or ggx)");
+    m["distribution"] = distribution;
+    auto check = [&](double a, const char* name) {
+        if (!(a >= 0 && a <= 1))
+            p.fail(std::string("parameter \"") + name + "\" must be in [0, 1] for lamina");
+        return a;
+    };
+    if (anisotropic && (p.has("alpha_u") || p.has("alpha_v"))) {
+        if (p.has("alpha")) p.fail("give alpha or alpha_u / alpha_v, not both");
+        m["alpha_x"] = check(p.number("alpha_u", 0.1), "alpha_u");
+        m["alpha_y"] = check(p.number("alpha_v", 0.1), "alpha_v");
+    } else {
+        m["alpha"] = check(p.number("alpha", 0.1), "alpha");
+    }
+    // Lamina samples visible normals always; Mitsuba's switch only changes the variance.
+    if (p.has("sample_visible") && !p.boolean("sample_visible", true))
+        p.warn("sample_visible false became lamina's visible-normal sampling (same expectation)");
+}
+
+void refuseScale(Plugin& p, const char* name) {
+    if (!p.has(name)) return;
+    const auto c = p.color(name);
+    if (c && *c != Json(1.0))
+        p.fail(std::string("parameter \"") + name + "\" other than 1 is not supported");
+}
+
+void warnOneSided(Plugin& p, bool insideTwoSided, const std::string& became) {
+    if (!insideTwoSided)
+        p.warn("one-sided in Mitsuba (black seen from behind) became lamina's " + became +
+               ", which reflects on both sides");
+}
+
+Json conductor(Plugin& p, bool rough) {
+    Json m{{"type", "conductor"}};
+    const std::string material = p.string("material").value_or("none");
+    const bool hasNk = p.has("eta") || p.has("k");
+    if (hasNk && material != "none") p.fail("give either material or eta / k, not both");
+    if (hasNk) {
+        // Lamina's eta and k take a spectrum as the bare list [[nm, value], ...].
+        auto optics = [&](const char* name, double fallback) {
+            Json v = p.color(name).value_or(Json(fallback));
+            return v.is_object() ? v["spectrum"] : v;
+        };
+        m["eta"] = optics("eta", 0.0);
+        m["k"] = optics("k", 1.0);
+    } else if (material == "none") {
+        // eta 0, k 1: |(eta - 1 + ik) / (eta + 1 + ik)|^2 = 1 at every angle, a perfect mirror.
+        m["f0"] = 1.0;
+    } else {
+        const char* lamina = nullptr;
+        for (const auto& [mitsubaName, laminaName] : kConductorPresets)
+            if (material == mitsubaName) lamina = laminaName;
+        if (!lamina)
+            p.fail(
+                "material \"" + material +
+                "\" has no lamina counterpart (lamina has Ag, Al, Au, Be, Cr, Cu, Ni_palik as Ni, "
+                "W; give eta and k instead)");
+        m["material"] = lamina;
+        p.warn("material \"" + material + "\" became lamina's \"" + lamina +
+               "\" (Rakic 1998 Lorentz-Drude fit; Mitsuba's tabulated data differ slightly)");
+    }
+    refuseScale(p, "specular_reflectance");
+    if (rough) roughness(p, m, true);
+    return m;
+}
+
+Json dielectric(Plugin& p, const char* type, bool rough, const char* interior) {
+    Json m{{"type", type}, {"ior", relativeIor(p, interior, "air")}};
+    refuseScale(p, "specular_reflectance");
+    refuseScale(p, "specular_transmittance");
+    if (rough) roughness(p, m, false);
+    return m;
+}
+
+Json plastic(Plugin& p, bool rough, bool insideTwoSided) {
+    Json base{{"type", "lambert"},
+              {"reflectance", p.color("diffuse_reflectance").value_or(Json(0.5))}};
+    Json m{{"type", "coated"}, {"ior", relativeIor(p, "polypropylene", "air")}, {"base", base}};
+    refuseScale(p, "specular_reflectance");
+    const bool nonlinear = p.boolean("nonlinear", false);
+    if (rough) roughness(p, m, false);
+    p.warn(std::string(rough ? "roughplastic" : "plastic") +
+           " became lamina's coated (a dielectric coat over lambert, evaluated by a random walk "
+           "that follows every internal reflection" +
+           (nonlinear ? ", like Mitsuba's nonlinear model)"
+                      : "; Mitsuba's default nonlinear=false model desaturates the colour less)"));
+    warnOneSided(p, insideTwoSided, "coated");
+    return m;
+}
+
+}  // namespace
+
+std::optional<double> namedIor(const std::string& name) {
+    std::string lower;
+    for (char c : name)
+        lower += char(std::tolower(static_cast<unsigned char>(c)));
+    for (const auto& [n, v] : kNamedIors)
+        if (lower == n) return v;
+    return std::nullopt;
+}
+
+TranslatedBsdf translateBsdf(const Element& bsdf, const MitsubaDocument& document,
+                             Diagnostics& diagnostics, bool insideTwoSided, int depth) {
+    Plugin p(bsdf, document, diagnostics);
+    if (depth > 16) p.fail("BSDFs nested deeper than 16 (does a <ref> refer to its own BSDF?)");
+    const std::string& type = p.type();
+    TranslatedBsdf out;
+    if (type == "diffuse") {
+        out.material = {{"type", "lambert"},
+                        {"reflectance", p.color("reflectance").value_or(Json(0.5))}};
+        warnOneSided(p, insideTwoSided, "lambert");
+    } else if (type == "conductor" || type == "roughconductor") {
+        out.material = conductor(p, type == "roughconductor");
+        warnOneSided(p, insideTwoSided, "conductor");
+    } else if (type == "dielectric") {
+        out.material = dielectric(p, "dielectric", false, "bk7");
+    } else if (type == "roughdielectric") {
+        out.material = dielectric(p, "dielectric", true, "bk7");
+    } else if (type == "thindielectric") {
+        out.material = dielectric(p, "thin_dielectric", false, "bk7");
+    } else if (type == "plastic" || type == "roughplastic") {
+        out.material = plastic(p, type == "roughplastic", insideTwoSided);
+    } else if (type == "twosided") {
+        // Lamina's reflection models are two-sided already (shaded with the normal facing wo),
+        // so twosided(X) is X. Mitsuba's form with two BSDFs (front, back) has no counterpart.
+        const auto nested = p.objects("bsdf");
+        if (nested.size() != 1)
+            p.fail("twosided with " + std::to_string(nested.size()) +
+                   " BSDFs is not supported (lamina takes one, used on both sides)");
+        out = translateBsdf(*nested[0], document, diagnostics, true, depth + 1);
+    } else if (type == "blendbsdf") {
+        const auto nested = p.objects("bsdf");
+        if (nested.size() != 2) p.fail("blendbsdf needs two nested BSDFs");
+        const auto weight = p.optionalNumber("weight");
+        if (!weight && p.has("weight")) p.fail("a textured weight is not supported");
+        const double w = weight.value_or(0.5);
+        if (!(w >= 0 && w <= 1)) p.fail("weight must be in [0, 1]");
+        TranslatedBsdf a =
+            translateBsdf(*nested[0], document, diagnostics, insideTwoSided, depth + 1);
+        TranslatedBsdf b =
+            translateBsdf(*nested[1], document, diagnostics, insideTwoSided, depth + 1);
+        if (a.alpha || b.alpha) p.fail("a mask inside blendbsdf is not supported");
+        // Mitsuba: (1 - weight) first + weight second; lamina's mix: (1 - w) a + w b.
+        out.material = {{"type", "mix"}, {"a", a.material}, {"b", b.material}, {"weight", w}};
+    } else if (type == "mask") {
+        const auto nested = p.objects("bsdf");
+        if (nested.size() != 1) p.fail("mask needs one nested BSDF");
+        const auto opacity = p.color("opacity");
+        if (opacity && !opacity->is_number())
+            p.fail("opacity must be one number (a coloured or textured opacity is not supported)");
+        const double alpha = opacity ? opacity->get<double>() : 0.5;
+        if (!(alpha >= 0 && alpha <= 1)) p.fail("opacity must be in [0, 1]");
+        out = translateBsdf(*nested[0], document, diagnostics, insideTwoSided, depth + 1);
+        if (out.alpha) p.fail("a mask inside a mask is not supported");
+        if (alpha < 1) out.alpha = alpha;
+    } else {
+        p.fail("the BSDF plugin \"" + type +
+               "\" is not supported (diffuse, conductor, roughconductor, dielectric, "
+               "roughdielectric, thindielectric, plastic, roughplastic, twosided, blendbsdf, "
+               "mask)");
+    }
+    p.finish();
+    return out;
+}
+
+}  // namespace lamina::render::mitsuba

@@ -1,0 +1,263 @@
+// Mitsuba 3 shapes and emitters -> lamina shapes and lights (mitsuba_translation.h). Defaults
+// and conventions are those of the plugin documentation in mitsuba3 src/shapes/*.cpp and
+// src/emitters/*.cpp.
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include "lamina/core/error.h"
+#include "mitsuba_bsdfs.h"
+#include "mitsuba_translation.h"
+
+namespace lamina::render::mitsuba {
+
+namespace {
+
+// Mitsuba's cube: [-1, 1]^3, outward normals (mitsuba3 src/shapes/cube.cpp), as an inline
+// lamina mesh of six quads, counter-clockwise seen from outside (reversed by flip_normals).
+Json cubeMesh(bool flipNormals) {
+    Json positions = Json::array(), faces = Json::array();
+    for (int axis = 0; axis < 3; ++axis)
+        for (const double sign : {1.0, -1.0}) {
+            const int a = (axis + 1) % 3, b = (axis + 2) % 3;  // e_a x e_b = e_axis
+            const double corners[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+            Json face = Json::array();
+            for (int c = 0; c < 4; ++c) {
+                double p[3];
+                p[axis] = sign;
+                p[a] = corners[c][0];
+                p[b] = corners[c][1];
+                face.push_back(positions.size());
+                positions.push_back(Json::array({p[0], p[1], p[2]}));
+            }
+            // Seen from -e_axis the order above is clockwise: reverse it there.
+            if ((sign < 0) != flipNormals) std::reverse(face.begin(), face.end());
+            faces.push_back(face);
+        }
+    return {{"type", "mesh"}, {"positions", positions}, {"faces", faces}};
+}
+
+std::string path(Translation& t, const std::filesystem::path& file) {
+    return documentPath(file, t.pathsRelativeTo);
+}
+
+// The material of a shape: its one `<bsdf>` (nested or a ref), or Mitsuba's default diffuse
+// 0.5; `alpha` receives a mask's opacity.
+Json shapeMaterial(Translation& t, Plugin& p, std::optional<double>& alpha) {
+    const auto bsdfs = p.objects("bsdf");
+    if (bsdfs.size() > 1) p.fail("a shape takes one BSDF, got " + std::to_string(bsdfs.size()));
+    if (bsdfs.empty()) return {{"type", "lambert"}, {"reflectance", 0.5}};
+    const Element& bsdf = *bsdfs[0];
+    if (const auto it = t.namedBsdfs.find(&bsdf); it != t.namedBsdfs.end()) {
+        alpha = it->second;
+        return *bsdf.attribute("id");
+    }
+    TranslatedBsdf translated = translateBsdf(bsdf, t.document, t.diagnostics);
+    alpha = translated.alpha;
+    return translated.material;
+}
+
+Json radiance(Plugin& p, const char* name, double fallback) {
+    const Json value = p.color(name, true).value_or(Json(fallback));
+    const auto negative = [](const Json& v) {
+        if (v.is_number()) return v.get<double>() < 0;
+        if (v.is_array())
+            for (const Json& c : v)
+                if (c.get<double>() < 0) return true;
+        return false;
+    };
+    if (negative(value)) p.fail(std::string("parameter \"") + name + "\" must be >= 0");
+    return value;
+}
+
+glm::dvec3 transformPoint(const glm::dmat4& m, const glm::dvec3& p) {
+    return glm::dvec3(m * glm::dvec4(p, 1.0));
+}
+glm::dvec3 transformVector(const glm::dmat4& m, const glm::dvec3& v) {
+    return glm::dvec3(m * glm::dvec4(v, 0.0));
+}
+Json triple(const glm::dvec3& v) {
+    return Json::array({v.x, v.y, v.z});
+}
+
+// The rotation part of an envmap's to_world as lamina environment `transform` operations;
+// anything but a rotation (and a translation, which directions ignore) is refused.
+Json environmentRotation(Plugin& p, const Transform& transform) {
+    const glm::dmat3 r(transform.matrix);
+    const glm::dmat3 product = glm::transpose(r) * r;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            if (std::abs(product[i][j] - (i == j ? 1.0 : 0.0)) > 1e-6)
+                p.fail(
+                    "to_world of an envmap must be a rotation (lamina refuses a scale or shear)");
+    if (glm::determinant(r) < 0) p.fail("to_world of an envmap must not mirror");
+    bool rotationsOnly = true;
+    for (const Json& op : transform.operations)
+        rotationsOnly &= op.contains("rotate");
+    if (rotationsOnly) return transform.operations;
+    Json rows = Json::array();
+    for (int row = 0; row < 4; ++row)
+        for (int col = 0; col < 4; ++col)
+            rows.push_back(row < 3 && col < 3 ? r[col][row] : (row == col ? 1.0 : 0.0));
+    return Json::array({Json{{"matrix", rows}}});
+}
+
+}  // namespace
+
+void translateShape(Translation& t, const Element& e, Json& out, bool inGroup) {
+    Plugin p(e, t.document, t.diagnostics);
+    const std::string& type = p.type();
+    Json s = Json::object();
+    if (type == "obj" || type == "ply") {
+        const auto file = p.file("filename");
+        if (!file) p.fail("needs a filename");
+        s = {{"type", type}, {"file", path(t, *file)}};
+        if (p.boolean("flip_normals", false))
+            p.fail("flip_normals is not supported on meshes (lamina meshes face as wound)");
+        if (p.boolean("face_normals", false))
+            p.warn("face_normals became the file's own normals (lamina uses them when present)");
+        // Textures are not imported, so the uv orientation changes nothing.
+        if (type == "obj") p.boolean("flip_tex_coords", true);
+    } else if (type == "rectangle") {
+        s = {{"type", "rectangle"}};
+    } else if (type == "cube") {
+        s = cubeMesh(p.boolean("flip_normals", false));
+    } else if (type == "sphere") {
+        const glm::dvec3 center = p.point("center").value_or(glm::dvec3(0.0));
+        s = {{"type", "sphere"}, {"center", triple(center)}, {"radius", p.number("radius", 1.0)}};
+        if (p.boolean("flip_normals", false)) s["flip_normals"] = true;
+    } else if (type == "disk") {
+        s = {{"type", "disk"}};
+        if (p.boolean("flip_normals", false)) s["normal"] = Json::array({0.0, 0.0, -1.0});
+    } else if (type == "instance") {
+        const auto groups = p.objects("shape");
+        if (groups.size() != 1 || groups[0]->attribute("type") == nullptr ||
+            *groups[0]->attribute("type") != "shapegroup" || !groups[0]->attribute("id"))
+            p.fail("an instance needs one <ref> to a shapegroup with an id");
+        if (inGroup) p.fail("an instance inside a shapegroup is not supported");
+        s = {{"type", "instance"}, {"object", *groups[0]->attribute("id")}};
+    } else if (type == "serialized") {
+        p.fail("the serialized mesh format is not supported (convert the mesh to PLY or OBJ)");
+    } else {
+        p.fail("the shape plugin \"" + type +
+               "\" is not supported (obj, ply, rectangle, cube, sphere, disk, instance, "
+               "shapegroup)");
+    }
+    if (const std::string* id = e.attribute("id")) s["name"] = *id;
+    if (const auto transform = p.transform("to_world")) {
+        Json operations = transform->operations;
+        if (type == "rectangle" && p.boolean("flip_normals", false))
+            operations.insert(operations.begin(),
+                              Json{{"rotate", {{"axis", {1.0, 0.0, 0.0}}, {"angle", 180.0}}}});
+        if (!operations.empty()) s["transform"] = operations;
+    } else if (type == "rectangle" && p.boolean("flip_normals", false)) {
+        // Turned over about x: the same square, facing -z.
+        s["transform"] =
+            Json::array({Json{{"rotate", {{"axis", {1.0, 0.0, 0.0}}, {"angle", 180.0}}}}});
+    }
+    if (type != "instance") {
+        std::optional<double> alpha;
+        s["material"] = shapeMaterial(t, p, alpha);
+        const auto emitters = p.objects("emitter");
+        if (emitters.size() > 1) p.fail("a shape takes one emitter");
+        if (!emitters.empty()) {
+            Plugin emitter(*emitters[0], t.document, t.diagnostics);
+            if (emitter.type() != "area")
+                emitter.fail("only an area emitter can be attached to a shape");
+            if (inGroup) emitter.fail("an emitting shape inside a shapegroup is not supported");
+            s["emission"] = {{"radiance", radiance(emitter, "radiance", 1.0)}};
+            emitter.finish();
+        }
+        if (alpha) {
+            if (!emitters.empty()) p.fail("a mask on an emitting shape is not supported");
+            s["alpha"] = *alpha;
+        }
+    }
+    p.finish();
+    out.push_back(s);
+}
+
+void translateShapeGroup(Translation& t, const Element& group) {
+    Plugin p(group, t.document, t.diagnostics);
+    const std::string* id = group.attribute("id");
+    if (!id) p.fail("a shapegroup needs an id");
+    Json shapes = Json::array();
+    for (const Element* shape : p.objects("shape"))
+        translateShape(t, *shape, shapes, true);
+    if (shapes.empty()) p.fail("an empty shapegroup");
+    p.finish();
+    t.scene["objects"][*id] = shapes;
+}
+
+void translateEmitter(Translation& t, const Element& e) {
+    Plugin p(e, t.document, t.diagnostics);
+    const std::string& type = p.type();
+    const auto transform = p.transform("to_world");
+    const glm::dmat4 toWorld = transform ? transform->matrix : glm::dmat4(1.0);
+    Json light;
+    if (type == "point") {
+        if (transform && p.has("position")) p.fail("give position or to_world, not both");
+        const glm::dvec3 position =
+            p.point("position").value_or(transformPoint(toWorld, glm::dvec3(0.0)));
+        light = {{"type", "point"},
+                 {"position", triple(position)},
+                 {"intensity", radiance(p, "intensity", 1.0)}};
+    } else if (type == "spot") {
+        // mitsuba3 spot.cpp: at the origin of to_world, along its +z; cutoff_angle 20 degrees,
+        // beam_width 3/4 of it, falloff linear in the angle between the two.
+        const double cutoff = p.number("cutoff_angle", 20.0);
+        const double beam = p.number("beam_width", cutoff * 0.75);
+        if (!(cutoff > 0 && cutoff < 180) || !(beam >= 0 && beam <= cutoff))
+            p.fail("needs 0 < beam_width <= cutoff_angle < 180 degrees");
+        const glm::dvec3 position = transformPoint(toWorld, glm::dvec3(0.0));
+        const glm::dvec3 direction = transformVector(toWorld, glm::dvec3(0, 0, 1));
+        if (glm::length(direction) == 0) p.fail("to_world maps +z to zero");
+        light = {{"type", "spot"},
+                 {"position", triple(position)},
+                 {"look_at", triple(position + glm::normalize(direction))},
+                 {"intensity", radiance(p, "intensity", 1.0)},
+                 {"cone_angle", cutoff},
+                 {"falloff_start", beam}};
+        p.warn(
+            "spot became lamina's spot: the falloff between beam_width and cutoff_angle is a "
+            "smoothstep in cos theta (Mitsuba's is linear in the angle)");
+    } else if (type == "directional") {
+        // mitsuba3 directional.cpp: `direction` (where the light travels) or to_world's +z.
+        if (transform && p.has("direction")) p.fail("give direction or to_world, not both");
+        const glm::dvec3 direction =
+            p.point("direction").value_or(transformVector(toWorld, glm::dvec3(0, 0, 1)));
+        if (glm::length(direction) == 0) p.fail("the direction is zero");
+        light = {{"type", "directional"},
+                 {"direction", triple(direction)},
+                 {"irradiance", radiance(p, "irradiance", 1.0)}};
+    } else if (type == "constant") {
+        light = {{"type", "environment"}, {"radiance", radiance(p, "radiance", 1.0)}};
+    } else if (type == "envmap") {
+        const auto file = p.file("filename");
+        if (!file) p.fail("needs a filename");
+        light = {{"type", "environment"}, {"file", path(t, *file)}};
+        const double scale = p.number("scale", 1.0);
+        if (!(scale >= 0)) p.fail("scale must be >= 0");
+        if (scale != 1.0) light["scale"] = scale;
+        if (transform) {
+            const Json rotation = environmentRotation(p, *transform);
+            if (!rotation.empty()) light["transform"] = rotation;
+        }
+        p.ignore("mis_compensation", "lamina samples the map by luminance x sin theta");
+        // mitsuba3 envmap.cpp: u = atan2(d.x, -d.z) / 2 pi; lamina: u = 1/2 + atan2(d.x, d.z) /
+        // 2 pi. The two run round +y in opposite senses: a reflection, which no rotation undoes.
+        p.warn(
+            "envmap became a lamina environment with the same axes, but lamina's longitude "
+            "runs the other way round +y: the map appears mirrored left-right");
+    } else if (type == "area") {
+        p.fail("an area emitter must be nested in a shape");
+    } else {
+        p.fail("the emitter plugin \"" + type +
+               "\" is not supported (area, point, spot, directional, constant, envmap)");
+    }
+    p.finish();
+    t.scene["lights"].push_back(light);
+}
+
+}  // namespace lamina::render::mitsuba
