@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "lamina/core/error.h"
+#include "pbrt_importer.h"
 
 namespace lamina::render {
 
@@ -19,6 +20,7 @@ struct Importer {
 // Every importer, by format. A format without an entry is refused with a clear error.
 constexpr Importer kImporters[] = {
     {SceneFormat::Lamina, nullptr},
+    {SceneFormat::Pbrt, pbrt::importPbrt},
 };
 
 }  // namespace
