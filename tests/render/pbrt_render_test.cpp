@@ -1,6 +1,7 @@
 // pbrt-v4 scenes, imported, render the same images as the same scenes written by hand in
 // lamina's format (tests/data/interchange/pbrt/: a Cornell box; glass and copper spheres under
-// an environment; named metals and a coated diffuse under a blackbody light, with bdpt). Each
+// an environment; named metals and a coated diffuse under a blackbody light, with bdpt; an
+// instanced mesh, once lamina's reader has instances). Each
 // is rendered as 32 independent batches from different seeds and compared with the blockwise
 // Welch t-test of the estimator-agreement experiment (4x4-pixel blocks, alpha = 0.01): pass
 // when at most 3% of the blocks reject, the image means' t-test has p >= 0.0027 and the means
@@ -10,6 +11,7 @@
 
 #include <cmath>
 
+#include "cli_helpers.h"
 #include "lamina/experiments/estimator_agreement.h"
 #include "lamina/render/renderer.h"
 #include "lamina/render/scene_import.h"
@@ -34,7 +36,15 @@ class PbrtSceneAgrees : public ::testing::TestWithParam<PbrtCase> {};
 
 TEST_P(PbrtSceneAgrees, ImportedAndHandWrittenScenesRenderTheSameImage) {
     const PbrtCase& c = GetParam();
-    const SceneDesc imported = loadScene(dataPath(std::string(c.scene) + ".pbrt"));
+    SceneDesc imported;
+    try {
+        imported = loadScene(dataPath(std::string(c.scene) + ".pbrt"));
+    } catch (const InputError& e) {
+        // The instanced scene translates to lamina's "objects" (common-spec.md), which the
+        // instances branch adds to the reader; until it is merged, the reader refuses it.
+        if (std::string(e.what()).find("objects") == std::string::npos) throw;
+        GTEST_SKIP() << "lamina's reader has no object instancing yet: " << e.what();
+    }
     const SceneDesc handWritten = loadScene(dataPath(std::string(c.scene) + ".json"));
     EXPECT_EQ(imported.format, SceneFormat::Pbrt);
     RenderOptions o;
@@ -56,7 +66,8 @@ TEST_P(PbrtSceneAgrees, ImportedAndHandWrittenScenesRenderTheSameImage) {
 INSTANTIATE_TEST_SUITE_P(Scenes, PbrtSceneAgrees,
                          ::testing::Values(PbrtCase{"cornell_box", "cornell-box", 2048},
                                            PbrtCase{"glass_sphere", "glass-sphere", 2048},
-                                           PbrtCase{"conductor", "conductor", 1024}),
+                                           PbrtCase{"conductor", "conductor", 1024},
+                                           PbrtCase{"instanced", "instanced", 1024}),
                          [](const auto& info) { return std::string(info.param.name); });
 
 // The luminance of the image's four quadrants: top-left, top-right, bottom-left,
@@ -81,7 +92,7 @@ TEST_F(PbrtOrientation, AnEmitterOnPbrtsUpperLeftComesOutUpperLeft) {
         "Film \"rgb\" \"integer xresolution\" 24 \"integer yresolution\" 16\n"
         "Sampler \"independent\" \"integer pixelsamples\" 4\nWorldBegin\n"
         "AttributeBegin\nAreaLightSource \"diffuse\" \"rgb L\" [1 1 1]\n"
-        "Translate -1.2 0.6 4\nShape \"sphere\" \"float radius\" 0.4\nAttributeEnd\n";
+        "Translate -1.2 1.0 4\nShape \"sphere\" \"float radius\" 0.4\nAttributeEnd\n";
     const SceneDesc plain = loadScene(write("plain.pbrt", body));
     const SceneDesc mirrored = loadScene(write("mirrored.pbrt", "Scale -1 1 1\n" + body));
     RenderOptions o;
@@ -91,6 +102,52 @@ TEST_F(PbrtOrientation, AnEmitterOnPbrtsUpperLeftComesOutUpperLeft) {
     const auto m = quadrants(*renderScene(mirrored, o).film);
     EXPECT_GT(m[1], 0.0);
     EXPECT_EQ(m[0] + m[2] + m[3], 0.0) << m[0] << " " << m[2] << " " << m[3];
+}
+
+using PbrtCommandLine = lamina::testing::ScratchDirectoryTest;
+
+TEST_F(PbrtCommandLine, ConvertWritesTheSceneThatRenders) {
+    write("m.ply",
+          "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float "
+          "y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+          "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+    const auto scene = write("s.pbrt",
+                             "LookAt 0 0 -3  0 0 0  0 1 0\nCamera \"perspective\"\n"
+                             "Film \"rgb\" \"integer xresolution\" 8 "
+                             "\"integer yresolution\" 8\nWorldBegin\n"
+                             "AreaLightSource \"diffuse\"\n"
+                             "Shape \"plymesh\" \"string filename\" \"m.ply\"\n");
+    std::filesystem::create_directories(dir_ / "out");
+    const auto out = dir_ / "out" / "s.json";
+    const CommandRun run = runLamina("convert " + scene.string() + " -o " + out.string());
+    EXPECT_EQ(run.exitCode, 0) << run.output;
+    // The mesh path is relative to the output's directory, and the written scene loads.
+    const Json written = readJsonFile(out);
+    EXPECT_EQ(written["shapes"][0]["file"], "../m.ply");
+    const SceneDesc fromJson = loadScene(out), fromPbrt = loadScene(scene);
+    ASSERT_EQ(fromJson.meshes.size(), 1u);
+    EXPECT_EQ(fromJson.meshes[0].positions, fromPbrt.meshes[0].positions);
+    EXPECT_EQ(fromJson.camera.handedness, Handedness::Left);
+    EXPECT_EQ(fromJson.film.width, 8);
+}
+
+TEST_F(PbrtCommandLine, ErrorsAndWarningsNameFileAndLine) {
+    const auto bad = write("bad.pbrt", "WorldBegin\n\nShape \"cylinder\"\n");
+    const CommandRun run =
+        runLaminaStderr("render " + bad.string() + " -o " + (dir_ / "x.exr").string());
+    EXPECT_EQ(run.exitCode, 1);
+    EXPECT_EQ(run.output, "lamina: error: " + bad.string() +
+                              ":3: Shape \"cylinder\" is not supported (lamina reads sphere, "
+                              "disk, trianglemesh, plymesh and bilinearmesh)\n");
+    const auto warned = write("warned.pbrt",
+                              "Integrator \"volpath\"\nWorldBegin\n"
+                              "LightSource \"point\"\n");
+    const CommandRun info = runLaminaStderr("info " + warned.string());
+    EXPECT_EQ(info.exitCode, 0) << info.output;
+    EXPECT_NE(info.output.find("lamina: warning: " + warned.string() +
+                               ":1: Integrator \"volpath\" became lamina's path tracer"),
+              std::string::npos)
+        << info.output;
 }
 
 }  // namespace

@@ -3,9 +3,12 @@
 // errors, with file and line, of what is refused.
 #include <gtest/gtest.h>
 
+#include <zlib.h>
+
 #include <cmath>
 
 #include "lamina/render/camera.h"
+#include "lamina/render/mesh_files.h"
 #include "lamina/render/scene_import.h"
 #include "lamina/spectral/cie.h"
 #include "lamina/spectral/emission_spectrum.h"
@@ -465,6 +468,32 @@ EXPECT_EQ(t["checks"], Json::parse(R"({"type": "checkerboard", "a": [1, 0, 0], "
         EXPECT_EQ(s.warnings[0], at(4) + ": object \"never\" is never instanced: not translated");
         EXPECT_EQ(importError("ObjectInstance \"ghost\"\n"),
                   at(1) + ": ObjectInstance \"ghost\": no such object");
+    }
+
+    TEST_F(PbrtTranslation, GzipCompressedPlyMeshesAreRead) {
+        const std::string ply =
+            "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+            "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+            "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+        const auto file = dir_ / "m.ply.gz";
+        gzFile out = gzopen(file.string().c_str(), "wb");
+        ASSERT_TRUE(out);
+        gzwrite(out, ply.data(), unsigned(ply.size()));
+        gzclose(out);
+        MeshDesc mesh;
+        readPly(file, mesh);
+        ASSERT_EQ(mesh.triangles.size(), 1u);
+        EXPECT_EQ(mesh.positions[1], Vec3<float>(1, 0, 0));
+        const ImportedScene s = import("Shape \"plymesh\" \"string filename\" \"m.ply.gz\"\n");
+        EXPECT_EQ(s.scene["shapes"][0]["file"], "m.ply.gz");
+        expectLoads();
+        // A gzip header followed by garbage.
+        const auto broken = write("broken.ply.gz", std::string("\x1f\x8b\x08\x00\x00\x00\x00\x00"
+                                                               "\x00\x03garbage, not deflate",
+                                                               30));
+        EXPECT_NE(errorOf([&] { readPly(broken, mesh); }).find("not a valid gzip file"),
+                  std::string::npos)
+            << errorOf([&] { readPly(broken, mesh); });
     }
 
     TEST_F(PbrtTranslation, ParserWarningsComeFirstAndInOrder) {

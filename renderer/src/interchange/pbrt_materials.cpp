@@ -225,8 +225,10 @@ std::string useTexture(TranslationContext& ctx, const std::string& name,
         if (t.name == name && t.valueType == valueType) def = &t;
     if (!def) ctx.fail(usedAt, "no " + valueType + " texture named \"" + name + "\"");
     const std::string laminaName = valueType == "float" ? name + " (float)" : name;
+    if (ctx.texturesInProgress.count(laminaName))
+        ctx.fail(usedAt, "texture \"" + name + "\" is made of itself");
     if (ctx.writtenTextures.count(laminaName)) return laminaName;
-    ctx.writtenTextures.insert(laminaName);
+    ctx.texturesInProgress.insert(laminaName);
     const Entity& e = def->entity;
     const ParamList& params = e.params;
     Json t;
@@ -315,6 +317,8 @@ std::string useTexture(TranslationContext& ctx, const std::string& name,
     }
     params.refuseUnused();
     ctx.document["textures"][laminaName] = t;
+    ctx.texturesInProgress.erase(laminaName);
+    ctx.writtenTextures.insert(laminaName);
     return laminaName;
 }
 

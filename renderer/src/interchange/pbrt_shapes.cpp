@@ -231,7 +231,6 @@ std::optional<Json> translateShape(TranslationContext& ctx, const ShapeDef& s) {
         }
         if (bilinear && !planar(mesh))
             ctx.warn(e.location, "bilinearmesh: a non-planar patch became two triangles");
-        if (params.has("emissionfilename") || params.has("displacement")) params.refuseUnused();
         shape = meshJson(mesh, s.reverseOrientation);
         areas = faceAreas(mesh, m);
     } else if (e.type == "plymesh") {

@@ -26,6 +26,8 @@ struct TranslationContext {
     /// Each pbrt material translated once (a mix refers to others by name), null for
     /// "interface".
     std::map<std::string, Json> translatedMaterials;
+    /// Textures being translated (a texture made of itself is refused).
+    std::set<std::string> texturesInProgress;
 
     void warn(const Location& at, const std::string& message) {
         warnings.push_back(at.str() + ": " + message);
