@@ -13,7 +13,7 @@ namespace lamina::render::pbrt {
 namespace {
 
 using lamina::testing::errorOf;
-using PbrtParser = lamina::testing::ScratchDirectoryTest;
+using PbrtIncludes = lamina::testing::ScratchDirectoryTest;
 
 ParsedScene parse(const std::string& text) {
     return parseText(text, "s.pbrt", ".");
@@ -175,7 +175,7 @@ TEST(PbrtParser, DirectiveErrorsNameFileAndLine) {
     EXPECT_EQ(parseError("AttributeEnd\n"),
               "s.pbrt:1: AttributeEnd without a matching AttributeBegin");
     EXPECT_EQ(parseError("AttributeBegin\nShape \"sphere\"\n"),
-              "s.pbrt:1: AttributeBegin is not closed before the end of s.pbrt (line 2)");
+              "s.pbrt:1: AttributeBegin is not closed before the end of s.pbrt (line 3)");
     EXPECT_EQ(parseError("CoordSysTransform \"nowhere\""),
               "s.pbrt:1: CoordSysTransform: no coordinate system \"nowhere\" was defined");
     EXPECT_EQ(parseError("MakeNamedMedium \"fog\" \"string type\" \"homogeneous\""),
@@ -209,7 +209,7 @@ TEST(PbrtParser, ObjectsAndInstances) {
               "s.pbrt:2: ObjectBegin \"b\" inside ObjectBegin \"a\"");
 }
 
-TEST_F(PbrtParser, IncludeAndImportReadFilesBesideTheScene) {
+TEST_F(PbrtIncludes, IncludeAndImportReadFilesBesideTheScene) {
     write("part.pbrt", "Shape \"sphere\"\nInclude \"deeper.pbrt\"\n");
     write("deeper.pbrt", "Shape \"disk\"\n");
     const auto main = write("main.pbrt",

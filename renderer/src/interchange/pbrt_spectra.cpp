@@ -168,7 +168,21 @@ Json emissionValue(TranslationContext& ctx, const ParamList& params, const std::
                                 "stdillum-A, D50, D65 and F1 to F12)");
         return Json{{"illuminant", illuminant}, {"scale", scale}};
     }
-    const std::vector<double> pairs = spectrumPairs(ctx, params, *p);
+    std::vector<double> pairs = spectrumPairs(ctx, params, *p);
+    // pbrt-v4's PiecewiseLinearSpectrum is 0 outside its wavelengths; lamina's list keeps its
+    // end values there, so the list is closed with zeros over lamina's range.
+    constexpr double kStep = 1e-3;  // nm
+    if (pairs.front() > kLambdaMin) {
+        std::vector<double> head{kLambdaMin, 0.0};
+        if (pairs.front() - kStep > kLambdaMin)
+            head.insert(head.end(), {pairs.front() - kStep, 0.0});
+        pairs.insert(pairs.begin(), head.begin(), head.end());
+    }
+    if (pairs[pairs.size() - 2] < kLambdaMax) {
+        if (pairs[pairs.size() - 2] + kStep < kLambdaMax)
+            pairs.insert(pairs.end(), {pairs[pairs.size() - 2] + kStep, 0.0});
+        pairs.insert(pairs.end(), {kLambdaMax, 0.0});
+    }
     std::vector<double> nm, values;
     for (std::size_t i = 0; i + 1 < pairs.size(); i += 2) {
         nm.push_back(pairs[i]);
