@@ -284,7 +284,8 @@ TEST_F(PbrtTranslation, TabulatedEmissionIsNormalisedToItsLuminance) {
     }
     const EmissionSpectrum e =
         EmissionSpectrum::tabulated(nm, values, radiance["scale"].get<double>(), "test");
-    const double y = integrateAgainstCmf([&](double nm) { return e(nm); }).y / cieYIntegral();
+    const double y =
+        integrateAgainstCmf([&](double lambda) { return e(lambda); }).y / cieYIntegral();
     EXPECT_NEAR(y, 2.0, 1e-9);
 }
 
