@@ -9,7 +9,7 @@ packages=(
   libembree-dev libtbb-dev
   libopenimageio-dev openimageio-tools libopenexr-dev
   libglm-dev nlohmann-json3-dev libcli11-dev libyaml-cpp-dev
-  colord-data libtinyobjloader-dev libpugixml-dev
+  colord-data libtinyobjloader-dev libpugixml-dev zlib1g-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-matplotlib python3-numpy python3-jsonschema
   python3-dev pybind11-dev python3-pybind11 python3-pytest

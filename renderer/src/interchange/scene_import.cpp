@@ -6,6 +6,7 @@
 
 #include "lamina/core/error.h"
 #include "mitsuba_translation.h"
+#include "pbrt_importer.h"
 
 namespace lamina::render {
 
@@ -21,6 +22,7 @@ struct Importer {
 constexpr Importer kImporters[] = {
     {SceneFormat::Lamina, nullptr},
     {SceneFormat::Mitsuba, mitsuba::importMitsubaScene},
+    {SceneFormat::Pbrt, pbrt::importPbrt},
 };
 
 }  // namespace

@@ -7,7 +7,10 @@
 #include <cstring>
 #include <fstream>
 #include <limits>
+#include <memory>
 #include <sstream>
+
+#include <zlib.h>
 
 #include "lamina/core/error.h"
 #include "lamina/core/input_file.h"
@@ -15,6 +18,51 @@
 namespace lamina::render {
 
 namespace {
+
+// A gzip-compressed PLY (.ply.gz, as pbrt-v4 scenes ship them) is decompressed into memory,
+// at most this many bytes: a small file that inflates without end (a zip bomb) is refused
+// when it passes the bound, not when memory runs out.
+constexpr std::uintmax_t kMaxDecompressedPlyBytes = 1024 * kMiB;
+
+bool isGzip(const std::filesystem::path& file) {
+    return file.extension() == ".gz";
+}
+
+std::string gunzip(const std::filesystem::path& file) {
+    checkInputFile(file, kMaxMeshFileBytes);
+    gzFile in = gzopen(file.string().c_str(), "rb");
+    if (!in) throw InputError(file.string() + ": cannot open the PLY file");
+    std::string data;
+    char buffer[1 << 16];
+    while (true) {
+        const int n = gzread(in, buffer, sizeof buffer);
+        if (n < 0) {
+            int code = 0;
+            const std::string why = gzerror(in, &code);
+            gzclose(in);
+            throw InputError(file.string() + ": not a valid gzip file (" + why + ")");
+        }
+        if (n == 0) break;
+        if (data.size() + std::size_t(n) > kMaxDecompressedPlyBytes) {
+            gzclose(in);
+            throw InputError(file.string() + ": decompresses to more than " +
+                             std::to_string(kMaxDecompressedPlyBytes / kMiB) + " MiB");
+        }
+        data.append(buffer, std::size_t(n));
+    }
+    gzclose(in);
+    return data;
+}
+
+std::unique_ptr<std::istream> openPly(const std::filesystem::path& file, std::uintmax_t& size) {
+    if (isGzip(file)) {
+        std::string data = gunzip(file);
+        size = data.size();
+        return std::make_unique<std::istringstream>(std::move(data), std::ios::binary);
+    }
+    size = checkInputFile(file, kMaxMeshFileBytes);
+    return std::make_unique<std::ifstream>(file, std::ios::binary);
+}
 
 enum class Format { Ascii, BinaryLittle, BinaryBig };
 
@@ -59,7 +107,7 @@ bool parseCount(const std::string& word, std::size_t& count) {
 class PlyReader {
   public:
     explicit PlyReader(const std::filesystem::path& file)
-        : file_(file), size_(checkInputFile(file, kMaxMeshFileBytes)), in_(file, std::ios::binary) {
+        : file_(file), stream_(openPly(file, size_)), in_(*stream_) {
         if (!in_) fail("cannot open the PLY file");
     }
 
@@ -253,8 +301,9 @@ class PlyReader {
 
   private:
     std::filesystem::path file_;
-    std::uintmax_t size_;
-    std::ifstream in_;
+    std::uintmax_t size_ = 0;  ///< decompressed, for a .ply.gz
+    std::unique_ptr<std::istream> stream_;
+    std::istream& in_;
     Format format_ = Format::Ascii;
     std::vector<Element> elements_;
     std::string where_ = "header";  ///< the element being read, for messages

@@ -50,6 +50,7 @@ CameraDesc readCamera(const JsonReader& r) {
     c.focusDistance =
         r.number("focus_distance", glm::length(c.lookAt - c.position),
                  {0.0, 2 * kMaxSceneCoordinate, true});  // the focal point is a ray's target
+    c.handedness = r.choice("handedness", Handedness::Right, kHandednessNames);
     if (*kind == CameraKind::ThinLens && c.apertureRadius == 0)
         r.failAt("aperture_radius", "a thin_lens camera needs an aperture_radius > 0");
     r.finish();

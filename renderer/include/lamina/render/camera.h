@@ -1,5 +1,6 @@
 // Perspective camera: a pinhole, or a thin lens (aperture radius, focus distance). The image
-// plane maps film x to the right and film y downwards; right = forward x up (right-handed).
+// plane maps film x to the right and film y downwards; right = forward x up (right-handed), or
+// up x forward for a left-handed camera (CameraDesc::handedness: pbrt's camera space).
 //
 // Importance (for light tracing and BDPT). A pixel's value is the measurement
 //   I_p = integral over the lens (1/A_lens) integral over directions of
@@ -25,8 +26,10 @@ class Camera {
     Camera(const CameraDesc& desc, int width, int height)
         : desc_(desc), width_(width), height_(height) {
         const Vec3d forward = glm::normalize(desc.lookAt - desc.position);
-        const Vec3d right = glm::normalize(glm::cross(forward, desc.up));
-        const Vec3d up = glm::cross(right, forward);
+        const bool left = desc.handedness == Handedness::Left;
+        const Vec3d right =
+            glm::normalize(left ? glm::cross(desc.up, forward) : glm::cross(forward, desc.up));
+        const Vec3d up = left ? glm::cross(forward, right) : glm::cross(right, forward);
         forward_ = Vec3<float>(forward);
         right_ = Vec3<float>(right);
         up_ = Vec3<float>(up);

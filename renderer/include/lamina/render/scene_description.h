@@ -27,6 +27,12 @@ inline constexpr NameTable kCameraKindNames{
     std::array{NameEntry{CameraKind::Perspective, "perspective"},
                NameEntry{CameraKind::ThinLens, "thin_lens"}}};
 
+/// Which way the image's right points: `Right`: forward x up (lamina's default); `Left`:
+/// up x forward (pbrt's left-handed camera space, whose +x is the image's right).
+enum class Handedness { Right, Left };
+inline constexpr NameTable kHandednessNames{
+    std::array{NameEntry{Handedness::Right, "right"}, NameEntry{Handedness::Left, "left"}}};
+
 struct CameraDesc {
     Vec3d position{0, 0, 0};
     Vec3d lookAt{0, 0, 1};
@@ -34,6 +40,7 @@ struct CameraDesc {
     double verticalFovDegrees = 40;
     double apertureRadius = 0;  ///< 0: pinhole
     double focusDistance = 1;
+    Handedness handedness = Handedness::Right;
 };
 
 enum class FilterKind { Box, Gaussian, BlackmanHarris };

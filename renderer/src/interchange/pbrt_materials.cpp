@@ -1,0 +1,325 @@
+// pbrt-v4 materials and textures -> lamina materials and textures (pbrt-v4 materials.cpp and
+// textures.cpp give the parameters and their defaults). Each is translated when a shape first
+// uses it, as pbrt-v4 would create it.
+#include <algorithm>
+#include <cmath>
+
+#include "lamina/core/error.h"
+#include "pbrt_translation.h"
+
+namespace lamina::render::pbrt {
+
+namespace {
+
+constexpr int kMaxMaterialNesting = 16;  // mix of mix of ...: a cycle is refused
+
+const MaterialDef* findMaterial(const ParsedScene& scene, const std::string& name) {
+    for (const MaterialDef& m : scene.materials)
+        if (m.name == name) return &m;
+    return nullptr;
+}
+
+// A reflectance-like spectrum parameter: a number, [r, g, b], {"spectrum": pairs} or, where
+// lamina takes one, {"texture": name}.
+Json colour(TranslationContext& ctx, const Entity& e, const std::string& name, const Json& fallback,
+            bool textureAllowed) {
+    const ParamList& params = e.params;
+    const Param* p = params.find(name);
+    if (!p) return fallback;
+    params.expectType(*p, {"float", "rgb", "spectrum", "texture"});
+    const std::string type = canonicalParamType(p->type);
+    if (type == "texture") {
+        if (!textureAllowed)
+            params.fail(*p,
+                        "as a texture is not supported here (lamina textures reflectances "
+                        "of diffuse materials and roughness)");
+        if (p->strings.size() != 1) params.fail(*p, "expected one texture name");
+        return Json{{"texture", useTexture(ctx, p->strings[0], "spectrum", p->location)}};
+    }
+    if (type == "float") {
+        if (p->numbers.size() != 1) params.fail(*p, "expected one number");
+        return p->numbers[0];
+    }
+    if (type == "rgb") {
+        if (p->numbers.size() != 3) params.fail(*p, "expected three numbers");
+        return Json::array({p->numbers[0], p->numbers[1], p->numbers[2]});
+    }
+    if (!p->strings.empty()) params.fail(*p, "a named spectrum is not supported as a reflectance");
+    if (p->numbers.size() < 4 || p->numbers.size() % 2 != 0)
+        params.fail(*p, "expected (wavelength, value) pairs");
+    Json list = Json::array();
+    for (std::size_t i = 0; i + 1 < p->numbers.size(); i += 2)
+        list.push_back({p->numbers[i], p->numbers[i + 1]});
+    return Json{{"spectrum", list}};
+}
+
+double constantNumber(const ParamList& params, const std::string& name, double fallback) {
+    const Param* p = params.find(name);
+    if (!p) return fallback;
+    if (canonicalParamType(p->type) == "texture")
+        params.fail(*p, "as a texture is not supported (lamina takes a number here)");
+    return params.number(name, fallback);
+}
+
+// pbrt-v4's roughness parameters (materials.cpp): `roughness`, or `uroughness` and
+// `vroughness` (each defaulting to `roughness`, itself 0), and `remaproughness` (true), which
+// maps a roughness r to the Trowbridge-Reitz alpha sqrt(r)
+// (TrowbridgeReitzDistribution::RoughnessToAlpha, util/scattering.h). lamina's GGX is the
+// same distribution with the same alpha.
+void roughness(TranslationContext& ctx, const Entity& e, const std::string& prefix,
+               Json& material) {
+    const ParamList& params = e.params;
+    const double r = constantNumber(params, prefix + "roughness", 0.0);
+    const double u = constantNumber(params, prefix + "uroughness", r);
+    const double v = constantNumber(params, prefix + "vroughness", r);
+    const bool remap = params.boolean("remaproughness", true);
+    auto alpha = [&](double x) {
+        if (x < 0) ctx.fail(e.location, "a roughness is negative");
+        return remap ? std::sqrt(x) : x;
+    };
+    if (u == v) {
+        if (u != 0) material["alpha"] = alpha(u);
+        return;
+    }
+    material["alpha_x"] = alpha(u);
+    material["alpha_y"] = alpha(v);
+    ctx.warn(e.location,
+             "anisotropic roughness became alpha_x along the surface's u tangent "
+             "and alpha_y along v");
+}
+
+Json translateMaterial(TranslationContext& ctx, const MaterialDef& def, int depth);
+
+Json materialByName(TranslationContext& ctx, const std::string& name, const Location& at,
+                    int depth) {
+    const MaterialDef* m = findMaterial(ctx.scene, name);
+    if (!m) ctx.fail(at, "no material named \"" + name + "\"");
+    if (depth > kMaxMaterialNesting)
+        ctx.fail(at, "materials nest more than " + std::to_string(kMaxMaterialNesting) +
+                         " deep (does a mix material contain itself?)");
+    if (const auto it = ctx.translatedMaterials.find(name); it != ctx.translatedMaterials.end())
+        return it->second;
+    Json translated = translateMaterial(ctx, *m, depth + 1);
+    ctx.translatedMaterials[name] = translated;
+    return translated;
+}
+
+Json coated(TranslationContext& ctx, const Entity& e, const std::string& roughnessPrefix,
+            const std::string& etaName, double& ior) {
+    const ParamList& params = e.params;
+    // pbrt-v4's coated materials (materials.cpp: CoatedDiffuseMaterial::Create,
+    // CoatedConductorMaterial::Create): thickness 0.01, albedo 0, g 0, maxdepth 10,
+    // nsamples 1; the medium between the layers has unit extinction (LayeredBxDF::Tr), so
+    // the thickness is lamina's optical thickness.
+    Json m{{"type", "coated"}};
+    const Json iorJson = dielectricIor(ctx, params, etaName, e.location);
+    if (!iorJson.is_number())
+        ctx.fail(e.location, "a coat's index must be a number in lamina's coated material");
+    ior = iorJson.get<double>();
+    m["ior"] = ior;
+    roughness(ctx, e, roughnessPrefix, m);
+    m["thickness"] = constantNumber(params, "thickness", 0.01);
+    m["albedo"] = colour(ctx, e, "albedo", 0.0, false);
+    m["g"] = constantNumber(params, "g", 0.0);
+    m["max_depth"] = params.integer("maxdepth", 10);
+    m["samples"] = params.integer("nsamples", 1);
+    return m;
+}
+
+Json translateMaterial(TranslationContext& ctx, const MaterialDef& def, int depth) {
+    const Entity& e = def.entity;
+    const ParamList& params = e.params;
+    params.string("type", "");  // MakeNamedMaterial's type, already read
+    Json m;
+    if (e.type == "diffuse") {
+        m = {{"type", "lambert"}, {"reflectance", colour(ctx, e, "reflectance", 0.5, true)}};
+    } else if (e.type == "conductor") {
+        m = {{"type", "conductor"}};
+        conductorOptics(ctx, e, "", 1.0, m);
+        roughness(ctx, e, "", m);
+    } else if (e.type == "dielectric" || e.type == "thindielectric") {
+        const bool thin = e.type == "thindielectric";
+        m = {{"type", thin ? "thin_dielectric" : "dielectric"},
+             {"ior", dielectricIor(ctx, params, "eta", e.location)}};
+        if (!thin) roughness(ctx, e, "", m);
+    } else if (e.type == "coateddiffuse") {
+        double ior = 1.5;
+        m = coated(ctx, e, "", "eta", ior);
+        m["base"] = {{"type", "lambert"},
+                     {"reflectance", colour(ctx, e, "reflectance", 0.5, false)}};
+    } else if (e.type == "coatedconductor") {
+        double ior = 1.5;
+        m = coated(ctx, e, "interface.", "interface.eta", ior);
+        Json base{{"type", "conductor"}};
+        // pbrt-v4 divides the conductor's eta and k by the coat's index
+        // (CoatedConductorMaterial::GetBxDF); lamina's base optics are relative to the coat.
+        conductorOptics(ctx, e, "conductor.", ior, base);
+        roughness(ctx, e, "conductor.", base);
+        m["base"] = base;
+    } else if (e.type == "diffusetransmission") {
+        const double scale = constantNumber(params, "scale", 1.0);
+        auto scaled = [&](Json c) {
+            if (scale == 1) return c;
+            if (c.is_number()) return Json(c.get<double>() * scale);
+            if (c.is_array()) {
+                for (auto& x : c)
+                    x = x.get<double>() * scale;
+                return c;
+            }
+            ctx.fail(e.location, "diffusetransmission: \"scale\" with a spectrum is not supported");
+        };
+        m = {{"type", "diffuse_transmission"},
+             {"reflectance", scaled(colour(ctx, e, "reflectance", 0.25, false))},
+             {"transmittance", scaled(colour(ctx, e, "transmittance", 0.25, false))}};
+    } else if (e.type == "mix") {
+        const Param* names = params.find("materials");
+        if (!names) ctx.fail(e.location, "mix: no \"string materials\" parameter");
+        params.expectType(*names, {"string"});
+        if (names->strings.size() != 2) params.fail(*names, "expected two material names");
+        // pbrt-v4's MixMaterial picks materials[1] with probability `amount` (ChooseMaterial):
+        // in expectation lamina's (1 - weight) a + weight b.
+        const double amount = constantNumber(params, "amount", 0.5);
+        Json a = materialByName(ctx, names->strings[0], names->location, depth);
+        Json b = materialByName(ctx, names->strings[1], names->location, depth);
+        if (a.is_null() || b.is_null())
+            ctx.fail(e.location, "mix: an interface material cannot be mixed");
+        m = {{"type", "mix"}, {"a", a}, {"b", b}, {"weight", std::clamp(amount, 0.0, 1.0)}};
+    } else if (e.type == "interface") {
+        params.refuseUnused();
+        return nullptr;
+    } else {
+        ctx.fail(e.location, "material \"" + e.type +
+                                 "\" is not supported (lamina reads diffuse, conductor, "
+                                 "dielectric, thindielectric, coateddiffuse, coatedconductor, "
+                                 "diffusetransmission, mix and interface)");
+    }
+    params.refuseUnused();
+    return m;
+}
+
+}  // namespace
+
+std::string useMaterial(TranslationContext& ctx, const std::string& name, const Location& usedAt) {
+    Json& materials = ctx.document["materials"];
+    if (name.empty()) {
+        // pbrt-v4's initial graphics state: a diffuse material of reflectance 0.5
+        // (scene.cpp, BasicSceneBuilder's constructor).
+        if (!ctx.writtenMaterials.count("pbrt_default")) {
+            materials["pbrt_default"] = {{"type", "lambert"}, {"reflectance", 0.5}};
+            ctx.writtenMaterials.insert("pbrt_default");
+        }
+        return "pbrt_default";
+    }
+    if (ctx.writtenMaterials.count(name)) return materials.contains(name) ? name : "";
+    ctx.writtenMaterials.insert(name);
+    Json m = materialByName(ctx, name, usedAt, 0);
+    if (m.is_null()) return "";
+    materials[name] = std::move(m);
+    return name;
+}
+
+std::string useTexture(TranslationContext& ctx, const std::string& name,
+                       const std::string& valueType, const Location& usedAt) {
+    const TextureDef* def = nullptr;
+    for (const TextureDef& t : ctx.scene.textures)
+        if (t.name == name && t.valueType == valueType) def = &t;
+    if (!def) ctx.fail(usedAt, "no " + valueType + " texture named \"" + name + "\"");
+    const std::string laminaName = valueType == "float" ? name + " (float)" : name;
+    if (ctx.texturesInProgress.count(laminaName))
+        ctx.fail(usedAt, "texture \"" + name + "\" is made of itself");
+    if (ctx.writtenTextures.count(laminaName)) return laminaName;
+    ctx.texturesInProgress.insert(laminaName);
+    const Entity& e = def->entity;
+    const ParamList& params = e.params;
+    Json t;
+    auto textureRef = [&](const std::string& key) {
+        const Param* p = params.find(key);
+        if (!p) ctx.fail(e.location, "texture \"" + e.type + "\" needs \"texture " + key + "\"");
+        params.expectType(*p, {"texture"});
+        return useTexture(ctx, p->strings.at(0), valueType, p->location);
+    };
+    auto uvScale = [&]() {
+        const double su = constantNumber(params, "uscale", 1.0);
+        const double sv = constantNumber(params, "vscale", 1.0);
+        if (constantNumber(params, "udelta", 0.0) != 0 ||
+            constantNumber(params, "vdelta", 0.0) != 0)
+            ctx.fail(e.location, "udelta and vdelta (uv offsets) are not supported");
+        if (params.string("mapping", "uv") != "uv")
+            ctx.fail(e.location, "only the \"uv\" texture mapping is supported");
+        return Json::array({su, sv});
+    };
+    if (e.type == "imagemap") {
+        const Param* file = params.find("filename");
+        if (!file) ctx.fail(e.location, "imagemap: no \"string filename\" parameter");
+        params.expectType(*file, {"string"});
+        const std::string fileName = file->strings.at(0);
+        // pbrt-v4 (textures.cpp): 8-bit PNGs default to sRGB, everything else to linear.
+        const std::string extension = std::filesystem::path(fileName).extension().string();
+        const bool png = extension == ".png" || extension == ".PNG";
+        const std::string encoding = params.string("encoding", png ? "sRGB" : "linear");
+        if (encoding != "sRGB" && encoding != "linear")
+            ctx.fail(e.location,
+                     "imagemap: encoding \"" + encoding + "\" is not supported (sRGB or linear)");
+        t = {{"type", "image"},
+             {"file", ctx.filePath(params, *file)},
+             {"color_space", encoding == "sRGB" ? "srgb" : "linear"},
+             {"scale", uvScale()}};
+        const std::string filter = params.string("filter", "bilinear");
+        if (filter != "bilinear")
+            ctx.warn(e.location,
+                     "imagemap filter \"" + filter + "\" became lamina's bilinear lookup");
+        if (params.has("maxanisotropy")) {
+            params.number("maxanisotropy", 8);
+            ctx.warn(e.location, "maxanisotropy ignored: lamina's lookups are bilinear");
+        }
+        if (params.string("wrap", "repeat") != "repeat")
+            ctx.fail(e.location, "imagemap: only wrap \"repeat\" is supported");
+        const bool invert = params.boolean("invert", false);
+        const double scale = constantNumber(params, "scale", 1.0);
+        if (invert) t["invert"] = true;
+        if (scale != 1) {
+            // pbrt-v4 scales first and inverts after (1 - scale v); lamina's image inverts
+            // and the scale texture multiplies.
+            if (invert)
+                ctx.fail(e.location, "imagemap: scale together with invert is not supported");
+            params.refuseUnused();
+            const std::string imageName = laminaName + " (image)";
+            ctx.document["textures"][imageName] = t;
+            ctx.writtenTextures.insert(imageName);
+            t = {{"type", "scale"}, {"texture", imageName}, {"scale", scale}};
+        }
+    } else if (e.type == "checkerboard") {
+        if (params.integer("dimension", 2) != 2)
+            ctx.fail(e.location, "checkerboard: only dimension 2 is supported");
+        // pbrt-v4's Checkerboard (textures.cpp): tex1 where floor(u) + floor(v) is even,
+        // tex2 where it is odd; lamina's a and b.
+        Json a = colour(ctx, e, "tex1", 1.0, false), b = colour(ctx, e, "tex2", 0.0, false);
+        t = {{"type", "checkerboard"}, {"a", a}, {"b", b}, {"scale", uvScale()}};
+    } else if (e.type == "scale") {
+        t = {{"type", "scale"},
+             {"texture", textureRef("tex")},
+             {"scale", constantNumber(params, "scale", 1.0)}};
+    } else if (e.type == "mix") {
+        Json amount;
+        const Param* p = params.find("amount");
+        if (p && canonicalParamType(p->type) == "texture")
+            amount = useTexture(ctx, p->strings.at(0), "float", p->location);
+        else
+            amount = params.number("amount", 0.5);
+        t = {{"type", "mix"},
+             {"a", textureRef("tex1")},
+             {"b", textureRef("tex2")},
+             {"amount", amount}};
+    } else {
+        ctx.fail(e.location, "texture \"" + e.type +
+                                 "\" is not supported (lamina reads imagemap, "
+                                 "checkerboard, scale and mix)");
+    }
+    params.refuseUnused();
+    ctx.document["textures"][laminaName] = t;
+    ctx.texturesInProgress.erase(laminaName);
+    ctx.writtenTextures.insert(laminaName);
+    return laminaName;
+}
+
+}  // namespace lamina::render::pbrt

@@ -1,0 +1,313 @@
+// pbrt-v4 shapes and their area lights -> lamina shapes (pbrt-v4 shapes.cpp for the parameters
+// and their defaults, lights.cpp for DiffuseAreaLight).
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include "lamina/core/error.h"
+#include "pbrt_shapes.h"
+
+namespace lamina::render::pbrt {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+bool isIdentity(const glm::dmat4& m) {
+    return m == glm::dmat4(1.0);
+}
+
+// The uniform scale of a similarity transform (rotation, mirror, uniform scale, translation),
+// or 0 when it shears or scales unevenly.
+double similarityScale(const glm::dmat4& m) {
+    const glm::dvec3 x(m[0]), y(m[1]), z(m[2]);
+    const double s = glm::length(x);
+    const double tol = 1e-9 * s * s;
+    if (!(s > 0) || std::abs(glm::dot(x, y)) > tol || std::abs(glm::dot(y, z)) > tol ||
+        std::abs(glm::dot(x, z)) > tol)
+        return 0;
+    if (std::abs(glm::length(y) - s) > 1e-9 * s || std::abs(glm::length(z) - s) > 1e-9 * s)
+        return 0;
+    return s;
+}
+
+Json point(const glm::dvec3& p) {
+    return Json::array({p.x, p.y, p.z});
+}
+
+glm::dvec3 apply(const glm::dmat4& m, const glm::dvec3& p) {
+    return glm::dvec3(m * glm::dvec4(p, 1.0));
+}
+
+bool transmits(const Json& material) {
+    const std::string type = material.value("type", "");
+    if (type == "dielectric" || type == "thin_dielectric" || type == "diffuse_transmission")
+        return true;
+    if (type == "mix") return transmits(material["a"]) || transmits(material["b"]);
+    return false;
+}
+
+struct Mesh {
+    std::vector<double> positions, normals, uvs;
+    std::vector<int> indices;
+    int verticesPerFace = 3;
+};
+
+Mesh readMesh(const Entity& e, int verticesPerFace) {
+    const ParamList& params = e.params;
+    Mesh mesh;
+    mesh.verticesPerFace = verticesPerFace;
+    const auto P = params.numbers("P", {"point3"}, 3);
+    if (!P) throw InputError(e.location.str() + ": Shape \"" + e.type + "\": no \"point3 P\"");
+    mesh.positions = *P;
+    const std::size_t n = P->size() / 3;
+    if (const auto idx = params.numbers("indices", {"integer"}, std::size_t(verticesPerFace))) {
+        for (double v : *idx) {
+            if (v != std::floor(v) || v < 0 || v >= double(n))
+                params.fail(*params.find("indices"),
+                            "has an index outside [0, " + std::to_string(n) + ")");
+            mesh.indices.push_back(int(v));
+        }
+    } else if (n == std::size_t(verticesPerFace)) {
+        // pbrt-v4 allows omitting the indices of a single triangle or patch.
+        for (int i = 0; i < verticesPerFace; ++i)
+            mesh.indices.push_back(i);
+    } else {
+        throw InputError(e.location.str() + ": Shape \"" + e.type + "\": no \"integer indices\"");
+    }
+    if (const auto N = params.numbers("N", {"normal3"}, 3)) {
+        if (N->size() != P->size()) params.fail(*params.find("N"), "needs one normal per point");
+        mesh.normals = *N;
+    }
+    if (const auto uv = params.numbers("uv", {"point2"}, 2)) {
+        if (uv->size() / 2 != n) params.fail(*params.find("uv"), "needs one uv per point");
+        mesh.uvs = *uv;
+    }
+    return mesh;
+}
+
+Json meshJson(const Mesh& mesh, bool reverse) {
+    Json positions = Json::array(), faces = Json::array();
+    for (std::size_t i = 0; i + 2 < mesh.positions.size(); i += 3)
+        positions.push_back({mesh.positions[i], mesh.positions[i + 1], mesh.positions[i + 2]});
+    const std::size_t k = std::size_t(mesh.verticesPerFace);
+    for (std::size_t f = 0; f + k <= mesh.indices.size(); f += k) {
+        Json face = Json::array();
+        if (k == 3) {
+            face = {mesh.indices[f], mesh.indices[f + 1], mesh.indices[f + 2]};
+        } else {
+            // pbrt-v4's bilinear patch orders its corners p00, p10, p01, p11; as a polygon
+            // that is p00, p10, p11, p01 (the same front side: cross(p10 - p00, p01 - p00)).
+            face = {mesh.indices[f], mesh.indices[f + 1], mesh.indices[f + 3], mesh.indices[f + 2]};
+        }
+        // ReverseOrientation turns the front side around: the reversed winding.
+        if (reverse) std::reverse(face.begin(), face.end());
+        faces.push_back(face);
+    }
+    Json shape{{"type", "mesh"}, {"positions", positions}, {"faces", faces}};
+    if (!mesh.normals.empty()) {
+        Json normals = Json::array();
+        const double sign = reverse ? -1.0 : 1.0;
+        for (std::size_t i = 0; i + 2 < mesh.normals.size(); i += 3)
+            normals.push_back(
+                {sign * mesh.normals[i], sign * mesh.normals[i + 1], sign * mesh.normals[i + 2]});
+        shape["normals"] = normals;
+    }
+    if (!mesh.uvs.empty()) {
+        Json uvs = Json::array();
+        for (std::size_t i = 0; i + 1 < mesh.uvs.size(); i += 2)
+            uvs.push_back({mesh.uvs[i], mesh.uvs[i + 1]});
+        shape["uvs"] = uvs;
+    }
+    return shape;
+}
+
+// The area of each face after the transform (for `power`).
+std::vector<double> faceAreas(const Mesh& mesh, const glm::dmat4& m) {
+    std::vector<double> areas;
+    auto p = [&](int i) {
+        return apply(m, glm::dvec3(mesh.positions[std::size_t(3 * i)],
+                                   mesh.positions[std::size_t(3 * i + 1)],
+                                   mesh.positions[std::size_t(3 * i + 2)]));
+    };
+    const std::size_t k = std::size_t(mesh.verticesPerFace);
+    for (std::size_t f = 0; f + k <= mesh.indices.size(); f += k) {
+        const glm::dvec3 a = p(mesh.indices[f]), b = p(mesh.indices[f + 1]),
+                         c = p(mesh.indices[f + 2]);
+        double area = 0.5 * glm::length(glm::cross(b - a, c - a));
+        if (k == 4) {
+            const glm::dvec3 d = p(mesh.indices[f + 3]);
+            area += 0.5 * glm::length(glm::cross(c - d, b - d));
+        }
+        areas.push_back(area);
+    }
+    return areas;
+}
+
+bool planar(const Mesh& mesh) {
+    for (std::size_t f = 0; f + 4 <= mesh.indices.size(); f += 4) {
+        glm::dvec3 q[4];
+        for (int i = 0; i < 4; ++i) {
+            const std::size_t v = std::size_t(3 * mesh.indices[f + std::size_t(i)]);
+            q[i] = {mesh.positions[v], mesh.positions[v + 1], mesh.positions[v + 2]};
+        }
+        const glm::dvec3 n = glm::cross(q[1] - q[0], q[2] - q[0]);
+        const double size = glm::length(q[1] - q[0]) + glm::length(q[2] - q[0]);
+        if (std::abs(glm::dot(n, q[3] - q[0])) > 1e-9 * size * size * size) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+Json rowMajor(const glm::dmat4& m) {
+    Json rows = Json::array();
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c)
+            rows.push_back(m[c][r]);
+    return rows;
+}
+
+std::optional<Json> translateShape(TranslationContext& ctx, const ShapeDef& s) {
+    const Entity& e = s.entity;
+    const ParamList& params = e.params;
+    const glm::dmat4& m = e.transform;
+    const std::string material = useMaterial(ctx, s.material, s.materialLocation);
+    if (material.empty()) {
+        ctx.warn(e.location, "Shape \"" + e.type +
+                                 "\" with the \"interface\" material (a media "
+                                 "boundary) omitted: lamina has no participating media");
+        return std::nullopt;
+    }
+    const Json& materialJson = ctx.document["materials"][material];
+    Json shape;
+    std::vector<double> areas;  // for an area light's power
+    auto similarity = [&]() {
+        const double scale = similarityScale(m);
+        if (scale == 0)
+            ctx.fail(e.location, "Shape \"" + e.type +
+                                     "\" under a shear or an uneven scale is "
+                                     "not supported (lamina's analytic shapes stay round)");
+        return scale;
+    };
+    if (e.type == "sphere") {
+        const double r = params.number("radius", 1.0);
+        if (params.number("zmin", -r) > -r || params.number("zmax", r) < r ||
+            params.number("phimax", 360.0) < 360.0)
+            ctx.fail(e.location, "a partial sphere (zmin, zmax, phimax) is not supported");
+        const double radius = r * similarity();
+        shape = {
+            {"type", "sphere"}, {"center", point(apply(m, glm::dvec3(0.0)))}, {"radius", radius}};
+        // pbrt's sphere faces outwards whatever the transform's handedness; ReverseOrientation
+        // turns it inwards.
+        if (s.reverseOrientation) shape["flip_normals"] = true;
+        areas = {4 * kPi * radius * radius};
+    } else if (e.type == "disk") {
+        const double r = params.number("radius", 1.0), h = params.number("height", 0.0);
+        if (params.number("innerradius", 0.0) > 0 || params.number("phimax", 360.0) < 360.0)
+            ctx.fail(e.location, "a partial disk (innerradius, phimax) is not supported");
+        const double radius = r * similarity();
+        // The disk faces its object space's +z, transformed as a normal (shapes.h, Disk).
+        glm::dvec3 n = glm::transpose(glm::inverse(glm::dmat3(m))) * glm::dvec3(0, 0, 1);
+        n = glm::normalize(n) * (s.reverseOrientation ? -1.0 : 1.0);
+        shape = {{"type", "disk"},
+                 {"center", point(apply(m, glm::dvec3(0, 0, h)))},
+                 {"normal", point(n)},
+                 {"radius", radius}};
+        areas = {kPi * radius * radius};
+    } else if (e.type == "trianglemesh" || e.type == "bilinearmesh") {
+        const bool bilinear = e.type == "bilinearmesh";
+        const Mesh mesh = readMesh(e, bilinear ? 4 : 3);
+        if (params.has("S")) {
+            params.numbers("S", {"vector3"}, 3);
+            ctx.warn(e.location,
+                     "the per-vertex tangents \"S\" ignored: lamina builds the "
+                     "tangent frame from the normal");
+        }
+        if (params.has("faceIndices")) {
+            params.find("faceIndices");
+            ctx.warn(e.location, "\"faceIndices\" ignored: they only seed pbrt's ptex lookups");
+        }
+        if (bilinear && !planar(mesh))
+            ctx.warn(e.location, "bilinearmesh: a non-planar patch became two triangles");
+        shape = meshJson(mesh, s.reverseOrientation);
+        areas = faceAreas(mesh, m);
+    } else if (e.type == "plymesh") {
+        const Param* file = params.find("filename");
+        if (!file) ctx.fail(e.location, "plymesh: no \"string filename\" parameter");
+        params.expectType(*file, {"string"});
+        shape = {{"type", "ply"}, {"file", ctx.filePath(params, *file)}};
+        if (s.reverseOrientation) {
+            if (s.areaLight || transmits(materialJson))
+                ctx.fail(e.location,
+                         "ReverseOrientation on a plymesh that emits or transmits "
+                         "light is not supported (lamina cannot turn a PLY file's "
+                         "winding around)");
+            ctx.warn(e.location,
+                     "ReverseOrientation on an opaque plymesh ignored: it changes "
+                     "nothing there");
+        }
+    } else {
+        ctx.fail(e.location, "Shape \"" + e.type +
+                                 "\" is not supported (lamina reads sphere, "
+                                 "disk, trianglemesh, plymesh and bilinearmesh)");
+    }
+    shape["material"] = material;
+    if (!shape.contains("center") && !isIdentity(m))
+        shape["transform"] = Json::array({Json{{"matrix", rowMajor(m)}}});
+    // Alpha cut-outs ("float alpha" or a float texture; pbrt-v4 shapes.cpp).
+    if (const Param* alpha = params.find("alpha")) {
+        params.expectType(*alpha, {"float", "texture"});
+        if (s.areaLight) ctx.fail(alpha->location, "alpha on an emitting shape is not supported");
+        if (canonicalParamType(alpha->type) == "texture")
+            shape["alpha"] = {
+                {"texture", useTexture(ctx, alpha->strings.at(0), "float", alpha->location)}};
+        else if (params.number("alpha", 1.0) < 1)
+            shape["alpha"] = std::max(0.0, params.number("alpha", 1.0));
+    }
+    if (s.areaLight) shape["emission"] = areaEmission(ctx, *s.areaLight, areas);
+    params.refuseUnused();
+    return shape;
+}
+
+Json areaEmission(TranslationContext& ctx, const Entity& light, const std::vector<double>& areas) {
+    const ParamList& params = light.params;
+    if (light.type != "diffuse")
+        ctx.fail(light.location, "AreaLightSource \"" + light.type +
+                                     "\" is not supported (lamina reads \"diffuse\")");
+    if (params.has("filename"))
+        ctx.fail(light.location,
+                 "AreaLightSource \"diffuse\": an emission image (filename) is "
+                 "not supported");
+    const bool twoSided = params.boolean("twosided", false);
+    double scale = params.number("scale", 1.0);
+    const double power = params.number("power", -1.0);
+    if (power > 0) {
+        // pbrt-v4 (DiffuseAreaLight::Create): scale *= power / (pi (2 if two-sided) area),
+        // per shape: every triangle of a mesh is a shape of its own that emits `power`.
+        if (areas.empty())
+            ctx.fail(light.location,
+                     "\"power\" on a plymesh is not supported (its area is not "
+                     "known before the file is read)");
+        for (double a : areas)
+            if (std::abs(a - areas[0]) > 1e-6 * areas[0])
+                ctx.fail(light.location,
+                         "\"power\" on a mesh whose triangles differ in area "
+                         "is not supported (pbrt gives each triangle that "
+                         "power, so their radiances differ)");
+        if (!(areas[0] > 0)) ctx.fail(light.location, "\"power\" on a shape of zero area");
+        scale *= power / (kPi * (twoSided ? 2 : 1) * areas[0]);
+        if (areas.size() > 1)
+            ctx.warn(light.location, "\"power\" applies to each of the mesh's " +
+                                         std::to_string(areas.size()) +
+                                         " triangles, as in pbrt-v4: the mesh emits " +
+                                         std::to_string(areas.size()) + " times that power");
+    }
+    Json emission{{"radiance", emissionValue(ctx, params, "L", scale)}};
+    if (twoSided) emission["two_sided"] = true;
+    params.refuseUnused();
+    return emission;
+}
+
+}  // namespace lamina::render::pbrt

@@ -1,0 +1,20 @@
+// pbrt-v4 shapes and area lights -> lamina shapes (pbrt_shapes.cpp).
+#pragma once
+
+#include <optional>
+
+#include "pbrt_translation.h"
+
+namespace lamina::render::pbrt {
+
+/// A 4x4 transform as lamina's row-major "matrix" list.
+Json rowMajor(const glm::dmat4& m);
+/// The lamina shape, or nullopt when it is omitted (pbrt's "interface" material), with its
+/// warning written.
+std::optional<Json> translateShape(TranslationContext& context, const ShapeDef& shape);
+/// The `emission` of a shape under AreaLightSource `light`; `areas`: the shape's face areas
+/// after its transform (empty when unknown), for pbrt's `power`.
+Json areaEmission(TranslationContext& context, const Entity& light,
+                  const std::vector<double>& areas);
+
+}  // namespace lamina::render::pbrt

@@ -1,0 +1,71 @@
+// What each pbrt-v4 construct becomes in a lamina scene document (docs/interchange.md,
+// "pbrt-v4"). The parser's entities go in; the lamina JSON and one warning per construct that
+// was mapped to something else come out. A construct without a faithful lamina equivalent is
+// refused with an InputError "FILE:LINE: ...".
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "lamina/core/json_reader.h"
+#include "pbrt_parser.h"
+
+namespace lamina::render::pbrt {
+
+/// What the translation units share: the scene, the document being written, the warnings.
+struct TranslationContext {
+    const ParsedScene& scene;
+    std::filesystem::path pathsRelativeTo;
+    Json document = Json::object();
+    std::vector<std::string> warnings;
+    /// The lamina names of the materials and textures written so far (translated on first use).
+    std::set<std::string> writtenMaterials, writtenTextures;
+    /// Each pbrt material translated once (a mix refers to others by name), null for
+    /// "interface".
+    std::map<std::string, Json> translatedMaterials;
+    /// Textures being translated (a texture made of itself is refused).
+    std::set<std::string> texturesInProgress;
+
+    void warn(const Location& at, const std::string& message) {
+        warnings.push_back(at.str() + ": " + message);
+    }
+    [[noreturn]] void fail(const Location& at, const std::string& message) const;
+    /// A file name of a parameter, resolved as pbrt-v4 does (against the scene file's
+    /// directory) and written relative to `pathsRelativeTo`; a missing file is refused here.
+    std::string filePath(const ParamList& params, const Param& p) const;
+};
+
+/// The whole translation (pbrt_translation.cpp).
+Json translate(TranslationContext& context);
+
+// Materials and textures (pbrt_materials.cpp).
+
+/// The lamina material name for a shape's material (`name` empty: pbrt's default diffuse),
+/// writing it (and the textures it uses) into the document on first use. Returns an empty
+/// string for pbrt's "interface" material: the shape is to be omitted.
+std::string useMaterial(TranslationContext& context, const std::string& name,
+                        const Location& usedAt);
+/// The lamina texture name for a pbrt float or spectrum texture, written on first use.
+std::string useTexture(TranslationContext& context, const std::string& name,
+                       const std::string& valueType, const Location& usedAt);
+
+// Spectra (pbrt_spectra.cpp).
+
+/// An emission value for an illuminant parameter (`L` or `I`): rgb, blackbody, spectrum
+/// (pairs or a named spectrum) or absent (pbrt's colour-space illuminant, D65), normalised as
+/// pbrt-v4 normalises lights (`scale /= SpectrumToPhotometric(spectrum)`, lights.cpp) and
+/// multiplied by `scale`.
+Json emissionValue(TranslationContext& context, const ParamList& params, const std::string& name,
+                   double scale);
+/// The conductor optics for pbrt's eta and k parameters (`prefix` "" or "conductor."),
+/// divided by `outsideIor` (a coat's index; 1 in air).
+void conductorOptics(TranslationContext& context, const Entity& e, const std::string& prefix,
+                     double outsideIor, Json& material);
+/// A dielectric's index: a number, a named glass or Sellmeier coefficients.
+Json dielectricIor(TranslationContext& context, const ParamList& params, const std::string& name,
+                   const Location& at);
+
+}  // namespace lamina::render::pbrt
