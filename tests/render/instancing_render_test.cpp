@@ -90,8 +90,9 @@ TEST(InstancingRender, InstancesRenderLikeTheirCopiesWrittenOut) {
         ASSERT_GT(sumB, 0.0) << name;
         // Float rounding moves hit points by ULPs; a few paths (an edge, a roulette decision
         // at its threshold) turn elsewhere and change their pixel by a sample's worth.
-        EXPECT_GE(close, 1024 * 95 / 100) << name;
-        EXPECT_NEAR(sumA / sumB, 1.0, 0.01) << name;
+        // Measured: every pixel within 1e-3, a fifth to two thirds of them bit for bit.
+        EXPECT_GE(close, 1024 * 99 / 100) << name;
+        EXPECT_NEAR(sumA / sumB, 1.0, 1e-3) << name;
     }
 }
 

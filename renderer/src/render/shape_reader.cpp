@@ -94,8 +94,8 @@ SphereDesc readSphere(const JsonReader& r, const std::string& name, SceneMateria
     s.emission = readEmission(r);
     s.alpha = readAlpha(r, materials);
     if (s.alpha.texture >= 0)
-        r.failAt("alpha", "a texture alpha is read at a triangle shape's uv; a " +
-                              std::string("sphere") + " takes a number");
+        r.failAt("alpha",
+                 "a texture alpha is read at a triangle shape's uv; a sphere takes a number");
     const Mat4 m = readTransform(r);
     const double sx = uniformScale(r, m, "a sphere");
     s.center = Vec3d(m * glm::dvec4(s.center, 1.0));
@@ -120,8 +120,8 @@ DiskDesc readDisk(const JsonReader& r, const std::string& name, SceneMaterials& 
     d.emission = readEmission(r);
     d.alpha = readAlpha(r, materials);
     if (d.alpha.texture >= 0)
-        r.failAt("alpha", "a texture alpha is read at a triangle shape's uv; a " +
-                              std::string("disk") + " takes a number");
+        r.failAt("alpha",
+                 "a texture alpha is read at a triangle shape's uv; a disk takes a number");
     const Mat4 m = readTransform(r);
     const double sx = uniformScale(r, m, "a disk");
     d.center = Vec3d(m * glm::dvec4(d.center, 1.0));
