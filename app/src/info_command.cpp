@@ -44,8 +44,29 @@ void run(const std::string& file) {
         if (d.emission) ++emitters;
         used[std::size_t(d.material)] = true;
     }
-    // Embree's BVH over triangles takes roughly 64 bytes per primitive (a rough guide).
-    bytes += (triangles + scene.spheres.size()) * 64;
+    // An object's shapes are stored once; its instances reference them (no copies).
+    std::size_t objectTriangles = 0, objectPrimitives = 0, instancedTriangles = 0;
+    std::vector<std::size_t> trianglesOf(scene.objects.size(), 0);
+    for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+        const render::ObjectDesc& object = scene.objects[o];
+        for (const auto& m : object.meshes) {
+            trianglesOf[o] += m.triangles.size();
+            bytes += m.positions.size() * sizeof(m.positions[0]) + m.normals.size() * 12 +
+                     m.uvs.size() * 8 + m.triangles.size() * 12;
+            used[std::size_t(m.material)] = true;
+        }
+        for (const auto& s : object.spheres)
+            used[std::size_t(s.material)] = true;
+        for (const auto& d : object.disks)
+            used[std::size_t(d.material)] = true;
+        objectTriangles += trianglesOf[o];
+        objectPrimitives += trianglesOf[o] + object.spheres.size() + object.disks.size();
+    }
+    for (const auto& inst : scene.instances)
+        instancedTriangles += trianglesOf[std::size_t(inst.object)];
+    // Embree's BVH over triangles takes roughly 64 bytes per primitive (a rough guide), and
+    // an instance about as much as one primitive.
+    bytes += (triangles + scene.spheres.size() + objectPrimitives + scene.instances.size()) * 64;
     std::printf("scene: %s\n", file.c_str());
     if (scene.format != render::SceneFormat::Lamina) {
         std::printf(
@@ -65,6 +86,15 @@ void run(const std::string& file) {
         "~%.1f MiB\n",
         scene.meshes.size(), triangles, vertices, scene.spheres.size(), scene.disks.size(),
         double(bytes) / (1 << 20));
+    if (!scene.objects.empty() || !scene.unusedObjectNames.empty()) {
+        std::printf(
+            "instances: %zu of %zu objects, referencing %zu triangles (%zu stored once in the "
+            "objects)",
+            scene.instances.size(), scene.objects.size(), instancedTriangles, objectTriangles);
+        for (const auto& name : scene.unusedObjectNames)
+            std::printf(", %s unused (never loaded)", name.c_str());
+        std::printf("\n");
+    }
     const auto film =
         render::estimateRenderMemory(scene.film.width, scene.film.height, false, false);
     std::printf(

@@ -237,6 +237,17 @@ TEST_F(CliTest, RenderMemoryIsPrintedAndCheckedUpFront) {
     EXPECT_EQ(runLamina("render " + s + " -o " + out + " -q --resolution 65537x16").exitCode, 2);
 }
 
+// `info` counts the instances and the triangles they reference against those stored: the tree
+// of the scene has 12 triangles (a trunk of 4 quads, two cards), placed 16 times.
+TEST_F(CliTest, InfoCountsInstancesAndTheTrianglesTheyReference) {
+    const CommandRun info =
+        runLamina("info " + std::string(LAMINA_SOURCE_DIR) + "/scenes/instances-and-cutouts.json");
+    ASSERT_EQ(info.exitCode, 0) << info.output;
+    EXPECT_THAT(info.output,
+                ::testing::HasSubstr("instances: 16 of 1 objects, referencing 192 triangles (12 "
+                                     "stored once in the objects)"));
+}
+
 TEST_F(CliTest, BsdfEvalMatchesTheLibraryAndSampleCountsLines) {
     const std::string material =
         R"('{"type":"standard","base_color":[0.8,0.5,0.2],"roughness":0.4}')";

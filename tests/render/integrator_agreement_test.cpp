@@ -96,6 +96,8 @@ INSTANTIATE_TEST_SUITE_P(
         AgreementCase{"DispersiveGlassSpectral", "scenes/reciprocity/dispersive-glass.json",
                       RenderModeKind::Spectral},
         AgreementCase{"EnvironmentAndSun", "scenes/reciprocity/environment.json",
+                      RenderModeKind::Rgb},
+        AgreementCase{"InstancesAndCutOuts", "scenes/reciprocity/cutouts.json",
                       RenderModeKind::Rgb}),
     [](const ::testing::TestParamInfo<AgreementCase>& p) { return std::string(p.param.name); });
 

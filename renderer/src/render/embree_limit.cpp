@@ -21,31 +21,12 @@ struct RayDesc {
     Vec3f origin, direction;
 };
 
-// The axis-aligned box of every shape (the rays start inside it, as a path's bounces do).
-void sceneBox(const SceneDesc& scene, Vec3f& lo, Vec3f& hi) {
-    lo = Vec3f(std::numeric_limits<float>::infinity());
-    hi = -lo;
-    for (const MeshDesc& m : scene.meshes)
-        for (const Vec3f& p : m.positions) {
-            lo = glm::min(lo, p);
-            hi = glm::max(hi, p);
-        }
-    for (const SphereDesc& s : scene.spheres) {
-        lo = glm::min(lo, Vec3f(s.center - s.radius));
-        hi = glm::max(hi, Vec3f(s.center + s.radius));
-    }
-    for (const DiskDesc& d : scene.disks) {
-        lo = glm::min(lo, Vec3f(d.center - d.radius));
-        hi = glm::max(hi, Vec3f(d.center + d.radius));
-    }
-}
-
 }  // namespace
 
 RawRayRate measureRawRayRate(const SceneDesc& scene, int threads, std::uint64_t rays, int repeats) {
     const Geometry geometry(scene);
-    Vec3f lo, hi;
-    sceneBox(scene, lo, hi);
+    // The rays start inside the box of everything (instances included), as a path's bounces do.
+    const Vec3f lo = geometry.boundsLo(), hi = geometry.boundsHi();
     std::vector<RayDesc> batch(rays);
     Pcg32 rng(12345);
     for (RayDesc& r : batch) {

@@ -23,6 +23,7 @@ LightSet::LightSet(const SceneDesc& scene, const Geometry& geometry, LightSelect
     shapeLights_.resize(shapes.size());
     for (std::size_t s = 0; s < shapes.size(); ++s) {
         const ShapeInfo& info = shapes[s];
+        if (info.object >= 0) continue;  // objects hold no emitters (shape_reader.cpp)
         const int first = int(lights_.size());
         if (info.kind == ShapeInfo::Kind::Mesh) {
             const MeshDesc& m = scene.meshes[std::size_t(info.index)];

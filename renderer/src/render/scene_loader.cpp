@@ -21,10 +21,13 @@ SceneDesc readScene(const Json& json, const JsonSource& source) {
     SceneMaterials materials(scene);
     if (const auto t = root.optionalChild("textures")) materials.defineTextures(*t);
     if (const auto m = root.optionalChild("materials")) materials.define(*m);
+    SceneObjects objects(scene, materials);
+    if (const auto o = root.optionalChild("objects")) objects.define(*o);
     if (const auto s = root.optionalChild("shapes")) {
         if (!s->value().is_array()) s->fail("expected an array of shapes");
         for (std::size_t i = 0; i < s->value().size(); ++i)
-            readShape(JsonReader(s->value()[i], s->indexPath(i), source), materials, scene);
+            readShape(JsonReader(s->value()[i], s->indexPath(i), source), materials, objects,
+                      scene);
     }
     if (const auto l = root.optionalChild("lights")) {
         if (!l->value().is_array()) l->fail("expected an array of lights");
@@ -33,6 +36,7 @@ SceneDesc readScene(const Json& json, const JsonSource& source) {
     }
     root.finish();
     materials.recordUnused();
+    objects.recordUnused();
     bool emitter = !scene.lights.empty();
     for (const auto& m : scene.meshes)
         emitter |= m.emission.has_value();

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "lamina/render/mesh_files.h"
@@ -6,6 +7,13 @@
 namespace lamina::render {
 
 namespace {
+
+// Where a shape's description goes: the scene's top-level lists or an object's.
+struct ShapeLists {
+    std::vector<MeshDesc>& meshes;
+    std::vector<SphereDesc>& spheres;
+    std::vector<DiskDesc>& disks;
+};
 
 // "transform": a list of operations applied in order (the first one first):
 // {"translate": [x, y, z]}, {"scale": s | [x, y, z]}, {"rotate": {"axis": [x, y, z],
@@ -47,6 +55,26 @@ Mat4 readTransform(const JsonReader& parent) {
     return m;
 }
 
+// "alpha": a number in [0, 1] or {"texture": "name"} (its first channel).
+AlphaDesc readAlpha(const JsonReader& r, SceneMaterials& materials) {
+    AlphaDesc alpha;
+    if (!r.has("alpha")) return alpha;
+    // An emitter's light sampling knows nothing of holes in it: a cut-out emitter would be
+    // sampled where it is not.
+    if (r.has("emission"))
+        r.failAt("alpha", "an emitting shape cannot be cut out (remove alpha or emission)");
+    const JsonReader a = r.child("alpha");
+    if (a.value().is_object()) {
+        const std::string name = a.requiredString("texture");
+        a.finish();
+        alpha.texture = materials.textureIndex(a, name);
+        return alpha;
+    }
+    if (!a.value().is_number()) a.fail("expected a number in [0, 1] or {\"texture\": \"name\"}");
+    alpha.value = float(r.number("alpha", 1.0, Range::unit()));
+    return alpha;
+}
+
 // Analytic shapes take similarity transforms only: returns the uniform scale.
 double uniformScale(const JsonReader& r, const Mat4& m, const std::string& what) {
     const double sx = glm::length(Vec3d(m[0])), sy = glm::length(Vec3d(m[1])),
@@ -64,6 +92,10 @@ SphereDesc readSphere(const JsonReader& r, const std::string& name, SceneMateria
     s.flipNormals = r.boolean("flip_normals", false);
     s.material = materials.materialOf(r);
     s.emission = readEmission(r);
+    s.alpha = readAlpha(r, materials);
+    if (s.alpha.texture >= 0)
+        r.failAt("alpha",
+                 "a texture alpha is read at a triangle shape's uv; a sphere takes a number");
     const Mat4 m = readTransform(r);
     const double sx = uniformScale(r, m, "a sphere");
     s.center = Vec3d(m * glm::dvec4(s.center, 1.0));
@@ -86,6 +118,10 @@ DiskDesc readDisk(const JsonReader& r, const std::string& name, SceneMaterials& 
     d.radius = r.number("radius", 1.0, Range::positive());
     d.material = materials.materialOf(r);
     d.emission = readEmission(r);
+    d.alpha = readAlpha(r, materials);
+    if (d.alpha.texture >= 0)
+        r.failAt("alpha",
+                 "a texture alpha is read at a triangle shape's uv; a disk takes a number");
     const Mat4 m = readTransform(r);
     const double sx = uniformScale(r, m, "a disk");
     d.center = Vec3d(m * glm::dvec4(d.center, 1.0));
@@ -185,11 +221,12 @@ void readTriangles(const JsonReader& r, ShapeKind kind, MeshDesc& mesh) {
             break;
         case ShapeKind::Sphere:
         case ShapeKind::Disk:
-            break;  // analytic: no triangles
+        case ShapeKind::Instance:
+            break;  // analytic, or an object's: no triangles of its own
     }
 }
 
-void finishMesh(const JsonReader& r, MeshDesc mesh, const Mat4& m, SceneDesc& scene) {
+void finishMesh(const JsonReader& r, MeshDesc mesh, const Mat4& m, ShapeLists& lists) {
     const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(m)));
     for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
         const Vec3d p = Vec3d(m * glm::dvec4(Vec3d(mesh.positions[i]), 1.0));
@@ -220,25 +257,58 @@ void finishMesh(const JsonReader& r, MeshDesc mesh, const Mat4& m, SceneDesc& sc
         }
         checkEmitterArea(r, area);
     }
-    scene.meshes.push_back(std::move(mesh));
+    lists.meshes.push_back(std::move(mesh));
 }
 
-}  // namespace
+// An "instance": an object placed by "transform". Its transformed bounding box must stay
+// within float range, as every shape's coordinates do.
+InstanceDesc readInstance(const JsonReader& r, const std::string& name, SceneObjects& objects,
+                          SceneDesc& scene) {
+    InstanceDesc instance;
+    instance.name = name;
+    instance.object = objects.objectOf(r);
+    instance.toWorld = readTransform(r);
+    r.finish();
+    Vec3d lo, hi;
+    boundingBox(scene.objects[std::size_t(instance.object)], lo, hi);
+    for (int corner = 0; corner < 8; ++corner) {
+        const Vec3d p((corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y,
+                      (corner & 4) ? hi.z : lo.z);
+        checkCoordinates(r, "transform", Vec3d(instance.toWorld * glm::dvec4(p, 1.0)),
+                         "the instance's bounding box corner");
+    }
+    return instance;
+}
 
-void readShape(const JsonReader& r, SceneMaterials& materials, SceneDesc& scene) {
+// One shape into `lists`; `inObject` refuses what an object cannot hold.
+void readShapeInto(const JsonReader& r, SceneMaterials& materials, ShapeLists lists,
+                   bool inObject) {
     r.expectObject();
-    r.noteNames("type", kShapeKindNames.names());
+    // The schema's surface shapes list every type but `instance` (a branch of its own).
+    std::vector<std::string> surfaceKinds = kShapeKindNames.names();
+    std::erase(surfaceKinds, std::string(kShapeKindNames.name(ShapeKind::Instance)));
+    r.noteNames("type", surfaceKinds);
     const std::string type = r.requiredString("type");
     const std::string name = r.string("name", r.path());
     const auto kind = kShapeKindNames.find(type);
     if (!kind)
         r.failAt("type", "expected one of " + kShapeKindNames.list() + "; got \"" + type + "\"");
+    if (inObject && *kind == ShapeKind::Instance)
+        r.failAt("type",
+                 "an instance inside an object is refused: objects hold shapes, one level deep "
+                 "(place the inner object's shapes in the object, or instance it at the top)");
+    // pbrt-v4 does not support area lights in instances either (its scene builder warns
+    // "Area lights not supported with object instancing" and drops them, src/pbrt/scene.cpp).
+    if (inObject && r.has("emission"))
+        r.failAt("emission",
+                 "an emitting shape inside an object is refused: instanced area lights are not "
+                 "supported (place the emitter in \"shapes\")");
     if (*kind == ShapeKind::Sphere) {
-        scene.spheres.push_back(readSphere(r, name, materials));
+        lists.spheres.push_back(readSphere(r, name, materials));
         return;
     }
     if (*kind == ShapeKind::Disk) {
-        scene.disks.push_back(readDisk(r, name, materials));
+        lists.disks.push_back(readDisk(r, name, materials));
         return;
     }
     MeshDesc mesh;
@@ -246,9 +316,61 @@ void readShape(const JsonReader& r, SceneMaterials& materials, SceneDesc& scene)
     readTriangles(r, *kind, mesh);
     mesh.material = materials.materialOf(r);
     mesh.emission = readEmission(r);
+    mesh.alpha = readAlpha(r, materials);
     const Mat4 m = readTransform(r);
     r.finish();
-    finishMesh(r, std::move(mesh), m, scene);
+    finishMesh(r, std::move(mesh), m, lists);
+}
+
+}  // namespace
+
+void readShape(const JsonReader& r, SceneMaterials& materials, SceneObjects& objects,
+               SceneDesc& scene) {
+    if (r.value().is_object() && r.value().value("type", Json()) == "instance") {
+        r.requiredString("type");
+        const std::string name = r.string("name", r.path());
+        scene.instances.push_back(readInstance(r, name, objects, scene));
+        return;
+    }
+    readShapeInto(r, materials, {scene.meshes, scene.spheres, scene.disks}, false);
+}
+
+void SceneObjects::define(const JsonReader& objects) {
+    objects.expectObject();
+    for (const auto& [name, value] : objects.value().items())
+        objects_.emplace_back(name, objects.child(name));
+    objects.finish();
+}
+
+int SceneObjects::objectOf(const JsonReader& instance) {
+    const std::string name = instance.requiredString("object");
+    for (std::size_t i = 0; i < scene_.objects.size(); ++i)
+        if (scene_.objects[i].name == name) return int(i);
+    for (const auto& [definedName, reader] : objects_) {
+        if (definedName != name) continue;
+        if (!reader.value().is_array() || reader.value().empty())
+            reader.fail("expected a non-empty array of shapes");
+        ObjectDesc object;
+        object.name = name;
+        for (std::size_t i = 0; i < reader.value().size(); ++i)
+            readShapeInto(JsonReader(reader.value()[i], reader.indexPath(i), reader.source()),
+                          materials_, {object.meshes, object.spheres, object.disks}, true);
+        scene_.objects.push_back(std::move(object));
+        return int(scene_.objects.size() - 1);
+    }
+    std::string known;
+    for (const auto& [n, reader] : objects_)
+        known += (known.empty() ? "" : ", ") + n;
+    instance.failAt(
+        "object", "unknown object \"" + name + "\"" +
+                      (known.empty() ? " (the scene defines no objects)" : "; defined: " + known));
+}
+
+void SceneObjects::recordUnused() {
+    for (const auto& [name, reader] : objects_)
+        if (std::none_of(scene_.objects.begin(), scene_.objects.end(),
+                         [&](const ObjectDesc& o) { return o.name == name; }))
+            scene_.unusedObjectNames.push_back(name);
 }
 
 }  // namespace lamina::render

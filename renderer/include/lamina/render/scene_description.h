@@ -95,14 +95,25 @@ struct EmissionDesc {
 };
 
 /// The `type` of a scene file's shape: analytic spheres and disks become SphereDesc and
-/// DiskDesc, the others triangle meshes.
-enum class ShapeKind { Sphere, Disk, Rectangle, Mesh, Obj, Ply };
+/// DiskDesc, an instance an InstanceDesc, the others triangle meshes.
+enum class ShapeKind { Sphere, Disk, Rectangle, Mesh, Obj, Ply, Instance };
 inline constexpr NameTable kShapeKindNames{
     std::array{NameEntry{ShapeKind::Sphere, "sphere"}, NameEntry{ShapeKind::Disk, "disk"},
                NameEntry{ShapeKind::Rectangle, "rectangle"}, NameEntry{ShapeKind::Mesh, "mesh"},
-               NameEntry{ShapeKind::Obj, "obj"}, NameEntry{ShapeKind::Ply, "ply"}}};
+               NameEntry{ShapeKind::Obj, "obj"}, NameEntry{ShapeKind::Ply, "ply"},
+               NameEntry{ShapeKind::Instance, "instance"}}};
 
-/// A triangle mesh in world space. Quads and polygons from files are already split.
+/// A shape's `alpha` cut-out: a constant in [0, 1] or a texture's first channel at the hit's
+/// uv. A hit where alpha < 1 is kept only when alpha reaches a hash of the ray and the hit
+/// (pbrt-v4's stochastic alpha test, GeometricPrimitive::Intersect); alpha 0 is invisible.
+struct AlphaDesc {
+    float value = 1;
+    int texture = -1;  ///< into SceneDesc::textures; -1: `value`
+    bool cutsOut() const { return texture >= 0 || value < 1; }
+};
+
+/// A triangle mesh in world space (or in its object's space, ObjectDesc). Quads and polygons
+/// from files are already split.
 struct MeshDesc {
     std::string name;  ///< for messages and `lamina info`
     std::vector<Vec3<float>> positions;
@@ -114,6 +125,7 @@ struct MeshDesc {
     /// A `rectangle` shape: positions[0] is a corner, positions[1] and [3] its neighbours
     /// (an emitting rectangle is sampled by solid angle).
     bool isRectangle = false;
+    AlphaDesc alpha;
 };
 
 struct SphereDesc {
@@ -123,6 +135,7 @@ struct SphereDesc {
     bool flipNormals = false;  ///< emits / faces inwards (a closed emitting room)
     int material = -1;
     std::optional<EmissionDesc> emission;
+    AlphaDesc alpha;
 };
 
 /// An analytic disk: centre, unit normal (its front side), radius.
@@ -133,6 +146,43 @@ struct DiskDesc {
     double radius = 1;
     int material = -1;
     std::optional<EmissionDesc> emission;
+    AlphaDesc alpha;
+};
+
+/// An entry of "objects": shapes in the object's own space, stored once however many
+/// instances place them (none emits: the reader refuses emission in an object).
+struct ObjectDesc {
+    std::string name;
+    std::vector<MeshDesc> meshes;
+    std::vector<SphereDesc> spheres;
+    std::vector<DiskDesc> disks;
+};
+
+/// The axis-aligned box [lo, hi] of a list of shapes, in their own space.
+template <class Shapes>
+void boundingBox(const Shapes& shapes, Vec3d& lo, Vec3d& hi) {
+    lo = Vec3d(std::numeric_limits<double>::infinity());
+    hi = -lo;
+    for (const MeshDesc& m : shapes.meshes)
+        for (const Vec3<float>& p : m.positions) {
+            lo = glm::min(lo, Vec3d(p));
+            hi = glm::max(hi, Vec3d(p));
+        }
+    for (const SphereDesc& s : shapes.spheres) {
+        lo = glm::min(lo, s.center - s.radius);
+        hi = glm::max(hi, s.center + s.radius);
+    }
+    for (const DiskDesc& d : shapes.disks) {
+        lo = glm::min(lo, d.center - d.radius);
+        hi = glm::max(hi, d.center + d.radius);
+    }
+}
+
+/// An `instance` shape: an object placed by a transform (object to world).
+struct InstanceDesc {
+    std::string name;
+    int object = -1;  ///< into SceneDesc::objects
+    glm::dmat4 toWorld{1.0};
 };
 
 enum class LightKind { Point, Spot, Directional, Environment };
@@ -176,6 +226,11 @@ struct SceneDesc {
     std::vector<MeshDesc> meshes;
     std::vector<SphereDesc> spheres;
     std::vector<DiskDesc> disks;
+    /// The objects some instance uses (read on first use, like materials), and the instances.
+    std::vector<ObjectDesc> objects;
+    std::vector<InstanceDesc> instances;
+    /// Objects defined in the file but placed by no instance: never read.
+    std::vector<std::string> unusedObjectNames;
     std::vector<LightDesc> lights;
 };
 

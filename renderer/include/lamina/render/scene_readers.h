@@ -87,19 +87,41 @@ class SceneMaterials {
     /// The index of a shape's "material" (a name, or a material written in place), loading it
     /// and its textures on first use.
     int materialOf(const JsonReader& shape);
+    /// The index of the texture `name` (a shape's alpha or a material's parameter), loading it
+    /// on first use; fails at `at`'s "texture" when it is not defined.
+    int textureIndex(const JsonReader& at, const std::string& name);
     /// Lists the materials and textures defined but never used in the scene.
     void recordUnused();
 
   private:
-    int textureIndex(const JsonReader& at, const std::string& name);
     int add(const JsonReader& material);
 
     SceneDesc& scene_;
     std::vector<std::pair<std::string, JsonReader>> materials_, textures_;
 };
 
+/// The scene's named objects, "objects": {"name": [shape, ...], ...} (shape_reader.cpp). An
+/// object is read when an instance first places it, so an unused one is never read or built.
+class SceneObjects {
+  public:
+    SceneObjects(SceneDesc& scene, SceneMaterials& materials)
+        : scene_(scene), materials_(materials) {}
+
+    void define(const JsonReader& objects);
+    /// The index of an instance's "object", reading it on first use.
+    int objectOf(const JsonReader& instance);
+    /// Lists the objects defined but placed by no instance.
+    void recordUnused();
+
+  private:
+    SceneDesc& scene_;
+    SceneMaterials& materials_;
+    std::vector<std::pair<std::string, JsonReader>> objects_;
+};
+
 /// Reads one entry of "shapes" into `scene` (shape_reader.cpp).
-void readShape(const JsonReader& r, SceneMaterials& materials, SceneDesc& scene);
+void readShape(const JsonReader& r, SceneMaterials& materials, SceneObjects& objects,
+               SceneDesc& scene);
 
 // light_reader.cpp
 /// A radiance or intensity at `key`: a number or [r, g, b] (linear Rec.709), or a spectrum:
