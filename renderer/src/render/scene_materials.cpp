@@ -41,6 +41,23 @@ int SceneMaterials::materialOf(const JsonReader& shape) {
     return add(m);
 }
 
+int SceneMaterials::generated(const std::string& name, const Json& material,
+                              const JsonSource& source,
+                              const std::vector<std::pair<std::string, Json>>& textures) {
+    for (std::size_t i = 0; i < scene_.materialNames.size(); ++i)
+        if (scene_.materialNames[i] == name) return int(i);
+    for (const auto& [textureName, texture] : textures) {
+        if (std::find(scene_.textureNames.begin(), scene_.textureNames.end(), textureName) !=
+            scene_.textureNames.end())
+            continue;
+        scene_.textures.push_back(readTexture(JsonReader(texture, "", source)));
+        scene_.textureNames.push_back(textureName);
+    }
+    const int index = add(JsonReader(material, "", source));
+    scene_.materialNames.push_back(name);
+    return index;
+}
+
 void SceneMaterials::recordUnused() {
     const auto unused = [](const auto& defined, const std::vector<std::string>& used,
                            std::vector<std::string>& out) {

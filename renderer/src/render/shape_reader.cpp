@@ -1,6 +1,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "lamina/render/mesh_files.h"
+#include "lamina/render/obj_materials.h"
 #include "lamina/render/scene_readers.h"
 
 namespace lamina::render {
@@ -223,6 +224,52 @@ void finishMesh(const JsonReader& r, MeshDesc mesh, const Mat4& m, SceneDesc& sc
     scene.meshes.push_back(std::move(mesh));
 }
 
+// An `obj` shape without a `material`: one mesh per usemtl group, each with the material its
+// MTL entry maps to (obj_materials.h), named "MTLFILE:NAME"; the shape's emission, if any,
+// applies to every group, else an entry's Ke.
+void readObjWithMaterials(const JsonReader& r, const std::string& name, SceneMaterials& materials,
+                          SceneDesc& scene) {
+    const std::filesystem::path file = r.filePath("file");
+    ObjGroups obj;
+    try {
+        obj = readObjGroups(file);
+    } catch (const InputError& e) {
+        r.failAt("file", e.what());
+    }
+    if (r.source().readFiles)
+        for (const auto& library : obj.libraries)
+            r.source().readFiles->push_back(library);
+    const std::optional<EmissionDesc> emission = readEmission(r);
+    const Mat4 m = readTransform(r);
+    r.finish();
+    for (auto& group : obj.groups) {
+        MeshDesc mesh = std::move(group.mesh);
+        if (group.material < 0) {
+            const std::string materialName = file.string() + ":default";
+            mesh.name = name + ":default";
+            const JsonSource source{file.string(), file.parent_path(), r.source().readFiles};
+            mesh.material = materials.generated(
+                materialName, Json{{"type", "lambert"}, {"reflectance", 0.5}}, source);
+        } else {
+            const MtlMaterial& mtl = obj.materials[std::size_t(group.material)];
+            mesh.name = name + ":" + mtl.mtlName;
+            const JsonSource source{mtl.file.string() + ":" + std::to_string(mtl.line) +
+                                        " (newmtl " + mtl.mtlName + ")",
+                                    mtl.file.parent_path(), r.source().readFiles};
+            std::vector<std::pair<std::string, Json>> textures;
+            if (mtl.diffuseMap)
+                textures.emplace_back(mtl.textureName,
+                                      Json{{"type", "image"}, {"file", *mtl.diffuseMap}});
+            mesh.material = materials.generated(mtl.name, mtl.material, source, textures);
+            if (!emission && mtl.emission) mesh.emission = EmissionDesc{*mtl.emission, {}, false};
+        }
+        if (emission) mesh.emission = emission;
+        finishMesh(r, std::move(mesh), m, scene);
+    }
+    scene.importWarnings.insert(scene.importWarnings.end(), obj.warnings.begin(),
+                                obj.warnings.end());
+}
+
 }  // namespace
 
 void readShape(const JsonReader& r, SceneMaterials& materials, SceneDesc& scene) {
@@ -239,6 +286,10 @@ void readShape(const JsonReader& r, SceneMaterials& materials, SceneDesc& scene)
     }
     if (*kind == ShapeKind::Disk) {
         scene.disks.push_back(readDisk(r, name, materials));
+        return;
+    }
+    if (*kind == ShapeKind::Obj && !r.has("material")) {
+        readObjWithMaterials(r, name, materials, scene);
         return;
     }
     MeshDesc mesh;

@@ -87,6 +87,12 @@ class SceneMaterials {
     /// The index of a shape's "material" (a name, or a material written in place), loading it
     /// and its textures on first use.
     int materialOf(const JsonReader& shape);
+    /// The index of a material the loader makes itself (from an OBJ's MTL library), named
+    /// `name`: read from `material` on first use (with the image textures `textures`, name
+    /// and JSON, that it names), the same index after. Relative files are taken against
+    /// `source`'s directory, and messages name it.
+    int generated(const std::string& name, const Json& material, const JsonSource& source,
+                  const std::vector<std::pair<std::string, Json>>& textures = {});
     /// Lists the materials and textures defined but never used in the scene.
     void recordUnused();
 
