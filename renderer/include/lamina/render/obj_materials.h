@@ -25,6 +25,7 @@ namespace lamina::render {
 
 /// One `newmtl` entry, mapped to a lamina material.
 struct MtlMaterial {
+    std::string mtlName;         ///< as written after newmtl
     std::string name;            ///< "MTLFILE:NAME": the scene material's name
     std::filesystem::path file;  ///< the MTL file it is defined in
     int line = 0;                ///< the line of its newmtl
