@@ -174,6 +174,7 @@ std::vector<MtlMaterial> readMtlLibrary(const std::filesystem::path& file, const
     const MtlMapper mapper(file, warnings);
     std::vector<MtlEntry> entries;
     std::map<std::string, int> ignored;  // key -> first line
+    std::map<std::string, int> defined;  // newmtl name -> its line
     std::istringstream in(text);
     int lineNumber = 0;
     for (std::string line; std::getline(in, line);) {
@@ -185,10 +186,9 @@ std::vector<MtlMaterial> readMtlLibrary(const std::filesystem::path& file, const
         w.erase(w.begin());
         if (key == "newmtl") {
             if (w.size() != 1) mapper.fail(lineNumber, "newmtl: expected one name");
-            for (const auto& e : entries)
-                if (e.name == w[0])
-                    mapper.fail(lineNumber, "newmtl " + w[0] + " is defined twice (first at line " +
-                                                std::to_string(e.line) + ")");
+            if (const auto [at, added] = defined.emplace(w[0], lineNumber); !added)
+                mapper.fail(lineNumber, "newmtl " + w[0] + " is defined twice (first at line " +
+                                            std::to_string(at->second) + ")");
             entries.push_back({w[0], lineNumber, {}});
             continue;
         }

@@ -189,6 +189,7 @@ ObjGroups readObjGroups(const std::filesystem::path& file) {
         throw InputError(file.string() +
                          ": names no MTL library (mtllib); give the shape a material");
     ObjGroups out;
+    std::map<std::string, std::size_t> byName;  // newmtl name -> index in out.materials
     std::string mtlText;
     for (const auto& [name, line] : lines.libraries) {
         const std::filesystem::path library = (file.parent_path() / name).lexically_normal();
@@ -199,11 +200,13 @@ ObjGroups readObjGroups(const std::filesystem::path& file) {
                              ": " + library.string() + ": " + why);
         const std::string libraryText = readInputFile(library, kMaxMeshFileBytes);
         for (MtlMaterial& m : readMtlLibrary(library, libraryText, out.warnings)) {
-            for (const MtlMaterial& other : out.materials)
-                if (other.mtlName == m.mtlName)
-                    throw InputError(library.string() + ":" + std::to_string(m.line) + ": newmtl " +
-                                     m.mtlName + " is also defined in " + other.file.string() +
-                                     ":" + std::to_string(other.line));
+            const auto [at, added] = byName.emplace(m.mtlName, out.materials.size());
+            if (!added) {
+                const MtlMaterial& other = out.materials[at->second];
+                throw InputError(library.string() + ":" + std::to_string(m.line) + ": newmtl " +
+                                 m.mtlName + " is also defined in " + other.file.string() + ":" +
+                                 std::to_string(other.line));
+            }
             out.materials.push_back(std::move(m));
         }
         out.libraries.push_back(library);
@@ -214,11 +217,10 @@ ObjGroups readObjGroups(const std::filesystem::path& file) {
     const auto& parsed = reader.GetMaterials();
     std::vector<int> ours(parsed.size(), -1);
     for (std::size_t i = 0; i < parsed.size(); ++i)
-        for (std::size_t j = 0; j < out.materials.size(); ++j)
-            if (out.materials[j].mtlName == parsed[i].name) ours[i] = int(j);
+        if (const auto at = byName.find(parsed[i].name); at != byName.end())
+            ours[i] = int(at->second);
     for (const auto& [name, line] : lines.used)
-        if (std::none_of(out.materials.begin(), out.materials.end(),
-                         [&](const MtlMaterial& m) { return m.mtlName == name; }))
+        if (!byName.count(name))
             out.warnings.push_back(file.string() + ":" + std::to_string(line) + ": usemtl " + name +
                                    ": no such material in the MTL libraries");
     std::size_t unassigned = 0;

@@ -44,17 +44,15 @@ int SceneMaterials::materialOf(const JsonReader& shape) {
 int SceneMaterials::generated(const std::string& name, const Json& material,
                               const JsonSource& source,
                               const std::vector<std::pair<std::string, Json>>& textures) {
-    for (std::size_t i = 0; i < scene_.materialNames.size(); ++i)
-        if (scene_.materialNames[i] == name) return int(i);
+    // By name in a map: an OBJ may have as many groups as faces.
+    if (const auto at = generated_.find(name); at != generated_.end()) return at->second;
     for (const auto& [textureName, texture] : textures) {
-        if (std::find(scene_.textureNames.begin(), scene_.textureNames.end(), textureName) !=
-            scene_.textureNames.end())
-            continue;
         scene_.textures.push_back(readTexture(JsonReader(texture, "", source)));
         scene_.textureNames.push_back(textureName);
     }
     const int index = add(JsonReader(material, "", source));
     scene_.materialNames.push_back(name);
+    generated_.emplace(name, index);
     return index;
 }
 

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cmath>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -89,7 +90,8 @@ class SceneMaterials {
     int materialOf(const JsonReader& shape);
     /// The index of a material the loader makes itself (from an OBJ's MTL library), named
     /// `name`: read from `material` on first use (with the image textures `textures`, name
-    /// and JSON, that it names), the same index after. Relative files are taken against
+    /// and JSON, that it names: names derived from `name`, so new with it), the same index
+    /// after. Relative files are taken against
     /// `source`'s directory, and messages name it.
     int generated(const std::string& name, const Json& material, const JsonSource& source,
                   const std::vector<std::pair<std::string, Json>>& textures = {});
@@ -102,6 +104,7 @@ class SceneMaterials {
 
     SceneDesc& scene_;
     std::vector<std::pair<std::string, JsonReader>> materials_, textures_;
+    std::map<std::string, int> generated_;  ///< the materials of generated(), by name
 };
 
 /// Reads one entry of "shapes" into `scene` (shape_reader.cpp).
