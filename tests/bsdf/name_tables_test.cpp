@@ -60,7 +60,7 @@ TEST(NameTables, EveryValueOfEveryBsdfEnumerationHasANameThatRoundTrips) {
     expectEveryValueNamed(
         kLobeKindNames,
         std::array{kLobeDiffuseReflection, kLobeGlossyReflection, kLobeSpecularReflection,
-                   kLobeGlossyTransmission, kLobeSpecularTransmission},
+                   kLobeDiffuseTransmission, kLobeGlossyTransmission, kLobeSpecularTransmission},
         "lobe kinds");
 }
 
