@@ -17,6 +17,8 @@ void collectSpectral(const MaterialDesc& m, std::vector<std::string>& out) {
         if (c->optics.spectrum) out.push_back(c->optics.spectrum->name() + " (n, k)");
     if (const auto* d = std::get_if<DielectricMaterial>(&m.model))
         if (d->spectrum) out.push_back(d->spectrum->name() + " (dispersion)");
+    if (const auto* t = std::get_if<ThinDielectricMaterial>(&m.model))
+        if (t->spectrum) out.push_back(t->spectrum->name() + " (index per wavelength)");
     if (const auto* x = std::get_if<MixMaterial>(&m.model)) {
         collectSpectral(*x->a, out);
         collectSpectral(*x->b, out);
@@ -74,6 +76,11 @@ void run(const std::string& file) {
             "translation)\n",
             std::string(render::kSceneFormatNames.name(scene.format)).c_str(),
             scene.importWarnings.size());
+        for (const std::string& w : scene.importWarnings)
+            std::printf("  %s\n", escapeControl(w).c_str());
+    } else if (!scene.importWarnings.empty()) {
+        // The loader's own (an OBJ's MTL library): what it mapped or ignored.
+        std::printf("warnings: %zu\n", scene.importWarnings.size());
         for (const std::string& w : scene.importWarnings)
             std::printf("  %s\n", escapeControl(w).c_str());
     }

@@ -5,8 +5,10 @@
 #include "lamina/bsdf/conductor.h"
 #include "lamina/bsdf/dielectric.h"
 #include "lamina/bsdf/diffuse.h"
+#include "lamina/bsdf/diffuse_transmission.h"
 #include "lamina/bsdf/layered.h"
 #include "lamina/bsdf/material_builder.h"
+#include "lamina/bsdf/thin_dielectric.h"
 
 namespace lamina {
 
@@ -19,6 +21,8 @@ namespace lamina {
 LAMINA_INSTANTIATE_BSDF(DiffuseBxdf)
 LAMINA_INSTANTIATE_BSDF(ConductorBxdf)
 LAMINA_INSTANTIATE_BSDF(DielectricBxdf)
+LAMINA_INSTANTIATE_BSDF(DiffuseTransmissionBxdf)
+LAMINA_INSTANTIATE_BSDF(ThinDielectricBxdf)
 LAMINA_INSTANTIATE_BSDF(LayeredBxdf)
 LAMINA_INSTANTIATE_BSDF(MicrofacetReflectionLobe)
 LAMINA_INSTANTIATE_BSDF(MixBxdf)

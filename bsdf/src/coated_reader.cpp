@@ -14,7 +14,11 @@ bool transmits(const MaterialDesc& m) {
     return std::visit(
         [](const auto& x) -> bool {
             using M = std::decay_t<decltype(x)>;
-            if constexpr (std::is_same_v<M, DielectricMaterial>) return true;
+            if constexpr (std::is_same_v<M, DielectricMaterial> ||
+                          std::is_same_v<M, ThinDielectricMaterial>)
+                return true;
+            if constexpr (std::is_same_v<M, DiffuseTransmissionMaterial>)
+                return x.transmittance.rgb.maxValue() > 0 || x.transmittance.spectrum;
             if constexpr (std::is_same_v<M, StandardMaterial>) return x.transmission > 0;
             if constexpr (std::is_same_v<M, MixMaterial>) return transmits(*x.a) || transmits(*x.b);
             if constexpr (std::is_same_v<M, CoatedMaterial>) return transmits(*x.base);
@@ -35,8 +39,8 @@ MaterialModel readCoated(const JsonReader& r) {
     c.base = std::make_shared<MaterialDesc>(parseMaterial(r.child("base")));
     if (transmits(*c.base))
         r.failAt("base",
-                 "expected a material without transmission (no dielectric, no standard "
-                 "or layered transmission)");
+                 "expected a material without transmission (no dielectric or thin_dielectric, "
+                 "no diffuse_transmission, no standard or layered transmission)");
     c.thickness = r.number("thickness", 0.0, {0.0, 1e3});
     c.albedo = readColor(r, "albedo", 0.0);
     c.g = r.number("g", 0.0, {-0.99, 0.99});

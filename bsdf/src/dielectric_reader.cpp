@@ -1,6 +1,8 @@
 // `dielectric`: the index of refraction as a number, a named glass, a file or a dispersion
-// formula (spectral/ior_spectrum.h), and a microfacet NDF (docs/bsdf.md, "Materials").
+// formula (spectral/ior_spectrum.h), and a microfacet NDF; `thin_dielectric`: the same index
+// (docs/bsdf.md, "Materials").
 #include <cmath>
+#include <tuple>
 
 #include "lamina/spectral/cie.h"
 #include "material_readers.h"
@@ -77,31 +79,41 @@ IorSpectrum readDispersionFormula(const JsonReader& f) {
 
 }  // namespace
 
-MaterialModel readDielectric(const JsonReader& r) {
-    DielectricMaterial d;
+std::pair<double, std::shared_ptr<const IorSpectrum>> readDielectricIor(const JsonReader& r) {
+    std::shared_ptr<const IorSpectrum> spectrum;
     if (r.has("ior") && r.has("ior_file")) r.fail("give only one of ior and ior_file");
     if (r.has("ior_file")) {
-        d.spectrum = loadIorAt(r, "ior_file");
+        spectrum = loadIorAt(r, "ior_file");
     } else if (r.has("ior") && r.value()["ior"].is_object()) {
-        d.spectrum = std::make_shared<const IorSpectrum>(readDispersionFormula(r.child("ior")));
+        spectrum = std::make_shared<const IorSpectrum>(readDispersionFormula(r.child("ior")));
     } else if (r.has("ior") && r.value()["ior"].is_string()) {
         const std::string name = r.requiredString("ior");
         const auto ior = namedIor(name);
         if (!ior || ior->k(550) != 0)
             r.failAt("ior", "unknown glass \"" + name + "\"; expected a number or one of " +
                                 knownNames(namedGlassNames()));
-        d.spectrum = std::make_shared<const IorSpectrum>(*ior);
+        spectrum = std::make_shared<const IorSpectrum>(*ior);
     } else {
-        d.ior = r.number("ior", 1.5, Range::positive());
+        return {r.number("ior", 1.5, Range::positive()), nullptr};
     }
-    if (d.spectrum) {
-        d.ior = d.spectrum->n(kDLineNm);
-        if (!(d.ior > 0)) r.fail("the index of refraction at 587.56 nm is not positive");
-    }
+    const double ior = spectrum->n(kDLineNm);
+    if (!(ior > 0)) r.fail("the index of refraction at 587.56 nm is not positive");
+    return {ior, std::move(spectrum)};
+}
+
+MaterialModel readDielectric(const JsonReader& r) {
+    DielectricMaterial d;
+    std::tie(d.ior, d.spectrum) = readDielectricIor(r);
     d.microfacet.ndf = r.choice("distribution", NdfKind::Ggx, kDielectricNdfNames);
     readRoughness(r, 0.0, d.microfacet);
     readMicrofacetSwitches(r, d.microfacet, false);
     return d;
+}
+
+MaterialModel readThinDielectric(const JsonReader& r) {
+    ThinDielectricMaterial t;
+    std::tie(t.ior, t.spectrum) = readDielectricIor(r);
+    return t;
 }
 
 }  // namespace lamina

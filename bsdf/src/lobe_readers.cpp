@@ -1,5 +1,5 @@
-// Materials of one lobe: the diffuse models (`lambert`, `oren_nayar`, `burley`, `frostbite`)
-// and the article's `phong` (docs/bsdf.md, "Materials").
+// Materials of one lobe: the diffuse models (`lambert`, `oren_nayar`, `burley`, `frostbite`),
+// `diffuse_transmission` and the article's `phong` (docs/bsdf.md, "Materials").
 #include "material_readers.h"
 
 namespace lamina {
@@ -14,6 +14,13 @@ MaterialModel readDiffuse(const JsonReader& r, DiffuseModel model) {
         if (m.alphaX != m.alphaY) r.fail("diffuse roughness is isotropic");
         d.roughness = m.perceptualRoughness();
     }
+    return d;
+}
+
+MaterialModel readDiffuseTransmission(const JsonReader& r) {
+    DiffuseTransmissionMaterial d;
+    d.reflectance = readColor(r, "reflectance", 0.25);
+    d.transmittance = readColor(r, "transmittance", 0.25);
     return d;
 }
 

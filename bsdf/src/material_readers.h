@@ -29,6 +29,9 @@ FresnelChoice readFresnel(const JsonReader& r, FresnelChoice defaultValue, bool 
 /// An n, k or index file named by `key`, relative to the JSON file's directory (else to the
 /// working directory).
 std::shared_ptr<const IorSpectrum> loadIorAt(const JsonReader& r, const std::string& key);
+/// `ior` (a number, a named glass or a dispersion formula) or `ior_file`: the RGB-mode index
+/// and, unless a plain number, the spectrum (dielectric_reader.cpp).
+std::pair<double, std::shared_ptr<const IorSpectrum>> readDielectricIor(const JsonReader& r);
 /// "a, b, c" for a message.
 std::string knownNames(const std::vector<std::string>& names);
 
@@ -55,6 +58,8 @@ MaterialModel readDielectric(const JsonReader& r);                   // dielectr
 MaterialModel readDiffuse(const JsonReader& r, DiffuseModel model);  // lobe_readers.cpp
 MaterialModel readPhong(const JsonReader& r);                        // lobe_readers.cpp
 MaterialModel readCoated(const JsonReader& r);                       // coated_reader.cpp
+MaterialModel readDiffuseTransmission(const JsonReader& r);          // lobe_readers.cpp
+MaterialModel readThinDielectric(const JsonReader& r);               // dielectric_reader.cpp
 
 /// readDiffuse for one model, for the table of material types.
 template <DiffuseModel Model>

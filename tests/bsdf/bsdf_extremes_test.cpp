@@ -1,6 +1,7 @@
 // Numerical stability on extreme inputs (issue: "Extremes"): every material over roughness
 // alpha in {0, 1e-7, 1e-5, 1e-3, 0.01, 0.1, 0.5, 1}, conductor k in {0, 0.1, 3, 10, 20},
-// dielectric eta in {1, 1+1e-6, 1.0001, 1.33, 1.5, 2.42, 4} and their reciprocals, and
+// dielectric and thin_dielectric eta in {1, 1+1e-6, 1.0001, 1.33, 1.5, 2.42, 4} and their
+// reciprocals, diffuse_transmission with one or both albedos at 0, 1e-7 or 1, and
 // directions with cos theta in {0, +-1e-8, 1e-6, 1e-4, 0.01, 0.5, 1}, at the horizon, below
 // it, equal and opposite: eval, pdf and sample never return NaN, Inf or a negative value, and
 // the float result is within 1e-3 relative of the double one wherever the double value is
@@ -80,6 +81,17 @@ std::vector<Config> configs() {
         out.push_back(
             {"standard" + tag, R"({"type":"standard",)" + alphaKeys + R"(,"base_color":1})"});
     }
+    for (double eta : {1.0, 1 + 1e-6, 1.0001, 1.33, 1.5, 2.42, 4.0})
+        for (int inverse = 0; inverse < (eta == 1.0 ? 1 : 2); ++inverse) {
+            const double e = inverse ? 1 / eta : eta;
+            out.push_back({"thin_dielectric_eta" + number(e),
+                           R"({"type":"thin_dielectric","ior":)" + number(e) + "}"});
+        }
+    for (const auto& [r, t] :
+         std::initializer_list<std::pair<double, double>>{{0, 1}, {1, 0}, {0.5, 0.5}, {1e-7, 1e-7}})
+        out.push_back({"diffuse_transmission_r" + number(r) + "_t" + number(t),
+                       R"({"type":"diffuse_transmission","reflectance":)" + number(r) +
+                           R"(,"transmittance":)" + number(t) + "}"});
     for (const char* d : {"lambert", "oren_nayar", "burley", "frostbite"})
         for (double r : {0.0, 1e-5, 0.5, 1.0})
             out.push_back({std::string(d) + "_r" + number(r),

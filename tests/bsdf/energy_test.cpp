@@ -76,6 +76,11 @@ std::vector<EnergyCase> cases() {
             {"burley_r" + rs, R"({"type":"burley","reflectance":1,"roughness":)" + rs + "}", 1.5});
     }
     out.push_back({"lambert", R"({"type":"lambert","reflectance":1})", 1});
+    out.push_back({"diffuse_transmission",
+                   R"({"type":"diffuse_transmission","reflectance":0.3,"transmittance":0.7})", 1});
+    for (const char* ior : {"1.5", "2.42", "0.75"})
+        out.push_back({std::string("thin_dielectric_") + ior,
+                       R"({"type":"thin_dielectric","ior":)" + std::string(ior) + "}", 1});
     return out;
 }
 

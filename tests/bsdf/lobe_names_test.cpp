@@ -13,6 +13,7 @@ TEST(LobeNames, EachKindHasAWordForItsFlags) {
     EXPECT_EQ(describeLobes(kLobeDiffuseReflection), "diffuse reflection");
     EXPECT_EQ(describeLobes(kLobeGlossyReflection), "glossy reflection");
     EXPECT_EQ(describeLobes(kLobeSpecularReflection), "specular reflection");
+    EXPECT_EQ(describeLobes(kLobeDiffuseTransmission), "diffuse transmission");
     EXPECT_EQ(describeLobes(kLobeGlossyTransmission), "glossy transmission");
     EXPECT_EQ(describeLobes(kLobeSpecularTransmission), "specular transmission");
 }
@@ -21,13 +22,20 @@ TEST(LobeNames, AFlagsWordListsItsKindsInTableOrder) {
     EXPECT_EQ(describeLobes(kLobeNone), "none (black)");
     EXPECT_EQ(describeLobes(kLobeGlossyReflection | kLobeGlossyTransmission),
               "glossy reflection, glossy transmission");
-    // Flags are a union of bits: a kind whose bits the union holds is listed, as `lamina info`
-    // always has (diffuse reflection with specular transmission holds specular reflection).
+    // Each kind has a bit of its own: a union lists exactly the kinds it was made of, though
+    // diffuse reflection with specular transmission holds the component bits of specular
+    // reflection and of diffuse transmission.
     EXPECT_EQ(describeLobes(kLobeDiffuseReflection | kLobeSpecularTransmission),
-              "diffuse reflection, specular reflection, specular transmission");
+              "diffuse reflection, specular transmission");
+    EXPECT_EQ(describeLobes(kLobeGlossyReflection | kLobeDiffuseTransmission),
+              "glossy reflection, diffuse transmission");
     EXPECT_EQ(describeLobes(kLobeAll),
-              "diffuse reflection, glossy reflection, specular reflection, glossy transmission, "
-              "specular transmission");
+              "diffuse reflection, glossy reflection, specular reflection, diffuse "
+              "transmission, glossy transmission, specular transmission");
+    // What closes off transmission (a coat) keeps exactly the reflection kinds.
+    EXPECT_EQ(reflectionKinds(kLobeAll),
+              kLobeDiffuseReflection | kLobeGlossyReflection | kLobeSpecularReflection);
+    EXPECT_EQ(reflectionKinds(kLobeDiffuseTransmission), kLobeNone);
 }
 
 TEST(LobeNames, DescribeTheLobesOfMaterials) {
@@ -40,6 +48,12 @@ TEST(LobeNames, DescribeTheLobesOfMaterials) {
     EXPECT_EQ(lobes(R"({"type":"dielectric","roughness":0.3})"),
               "glossy reflection, glossy transmission");
     EXPECT_EQ(lobes(R"({"type":"lambert","reflectance":0})"), "none (black)");
+    EXPECT_EQ(lobes(R"({"type":"diffuse_transmission"})"),
+              "diffuse reflection, diffuse transmission");
+    EXPECT_EQ(lobes(R"({"type":"diffuse_transmission","transmittance":0})"), "diffuse reflection");
+    EXPECT_EQ(lobes(R"({"type":"diffuse_transmission","reflectance":0,"transmittance":0})"),
+              "none (black)");
+    EXPECT_EQ(lobes(R"({"type":"thin_dielectric"})"), "specular reflection, specular transmission");
 }
 
 TEST(LobeNames, ASampleHasOneKindWithAName) {

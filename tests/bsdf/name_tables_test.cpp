@@ -60,7 +60,7 @@ TEST(NameTables, EveryValueOfEveryBsdfEnumerationHasANameThatRoundTrips) {
     expectEveryValueNamed(
         kLobeKindNames,
         std::array{kLobeDiffuseReflection, kLobeGlossyReflection, kLobeSpecularReflection,
-                   kLobeGlossyTransmission, kLobeSpecularTransmission},
+                   kLobeDiffuseTransmission, kLobeGlossyTransmission, kLobeSpecularTransmission},
         "lobe kinds");
 }
 
@@ -116,8 +116,8 @@ TEST(NameTables, TheUnknownTypeMessageListsEveryMaterialType) {
         }
     }
     EXPECT_EQ(list,
-              "standard, lambert, oren_nayar, burley, frostbite, conductor, dielectric, phong, "
-              "layered, mix, coated");
+              "standard, lambert, oren_nayar, burley, frostbite, conductor, "
+              "diffuse_transmission, dielectric, thin_dielectric, phong, layered, mix, coated");
     try {
         parse(R"({"type":"plastic"})");
         FAIL() << "accepted an unknown material type";

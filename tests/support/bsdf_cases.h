@@ -1,5 +1,8 @@
 // A catalogue of BSDF configurations shared by the statistical BSDF tests: every lobe and
-// layered combination, across roughness, NDF, sampling method and Fresnel model.
+// layered combination, across roughness, NDF, sampling method and Fresnel model. BSDFs made
+// only of delta lobes (smooth dielectric, thin_dielectric, smooth conductors) have no density
+// for these tests to check: bsdf_extremes_test.cpp, energy_test.cpp and their own tests
+// (bsdf_properties_test.cpp, material_test.cpp) cover them.
 #pragma once
 
 #include <memory>
@@ -10,6 +13,7 @@
 #include "lamina/bsdf/conductor.h"
 #include "lamina/bsdf/dielectric.h"
 #include "lamina/bsdf/diffuse.h"
+#include "lamina/bsdf/diffuse_transmission.h"
 #include "lamina/bsdf/layered.h"
 #include "lamina/bsdf/material_builder.h"
 
@@ -48,6 +52,15 @@ inline std::vector<BsdfCase> bsdfCases() {
     for (const auto& [model, name] : kDiffuseModelNames.entries())
         cases.push_back(
             {std::string(name), std::make_shared<DiffuseBxdf<Spec>>(albedo, model, 0.7)});
+    // Diffuse transmission (no index: eta 1), with coloured and unequal reflectance and
+    // transmittance so that both lobe choices and their weights are exercised.
+    cases.push_back(
+        {"diffuse_transmission",
+         std::make_shared<DiffuseTransmissionBxdf<Spec>>(Spec(0.6, 0.3, 0.1), Spec(0.2, 0.5, 0.4)),
+         true, 1.0});
+    cases.push_back({"diffuse_transmission_reflection_only",
+                     std::make_shared<DiffuseTransmissionBxdf<Spec>>(Spec(0.5), Spec(0.0)), true,
+                     1.0});
 
     // Conductors: GGX over alpha and sampling methods, Beckmann, Blinn-Phong, anisotropic.
     for (double alpha : {0.05, 0.2, 0.5, 1.0})

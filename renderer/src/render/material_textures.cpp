@@ -83,7 +83,8 @@ std::pair<MaterialDesc, MaterialTextures> readTexturedMaterial(const JsonReader&
                       (tex.color >= 0 && (desc.type == "conductor" || desc.type == "dielectric"))))
         r.fail(
             "textures apply to base_color / reflectance / roughness of standard, diffuse "
-            "and phong materials, and to the roughness of conductors and dielectrics");
+            "and phong materials, to the reflectance of diffuse_transmission, and to the "
+            "roughness of conductors and dielectrics");
     return {std::move(desc), tex};
 }
 
@@ -112,6 +113,8 @@ MaterialDesc texturedMaterial(const SceneDesc& scene, int material, const Vec2<f
             } else if constexpr (std::is_same_v<M, DiffuseMaterial>) {
                 if (t.color >= 0) m.reflectance = colour();
                 if (t.roughness >= 0) m.roughness = roughness;
+            } else if constexpr (std::is_same_v<M, DiffuseTransmissionMaterial>) {
+                if (t.color >= 0) m.reflectance = colour();
             } else if constexpr (std::is_same_v<M, PhongMaterial>) {
                 if (t.color >= 0) m.reflectance = colour();
                 if (t.roughness >= 0)

@@ -48,6 +48,11 @@ SceneDesc readScene(const Json& json, const JsonSource& source) {
     return scene;
 }
 
+void printWarnings(const SceneDesc& scene) {
+    for (const std::string& warning : scene.importWarnings)
+        std::cerr << "lamina: warning: " << escapeControl(warning) << "\n";
+}
+
 }  // namespace
 
 SceneDesc parseScene(const std::string& text, const JsonSource& source) {
@@ -74,9 +79,10 @@ SceneDesc loadScene(const std::filesystem::path& file) {
         scene.file = file;
         scene.format = imported.format;
         scene.inputFiles = std::move(read);
-        for (const std::string& warning : imported.warnings)
-            std::cerr << "lamina: warning: " << escapeControl(warning) << "\n";
-        scene.importWarnings = std::move(imported.warnings);
+        // The translation's warnings first, then the loader's own (an OBJ's MTL library).
+        scene.importWarnings.insert(scene.importWarnings.begin(), imported.warnings.begin(),
+                                    imported.warnings.end());
+        printWarnings(scene);
         return scene;
     }
     const Json root = readJsonFile(file);
@@ -84,6 +90,7 @@ SceneDesc loadScene(const std::filesystem::path& file) {
     const JsonSource source{file.string(), file.parent_path(), &read};
     SceneDesc scene = readScene(root, source);
     scene.inputFiles = std::move(read);
+    printWarnings(scene);
     return scene;
 }
 

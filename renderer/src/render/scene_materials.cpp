@@ -41,6 +41,21 @@ int SceneMaterials::materialOf(const JsonReader& shape) {
     return add(m);
 }
 
+int SceneMaterials::generated(const std::string& name, const Json& material,
+                              const JsonSource& source,
+                              const std::vector<std::pair<std::string, Json>>& textures) {
+    // By name in a map: an OBJ may have as many groups as faces.
+    if (const auto at = generated_.find(name); at != generated_.end()) return at->second;
+    for (const auto& [textureName, texture] : textures) {
+        scene_.textures.push_back(readTexture(JsonReader(texture, "", source)));
+        scene_.textureNames.push_back(textureName);
+    }
+    const int index = add(JsonReader(material, "", source));
+    scene_.materialNames.push_back(name);
+    generated_.emplace(name, index);
+    return index;
+}
+
 void SceneMaterials::recordUnused() {
     const auto unused = [](const auto& defined, const std::vector<std::string>& used,
                            std::vector<std::string>& out) {

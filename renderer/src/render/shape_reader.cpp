@@ -2,6 +2,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "lamina/render/mesh_files.h"
+#include "lamina/render/obj_materials.h"
 #include "lamina/render/scene_readers.h"
 
 namespace lamina::render {
@@ -13,6 +14,8 @@ struct ShapeLists {
     std::vector<MeshDesc>& meshes;
     std::vector<SphereDesc>& spheres;
     std::vector<DiskDesc>& disks;
+    /// Where what a reader maps to something else is said (SceneDesc::importWarnings).
+    std::vector<std::string>& warnings;
 };
 
 // "transform": a list of operations applied in order (the first one first):
@@ -280,6 +283,53 @@ InstanceDesc readInstance(const JsonReader& r, const std::string& name, SceneObj
     return instance;
 }
 
+// An `obj` shape without a `material`: one mesh per usemtl group, each with the material its
+// MTL entry maps to (obj_materials.h), named "MTLFILE:NAME"; the shape's emission, if any,
+// applies to every group, else an entry's Ke.
+void readObjWithMaterials(const JsonReader& r, const std::string& name, SceneMaterials& materials,
+                          ShapeLists& lists) {
+    const std::filesystem::path file = r.filePath("file");
+    ObjGroups obj;
+    try {
+        obj = readObjGroups(file);
+    } catch (const InputError& e) {
+        r.failAt("file", e.what());
+    }
+    if (r.source().readFiles)
+        for (const auto& library : obj.libraries)
+            r.source().readFiles->push_back(library);
+    const std::optional<EmissionDesc> emission = readEmission(r);
+    const AlphaDesc alpha = readAlpha(r, materials);
+    const Mat4 m = readTransform(r);
+    r.finish();
+    for (auto& group : obj.groups) {
+        MeshDesc mesh = std::move(group.mesh);
+        mesh.alpha = alpha;
+        if (group.material < 0) {
+            const std::string materialName = file.string() + ":default";
+            mesh.name = name + ":default";
+            const JsonSource source{file.string(), file.parent_path(), r.source().readFiles};
+            mesh.material = materials.generated(
+                materialName, Json{{"type", "lambert"}, {"reflectance", 0.5}}, source);
+        } else {
+            const MtlMaterial& mtl = obj.materials[std::size_t(group.material)];
+            mesh.name = name + ":" + mtl.mtlName;
+            const JsonSource source{mtl.file.string() + ":" + std::to_string(mtl.line) +
+                                        " (newmtl " + mtl.mtlName + ")",
+                                    mtl.file.parent_path(), r.source().readFiles};
+            std::vector<std::pair<std::string, Json>> textures;
+            if (mtl.diffuseMap)
+                textures.emplace_back(mtl.textureName,
+                                      Json{{"type", "image"}, {"file", *mtl.diffuseMap}});
+            mesh.material = materials.generated(mtl.name, mtl.material, source, textures);
+            if (!emission && mtl.emission) mesh.emission = EmissionDesc{*mtl.emission, {}, false};
+        }
+        if (emission) mesh.emission = emission;
+        finishMesh(r, std::move(mesh), m, lists);
+    }
+    lists.warnings.insert(lists.warnings.end(), obj.warnings.begin(), obj.warnings.end());
+}
+
 // One shape into `lists`; `inObject` refuses what an object cannot hold.
 void readShapeInto(const JsonReader& r, SceneMaterials& materials, ShapeLists lists,
                    bool inObject) {
@@ -311,6 +361,10 @@ void readShapeInto(const JsonReader& r, SceneMaterials& materials, ShapeLists li
         lists.disks.push_back(readDisk(r, name, materials));
         return;
     }
+    if (*kind == ShapeKind::Obj && !r.has("material")) {
+        readObjWithMaterials(r, name, materials, lists);
+        return;
+    }
     MeshDesc mesh;
     mesh.name = name;
     readTriangles(r, *kind, mesh);
@@ -332,7 +386,8 @@ void readShape(const JsonReader& r, SceneMaterials& materials, SceneObjects& obj
         scene.instances.push_back(readInstance(r, name, objects, scene));
         return;
     }
-    readShapeInto(r, materials, {scene.meshes, scene.spheres, scene.disks}, false);
+    readShapeInto(r, materials, {scene.meshes, scene.spheres, scene.disks, scene.importWarnings},
+                  false);
 }
 
 void SceneObjects::define(const JsonReader& objects) {
@@ -353,8 +408,14 @@ int SceneObjects::objectOf(const JsonReader& instance) {
         ObjectDesc object;
         object.name = name;
         for (std::size_t i = 0; i < reader.value().size(); ++i)
-            readShapeInto(JsonReader(reader.value()[i], reader.indexPath(i), reader.source()),
-                          materials_, {object.meshes, object.spheres, object.disks}, true);
+            readShapeInto(
+                JsonReader(reader.value()[i], reader.indexPath(i), reader.source()), materials_,
+                {object.meshes, object.spheres, object.disks, scene_.importWarnings}, true);
+        // An OBJ's MTL can make a group emit (Ke) without an "emission" key.
+        for (const MeshDesc& mesh : object.meshes)
+            if (mesh.emission)
+                reader.fail("the object's mesh \"" + mesh.name +
+                            "\" emits (an MTL Ke): instanced area lights are not supported");
         scene_.objects.push_back(std::move(object));
         return int(scene_.objects.size() - 1);
     }

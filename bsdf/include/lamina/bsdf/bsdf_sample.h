@@ -19,7 +19,10 @@ inline constexpr NameTable kTransportModeNames{
                NameEntry{TransportMode::Importance, "importance"}}};
 
 /// Lobe flags: what kind of scattering a lobe or a sample is. A sample has exactly one kind
-/// (one of kLobeKindNames); a BSDF's flags are the union of its lobes' kinds.
+/// (one of kLobeKindNames); a BSDF's flags are the union of its lobes' kinds. A kind is its
+/// component bits (reflection or transmission; diffuse, glossy or specular) plus a bit of its
+/// own, so that a union names its kinds exactly: diffuse reflection with glossy transmission
+/// holds the component bits of diffuse transmission, but not its kind bit.
 enum LobeFlags : std::uint32_t {
     kLobeNone = 0,
     kLobeReflection = 1u << 0,
@@ -27,27 +30,36 @@ enum LobeFlags : std::uint32_t {
     kLobeDiffuse = 1u << 2,
     kLobeGlossy = 1u << 3,
     kLobeSpecular = 1u << 4,  ///< a Dirac delta: never evaluated by eval() or pdf()
-    kLobeDiffuseReflection = kLobeDiffuse | kLobeReflection,
-    kLobeGlossyReflection = kLobeGlossy | kLobeReflection,
-    kLobeGlossyTransmission = kLobeGlossy | kLobeTransmission,
-    kLobeSpecularReflection = kLobeSpecular | kLobeReflection,
-    kLobeSpecularTransmission = kLobeSpecular | kLobeTransmission,
-    kLobeAll = kLobeReflection | kLobeTransmission | kLobeDiffuse | kLobeGlossy | kLobeSpecular,
+    kLobeDiffuseReflection = kLobeDiffuse | kLobeReflection | (1u << 5),
+    kLobeGlossyReflection = kLobeGlossy | kLobeReflection | (1u << 6),
+    kLobeSpecularReflection = kLobeSpecular | kLobeReflection | (1u << 7),
+    kLobeDiffuseTransmission = kLobeDiffuse | kLobeTransmission | (1u << 8),
+    kLobeGlossyTransmission = kLobeGlossy | kLobeTransmission | (1u << 9),
+    kLobeSpecularTransmission = kLobeSpecular | kLobeTransmission | (1u << 10),
+    kLobeAll = kLobeDiffuseReflection | kLobeGlossyReflection | kLobeSpecularReflection |
+               kLobeDiffuseTransmission | kLobeGlossyTransmission | kLobeSpecularTransmission,
 };
 
-/// The kinds of lobe lamina has, in the order descriptions list them. No lobe transmits
-/// diffusely: as a union of bits, diffuse transmission could not be told apart from diffuse
-/// reflection plus glossy transmission.
+/// The kinds of lobe lamina has, in the order descriptions list them.
 inline constexpr NameTable kLobeKindNames{
     std::array{NameEntry{kLobeDiffuseReflection, "diffuse_reflection"},
                NameEntry{kLobeGlossyReflection, "glossy_reflection"},
                NameEntry{kLobeSpecularReflection, "specular_reflection"},
+               NameEntry{kLobeDiffuseTransmission, "diffuse_transmission"},
                NameEntry{kLobeGlossyTransmission, "glossy_transmission"},
                NameEntry{kLobeSpecularTransmission, "specular_transmission"}}};
 
 /// The lobe kinds a flags word holds, in words: "diffuse reflection, glossy transmission";
 /// "none (black)" for a BSDF without lobes.
 std::string describeLobes(std::uint32_t flags);
+
+/// The reflection kinds of a flags word (what a BSDF that closes off transmission keeps).
+inline std::uint32_t reflectionKinds(std::uint32_t f) {
+    std::uint32_t out = kLobeNone;
+    for (const auto k : {kLobeDiffuseReflection, kLobeGlossyReflection, kLobeSpecularReflection})
+        if ((f & k) == k) out |= k;
+    return out;
+}
 
 inline bool isSpecular(std::uint32_t f) {
     return (f & kLobeSpecular) != 0;

@@ -89,7 +89,7 @@ class CoatedBxdf final : public Bxdf<S> {
 
     std::uint32_t flags() const override {
         std::uint32_t f = top_.smooth() ? kLobeSpecularReflection : kLobeGlossyReflection;
-        f |= base_->flags() & ~kLobeTransmission;
+        f |= reflectionKinds(base_->flags());
         if (scattering()) f |= kLobeGlossyReflection;
         return f;
     }

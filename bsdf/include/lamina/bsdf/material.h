@@ -131,6 +131,19 @@ struct DielectricMaterial {
     MicrofacetParams microfacet;
 };
 
+/// `diffuse_transmission`: Lambertian reflection and transmission (diffuse_transmission.h).
+/// Defaults are pbrt-v4's.
+struct DiffuseTransmissionMaterial {
+    ColorInput reflectance{RgbInput(0.25)};
+    ColorInput transmittance{RgbInput(0.25)};
+};
+
+/// `thin_dielectric`: a thin slab of glass (thin_dielectric.h); ior as `dielectric` reads it.
+struct ThinDielectricMaterial {
+    double ior = 1.5;  ///< the RGB-mode index (n at 587.56 nm for a dispersive glass)
+    std::shared_ptr<const IorSpectrum> spectrum;  ///< a named glass or an ior_file
+};
+
 /// `phong`: the article's Phong lobe alone.
 struct PhongMaterial {
     ColorInput reflectance{RgbInput(0.5)};
@@ -159,7 +172,8 @@ struct CoatedMaterial {
 };
 
 using MaterialModel = std::variant<StandardMaterial, DiffuseMaterial, ConductorMaterial,
-                                   DielectricMaterial, PhongMaterial, MixMaterial, CoatedMaterial>;
+                                   DielectricMaterial, PhongMaterial, MixMaterial, CoatedMaterial,
+                                   DiffuseTransmissionMaterial, ThinDielectricMaterial>;
 
 struct MaterialDesc {
     std::string type;  ///< the JSON "type", for messages and `lamina info`

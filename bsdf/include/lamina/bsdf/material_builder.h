@@ -8,10 +8,12 @@
 #include "lamina/bsdf/coated.h"
 #include "lamina/bsdf/conductor.h"
 #include "lamina/bsdf/dielectric.h"
+#include "lamina/bsdf/diffuse_transmission.h"
 #include "lamina/bsdf/layered.h"
 #include "lamina/bsdf/material.h"
 #include "lamina/bsdf/mix.h"
 #include "lamina/bsdf/spectrum_context.h"
+#include "lamina/bsdf/thin_dielectric.h"
 
 namespace lamina {
 
@@ -55,6 +57,18 @@ class MaterialBuilder {
         const Float eta = d.spectrum ? ctx_.dielectricIor(*d.spectrum) : Float(d.ior);
         return std::make_unique<DielectricBxdf<S>>(eta, distribution(d.microfacet),
                                                    d.microfacet.g2);
+    }
+
+    std::unique_ptr<Bxdf<S>> buildModel(const DiffuseTransmissionMaterial& d) const {
+        const S r = ctx_.reflectance(d.reflectance), t = ctx_.reflectance(d.transmittance);
+        if (r.maxValue() <= Float(0) && t.maxValue() <= Float(0))
+            return std::make_unique<LayeredBxdf<S>>(typename LayeredBxdf<S>::Layers{});
+        return std::make_unique<DiffuseTransmissionBxdf<S>>(r, t);
+    }
+
+    std::unique_ptr<Bxdf<S>> buildModel(const ThinDielectricMaterial& t) const {
+        return std::make_unique<ThinDielectricBxdf<S>>(
+            t.spectrum ? ctx_.indexPerChannel(*t.spectrum) : S(Float(t.ior)));
     }
 
     std::unique_ptr<Bxdf<S>> buildModel(const PhongMaterial& p) const {

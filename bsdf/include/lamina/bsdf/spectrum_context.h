@@ -21,6 +21,8 @@ struct SpectrumContext<Rgb<T>> {
 
     /// The RGB-mode index of a possibly dispersive material: n at the d-line.
     T dielectricIor(const IorSpectrum& ior) const { return T(ior.n(kDLineNm)); }
+    /// The index per channel where it does not bend the path (a thin slab): the d-line index.
+    Rgb<T> indexPerChannel(const IorSpectrum& ior) const { return Rgb<T>(dielectricIor(ior)); }
 
     /// A reflectance in [0, 1] (albedo, F0).
     Rgb<T> reflectance(const Rgb<double>& c) const { return convert(c); }
@@ -56,6 +58,12 @@ struct SpectrumContext<SampledSpectrum<T>> {
     T dielectricIor(const IorSpectrum& ior) const {
         if (ior.dispersive()) lambda.terminateSecondary();
         return T(ior.n(double(lambda.hero())));
+    }
+
+    /// The index at each of the path's wavelengths, for a boundary that does not bend the path
+    /// (a thin slab transmits straight through): no wavelength is terminated.
+    SampledSpectrum<T> indexPerChannel(const IorSpectrum& ior) const {
+        return evaluate([&](double nm) { return ior.n(nm); });
     }
 
     SampledSpectrum<T> reflectance(const Rgb<double>& c) const {

@@ -208,7 +208,8 @@ struct SceneDesc {
     std::filesystem::path file;
     /// The format of `file`; a pbrt-v4 or Mitsuba file was translated (scene_import.h).
     SceneFormat format = SceneFormat::Lamina;
-    /// What the translation mapped to something else, one line each ("FILE:LINE: ...").
+    /// What the translation, or the loader itself (an OBJ's MTL library: obj_materials.h),
+    /// mapped to something else or ignored, one line each ("FILE:LINE: ...").
     std::vector<std::string> importWarnings;
     /// The scene file itself, then every file its readers opened (meshes, textures, n/k
     /// tables, environment maps), in reading order: what the provenance hash covers.
@@ -236,8 +237,8 @@ struct SceneDesc {
 
 /// Reads and validates a scene file (scene_loader.cpp, with the readers of scene_readers.h).
 /// Errors name the file and the JSON path. A pbrt-v4 or Mitsuba file is translated first
-/// (scene_import.h); its warnings are kept in `importWarnings` and printed to stderr, one
-/// "lamina: warning: ..." line each.
+/// (scene_import.h). Its warnings, and the loader's own, are kept in `importWarnings` and
+/// printed to stderr, one "lamina: warning: ..." line each.
 SceneDesc loadScene(const std::filesystem::path& file);
 /// The same from text already in memory (tests); relative paths resolve against `directory`.
 SceneDesc parseScene(const std::string& text, const JsonSource& source);

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cmath>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -90,6 +91,13 @@ class SceneMaterials {
     /// The index of the texture `name` (a shape's alpha or a material's parameter), loading it
     /// on first use; fails at `at`'s "texture" when it is not defined.
     int textureIndex(const JsonReader& at, const std::string& name);
+    /// The index of a material the loader makes itself (from an OBJ's MTL library), named
+    /// `name`: read from `material` on first use (with the image textures `textures`, name
+    /// and JSON, that it names: names derived from `name`, so new with it), the same index
+    /// after. Relative files are taken against
+    /// `source`'s directory, and messages name it.
+    int generated(const std::string& name, const Json& material, const JsonSource& source,
+                  const std::vector<std::pair<std::string, Json>>& textures = {});
     /// Lists the materials and textures defined but never used in the scene.
     void recordUnused();
 
@@ -98,6 +106,7 @@ class SceneMaterials {
 
     SceneDesc& scene_;
     std::vector<std::pair<std::string, JsonReader>> materials_, textures_;
+    std::map<std::string, int> generated_;  ///< the materials of generated(), by name
 };
 
 /// The scene's named objects, "objects": {"name": [shape, ...], ...} (shape_reader.cpp). An
