@@ -26,7 +26,7 @@ std::vector<Rgb<float>> testImage(int w, int h) {
 }
 
 TEST(EnvironmentMap, SamplingMatchesItsDensity) {
-    const render::EnvironmentMap map(64, 32, testImage(64, 32), 30.0);
+    const render::EnvironmentMap map(64, 32, testImage(64, 32), {.rotateDegrees = 30.0});
     ChiSquareConfig config;
     config.sampleCount = 500000;
     config.significance = 0.01;
@@ -47,7 +47,7 @@ TEST(EnvironmentMap, SamplingMatchesItsDensity) {
 }
 
 TEST(EnvironmentMap, DensityFollowsBrightness) {
-    const render::EnvironmentMap map(64, 32, testImage(64, 32), 0.0);
+    const render::EnvironmentMap map(64, 32, testImage(64, 32), {});
     // The zenith is brighter than the horizon; the black band below has density 0.
     EXPECT_GT(map.pdf(glm::normalize(Vec3<float>(0.1f, 1.0f, 0.0f))), map.pdf({1, 0, 0}));
     EXPECT_EQ(map.pdf({0, -1, 0}), 0.0f);

@@ -5,8 +5,6 @@
 
 namespace lamina::render {
 
-namespace {
-
 // "transform": a list of operations applied in order (the first one first):
 // {"translate": [x, y, z]}, {"scale": s | [x, y, z]}, {"rotate": {"axis": [x, y, z],
 // "angle": degrees}}, {"matrix": [16 numbers, row-major]}.
@@ -46,6 +44,8 @@ Mat4 readTransform(const JsonReader& parent) {
     }
     return m;
 }
+
+namespace {
 
 // Analytic shapes take similarity transforms only: returns the uniform scale.
 double uniformScale(const JsonReader& r, const Mat4& m, const std::string& what) {

@@ -38,6 +38,10 @@ inline Mat4 requiredMatrix(const JsonReader& r, const std::string& key) {
     return m;
 }
 
+/// A shape's or light's "transform" (a list of operations, the first applied first); the
+/// identity when the key is absent (shape_reader.cpp).
+Mat4 readTransform(const JsonReader& parent);
+
 /// The largest coordinate magnitude of anything a ray can start from or reach (camera, lens,
 /// lights, shapes). Rays and hit points are float: Embree refuses a ray whose origin exceeds
 /// 1.8e19 (its ray.valid() assertion), and squared distances overflow float at the same size.
@@ -91,11 +95,12 @@ class SceneMaterials {
     void recordUnused();
 
   private:
-    int textureIndex(const JsonReader& at, const std::string& name);
+    int textureIndex(const JsonReader& at, const std::string& key, const std::string& name);
     int add(const JsonReader& material);
 
     SceneDesc& scene_;
     std::vector<std::pair<std::string, JsonReader>> materials_, textures_;
+    std::vector<std::string> reading_;  ///< the textures being read, outermost first
 };
 
 /// Reads one entry of "shapes" into `scene` (shape_reader.cpp).
