@@ -148,30 +148,30 @@ TEST_F(InputFiles, ImagesWithNonFiniteSamplesAreRefused) {
         out->close();
     }
     // Spectral mode crashed in the RGB -> spectrum lookup on such a texel.
-    EXPECT_THAT(errorOf([&] { ImageTexture(file, Vec2<float>(1.0f), false); }),
+    EXPECT_THAT(errorOf([&] { ImageTexture(file, Vec2<float>(1.0f), false, false); }),
                 HasSubstr("nan.exr: the texture has a sample that is not finite (NaN) at pixel "
                           "(2, 1), channel 1"));
-    EXPECT_THAT(errorOf([&] { EnvironmentMap(file, 0.0); }),
+    EXPECT_THAT(errorOf([&] { EnvironmentMap(file, EnvironmentLayout{}); }),
                 HasSubstr("nan.exr: the environment map has a sample that is not finite"));
 }
 
 // A small file whose header claims 10^10 pixels must be refused before the allocation.
 TEST_F(InputFiles, ImagesClaimingTooManyPixelsAreRefusedBeforeAllocating) {
     const fs::path file = write("huge.ppm", "P6\n100000 100000\n255\n" + std::string(30, 'x'));
-    EXPECT_THAT(errorOf([&] { ImageTexture(file, Vec2<float>(1.0f), true); }),
+    EXPECT_THAT(errorOf([&] { ImageTexture(file, Vec2<float>(1.0f), true, false); }),
                 HasSubstr("huge.ppm: cannot read the texture: 100000 x 100000 pixels, more than"));
     EXPECT_THAT(errorOf([&] { readRgbImage(file); }),
                 HasSubstr("huge.ppm: 100000 x 100000 pixels, more than the limit"));
 }
 
 TEST_F(InputFiles, ImagePathsMustBeRegularFiles) {
-    EXPECT_THAT(errorOf([&] { ImageTexture(dir_, Vec2<float>(1.0f), false); }),
+    EXPECT_THAT(errorOf([&] { ImageTexture(dir_, Vec2<float>(1.0f), false, false); }),
                 HasSubstr(": is a directory, not a regular file"));
-    EXPECT_THAT(errorOf([&] { EnvironmentMap("/dev/zero", 0.0); }),
+    EXPECT_THAT(errorOf([&] { EnvironmentMap("/dev/zero", EnvironmentLayout{}); }),
                 HasSubstr("/dev/zero: is a device, not a regular file"));
     const fs::path fifo = dir_ / "fifo.png";
     ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
-    EXPECT_THAT(errorOf([&] { ImageTexture(fifo, Vec2<float>(1.0f), true); }),
+    EXPECT_THAT(errorOf([&] { ImageTexture(fifo, Vec2<float>(1.0f), true, false); }),
                 HasSubstr("fifo.png: is a FIFO, not a regular file"));
 }
 

@@ -1,9 +1,11 @@
-// Textures: image lookups (sRGB decoding, bilinear, repeat), a checkerboard driving a
-// material's colour in a render, textured roughness, and the errors.
+// Textures: image lookups (sRGB decoding, bilinear, repeat, invert), a checkerboard driving a
+// material's colour in a render, textured roughness, the scale and mix operations (exact
+// values), and the errors (reference cycles among them).
 #include <OpenImageIO/imageio.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "lamina/render/texture.h"
@@ -30,8 +32,8 @@ TEST(ImageTexture, DecodesSrgbAndInterpolatesBilinearly) {
         ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, px));
         out->close();
     }
-    const render::ImageTexture srgb(file, Vec2<float>(1.0f), true);
-    const render::ImageTexture linear(file, Vec2<float>(1.0f), false);
+    const render::ImageTexture srgb(file, Vec2<float>(1.0f), true, false);
+    const render::ImageTexture linear(file, Vec2<float>(1.0f), false, false);
     // Texel centres: (u, v) = (0.25, 0.75) is the top-left texel (v = 0 at the bottom).
     EXPECT_NEAR(srgb.evaluate({0.75f, 0.75f})[0], 1.0, 1e-6);
     EXPECT_NEAR(srgb.evaluate({0.25f, 0.25f})[0], srgbToLinear(128 / 255.0), 1e-6);
@@ -139,6 +141,111 @@ TEST(Textures, UnusedTexturesAndMaterialsAreNeverLoaded) {
     EXPECT_EQ(scene.textures.size(), 0u);
     EXPECT_EQ(scene.unusedMaterialNames, std::vector<std::string>{"gold"});
     EXPECT_EQ(scene.unusedTextureNames, std::vector<std::string>{"img"});
+}
+
+// The texture a scene names, after the scene has read it (a material uses `used`).
+std::shared_ptr<const render::Texture> textureOf(const render::SceneDesc& scene,
+                                                 const std::string& name) {
+    for (std::size_t i = 0; i < scene.textureNames.size(); ++i)
+        if (scene.textureNames[i] == name) return scene.textures[i];
+    ADD_FAILURE() << "no texture " << name;
+    return nullptr;
+}
+
+render::SceneDesc sceneWithTextures(const std::string& textures, const std::string& used) {
+    return testing::sceneFromText(R"({"textures": )" + textures + R"(,
+      "materials": {"m": {"type": "lambert", "reflectance": {"texture": ")" +
+                                  used + R"("}}},
+      "shapes": [{"type": "sphere", "material": "m", "emission": {"radiance": 1}}]})");
+}
+
+TEST(TextureOperations, ScaleAndMixGiveTheirExactValues) {
+    // A checkerboard of 0.8 / 0.2 with one cell per unit of uv: (0.25, 0.25) is in an `a`
+    // cell, (1.25, 0.25) in a `b` cell. Binary fractions keep every product exact in float.
+    const auto scene = sceneWithTextures(R"({
+      "checks": {"type": "checkerboard", "a": [0.5, 0.25, 1], "b": [0.125, 0.75, 0], "scale": [1, 1]},
+      "half": {"type": "scale", "texture": "checks", "scale": 0.5},
+      "grey": {"type": "checkerboard", "a": 0.25, "b": 0.75, "scale": [1, 1]},
+      "blend": {"type": "mix", "a": "half", "b": [1, 0.5, 0], "amount": "grey"},
+      "fixed": {"type": "mix", "a": [0, 0, 0], "b": 1, "amount": 0.75},
+      "defaults": {"type": "mix"},
+      "top": {"type": "mix", "a": "blend", "b": "fixed", "amount": 0.5}})",
+                                         "top");
+    const Vec2<float> inA(0.25f, 0.25f), inB(1.25f, 0.25f);
+    const auto half = textureOf(scene, "half"), blend = textureOf(scene, "blend");
+    EXPECT_EQ(half->evaluate(inA), Rgb<float>(0.25f, 0.125f, 0.5f));
+    EXPECT_EQ(half->evaluate(inB), Rgb<float>(0.0625f, 0.375f, 0.0f));
+    // (1 - t) a + t b with t = 0.25 in an `a` cell, 0.75 in a `b` cell.
+    EXPECT_EQ(blend->evaluate(inA), Rgb<float>(0.75f * 0.25f + 0.25f * 1.0f,
+                                               0.75f * 0.125f + 0.25f * 0.5f, 0.75f * 0.5f));
+    EXPECT_EQ(blend->evaluate(inB),
+              Rgb<float>(0.25f * 0.0625f + 0.75f * 1.0f, 0.25f * 0.375f + 0.75f * 0.5f, 0.0f));
+    EXPECT_EQ(textureOf(scene, "fixed")->evaluate(inA), Rgb<float>(0.75f));
+    // The mix named only by "top" is read with it, and so are the textures it names.
+    EXPECT_EQ(textureOf(scene, "top")->evaluate(inA),
+              (blend->evaluate(inA) + Rgb<float>(0.75f)) * 0.5f);
+    EXPECT_TRUE(std::find(scene.unusedTextureNames.begin(), scene.unusedTextureNames.end(),
+                          "checks") == scene.unusedTextureNames.end());
+    EXPECT_EQ(scene.unusedTextureNames, std::vector<std::string>{"defaults"});
+    // pbrt-v4's defaults: a 0, b 1, amount 0.5.
+    const auto defaults = sceneWithTextures(R"({"d": {"type": "mix"}})", "d");
+    EXPECT_EQ(textureOf(defaults, "d")->evaluate(inA), Rgb<float>(0.5f));
+}
+
+TEST(TextureOperations, InvertGivesOneMinusTheValue) {
+    const fs::path file =
+        fs::temp_directory_path() / ("lamina-invert-" + std::to_string(::getpid()) + ".exr");
+    // 1 x 1 float pixels (linear): 0.25, 0.5 and 1.5 (above 1: inverted to 0, as pbrt clamps).
+    const float px[3] = {0.25f, 0.5f, 1.5f};
+    {
+        auto out = OIIO::ImageOutput::create(file.string());
+        ASSERT_TRUE(out);
+        ASSERT_TRUE(out->open(file.string(), OIIO::ImageSpec(1, 1, 3, OIIO::TypeDesc::FLOAT)));
+        ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, px));
+        out->close();
+    }
+    const auto scene = sceneWithTextures(R"({
+      "plain": {"type": "image", "file": ")" +
+                                             file.string() + R"("},
+      "inverted": {"type": "image", "file": ")" +
+                                             file.string() + R"(", "invert": true},
+      "both": {"type": "mix", "a": "plain", "b": "inverted", "amount": 0}})",
+                                         "both");
+    const Vec2<float> uv(0.5f, 0.5f);  // the texel centre: bilinear weights (1, 0, 0, 0)
+    EXPECT_EQ(textureOf(scene, "plain")->evaluate(uv), Rgb<float>(0.25f, 0.5f, 1.5f));
+    EXPECT_EQ(textureOf(scene, "inverted")->evaluate(uv), Rgb<float>(0.75f, 0.5f, 0.0f));
+    fs::remove(file);
+}
+
+TEST(TextureOperations, CyclesAndBadOperandsAreRefused) {
+    const auto errorOf = [](const std::string& textures, const std::string& used) {
+        try {
+            sceneWithTextures(textures, used);
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_THAT(errorOf(R"({"self": {"type": "mix", "a": "self"}})", "self"),
+                ::testing::HasSubstr("textures.self.a: the textures refer to each other in a "
+                                     "cycle: self -> self"));
+    EXPECT_THAT(errorOf(R"({"x": {"type": "scale", "texture": "y", "scale": 2},
+                            "y": {"type": "mix", "b": "x"}})",
+                        "x"),
+                ::testing::HasSubstr("textures.y.b: the textures refer to each other in a "
+                                     "cycle: x -> y -> x"));
+    EXPECT_THAT(errorOf(R"({"x": {"type": "mix", "amount": "y"},
+                            "y": {"type": "mix", "a": "z"}, "z": {"type": "scale", "texture": "y", "scale": 1}})",
+                        "x"),
+                ::testing::HasSubstr("cycle: y -> z -> y"));
+    EXPECT_THAT(errorOf(R"({"s": {"type": "scale", "texture": "nope", "scale": 1}})", "s"),
+                ::testing::HasSubstr("textures.s.texture: unknown texture \"nope\""));
+    EXPECT_THAT(errorOf(R"({"s": {"type": "scale", "scale": 1}})", "s"),
+                ::testing::HasSubstr("textures.s.texture: expected the name of a texture"));
+    EXPECT_THAT(errorOf(R"({"m": {"type": "mix", "amount": 1.5}})", "m"),
+                ::testing::HasSubstr("textures.m.amount"));
+    EXPECT_THAT(errorOf(R"({"m": {"type": "mix", "scale": [1, 1]}})", "m"),
+                ::testing::HasSubstr("textures.m"));
 }
 
 }  // namespace

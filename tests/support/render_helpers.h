@@ -1,7 +1,9 @@
 // Small scenes and image statistics for the end-to-end tests.
 #pragma once
 
+#include <cmath>
 #include <string>
+#include <vector>
 
 #include "lamina/render/renderer.h"
 
@@ -33,6 +35,20 @@ inline constexpr const char* kOneEmitterOfEveryKind = R"({
     {"type": "environment", "radiance": [0.2, 0.3, 0.4]}
   ]
 })";
+
+/// A test sky of w x h pixels, rows from the top: a gradient brightening upwards, a bright sun
+/// (50) a third of the way across and a quarter down, and a black band in the lowest quarter.
+inline std::vector<Rgb<float>> skyTestImage(int w, int h) {
+    std::vector<Rgb<float>> px(std::size_t(w) * h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            float v = 0.2f + 0.8f * float(h - y) / float(h);
+            if (std::abs(x - w / 3) < 3 && std::abs(y - h / 4) < 2) v = 50.0f;
+            if (y > 3 * h / 4) v = 0.0f;
+            px[std::size_t(y) * w + x] = Rgb<float>(v, 0.8f * v, 0.6f * v);
+        }
+    return px;
+}
 
 inline render::SceneDesc sceneFromText(const std::string& json) {
     static const JsonSource source{"<test scene>", "."};

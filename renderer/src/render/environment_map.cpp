@@ -5,6 +5,7 @@
 
 #include "lamina/core/error.h"
 #include "lamina/core/math.h"
+#include "lamina/render/equal_area_sphere.h"
 #include "lamina/render/image_input.h"
 
 namespace lamina::render {
@@ -38,11 +39,30 @@ double PiecewiseConstant1D::pdf(double x) const {
     return integral_ > 0 ? std::max(f_[std::size_t(i)], 0.0) / integral_ : 1.0;
 }
 
-EnvironmentMap::EnvironmentMap(const std::filesystem::path& file, double rotationDegrees) {
+namespace {
+
+// The rows of a matrix applied as written: x = r0 . w, ... (summed left to right, so that a
+// rotation about +y alone gives the same bits as cos / sin written out).
+Vec3<double> apply(const Vec3<double> (&rows)[3], const Vec3<double>& w) {
+    Vec3<double> out;
+    for (int i = 0; i < 3; ++i)
+        out[i] = rows[i].x * w.x + rows[i].y * w.y + rows[i].z * w.z;
+    return out;
+}
+
+}  // namespace
+
+EnvironmentMap::EnvironmentMap(const std::filesystem::path& file, const EnvironmentLayout& layout) {
     const InputImage image = readInputImage(file, "environment map");
     width_ = image.width;
     height_ = image.height;
-    if (width_ < 2 || height_ < 1) throw InputError(file.string() + ": image too small");
+    if (layout.mapping == EnvironmentMapping::EqualAreaOctahedral && width_ != height_)
+        throw InputError(file.string() +
+                         ": an equal_area_octahedral environment map must be square, got " +
+                         std::to_string(width_) + " x " + std::to_string(height_) + " pixels");
+    if (width_ < 1 || height_ < 1 ||
+        (layout.mapping == EnvironmentMapping::Equirectangular && width_ < 2))
+        throw InputError(file.string() + ": image too small");
     const int channels = image.channels;
     const std::vector<float>& data = image.samples;
     pixels_.resize(std::size_t(width_) * height_);
@@ -55,28 +75,40 @@ EnvironmentMap::EnvironmentMap(const std::filesystem::path& file, double rotatio
                                  " is negative or not finite");
             pixels_[i][c] = v;
         }
-    build(rotationDegrees);
+    build(layout);
 }
 
 EnvironmentMap::EnvironmentMap(int width, int height, std::vector<Rgb<float>> pixels,
-                               double rotationDegrees)
+                               const EnvironmentLayout& layout)
     : width_(width), height_(height), pixels_(std::move(pixels)) {
-    build(rotationDegrees);
+    build(layout);
 }
 
-void EnvironmentMap::build(double rotationDegrees) {
-    cosRot_ = std::cos(radians(rotationDegrees));
-    sinRot_ = std::sin(radians(rotationDegrees));
+void EnvironmentMap::build(const EnvironmentLayout& layout) {
+    mapping_ = layout.mapping;
+    // T R_y, R_y the right-handed rotation about +y: [c 0 s; 0 1 0; -s 0 c].
+    const double c = std::cos(radians(layout.rotateDegrees)),
+                 s = std::sin(radians(layout.rotateDegrees));
+    const Mat3<double> rotateY(c, 0, -s, 0, 1, 0, s, 0, c);  // glm: column by column
+    const Mat3<double> m = layout.orientation * rotateY;
+    for (int i = 0; i < 3; ++i) {
+        worldFromMap_[i] = Vec3<double>(m[0][i], m[1][i], m[2][i]);
+        mapFromWorld_[i] = m[i];  // the transpose: the inverse of an orthogonal matrix
+    }
     std::vector<double> marginal(static_cast<std::size_t>(height_));
     double weighted = 0, weights = 0;
     for (int y = 0; y < height_; ++y) {
-        const double sinTheta = std::sin(kPi<double> * (y + 0.5) / height_);
+        // Each pixel's share of solid angle: sin(theta) for a latitude-longitude row, equal
+        // for the equal-area map.
+        const double area = mapping_ == EnvironmentMapping::Equirectangular
+                                ? std::sin(kPi<double> * (y + 0.5) / height_)
+                                : 1.0;
         std::vector<double> row(static_cast<std::size_t>(width_));
         for (int x = 0; x < width_; ++x) {
             const double lum = luminance(Rgb<double>(pixels_[std::size_t(y) * width_ + x]));
-            row[std::size_t(x)] = lum * sinTheta;
-            weighted += lum * sinTheta;
-            weights += sinTheta;
+            row[std::size_t(x)] = lum * area;
+            weighted += lum * area;
+            weights += area;
         }
         rows_.emplace_back(std::move(row));
         marginal[std::size_t(y)] = rows_.back().integral();
@@ -86,18 +118,31 @@ void EnvironmentMap::build(double rotationDegrees) {
 }
 
 Vec2<double> EnvironmentMap::toUv(const Vec3<float>& w) const {
-    // Undo the map's rotation about +y.
-    const double x = cosRot_ * w.x - sinRot_ * w.z, z = sinRot_ * w.x + cosRot_ * w.z;
-    const double u = 0.5 + std::atan2(x, z) / (2 * kPi<double>);
-    const double v = std::acos(std::clamp(double(w.y), -1.0, 1.0)) / kPi<double>;
+    const Vec3<double> d = apply(mapFromWorld_, Vec3<double>(w));
+    if (mapping_ == EnvironmentMapping::EqualAreaOctahedral) {
+        const Vec2<double> uv = equalAreaSphereToSquare(safeNormalize(d));
+        return {std::min(uv.x, 1.0 - 1e-12), std::min(uv.y, 1.0 - 1e-12)};
+    }
+    const double u = 0.5 + std::atan2(d.x, d.z) / (2 * kPi<double>);
+    const double v = std::acos(std::clamp(d.y, -1.0, 1.0)) / kPi<double>;
     return {u - std::floor(u), std::clamp(v, 0.0, 1.0 - 1e-12)};
 }
 
 Vec3<float> EnvironmentMap::fromUv(double u, double v) const {
-    const double phi = (u - 0.5) * 2 * kPi<double>, theta = v * kPi<double>;
-    const double x = std::sin(theta) * std::sin(phi), z = std::sin(theta) * std::cos(phi);
-    return Vec3<float>(float(cosRot_ * x + sinRot_ * z), float(std::cos(theta)),
-                       float(-sinRot_ * x + cosRot_ * z));
+    Vec3<double> d;
+    if (mapping_ == EnvironmentMapping::EqualAreaOctahedral) {
+        d = equalAreaSquareToSphere({u, v});
+    } else {
+        const double phi = (u - 0.5) * 2 * kPi<double>, theta = v * kPi<double>;
+        d = Vec3<double>(std::sin(theta) * std::sin(phi), std::cos(theta),
+                         std::sin(theta) * std::cos(phi));
+    }
+    return Vec3<float>(apply(worldFromMap_, d));
+}
+
+double EnvironmentMap::solidAnglePerArea(double v) const {
+    if (mapping_ == EnvironmentMapping::EqualAreaOctahedral) return 4 * kPi<double>;
+    return 2 * kPi<double> * kPi<double> * std::sin(v * kPi<double>);
 }
 
 Rgb<float> EnvironmentMap::lookup(const Vec3<float>& w) const {
@@ -112,18 +157,17 @@ Vec3<float> EnvironmentMap::sample(const Vec2<float>& u, float& pdf) const {
     int row, cell;
     const double v = marginal_->sample(double(u.y), pdfV, row);
     const double uu = rows_[std::size_t(row)].sample(double(u.x), pdfU, cell);
-    const double sinTheta = std::sin(v * kPi<double>);
-    pdf = sinTheta > 0 ? float(pdfU * pdfV / (2 * kPi<double> * kPi<double> * sinTheta)) : 0.0f;
+    const double jacobian = solidAnglePerArea(v);
+    pdf = jacobian > 0 ? float(pdfU * pdfV / jacobian) : 0.0f;
     return fromUv(uu, v);
 }
 
 float EnvironmentMap::pdf(const Vec3<float>& w) const {
     const Vec2<double> uv = toUv(w);
-    const double sinTheta = std::sin(uv.y * kPi<double>);
-    if (!(sinTheta > 0)) return 0.0f;
+    const double jacobian = solidAnglePerArea(uv.y);
+    if (!(jacobian > 0)) return 0.0f;
     const int row = std::min(int(uv.y * height_), height_ - 1);
-    return float(marginal_->pdf(uv.y) * rows_[std::size_t(row)].pdf(uv.x) /
-                 (2 * kPi<double> * kPi<double> * sinTheta));
+    return float(marginal_->pdf(uv.y) * rows_[std::size_t(row)].pdf(uv.x) / jacobian);
 }
 
 }  // namespace lamina::render

@@ -91,7 +91,9 @@ Vec3f ConstantEnvironment::sampleDirection(const Vec2f& u, float& pdf) const {
 }
 
 ImageEnvironment::ImageEnvironment(const LightDesc& d, const Geometry& g)
-    : EnvironmentLight(g), map_(d.file, d.rotation), scale_(float(d.intensity[0])) {}
+    : EnvironmentLight(g),
+      map_(d.file, {d.mapping, d.rotation, d.orientation}),
+      scale_(float(d.intensity[0])) {}
 
 double ImageEnvironment::power() const {
     return fluxPerRadiance() * scale_ * map_.averageLuminance();

@@ -1,4 +1,5 @@
 #include <cmath>
+#include <string>
 
 #include "lamina/render/scene_readers.h"
 
@@ -54,6 +55,28 @@ std::optional<EmissionDesc> readEmission(const JsonReader& shape) {
     return d;
 }
 
+namespace {
+
+// An environment's "transform": directions only, so an orthogonal matrix (rotations, and
+// reflections such as pbrt's and Mitsuba's handedness flips); a translation would mean nothing
+// at infinity and a scale or shear would distort the map's solid angles, so both are refused.
+Mat3<double> readEnvironmentTransform(const JsonReader& r) {
+    const Mat4 m = readTransform(r);
+    if (Vec3d(m[3]) != Vec3d(0.0))
+        r.failAt("transform", "an environment takes rotations only; got a translation");
+    const Mat3<double> a(m);
+    const Mat3<double> gram = glm::transpose(a) * a;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            if (std::abs(gram[i][j] - (i == j ? 1.0 : 0.0)) > 1e-9)
+                r.failAt("transform",
+                         "an environment takes rotations only (and mirror reflections such as a "
+                         "scale of [-1, 1, 1]); got a scale or shear");
+    return a;
+}
+
+}  // namespace
+
 LightDesc readLight(const JsonReader& r) {
     r.expectObject();
     LightDesc l;
@@ -62,12 +85,16 @@ LightDesc readLight(const JsonReader& r) {
                       : l.kind == LightKind::Directional                      ? "irradiance"
                                                                               : "radiance";
     if (l.kind == LightKind::Environment && r.has("file")) {
-        // An image: "scale" multiplies it, "rotate" turns it about +y.
+        // An image: "scale" multiplies it, "mapping" lays it on the sphere, "rotate" turns it
+        // about +y, then "transform" turns it further.
         if (r.has("radiance")) r.fail("give either radiance or file, not both");
         l.file = r.filePath("file");
         const double scale = r.number("scale", 1.0, Range::nonNegative());
         l.intensity = Rgb<double>(scale);
+        l.mapping =
+            r.choice("mapping", EnvironmentMapping::Equirectangular, kEnvironmentMappingNames);
         l.rotation = r.number("rotate", 0.0);
+        l.orientation = readEnvironmentTransform(r);
     } else {
         std::tie(l.intensity, l.spectrum) = readEmissionValue(r, key);
     }

@@ -7,18 +7,41 @@
 
 namespace lamina::render {
 
-std::shared_ptr<const Texture> readTexture(const JsonReader& t) {
+namespace {
+
+// An operand of a texture operation: the name of a texture, or a constant (a number or
+// [r, g, b]; `colour` false: a number only).
+std::shared_ptr<const Texture> readOperand(
+    const JsonReader& t, const std::string& key, double fallback, bool colour, Range range,
+    const TextureLookup& textureIndex,
+    const std::vector<std::shared_ptr<const Texture>>& textures) {
+    if (t.has(key) && t.value()[key].is_string())
+        return textures[std::size_t(textureIndex(t, key, t.requiredString(key)))];
+    if (colour) {
+        const auto c = t.triple(key, {fallback, fallback, fallback}, range);
+        return std::make_shared<ConstantTexture>(Rgb<float>(float(c[0]), float(c[1]), float(c[2])));
+    }
+    return std::make_shared<ConstantTexture>(Rgb<float>(float(t.number(key, fallback, range))));
+}
+
+}  // namespace
+
+std::shared_ptr<const Texture> readTexture(
+    const JsonReader& t, const TextureLookup& textureIndex,
+    const std::vector<std::shared_ptr<const Texture>>& textures) {
     t.expectObject();
     t.noteNames("type", kTextureKindNames.names());
     const std::string type = t.requiredString("type");
-    Vec2<float> scale(1.0f);
-    if (t.has("scale")) {
-        const auto sc = t.requiredArray<2>("scale", Range::positive());
-        scale = Vec2<float>(float(sc[0]), float(sc[1]));
-    }
     const auto kind = kTextureKindNames.find(type);
     if (!kind)
         t.failAt("type", "expected " + kTextureKindNames.list(" or ") + ", got \"" + type + "\"");
+    Vec2<float> scale(1.0f);
+    // [u, v] repeats of the patterns (has() marks the key as known: ask only where it is).
+    const bool pattern = *kind == TextureKind::Checkerboard || *kind == TextureKind::Image;
+    if (pattern && t.has("scale")) {
+        const auto sc = t.requiredArray<2>("scale", Range::positive());
+        scale = Vec2<float>(float(sc[0]), float(sc[1]));
+    }
     std::shared_ptr<const Texture> texture;
     switch (*kind) {
         case TextureKind::Checkerboard: {
@@ -34,11 +57,30 @@ std::shared_ptr<const Texture> readTexture(const JsonReader& t) {
             const std::filesystem::path file = t.filePath("file");
             const bool srgb = t.choice("color_space", TextureColorSpace::Srgb,
                                        kTextureColorSpaceNames) == TextureColorSpace::Srgb;
+            const bool invert = t.boolean("invert", false);
             try {
-                texture = std::make_shared<ImageTexture>(file, scale, srgb);
+                texture = std::make_shared<ImageTexture>(file, scale, srgb, invert);
             } catch (const InputError& e) {
                 t.failAt("file", e.what());
             }
+            break;
+        }
+        case TextureKind::Scale: {
+            if (!t.has("texture") || !t.value()["texture"].is_string())
+                t.failAt("texture", "expected the name of a texture");
+            const auto source =
+                textures[std::size_t(textureIndex(t, "texture", t.requiredString("texture")))];
+            texture = std::make_shared<ScaleTexture>(source,
+                                                     float(t.requiredNumber("scale", {0.0, 1e6})));
+            break;
+        }
+        case TextureKind::Mix: {
+            // pbrt-v4's defaults: tex1 0, tex2 1, amount 0.5.
+            auto a = readOperand(t, "a", 0.0, true, Range::nonNegative(), textureIndex, textures);
+            auto b = readOperand(t, "b", 1.0, true, Range::nonNegative(), textureIndex, textures);
+            auto amount =
+                readOperand(t, "amount", 0.5, false, Range::unit(), textureIndex, textures);
+            texture = std::make_shared<MixTexture>(std::move(a), std::move(b), std::move(amount));
             break;
         }
     }
@@ -60,7 +102,8 @@ std::pair<MaterialDesc, MaterialTextures> readTexturedMaterial(const JsonReader&
         const JsonReader t(r.value()[key], r.childPath(key), r.source());
         const std::string name = t.requiredString("texture");
         t.finish();
-        (std::string(key) == "roughness" ? tex.roughness : tex.color) = textureIndex(t, name);
+        (std::string(key) == "roughness" ? tex.roughness : tex.color) =
+            textureIndex(t, "texture", name);
         copy[key] = 0.5;
     }
     const JsonReader patched(copy, r.path(), r.source());

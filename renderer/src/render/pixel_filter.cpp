@@ -13,9 +13,13 @@ constexpr int kGuide = 512;
 PixelFilter::PixelFilter(const FilmDesc& film)
     : kind_(film.filter), radius_(float(film.filterRadius)) {
     if (kind_ == FilterKind::Box) return;
+    if (kind_ == FilterKind::Triangle) {
+        integral_ = radius_ * radius_;
+        return;
+    }
     if (kind_ == FilterKind::Gaussian) {
-        const float s = radius_ / 3.0f;
-        gaussianFloor_ = std::exp(-radius_ * radius_ / (2 * s * s));
+        sigma_ = film.filterSigma ? float(*film.filterSigma) : radius_ / 3.0f;
+        gaussianFloor_ = std::exp(-radius_ * radius_ / (2 * sigma_ * sigma_));
     }
     func_.resize(kBins);
     cdf_.resize(kBins + 1);
@@ -47,10 +51,10 @@ float PixelFilter::evaluate1D(float x) const {
     switch (kind_) {
         case FilterKind::Box:
             return 1.0f;
-        case FilterKind::Gaussian: {
-            const float s = radius_ / 3.0f;
-            return std::max(0.0f, std::exp(-x * x / (2 * s * s)) - gaussianFloor_);
-        }
+        case FilterKind::Gaussian:
+            return std::max(0.0f, std::exp(-x * x / (2 * sigma_ * sigma_)) - gaussianFloor_);
+        case FilterKind::Triangle:
+            return radius_ - std::abs(x);
         case FilterKind::BlackmanHarris: {
             const float t = 2.0f * kPi<float> * (x + radius_) / (2.0f * radius_);
             return 0.35875f - 0.48829f * std::cos(t) + 0.14128f * std::cos(2 * t) -
@@ -78,9 +82,16 @@ float PixelFilter::sample1D(float u, float& pdf) const {
     return -radius_ + (float(i) + t) * dx;
 }
 
+// The triangle's density (r - |x|) / r^2 has the CDF 1/2 (1 + x/r)^2 on [-r, 0] and
+// 1 - 1/2 (1 - x/r)^2 on [0, r]; inverted piece by piece.
+float PixelFilter::sampleTriangle(float u) const {
+    return u < 0.5f ? radius_ * (std::sqrt(2 * u) - 1) : radius_ * (1 - std::sqrt(2 * (1 - u)));
+}
+
 PixelFilter::Sample PixelFilter::sample(const Vec2<float>& u) const {
     if (kind_ == FilterKind::Box)
         return {Vec2<float>((2 * u.x - 1) * radius_, (2 * u.y - 1) * radius_), 1.0f};
+    if (kind_ == FilterKind::Triangle) return {{sampleTriangle(u.x), sampleTriangle(u.y)}, 1.0f};
     float px, py;
     const float x = sample1D(u.x, px), y = sample1D(u.y, py);
     // Normalised so that a constant image stays constant: f / pdf / (integral of f)^2 = 1

@@ -68,6 +68,9 @@ ImageMetadata renderMetadata(const SceneDesc& scene, const RenderOptions& option
     meta.strings["light_selection"] = std::string(kLightSelectionNames.name(s.lightSelection));
     meta.strings["filter"] = std::string(kFilterNames.name(scene.film.filter));
     meta.floats["filter_radius"] = float(scene.film.filterRadius);
+    if (scene.film.filter == FilterKind::Gaussian)
+        meta.floats["filter_sigma"] =
+            float(scene.film.filterSigma.value_or(scene.film.filterRadius / 3));
     meta.ints["spp"] = r.spp;
     meta.ints["seed"] = int(s.seed);
     meta.ints["max_depth"] = s.maxDepth;

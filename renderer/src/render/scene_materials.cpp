@@ -66,22 +66,41 @@ void SceneMaterials::recordUnused() {
     unused(textures_, scene_.textureNames, scene_.unusedTextureNames);
 }
 
-int SceneMaterials::textureIndex(const JsonReader& at, const std::string& name) {
+int SceneMaterials::textureIndex(const JsonReader& at, const std::string& key,
+                                 const std::string& name) {
     for (std::size_t i = 0; i < scene_.textureNames.size(); ++i)
         if (scene_.textureNames[i] == name) return int(i);
+    // A texture operation names the textures it reads; one of them naming a texture still
+    // being read would recurse for ever.
+    if (std::find(reading_.begin(), reading_.end(), name) != reading_.end()) {
+        std::string cycle;
+        for (auto it = std::find(reading_.begin(), reading_.end(), name); it != reading_.end();
+             ++it)
+            cycle += *it + " -> ";
+        at.failAt(key, "the textures refer to each other in a cycle: " + cycle + name);
+    }
     for (const auto& [definedName, reader] : textures_)
         if (definedName == name) {
-            scene_.textures.push_back(readTexture(reader));
+            reading_.push_back(name);
+            auto texture = readTexture(
+                reader,
+                [this](const JsonReader& a, const std::string& k, const std::string& n) {
+                    return textureIndex(a, k, n);
+                },
+                scene_.textures);
+            reading_.pop_back();
+            scene_.textures.push_back(std::move(texture));
             scene_.textureNames.push_back(name);
             return int(scene_.textures.size() - 1);
         }
-    at.failAt("texture", "unknown texture \"" + name + "\"");
+    at.failAt(key, "unknown texture \"" + name + "\"");
 }
 
 int SceneMaterials::add(const JsonReader& material) {
     auto [desc, textures] = readTexturedMaterial(
-        material,
-        [this](const JsonReader& at, const std::string& name) { return textureIndex(at, name); });
+        material, [this](const JsonReader& at, const std::string& key, const std::string& name) {
+            return textureIndex(at, key, name);
+        });
     scene_.materialTextures.push_back(textures);
     scene_.materials.push_back(std::move(desc));
     return int(scene_.materials.size() - 1);

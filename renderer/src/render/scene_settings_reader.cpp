@@ -70,8 +70,19 @@ FilmDesc readFilm(const JsonReader& r) {
     if (const auto f = r.optionalChild("filter")) {
         f->expectObject();
         film.filter = f->choice("type", FilterKind::Box, kFilterNames);
-        const double defaultRadius = film.filter == FilterKind::Box ? 0.5 : 1.5;
+        const double defaultRadius = film.filter == FilterKind::Box        ? 0.5
+                                     : film.filter == FilterKind::Triangle ? 2.0
+                                                                           : 1.5;
         film.filterRadius = f->number("radius", defaultRadius, {0.0, 16.0, true});
+        if (f->has("sigma")) {
+            if (film.filter != FilterKind::Gaussian)
+                f->failAt("sigma", "only a gaussian filter takes sigma");
+            // Below radius / 8 the truncated Gaussian is a spike the 512-bin sampling table
+            // cannot resolve; above 4 radius, exp(-x^2 / (2 sigma^2)) minus its tail cancels
+            // to float rounding.
+            film.filterSigma = f->number("sigma", film.filterRadius / 3,
+                                         {film.filterRadius / 8, 4 * film.filterRadius});
+        }
         f->finish();
     }
     r.finish();

@@ -7,17 +7,6 @@
 
 namespace lamina::render {
 
-namespace {
-
-// Where a shape's description goes: the scene's top-level lists or an object's.
-struct ShapeLists {
-    std::vector<MeshDesc>& meshes;
-    std::vector<SphereDesc>& spheres;
-    std::vector<DiskDesc>& disks;
-    /// Where what a reader maps to something else is said (SceneDesc::importWarnings).
-    std::vector<std::string>& warnings;
-};
-
 // "transform": a list of operations applied in order (the first one first):
 // {"translate": [x, y, z]}, {"scale": s | [x, y, z]}, {"rotate": {"axis": [x, y, z],
 // "angle": degrees}}, {"matrix": [16 numbers, row-major]}.
@@ -58,6 +47,17 @@ Mat4 readTransform(const JsonReader& parent) {
     return m;
 }
 
+namespace {
+
+// Where a shape's description goes: the scene's top-level lists or an object's.
+struct ShapeLists {
+    std::vector<MeshDesc>& meshes;
+    std::vector<SphereDesc>& spheres;
+    std::vector<DiskDesc>& disks;
+    /// Where what a reader maps to something else is said (SceneDesc::importWarnings).
+    std::vector<std::string>& warnings;
+};
+
 // "alpha": a number in [0, 1] or {"texture": "name"} (its first channel).
 AlphaDesc readAlpha(const JsonReader& r, SceneMaterials& materials) {
     AlphaDesc alpha;
@@ -70,7 +70,7 @@ AlphaDesc readAlpha(const JsonReader& r, SceneMaterials& materials) {
     if (a.value().is_object()) {
         const std::string name = a.requiredString("texture");
         a.finish();
-        alpha.texture = materials.textureIndex(a, name);
+        alpha.texture = materials.textureIndex(a, "texture", name);
         return alpha;
     }
     if (!a.value().is_number()) a.fail("expected a number in [0, 1] or {\"texture\": \"name\"}");

@@ -77,6 +77,8 @@ std::string shardSettings(const SceneDesc& scene, const RenderOptions& options,
         << "x" << r.film->fullHeight() << " aovs=" << (options.aovs ? 1 : 0)
         << " ablations=" << options.ablations.noAdjointCorrection
         << options.ablations.radianceOnLightPaths << options.ablations.swappedConnections;
+    // Only when given, so that the settings of shards rendered before the key existed match.
+    if (scene.film.filterSigma) out << " filter_sigma=" << *scene.film.filterSigma;
     return out.str();
 }
 

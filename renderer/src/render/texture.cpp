@@ -1,13 +1,15 @@
 #include "lamina/render/texture.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "lamina/render/image_input.h"
 
 namespace lamina::render {
 
-ImageTexture::ImageTexture(const std::filesystem::path& file, const Vec2<float>& scale, bool srgb)
-    : scale_(scale) {
+ImageTexture::ImageTexture(const std::filesystem::path& file, const Vec2<float>& scale, bool srgb,
+                           bool invert)
+    : scale_(scale), invert_(invert) {
     InputImage image = readInputImage(file, "texture");
     width_ = image.width;
     height_ = image.height;
@@ -36,8 +38,15 @@ Rgb<float> ImageTexture::evaluate(const Vec2<float>& uv) const {
     const float y = (1.0f - uv.y * scale_.y) * float(height_) - 0.5f;
     const int x0 = int(std::floor(x)), y0 = int(std::floor(y));
     const float fx = x - float(x0), fy = y - float(y0);
-    return texel(x0, y0) * ((1 - fx) * (1 - fy)) + texel(x0 + 1, y0) * (fx * (1 - fy)) +
-           texel(x0, y0 + 1) * ((1 - fx) * fy) + texel(x0 + 1, y0 + 1) * (fx * fy);
+    const Rgb<float> value =
+        texel(x0, y0) * ((1 - fx) * (1 - fy)) + texel(x0 + 1, y0) * (fx * (1 - fy)) +
+        texel(x0, y0 + 1) * ((1 - fx) * fy) + texel(x0 + 1, y0 + 1) * (fx * fy);
+    if (!invert_) return value;
+    // After the lookup, as pbrt-v4 inverts its filtered value.
+    Rgb<float> inverted;
+    for (int c = 0; c < 3; ++c)
+        inverted[c] = std::max(0.0f, 1.0f - value[c]);
+    return inverted;
 }
 
 }  // namespace lamina::render

@@ -1,16 +1,26 @@
-// An environment map: an equirectangular (latitude-longitude) RGB image around the scene, y up,
-// importance-sampled by a piecewise-constant 2D distribution proportional to luminance x
-// sin(theta) (pbrt-v4 section 12.5.2, in lamina's own code). Directions w point away from the
-// scene: u = 1/2 + atan2(w.x, w.z) / (2 pi) (after the map's rotation about +y), v =
-// acos(w.y) / pi (v = 0 at the zenith); the density of a direction is
-// p(u, v) / (2 pi^2 sin(theta)).
+// An environment map: an RGB image around the scene, importance-sampled by a piecewise-constant
+// 2D distribution over its pixels (pbrt-v4 section 12.5.2, in lamina's own code), looked up
+// with the nearest pixel (as pbrt-v4's ImageInfiniteLight does), so that the density is
+// exactly proportional to the luminance seen in a direction. Directions w point away from the
+// scene and are first taken into the map's frame: w_map = R_y(rotate)^-1 T^-1 w, with T the
+// light's `transform` (orthogonal: a rotation or a reflection) and R_y the right-handed
+// rotation about +y by `rotate` degrees. In the map's frame:
+//   equirectangular        u = 1/2 + atan2(x, z) / (2 pi), v = acos(y) / pi (v = 0 at the
+//                          zenith, the top row; y up); density p(u, v) / (2 pi^2 sin(theta)),
+//                          p proportional to luminance x sin(theta);
+//   equal_area_octahedral  (u, v) = equalAreaSphereToSquare(w_map) (equal_area_sphere.h:
+//                          pbrt-v4's convention; the centre of the square is +z, u = column
+//                          from the left follows x, v = row from the top follows y), square
+//                          images only; density p(u, v) / (4 pi), p proportional to luminance.
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <vector>
 
 #include "lamina/core/spectrum.h"
 #include "lamina/core/vector.h"
+#include "lamina/render/scene_description.h"
 
 namespace lamina::render {
 
@@ -29,12 +39,21 @@ class PiecewiseConstant1D {
     double integral_ = 0;
 };
 
+/// How an image lies on the sphere and how it is turned in the world.
+struct EnvironmentLayout {
+    EnvironmentMapping mapping = EnvironmentMapping::Equirectangular;
+    double rotateDegrees = 0;       ///< about +y, first
+    Mat3<double> orientation{1.0};  ///< then this orthogonal matrix
+};
+
 class EnvironmentMap {
   public:
-    /// Loads an image (EXR, HDR, PNG, ... through OpenImageIO); InputError if it cannot.
-    EnvironmentMap(const std::filesystem::path& file, double rotationDegrees);
-    /// A constant image (tests).
-    EnvironmentMap(int width, int height, std::vector<Rgb<float>> pixels, double rotationDegrees);
+    /// Loads an image (EXR, HDR, PNG, ... through OpenImageIO); InputError if it cannot, or
+    /// if an equal-area octahedral image is not square.
+    EnvironmentMap(const std::filesystem::path& file, const EnvironmentLayout& layout);
+    /// An image in memory, rows from the top (tests).
+    EnvironmentMap(int width, int height, std::vector<Rgb<float>> pixels,
+                   const EnvironmentLayout& layout);
 
     Rgb<float> lookup(const Vec3<float>& w) const;
     /// A direction drawn with density pdf(w).
@@ -44,13 +63,17 @@ class EnvironmentMap {
     double averageLuminance() const { return average_; }
 
   private:
-    void build(double rotationDegrees);
+    void build(const EnvironmentLayout& layout);
     Vec2<double> toUv(const Vec3<float>& w) const;
     Vec3<float> fromUv(double u, double v) const;
+    /// Steradians per unit area of the image's [0, 1]^2 at row v (0 at the poles).
+    double solidAnglePerArea(double v) const;
 
+    EnvironmentMapping mapping_ = EnvironmentMapping::Equirectangular;
     int width_ = 0, height_ = 0;
     std::vector<Rgb<float>> pixels_;
-    double cosRot_ = 1, sinRot_ = 0;
+    /// Row i of T R_y, and of its inverse (its transpose).
+    Vec3<double> worldFromMap_[3], mapFromWorld_[3];
     std::vector<PiecewiseConstant1D> rows_;
     std::unique_ptr<PiecewiseConstant1D> marginal_;
     double average_ = 0;

@@ -22,13 +22,20 @@ struct MaterialTextures {
     bool any() const { return color >= 0 || roughness >= 0; }
 };
 
-/// A texture definition: {"type": "checkerboard", "a": colour, "b": colour, "scale": [u, v]}
-/// or {"type": "image", "file": path, "scale": [u, v], "color_space": "srgb" | "linear"}.
-std::shared_ptr<const Texture> readTexture(const JsonReader& t);
+/// Finds a texture by name for the key of `at` that names it (failing there when unknown, or
+/// when the name refers back to a texture being read), loading it on first use; returns its
+/// index into SceneDesc::textures.
+using TextureLookup =
+    std::function<int(const JsonReader& at, const std::string& key, const std::string& name)>;
 
-/// Finds a texture by name for the key of `at` that names it (failing there when unknown),
-/// loading it on first use; returns its index into SceneDesc::textures.
-using TextureLookup = std::function<int(const JsonReader& at, const std::string& name)>;
+/// A texture definition: {"type": "checkerboard", "a": colour, "b": colour, "scale": [u, v]},
+/// {"type": "image", "file": path, "scale": [u, v], "color_space": "srgb" | "linear",
+/// "invert": bool}, {"type": "scale", "texture": name, "scale": number} or {"type": "mix",
+/// "a": name | colour, "b": name | colour, "amount": name | number}. `textures` are the
+/// scene's textures so far, which `textureIndex` indexes.
+std::shared_ptr<const Texture> readTexture(
+    const JsonReader& t, const TextureLookup& textureIndex,
+    const std::vector<std::shared_ptr<const Texture>>& textures);
 
 /// A material whose texturable keys may name a texture: the material (read with a constant
 /// in their place) and which of its parameters the textures replace.

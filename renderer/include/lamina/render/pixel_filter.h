@@ -4,7 +4,11 @@
 // and every pixel's value depends on its own samples only (deterministic under threading).
 // Filters are separable: f(x, y) = f1(x) f1(y).
 //   box             f1 = 1 on [-r, r]                  (r = 0.5: the one-pixel box)
-//   gaussian        f1 = exp(-x^2 / (2 s^2)) - exp(-r^2 / (2 s^2)), s = r / 3
+//   gaussian        f1 = exp(-x^2 / (2 s^2)) - exp(-r^2 / (2 s^2)), s = `sigma` (default
+//                   r / 3): pbrt-v4's GaussianFilter (radius 1.5, sigma 0.5 by default) and
+//                   Mitsuba 3's gaussian (stddev s, radius 4 s) subtract the same tail
+//   triangle        f1 = r - |x| (pbrt-v4's TriangleFilter; Mitsuba 3's tent), drawn exactly
+//                   by its inverse CDF, so every weight is 1
 //   blackman_harris the 4-term Blackman-Harris window over [-r, r] (Harris 1978, Table 1:
 //                   a0 = 0.35875, a1 = 0.48829, a2 = 0.14128, a3 = 0.01168)
 #pragma once
@@ -36,9 +40,12 @@ class PixelFilter {
   private:
     // Piecewise-constant 1D distribution of f1 over [-r, r].
     float sample1D(float u, float& pdf) const;
+    // The triangle's exact inverse CDF.
+    float sampleTriangle(float u) const;
 
     FilterKind kind_;
     float radius_;
+    float sigma_ = 0;          ///< gaussian: the standard deviation
     float gaussianFloor_ = 0;  ///< exp(-r^2 / (2 s^2)), what the Gaussian subtracts
     std::vector<float> cdf_;   ///< kBins + 1 entries
     std::vector<float> func_;  ///< kBins entries

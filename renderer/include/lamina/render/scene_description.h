@@ -43,15 +43,19 @@ struct CameraDesc {
     Handedness handedness = Handedness::Right;
 };
 
-enum class FilterKind { Box, Gaussian, BlackmanHarris };
+enum class FilterKind { Box, Gaussian, BlackmanHarris, Triangle };
 inline constexpr NameTable kFilterNames{
     std::array{NameEntry{FilterKind::Box, "box"}, NameEntry{FilterKind::Gaussian, "gaussian"},
-               NameEntry{FilterKind::BlackmanHarris, "blackman_harris"}}};
+               NameEntry{FilterKind::BlackmanHarris, "blackman_harris"},
+               NameEntry{FilterKind::Triangle, "triangle"}}};
 
 struct FilmDesc {
     int width = 256, height = 256;
     FilterKind filter = FilterKind::Box;
     double filterRadius = 0.5;  ///< pixels; box radius 0.5 is a one-pixel box
+    /// gaussian: the standard deviation in pixels; unset: radius / 3 (computed in float, as
+    /// before the key existed, so that such images keep their bits)
+    std::optional<double> filterSigma;
 };
 
 enum class SamplerKind { Sobol, Independent };
@@ -191,6 +195,12 @@ inline constexpr NameTable kLightKindNames{
                NameEntry{LightKind::Directional, "directional"},
                NameEntry{LightKind::Environment, "environment"}}};
 
+/// How an environment image covers the sphere (environment_map.h).
+enum class EnvironmentMapping { Equirectangular, EqualAreaOctahedral };
+inline constexpr NameTable kEnvironmentMappingNames{
+    std::array{NameEntry{EnvironmentMapping::Equirectangular, "equirectangular"},
+               NameEntry{EnvironmentMapping::EqualAreaOctahedral, "equal_area_octahedral"}}};
+
 /// Lights that are not shapes.
 struct LightDesc {
     LightKind kind = LightKind::Point;
@@ -200,8 +210,11 @@ struct LightDesc {
     double falloffStart = 25;    ///< spot: half-angle where the smooth falloff begins, degrees
     Rgb<double> intensity{1.0};  ///< point: W/sr; directional: irradiance; environment: radiance
     std::shared_ptr<const EmissionSpectrum> spectrum;  ///< set: the intensity is this spectrum
-    std::filesystem::path file;  ///< environment: an equirectangular image (intensity scales it)
-    double rotation = 0;         ///< environment: rotation of the image about +y, degrees
+    std::filesystem::path file;  ///< environment: an image (intensity scales it)
+    EnvironmentMapping mapping = EnvironmentMapping::Equirectangular;  ///< environment image
+    double rotation = 0;  ///< environment: rotation of the image about +y, degrees
+    /// environment: the `transform` (an orthogonal matrix), applied after `rotation`
+    Mat3<double> orientation{1.0};
 };
 
 struct SceneDesc {

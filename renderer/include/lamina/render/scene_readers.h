@@ -39,6 +39,10 @@ inline Mat4 requiredMatrix(const JsonReader& r, const std::string& key) {
     return m;
 }
 
+/// A shape's or light's "transform" (a list of operations, the first applied first); the
+/// identity when the key is absent (shape_reader.cpp).
+Mat4 readTransform(const JsonReader& parent);
+
 /// The largest coordinate magnitude of anything a ray can start from or reach (camera, lens,
 /// lights, shapes). Rays and hit points are float: Embree refuses a ray whose origin exceeds
 /// 1.8e19 (its ray.valid() assertion), and squared distances overflow float at the same size.
@@ -88,9 +92,10 @@ class SceneMaterials {
     /// The index of a shape's "material" (a name, or a material written in place), loading it
     /// and its textures on first use.
     int materialOf(const JsonReader& shape);
-    /// The index of the texture `name` (a shape's alpha or a material's parameter), loading it
-    /// on first use; fails at `at`'s "texture" when it is not defined.
-    int textureIndex(const JsonReader& at, const std::string& name);
+    /// The index of the texture `name` (a shape's alpha, a material's parameter, a texture
+    /// operation's operand), loading it on first use; fails at `at`'s `key` when it is not
+    /// defined or when textures refer to each other in a cycle.
+    int textureIndex(const JsonReader& at, const std::string& key, const std::string& name);
     /// The index of a material the loader makes itself (from an OBJ's MTL library), named
     /// `name`: read from `material` on first use (with the image textures `textures`, name
     /// and JSON, that it names: names derived from `name`, so new with it), the same index
@@ -107,6 +112,7 @@ class SceneMaterials {
     SceneDesc& scene_;
     std::vector<std::pair<std::string, JsonReader>> materials_, textures_;
     std::map<std::string, int> generated_;  ///< the materials of generated(), by name
+    std::vector<std::string> reading_;      ///< the textures being read, outermost first
 };
 
 /// The scene's named objects, "objects": {"name": [shape, ...], ...} (shape_reader.cpp). An

@@ -1,8 +1,9 @@
 // Textures for material parameters (colours and roughness), looked up by the surface's uv:
 // a checkerboard and images through OpenImageIO (bilinear, repeating; 8-bit images are
-// decoded from sRGB unless declared linear). Only the renderer knows textures: the BSDF
-// library receives the looked-up values (material_textures.h reads them from a scene file
-// and looks them up; render_mode.h rebuilds a textured material per hit).
+// decoded from sRGB unless declared linear; optionally inverted), and the operations on
+// textures that pbrt-v4 scenes use: a texture times a number, and a mix of two. Only the renderer
+// knows textures: the BSDF library receives the looked-up values (material_textures.h reads them
+// from a scene file and looks them up; render_mode.h rebuilds a textured material per hit).
 #pragma once
 
 #include <filesystem>
@@ -16,9 +17,10 @@
 namespace lamina::render {
 
 /// The `type` of a texture in a scene file.
-enum class TextureKind { Checkerboard, Image };
+enum class TextureKind { Checkerboard, Image, Scale, Mix };
 inline constexpr NameTable kTextureKindNames{std::array{
-    NameEntry{TextureKind::Checkerboard, "checkerboard"}, NameEntry{TextureKind::Image, "image"}}};
+    NameEntry{TextureKind::Checkerboard, "checkerboard"}, NameEntry{TextureKind::Image, "image"},
+    NameEntry{TextureKind::Scale, "scale"}, NameEntry{TextureKind::Mix, "mix"}}};
 
 /// How an image texture's integer texels are decoded: sRGB or linear.
 enum class TextureColorSpace { Srgb, Linear };
@@ -48,7 +50,9 @@ class CheckerboardTexture final : public Texture {
 class ImageTexture final : public Texture {
   public:
     /// `srgb`: decode 8- and 16-bit integer images with the sRGB transfer function.
-    ImageTexture(const std::filesystem::path& file, const Vec2<float>& scale, bool srgb);
+    /// `invert`: max(0, 1 - value) per channel after decoding (pbrt-v4's imagemap `invert`).
+    ImageTexture(const std::filesystem::path& file, const Vec2<float>& scale, bool srgb,
+                 bool invert);
     Rgb<float> evaluate(const Vec2<float>& uv) const override;
 
   private:
@@ -56,6 +60,46 @@ class ImageTexture final : public Texture {
     int width_ = 0, height_ = 0;
     std::vector<Rgb<float>> pixels_;
     Vec2<float> scale_;
+    bool invert_;
+};
+
+/// The same colour everywhere: a constant operand of an operation.
+class ConstantTexture final : public Texture {
+  public:
+    explicit ConstantTexture(const Rgb<float>& value) : value_(value) {}
+    Rgb<float> evaluate(const Vec2<float>&) const override { return value_; }
+
+  private:
+    Rgb<float> value_;
+};
+
+/// A texture times a number (pbrt-v4's `scale` texture with a constant scale).
+class ScaleTexture final : public Texture {
+  public:
+    ScaleTexture(std::shared_ptr<const Texture> texture, float scale)
+        : texture_(std::move(texture)), scale_(scale) {}
+    Rgb<float> evaluate(const Vec2<float>& uv) const override {
+        return texture_->evaluate(uv) * scale_;
+    }
+
+  private:
+    std::shared_ptr<const Texture> texture_;
+    float scale_;
+};
+
+/// (1 - t) a + t b, t the first channel of `amount` (pbrt-v4's `mix` texture).
+class MixTexture final : public Texture {
+  public:
+    MixTexture(std::shared_ptr<const Texture> a, std::shared_ptr<const Texture> b,
+               std::shared_ptr<const Texture> amount)
+        : a_(std::move(a)), b_(std::move(b)), amount_(std::move(amount)) {}
+    Rgb<float> evaluate(const Vec2<float>& uv) const override {
+        const float t = amount_->evaluate(uv)[0];
+        return a_->evaluate(uv) * (1 - t) + b_->evaluate(uv) * t;
+    }
+
+  private:
+    std::shared_ptr<const Texture> a_, b_, amount_;
 };
 
 }  // namespace lamina::render
