@@ -81,26 +81,37 @@ Json triple(const glm::dvec3& v) {
     return Json::array({v.x, v.y, v.z});
 }
 
-// The rotation part of an envmap's to_world as lamina environment `transform` operations;
-// anything but a rotation (and a translation, which directions ignore) is refused.
-Json environmentRotation(Plugin& p, const Transform& transform) {
-    const glm::dmat3 r(transform.matrix);
+// An envmap's orientation as lamina environment `transform` operations (map to world).
+// mitsuba3 envmap.cpp looks a local direction d = to_world^-1 w up at u = atan2(d.x, -d.z) /
+// 2 pi, v = acos(d.y) / pi; lamina at u = 1/2 + atan2(d'.x, d'.z) / 2 pi with the same v. With
+// d' = (-d.x, d.y, d.z) the two agree for every d (atan2(-x, z) = -atan2(x, z) and
+// atan2(x, -z) = pi - atan2(x, z) mod 2 pi), so lamina's map-to-world is to_world times the
+// reflection x -> -x, applied first. Anything but a rotation or reflection in to_world (and
+// a translation, which directions ignore) is refused.
+Json environmentTransform(Plugin& p, const std::optional<Transform>& transform) {
+    Json operations = Json::array({Json{{"scale", Json::array({-1, 1, 1})}}});
+    if (!transform) return operations;
+    const glm::dmat3 r(transform->matrix);
     const glm::dmat3 product = glm::transpose(r) * r;
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)
             if (std::abs(product[i][j] - (i == j ? 1.0 : 0.0)) > 1e-6)
                 p.fail(
                     "to_world of an envmap must be a rotation (lamina refuses a scale or shear)");
-    if (glm::determinant(r) < 0) p.fail("to_world of an envmap must not mirror");
     bool rotationsOnly = true;
-    for (const Json& op : transform.operations)
+    for (const Json& op : transform->operations)
         rotationsOnly &= op.contains("rotate");
-    if (rotationsOnly) return transform.operations;
+    if (rotationsOnly) {
+        for (const Json& op : transform->operations)
+            operations.push_back(op);
+        return operations;
+    }
     Json rows = Json::array();
     for (int row = 0; row < 4; ++row)
         for (int col = 0; col < 4; ++col)
             rows.push_back(row < 3 && col < 3 ? r[col][row] : (row == col ? 1.0 : 0.0));
-    return Json::array({Json{{"matrix", rows}}});
+    operations.push_back(Json{{"matrix", rows}});
+    return operations;
 }
 
 }  // namespace
@@ -240,16 +251,8 @@ void translateEmitter(Translation& t, const Element& e) {
         const double scale = p.number("scale", 1.0);
         if (!(scale >= 0)) p.fail("scale must be >= 0");
         if (scale != 1.0) light["scale"] = scale;
-        if (transform) {
-            const Json rotation = environmentRotation(p, *transform);
-            if (!rotation.empty()) light["transform"] = rotation;
-        }
+        light["transform"] = environmentTransform(p, transform);
         p.ignore("mis_compensation", "lamina samples the map by luminance x sin theta");
-        // mitsuba3 envmap.cpp: u = atan2(d.x, -d.z) / 2 pi; lamina: u = 1/2 + atan2(d.x, d.z) /
-        // 2 pi. The two run round +y in opposite senses: a reflection, which no rotation undoes.
-        p.warn(
-            "envmap became a lamina environment with the same axes, but lamina's longitude "
-            "runs the other way round +y: the map appears mirrored left-right");
     } else if (type == "area") {
         p.fail("an area emitter must be nested in a shape");
     } else {
