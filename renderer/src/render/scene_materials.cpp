@@ -47,7 +47,12 @@ int SceneMaterials::generated(const std::string& name, const Json& material,
     // By name in a map: an OBJ may have as many groups as faces.
     if (const auto at = generated_.find(name); at != generated_.end()) return at->second;
     for (const auto& [textureName, texture] : textures) {
-        scene_.textures.push_back(readTexture(JsonReader(texture, "", source)));
+        scene_.textures.push_back(readTexture(
+            JsonReader(texture, "", source),
+            [this](const JsonReader& a, const std::string& k, const std::string& n) {
+                return textureIndex(a, k, n);
+            },
+            scene_.textures));
         scene_.textureNames.push_back(textureName);
     }
     const int index = add(JsonReader(material, "", source));
