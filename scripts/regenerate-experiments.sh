@@ -21,3 +21,9 @@ rm -rf "$out/fresnel"
 # Numerical stability: the default model set and the stiff scenes.
 rm -rf "$out/stability"
 "$lamina" stability --scenes scenes/stress/*.json --spp 256 -o "$out/stability"
+
+# Analytic layered stacks against the random-walk coated material: the built-in set users meet,
+# and the test object rendered with each in both modes.
+rm -rf "$out/layering"
+"$lamina" layering clear-paint varnished-wood coated-gold tinted-coat \
+  --scene scenes/layering/test-object.json -o "$out/layering"
