@@ -25,5 +25,5 @@ rm -rf "$out/stability"
 # Analytic layered stacks against the random-walk coated material: the built-in set users meet,
 # and the test object rendered with each in both modes.
 rm -rf "$out/layering"
-"$lamina" layering clear-paint varnished-wood coated-gold tinted-coat \
-  --scene scenes/layering/test-object.json -o "$out/layering"
+"$lamina" layering clear-paint varnished-wood coated-gold tinted-coat --estimates 1024 \
+  --albedo-samples 32768 --scene scenes/layering/test-object.json -o "$out/layering"

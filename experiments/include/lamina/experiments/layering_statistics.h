@@ -46,7 +46,7 @@ inline constexpr double kErrorBarWidth = 2.0;
 /// Where the walk's value is below this fraction of the curve's or map's largest value, a
 /// relative error would divide by almost nothing: the error is measured as a fraction of that
 /// largest value instead (an absolute error on the figure's scale).
-inline constexpr double kAbsoluteFloor = 0.01;
+inline constexpr double kAbsoluteFloor = 1e-3;
 
 /// The smallest tolerance band the error bar establishes, or why there is none.
 enum class Agreement { Within1, Within5, Within20, Beyond20, Unresolved };
