@@ -95,15 +95,12 @@ LayeringValues valuesOnly(std::vector<MeanEstimate> v) {
     return out;
 }
 
-/// A twin's values against the walk's, on the scale of the walk's largest value.
+/// A twin's values against the walk's.
 LayeringValues compared(std::vector<MeanEstimate> twin, const LayeringValues& walk) {
-    double scale = 0;
-    for (const MeanEstimate& w : walk.values)
-        scale = std::max(scale, std::abs(w.mean));
     LayeringValues out;
     out.values = std::move(twin);
     for (std::size_t i = 0; i < out.values.size(); ++i) {
-        out.comparisons.push_back(compareWithWalk(out.values[i], walk.values[i], scale));
+        out.comparisons.push_back(compareWithWalk(out.values[i], walk.values[i]));
         out.counts.add(out.comparisons.back());
     }
     return out;

@@ -113,8 +113,7 @@ void writeErrorMap(const LayeringMaterialResult& m, const LayeringTwinResult& t,
     map.setAxes({"theta_i (degrees)", r.mapAngles.front(), r.mapAngles.back(), {}},
                 {"theta_o (degrees)", r.mapAngles.front(), r.mapAngles.back(), {}});
     map.setScale(Palette::Diverging, -0.2, 0.2,
-                 "(twin - walk) / walk (or / the map's largest value where the walk is below 0.1% "
-                 "of it), saturated at 20%");
+                 "(twin - walk) / walk (or / 1e-4 where the walk is below 1e-4), saturated at 20%");
     map.write(report.file(m.stem + "_" + fileTag(t.name) + "_error.svg"));
 }
 
@@ -209,8 +208,10 @@ std::string materialSection(const LayeringMaterialResult& m, const LayeringResul
     md << "Where each twin is within 1%, 5% and 20% of the walk. Counts are within / beyond / "
           "not resolved for each band (error bar +-"
        << formatText("%g", kErrorBarWidth)
-       << " standard errors); the last column counts points where the walk is below 0.1% of the "
-          "curve's largest value, whose error is measured on that largest value.\n\n"
+       << " standard errors); the last column counts points where the walk is below "
+       << formatText("%g", kAbsoluteFloor)
+       << " (albedo, or f |cos| in 1/sr), whose error is measured against that floor instead of "
+          "the walk's value.\n\n"
        << "| twin | quantity | points | 1% | 5% | 20% | near zero |\n"
        << "|---|---|---|---|---|---|---|\n";
     for (const LayeringTwinResult& t : m.twins) {

@@ -12,16 +12,13 @@ MeanEstimate RunningMean::estimate() const {
     return e;
 }
 
-TwinComparison compareWithWalk(const MeanEstimate& twin, const MeanEstimate& walk, double scale) {
+TwinComparison compareWithWalk(const MeanEstimate& twin, const MeanEstimate& walk) {
     TwinComparison c;
-    const double floor = kAbsoluteFloor * std::abs(scale);
     const double difference = twin.mean - walk.mean;
-    if (!(std::abs(walk.mean) > floor) || !(std::abs(walk.mean) > 0)) {
+    if (!(std::abs(walk.mean) >= kAbsoluteFloor)) {
         c.absolute = true;
-        // A scale of 0 (everything black): the difference itself, on the scale of 1.
-        const double s = std::abs(scale) > 0 ? std::abs(scale) : 1.0;
-        c.error = difference / s;
-        c.standardError = std::hypot(twin.standardError, walk.standardError) / s;
+        c.error = difference / kAbsoluteFloor;
+        c.standardError = std::hypot(twin.standardError, walk.standardError) / kAbsoluteFloor;
     } else {
         const double ratio = twin.mean / walk.mean;
         c.error = difference / walk.mean;

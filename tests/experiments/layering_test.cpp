@@ -31,37 +31,39 @@ MeanEstimate value(double mean, double se) {
 
 TEST(LayeringStatistics, ABandIsClaimedOnlyWhenTheWholeErrorBarIsInsideIt) {
     // 0.5% +- 0.1%: the bar reaches 0.7%, inside 1%.
-    EXPECT_EQ(compareWithWalk(value(1.005, 0), value(1, 0.001), 1).agreement, Agreement::Within1);
+    EXPECT_EQ(compareWithWalk(value(1.005, 0), value(1, 0.001)).agreement, Agreement::Within1);
     // 0.9% +- 0.2%: the bar reaches 1.3%, so only 5% is established.
-    const TwinComparison c = compareWithWalk(value(1.009, 0), value(1, 0.002), 1);
+    const TwinComparison c = compareWithWalk(value(1.009, 0), value(1, 0.002));
     EXPECT_EQ(c.agreement, Agreement::Within5);
     EXPECT_FALSE(c.within(0.01));
     EXPECT_FALSE(c.beyond(0.01));
     // Equal means, but the walk's error bar spans +-30%: nothing can be said.
-    EXPECT_EQ(compareWithWalk(value(1, 0), value(1, 0.15), 1).agreement, Agreement::Unresolved);
+    EXPECT_EQ(compareWithWalk(value(1, 0), value(1, 0.15)).agreement, Agreement::Unresolved);
     // 50% +- 2%: beyond 20% with confidence.
-    const TwinComparison far = compareWithWalk(value(1.5, 0), value(1, 0.01), 1);
+    const TwinComparison far = compareWithWalk(value(1.5, 0), value(1, 0.01));
     EXPECT_EQ(far.agreement, Agreement::Beyond20);
     EXPECT_NEAR(far.error, 0.5, 1e-12);
     // The twin's own error bar counts too.
-    EXPECT_EQ(compareWithWalk(value(1.005, 0.004), value(1, 0), 1).agreement, Agreement::Within5);
+    EXPECT_EQ(compareWithWalk(value(1.005, 0.004), value(1, 0)).agreement, Agreement::Within5);
 }
 
-TEST(LayeringStatistics, ANearZeroReferenceIsComparedOnTheCurvesScale) {
-    // The walk is 1e-5 on a curve whose largest value is 1: relative error would be 100%.
-    const TwinComparison c = compareWithWalk(value(2e-5, 0), value(1e-5, 1e-6), 1);
+TEST(LayeringStatistics, ANearZeroReferenceIsComparedAgainstTheFloor) {
+    // The walk is 1e-6, the twin 1.5e-6: relative error 50%, but 0.5% of the floor 1e-4.
+    const TwinComparison c = compareWithWalk(value(1.5e-6, 0), value(1e-6, 1e-7));
     EXPECT_TRUE(c.absolute);
-    EXPECT_NEAR(c.error, 1e-5, 1e-15);
+    EXPECT_NEAR(c.error, 0.005, 1e-12);
     EXPECT_EQ(c.agreement, Agreement::Within1);
+    // Above the floor the error is relative again.
+    EXPECT_FALSE(compareWithWalk(value(2e-4, 0), value(1e-4, 0)).absolute);
     // Everything black: no division by zero, no NaN.
-    const TwinComparison black = compareWithWalk(value(0, 0), value(0, 0), 0);
+    const TwinComparison black = compareWithWalk(value(0, 0), value(0, 0));
     EXPECT_TRUE(black.absolute);
     EXPECT_EQ(black.error, 0.0);
     EXPECT_EQ(black.agreement, Agreement::Within1);
     BandCounts counts;
     counts.add(c);
     counts.add(black);
-    counts.add(compareWithWalk(value(1.5, 0), value(1, 0.01), 1));
+    counts.add(compareWithWalk(value(1.5, 0), value(1, 0.01)));
     EXPECT_EQ(counts.points, 3);
     EXPECT_EQ(counts.absolute, 2);
     EXPECT_EQ(counts.within[0], 2);

@@ -43,10 +43,11 @@ class RunningMean {
 inline constexpr std::array<double, 3> kToleranceBands = {0.01, 0.05, 0.20};
 /// An error bar spans this many standard errors on each side (about 95% for a normal mean).
 inline constexpr double kErrorBarWidth = 2.0;
-/// Where the walk's value is below this fraction of the curve's or map's largest value, a
-/// relative error would divide by almost nothing: the error is measured as a fraction of that
-/// largest value instead (an absolute error on the figure's scale).
-inline constexpr double kAbsoluteFloor = 1e-3;
+/// Where the walk's value (an albedo, or f |cos| in 1/sr) is below this, a relative error would
+/// divide by almost nothing: the error is measured against this floor instead (an absolute
+/// error in units of the floor). A fixed floor, not a fraction of a figure's largest value: a
+/// peaked lobe's largest value would hide every error of its diffuse part.
+inline constexpr double kAbsoluteFloor = 1e-4;
 
 /// The smallest tolerance band the error bar establishes, or why there is none.
 enum class Agreement { Within1, Within5, Within20, Beyond20, Unresolved };
@@ -57,9 +58,9 @@ inline constexpr NameTable kAgreementNames{std::array{
 
 /// A twin's value against the walk's at one point.
 struct TwinComparison {
-    double error = 0;          ///< (twin - walk) / walk, or / scale where `absolute`
+    double error = 0;          ///< (twin - walk) / walk, or / kAbsoluteFloor where `absolute`
     double standardError = 0;  ///< of `error`
-    bool absolute = false;     ///< the walk's value is below kAbsoluteFloor x scale
+    bool absolute = false;     ///< the walk's value is below kAbsoluteFloor
     Agreement agreement = Agreement::Unresolved;
 
     /// Whether the error bar lies wholly inside the band, wholly outside it, or neither.
@@ -71,11 +72,10 @@ struct TwinComparison {
     }
 };
 
-/// Compares a twin's estimate with the walk's. `scale` is the largest value of the walk over
-/// the curve or map the point belongs to (what kAbsoluteFloor is a fraction of). The standard
-/// error of the relative error is the first-order (delta method) one of the ratio:
-/// sqrt(se_twin^2 + (twin / walk)^2 se_walk^2) / |walk|.
-TwinComparison compareWithWalk(const MeanEstimate& twin, const MeanEstimate& walk, double scale);
+/// Compares a twin's estimate with the walk's. The standard error of the relative error is the
+/// first-order (delta method) one of the ratio: sqrt(se_twin^2 + (twin / walk)^2 se_walk^2) /
+/// |walk|.
+TwinComparison compareWithWalk(const MeanEstimate& twin, const MeanEstimate& walk);
 
 /// How many points of a set fall inside, outside and undecided for each band.
 struct BandCounts {
