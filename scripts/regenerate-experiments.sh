@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates the reports in docs/experiments/ (about 10 minutes on 2 cores). Run from the
+# Regenerates the reports in docs/experiments/ (about 13 minutes on 2 cores). Run from the
 # repository root after building: bash scripts/regenerate-experiments.sh [build/app/lamina]
 set -euo pipefail
 cd "$(dirname "$0")/.."
