@@ -51,13 +51,17 @@ std::vector<MeanEstimate> walkEval(const CoatedBxdf<S>& walk,
                                    std::uint64_t seed) {
     std::vector<MeanEstimate> out(pairs.size());
     tbb::parallel_for(std::size_t(0), pairs.size(), [&](std::size_t i) {
+        if (render::renderInterruptFlag().load()) return;  // stopIfInterrupted() below
         Pcg32 rng(hashValues({seed, 0x77616c6b, i}));
         RunningMean m;
-        for (int e = 0; e < estimates; ++e)
+        for (int e = 0; e < estimates; ++e) {
+            if ((e & 1023) == 1023 && render::renderInterruptFlag().load()) return;
             m.add(luminance(
                 walk.estimate(pairs[i].wo, pairs[i].wi, TransportMode::Radiance, rng).value));
+        }
         out[i] = m.estimate();
     });
+    stopIfInterrupted();
     return out;
 }
 
@@ -75,10 +79,12 @@ std::vector<MeanEstimate> albedo(const Bxdf<S>& bsdf, const std::vector<double>&
                                  int samples, std::uint64_t seed, std::uint64_t stream) {
     std::vector<MeanEstimate> out(angles.size());
     tbb::parallel_for(std::size_t(0), angles.size(), [&](std::size_t i) {
+        if (render::renderInterruptFlag().load()) return;  // stopIfInterrupted() below
         Pcg32 rng(hashValues({seed, stream, i}));
         const V3 wo = outgoing(angles[i]);
         RunningMean m;
         for (int s = 0; s < samples; ++s) {
+            if ((s & 4095) == 4095 && render::renderInterruptFlag().load()) return;
             const double uc = rng.nextDouble();
             const Vec2<double> u(rng.nextDouble(), rng.nextDouble());
             const auto r = bsdf.sample(wo, uc, u, TransportMode::Radiance);
@@ -86,6 +92,7 @@ std::vector<MeanEstimate> albedo(const Bxdf<S>& bsdf, const std::vector<double>&
         }
         out[i] = m.estimate();
     });
+    stopIfInterrupted();
     return out;
 }
 
