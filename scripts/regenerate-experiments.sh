@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates the reports in docs/experiments/ (about 10 minutes on 2 cores). Run from the
+# Regenerates the reports in docs/experiments/ (about 13 minutes on 2 cores). Run from the
 # repository root after building: bash scripts/regenerate-experiments.sh [build/app/lamina]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -21,3 +21,9 @@ rm -rf "$out/fresnel"
 # Numerical stability: the default model set and the stiff scenes.
 rm -rf "$out/stability"
 "$lamina" stability --scenes scenes/stress/*.json --spp 256 -o "$out/stability"
+
+# Analytic layered stacks against the random-walk coated material: the built-in set users meet,
+# and the test object rendered with each in both modes.
+rm -rf "$out/layering"
+"$lamina" layering clear-paint varnished-wood coated-gold tinted-coat --estimates 1024 \
+  --albedo-samples 32768 --scene scenes/layering/test-object.json -o "$out/layering"

@@ -44,6 +44,7 @@ void registerReciprocityCommand(CLI::App& app);
 void registerConvergenceCommand(CLI::App& app);
 void registerFresnelCommand(CLI::App& app);
 void registerStabilityCommand(CLI::App& app);
+void registerLayeringCommand(CLI::App& app);
 
 // Every subcommand is registered here, in the order `lamina --help` lists them.
 void registerCommands(CLI::App& app) {
@@ -59,6 +60,7 @@ void registerCommands(CLI::App& app) {
     registerConvergenceCommand(app);
     registerFresnelCommand(app);
     registerStabilityCommand(app);
+    registerLayeringCommand(app);
     registerSpectrumCommand(app);
     requireFiniteFloats(app);
 }

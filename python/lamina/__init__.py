@@ -18,6 +18,7 @@ from ._lamina import (  # noqa: F401
     illuminant,
     illuminants,
     ior,
+    layering,
     metals,
     random_numbers,
     read_image,

@@ -1,5 +1,6 @@
 // The experiments as functions that return their results (dicts of numbers and NumPy arrays)
-// instead of writing reports: compare, convergence, reciprocity, fresnel and stability call
+// instead of writing reports: compare, convergence, reciprocity, fresnel, stability and
+// layering call
 // the typed runX functions of experiments/ that the commands call. Scenes are files, as the
 // commands take them; render overrides are the keywords of lamina.render.
 #include <pybind11/numpy.h>
@@ -13,6 +14,7 @@
 #include "lamina/experiments/convergence.h"
 #include "lamina/experiments/fresnel.h"
 #include "lamina/experiments/image_metrics.h"
+#include "lamina/experiments/layering.h"
 #include "lamina/experiments/reciprocity.h"
 #include "lamina/experiments/stability.h"
 #include "lamina/render/render_limits.h"
@@ -296,6 +298,69 @@ py::list stability(const std::vector<std::string>& materials, int samples) {
     return out;
 }
 
+/// Means and standard errors of a set of estimates as two arrays.
+std::pair<py::array_t<double>, py::array_t<double>> meansOf(
+    const std::vector<ex::MeanEstimate>& values) {
+    py::array_t<double> mean(py::ssize_t(values.size())), se(py::ssize_t(values.size()));
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        mean.mutable_data()[i] = values[i].mean;
+        se.mutable_data()[i] = values[i].standardError;
+    }
+    return {mean, se};
+}
+
+py::list layering(const std::vector<std::string>& materials, int estimates, int albedoSamples,
+                  std::uint64_t seed) {
+    ex::LayeringInputs in;
+    in.materials = materials;
+    if (estimates < 2 || albedoSamples < 2)
+        throw py::value_error("estimates, albedo_samples: expected at least 2");
+    in.estimates = estimates;
+    in.albedoSamples = albedoSamples;
+    in.seed = seed;
+    ex::LayeringResult r;
+    {
+        py::gil_scoped_release release;
+        r = ex::runLayering(in);
+    }
+    const auto n = py::ssize_t(r.mapAngles.size());
+    py::list out;
+    for (const auto& m : r.materials) {
+        py::dict d;
+        d["material"] = m.json;
+        d["note"] = m.twinNote;
+        d["theta_o"] = r.albedoAngles;
+        const auto [walk, walkSe] = meansOf(m.walkAlbedo.values);
+        d["walk_albedo"] = walk;
+        d["walk_albedo_se"] = walkSe;
+        d["map_angles"] = r.mapAngles;
+        py::list twins;
+        for (const auto& t : m.twins) {
+            py::dict td;
+            td["name"] = t.name;
+            td["material"] = t.json;
+            const auto [albedo, albedoSe] = meansOf(t.albedo.values);
+            td["albedo"] = albedo;
+            td["albedo_se"] = albedoSe;
+            py::array_t<double> error({n, n}), errorSe({n, n});
+            py::list agreement;
+            for (std::size_t i = 0; i < t.map.comparisons.size(); ++i) {
+                error.mutable_data()[i] = t.map.comparisons[i].error;
+                errorSe.mutable_data()[i] = t.map.comparisons[i].standardError;
+            }
+            for (const auto& c : t.albedo.comparisons)
+                agreement.append(std::string(ex::kAgreementNames.name(c.agreement)));
+            td["albedo_agreement"] = agreement;
+            td["map_error"] = error;
+            td["map_error_se"] = errorSe;
+            twins.append(td);
+        }
+        d["twins"] = twins;
+        out.append(d);
+    }
+    return out;
+}
+
 }  // namespace
 
 void bindExperiments(py::module_& m) {
@@ -321,6 +386,10 @@ void bindExperiments(py::module_& m) {
     m.def("stability", &stability, py::arg("materials") = std::vector<std::string>{},
           py::arg("samples") = 4096,
           "The extreme-input audit per model: issues and float error over (alpha, cos theta)");
+    m.def("layering", &layering, py::arg("materials"), py::arg("estimates") = 4096,
+          py::arg("albedo_samples") = 1 << 16, py::arg("seed") = 1,
+          "Coated materials (random walk) against their analytic layered twins: albedo with "
+          "standard errors, relative error maps over (theta_o, theta_i), agreement bands");
 }
 
 }  // namespace lamina::python

@@ -171,5 +171,17 @@ TEST_F(Interruption, SigtermDuringAFresnelSceneRenderExits143WithoutAReport) {
     EXPECT_FALSE(fs::exists(report) && !fs::is_empty(report)) << "a report was written";
 }
 
+TEST_F(Interruption, SigintDuringALayeringSweepExits130WithoutAReport) {
+    // A million walk estimates per point: minutes of work, stopped inside the sweep.
+    const auto report = dir_ / "report";
+    const pid_t pid =
+        start({"layering", "varnished-wood", "--estimates", "1000000", "-o", report.string()});
+    std::this_thread::sleep_for(1500ms);
+    ::kill(pid, SIGINT);
+    EXPECT_EQ(wait(pid), 130) << stderrText();
+    EXPECT_THAT(stderrText(), ::testing::HasSubstr("interrupted by SIGINT"));
+    EXPECT_FALSE(fs::exists(report) && !fs::is_empty(report)) << "a report was written";
+}
+
 }  // namespace
 }  // namespace lamina

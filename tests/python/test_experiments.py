@@ -1,5 +1,5 @@
 """The experiments as functions: compare against NumPy's metrics; fresnel, stability,
-convergence and reciprocity return their results (kept small: seconds each)."""
+layering, convergence and reciprocity return their results (kept small: seconds each)."""
 
 import os
 
@@ -62,3 +62,19 @@ def test_reciprocity(scene):
     (pair,) = r["pairs"]
     assert {pair["a"], pair["b"]} == {"path", "light"} and isinstance(r["agree"], bool)
     assert len(r["materials"]) > 0
+
+
+def test_layering():
+    (m,) = lamina.layering(['{"type":"coated","ior":1,"base":{"type":"lambert","reflectance":0.6}}'],
+                           estimates=4, albedo_samples=65536)
+    # An index-matched coat is the bare base: the walk's albedo is 0.6 exactly, and both
+    # twins agree within 1% at every angle.
+    np.testing.assert_allclose(m["walk_albedo"], 0.6, atol=1e-12)
+    assert [t["name"] for t in m["twins"]] == ["fresnel coupling", "albedo coupling"]
+    for t in m["twins"]:
+        assert set(t["albedo_agreement"]) == {"within 1%"}
+        n = len(m["map_angles"])
+        assert t["map_error"].shape == (n, n)
+        assert np.all(np.abs(t["map_error"]) < 1e-6)
+    (gold,) = lamina.layering(["coated-gold"], estimates=4, albedo_samples=256)
+    assert gold["twins"] == [] and "conductor" in gold["note"]
