@@ -55,11 +55,12 @@ TEST_P(MitsubaAgreement, ImportedSceneRendersLikeTheHandWrittenOne) {
     EXPECT_LT(std::abs(r.relativeDifference), 0.005);
 }
 
-// The instanced scene (instances.xml) needs lamina's objects and instances; its translation is
-// checked against instances.json in mitsuba_import_test.cpp.
+// instances.xml (a shapegroup placed by instances) against instances.json, which writes the
+// same placements as lamina objects and instances.
 INSTANTIATE_TEST_SUITE_P(Scenes, MitsubaAgreement,
                          ::testing::Values(AgreementCase{"cbox", 1024}, AgreementCase{"glass", 256},
-                                           AgreementCase{"metals", 1024}),
+                                           AgreementCase{"metals", 1024},
+                                           AgreementCase{"instances", 256}),
                          [](const ::testing::TestParamInfo<AgreementCase>& p) {
                              return std::string(p.param.name);
                          });
