@@ -477,7 +477,7 @@ TEST_F(MitsubaImport, EnvironmentMapLooksUpThePixelsMitsubaDoes) {
             const glm::dvec3 local(std::sin(theta) * std::sin(phi), std::cos(theta),
                                    -std::sin(theta) * std::cos(phi));
             const Vec3<float> w(mitsubaToWorld * local);
-            EXPECT_EQ(map.lookup(w).r, float(row * width + col)) << "row " << row << " col " << col;
+            EXPECT_EQ(map.lookup(w)[0], float(row * width + col)) << "row " << row << " col " << col;
         }
 }
 
