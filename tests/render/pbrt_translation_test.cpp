@@ -323,9 +323,15 @@ TEST_F(PbrtTranslation, EnvironmentImagesAreOctahedral) {
         "mapping": "equal_area_octahedral",
         "transform": [{"matrix": [1, 0, 0, 0, 0, 6.123233995736766e-17, -1, 0,
                                   0, 1, 6.123233995736766e-17, 0, 0, 0, 0, 1]}]})"));
+    const ImportedScene mirrored =
+        import("Scale -1 1 1\nLightSource \"infinite\" \"string filename\" \"sky.exr\"\n");
+    EXPECT_EQ(mirrored.scene["lights"][1]["transform"],
+              Json::parse(R"([{"matrix": [-1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]}])"));
     EXPECT_EQ(
         importError("Scale 2 2 2\nLightSource \"infinite\" \"string filename\" \"sky.exr\"\n"),
-        at(2) + ": infinite: only rotations may orient an environment image");
+        at(2) +
+            ": infinite: only rotations and reflections may orient an environment image (a scale "
+            "or shear was given)");
 }
 
 TEST_F(PbrtTranslation, Materials) {

@@ -269,8 +269,12 @@ Json translateLight(TranslationContext& ctx, const Entity& e) {
             for (int i = 0; i < 3; ++i)
                 for (int j = 0; j < 3; ++j)
                     off = std::max(off, std::abs(rrT[i][j] - (i == j ? 1.0 : 0.0)));
-            if (off > 1e-9 || glm::determinant(r) < 0)
-                ctx.fail(e.location, "infinite: only rotations may orient an environment image");
+            // A reflection (Scale -1 1 1, common in exported scenes) is a change of handedness
+            // lamina's environment transform takes as it is.
+            if (off > 1e-9)
+                ctx.fail(e.location,
+                         "infinite: only rotations and reflections may orient an environment "
+                         "image (a scale or shear was given)");
             light = {{"type", "environment"},
                      {"file", ctx.filePath(p, *file)},
                      {"scale", scale},
