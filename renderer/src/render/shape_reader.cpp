@@ -428,10 +428,14 @@ int SceneObjects::objectOf(const JsonReader& instance) {
 }
 
 void SceneObjects::recordUnused() {
-    for (const auto& [name, reader] : objects_)
+    // A plain loop variable, not a structured binding: clang 14 refuses lambdas that capture
+    // structured bindings (a C++20 feature it lacks).
+    for (const auto& entry : objects_) {
+        const std::string& name = entry.first;
         if (std::none_of(scene_.objects.begin(), scene_.objects.end(),
                          [&](const ObjectDesc& o) { return o.name == name; }))
             scene_.unusedObjectNames.push_back(name);
+    }
 }
 
 }  // namespace lamina::render
