@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "lamina/core/error.h"
+#include "pbrt_tokenizer.h"
 
 namespace lamina::render::pbrt {
 
@@ -91,6 +92,80 @@ std::optional<std::vector<double>> ParamList::numbers(const std::string& name,
 void ParamList::refuseUnused() const {
     for (const Param& p : params_)
         if (!p.used) fail(p, "is not supported");
+}
+
+namespace {
+
+// The parameter types of pbrt-v4's ParameterDictionary (paramdict.cpp) and the older
+// spellings it still reads.
+const std::vector<std::string> kNumericTypes = {
+    "integer", "float", "point2", "vector2", "point3", "vector3", "normal3", "rgb", "blackbody"};
+
+}  // namespace
+
+// "type name" value | [values] ..., until the next directive.
+ParamList readParamList(Tokenizer& tokens, const std::string& owner) {
+    std::vector<Param> list;
+    while (tokens.peek() && tokens.peek()->kind == Token::Kind::String) {
+        const Token decl = *tokens.next();
+        Param p;
+        p.location = {tokens.fileName(), decl.line};
+        const auto space = decl.text.find_first_of(" \t");
+        const auto nameStart = decl.text.find_first_not_of(" \t", space);
+        if (space == std::string::npos || nameStart == std::string::npos ||
+            decl.text.find_first_of(" \t", nameStart) != std::string::npos)
+            tokens.fail(decl.line,
+                        owner + ": expected a parameter \"type name\", got \"" + decl.text + "\"");
+        p.type = decl.text.substr(0, space);
+        p.name = decl.text.substr(nameStart);
+        const std::string type = canonicalParamType(p.type);
+        const bool numeric =
+            std::find(kNumericTypes.begin(), kNumericTypes.end(), type) != kNumericTypes.end();
+        const bool textual = type == "string" || type == "texture";
+        if (!numeric && !textual && type != "bool" && type != "spectrum")
+            tokens.fail(decl.line, owner + ": parameter \"" + decl.text +
+                                       "\" has an unknown type \"" + p.type + "\"");
+        auto value = [&](const Token& t) {
+            if (t.kind == Token::Kind::Number) {
+                if (textual || type == "bool")
+                    tokens.fail(t.line, owner + ": parameter \"" + decl.text + "\" expects " +
+                                            (type == "bool" ? "true or false" : "strings") +
+                                            ", got " + t.text);
+                p.numbers.push_back(t.number);
+            } else if (type == "bool" && (t.text == "true" || t.text == "false")) {
+                p.bools.push_back(t.text == "true");
+            } else if (t.kind == Token::Kind::String && (textual || type == "spectrum")) {
+                p.strings.push_back(t.text);
+            } else {
+                tokens.fail(t.line, owner + ": parameter \"" + decl.text +
+                                        "\": unexpected value \"" + t.text + "\"");
+            }
+        };
+        auto t = tokens.next();
+        if (!t) tokens.fail(decl.line, owner + ": parameter \"" + decl.text + "\" has no value");
+        if (t->kind == Token::Kind::OpenBracket) {
+            while (true) {
+                auto v = tokens.next();
+                if (!v)
+                    tokens.fail(t->line,
+                                owner + ": parameter \"" + decl.text + "\": '[' is not closed");
+                if (v->kind == Token::Kind::CloseBracket) break;
+                value(*v);
+            }
+        } else {
+            value(*t);
+        }
+        if (p.numbers.empty() && p.strings.empty() && p.bools.empty())
+            tokens.fail(decl.line, owner + ": parameter \"" + decl.text + "\" has no value");
+        if (!p.strings.empty() && !p.numbers.empty())
+            tokens.fail(decl.line,
+                        owner + ": parameter \"" + decl.text + "\" mixes numbers and strings");
+        for (const Param& q : list)
+            if (q.name == p.name)
+                tokens.fail(decl.line, owner + ": parameter \"" + p.name + "\" is given twice");
+        list.push_back(std::move(p));
+    }
+    return ParamList(std::move(list), owner);
 }
 
 }  // namespace lamina::render::pbrt

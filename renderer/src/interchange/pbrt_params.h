@@ -64,4 +64,9 @@ class ParamList {
 /// vector3, color -> rgb).
 std::string canonicalParamType(const std::string& type);
 
+class Tokenizer;
+/// The parameters after a directive: "type name" value | [values] ..., up to the next
+/// directive; `owner` ("Shape \"sphere\"") names them in errors.
+ParamList readParamList(Tokenizer& tokens, const std::string& owner);
+
 }  // namespace lamina::render::pbrt

@@ -17,11 +17,6 @@ namespace {
 // Include and Import may nest, but not without end (a file including itself).
 constexpr int kMaxIncludeDepth = 32;
 
-// The parameter types of pbrt-v4's ParameterDictionary (paramdict.cpp) and the older
-// spellings it still reads.
-const std::vector<std::string> kNumericTypes = {
-    "integer", "float", "point2", "vector2", "point3", "vector3", "normal3", "rgb", "blackbody"};
-
 struct GraphicsState {
     glm::dmat4 transform{1.0};
     bool reverseOrientation = false;
@@ -97,77 +92,11 @@ class Parser {
         return v;
     }
 
-    // "type name" value | [values] ..., until the next directive.
-    ParamList params(Tokenizer& tokens, const std::string& owner) {
-        std::vector<Param> list;
-        while (tokens.peek() && tokens.peek()->kind == Token::Kind::String) {
-            const Token decl = *tokens.next();
-            Param p;
-            p.location = where(tokens, decl.line);
-            const auto space = decl.text.find_first_of(" \t");
-            const auto nameStart = decl.text.find_first_not_of(" \t", space);
-            if (space == std::string::npos || nameStart == std::string::npos ||
-                decl.text.find_first_of(" \t", nameStart) != std::string::npos)
-                tokens.fail(decl.line, owner + ": expected a parameter \"type name\", got \"" +
-                                           decl.text + "\"");
-            p.type = decl.text.substr(0, space);
-            p.name = decl.text.substr(nameStart);
-            const std::string type = canonicalParamType(p.type);
-            const bool numeric =
-                std::find(kNumericTypes.begin(), kNumericTypes.end(), type) != kNumericTypes.end();
-            const bool textual = type == "string" || type == "texture";
-            if (!numeric && !textual && type != "bool" && type != "spectrum")
-                tokens.fail(decl.line, owner + ": parameter \"" + decl.text +
-                                           "\" has an unknown type \"" + p.type + "\"");
-            auto value = [&](const Token& t) {
-                if (t.kind == Token::Kind::Number) {
-                    if (textual || type == "bool")
-                        tokens.fail(t.line, owner + ": parameter \"" + decl.text + "\" expects " +
-                                                (type == "bool" ? "true or false" : "strings") +
-                                                ", got " + t.text);
-                    p.numbers.push_back(t.number);
-                } else if (type == "bool" && (t.text == "true" || t.text == "false")) {
-                    p.bools.push_back(t.text == "true");
-                } else if (t.kind == Token::Kind::String && (textual || type == "spectrum")) {
-                    p.strings.push_back(t.text);
-                } else {
-                    tokens.fail(t.line, owner + ": parameter \"" + decl.text +
-                                            "\": unexpected value \"" + t.text + "\"");
-                }
-            };
-            auto t = tokens.next();
-            if (!t)
-                tokens.fail(decl.line, owner + ": parameter \"" + decl.text + "\" has no value");
-            if (t->kind == Token::Kind::OpenBracket) {
-                while (true) {
-                    auto v = tokens.next();
-                    if (!v)
-                        tokens.fail(t->line,
-                                    owner + ": parameter \"" + decl.text + "\": '[' is not closed");
-                    if (v->kind == Token::Kind::CloseBracket) break;
-                    value(*v);
-                }
-            } else {
-                value(*t);
-            }
-            if (p.numbers.empty() && p.strings.empty() && p.bools.empty())
-                tokens.fail(decl.line, owner + ": parameter \"" + decl.text + "\" has no value");
-            if (!p.strings.empty() && !p.numbers.empty())
-                tokens.fail(decl.line,
-                            owner + ": parameter \"" + decl.text + "\" mixes numbers and strings");
-            for (const Param& q : list)
-                if (q.name == p.name)
-                    tokens.fail(decl.line, owner + ": parameter \"" + p.name + "\" is given twice");
-            list.push_back(std::move(p));
-        }
-        return ParamList(std::move(list), owner);
-    }
-
     Entity entity(Tokenizer& tokens, const Token& directive, const std::string& type) {
         Entity e;
         e.type = type;
         e.location = where(tokens, directive.line);
-        e.params = params(tokens, directive.text + " \"" + type + "\"");
+        e.params = readParamList(tokens, directive.text + " \"" + type + "\"");
         e.transform = state_.transform;
         return e;
     }
@@ -305,7 +234,7 @@ class Parser {
                                         "\" is not supported (lamina's colours are sRGB / "
                                         "Rec.709, pbrt-v4's default \"srgb\")");
         } else if (name == "Option") {
-            const ParamList p = params(tokens, "Option");
+            const ParamList p = readParamList(tokens, "Option");
             warn(at, "Option ignored: pbrt's rendering options do not change lamina's scene");
             (void)p;
         } else if (name == "Include" || name == "Import") {
@@ -321,7 +250,7 @@ class Parser {
             Entity e;
             e.location = at;
             e.transform = ctm;
-            e.params = params(tokens, "MakeNamedMaterial \"" + materialName + "\"");
+            e.params = readParamList(tokens, "MakeNamedMaterial \"" + materialName + "\"");
             if (!e.params.has("type"))
                 tokens.fail(d.line, "MakeNamedMaterial \"" + materialName +
                                         "\": no \"string type\" parameter");
