@@ -70,20 +70,17 @@ void run(const std::string& file) {
     // an instance about as much as one primitive.
     bytes += (triangles + scene.spheres.size() + objectPrimitives + scene.instances.size()) * 64;
     std::printf("scene: %s\n", file.c_str());
-    if (scene.format != render::SceneFormat::Lamina) {
+    // The loader has printed each warning on stderr already ("lamina: warning: ..."); the
+    // listing counts them rather than repeating them.
+    if (scene.format != render::SceneFormat::Lamina)
         std::printf(
             "format: %s, translated with %zu warnings (`lamina convert` writes the "
             "translation)\n",
             std::string(render::kSceneFormatNames.name(scene.format)).c_str(),
             scene.importWarnings.size());
-        for (const std::string& w : scene.importWarnings)
-            std::printf("  %s\n", escapeControl(w).c_str());
-    } else if (!scene.importWarnings.empty()) {
-        // The loader's own (an OBJ's MTL library): what it mapped or ignored.
-        std::printf("warnings: %zu\n", scene.importWarnings.size());
-        for (const std::string& w : scene.importWarnings)
-            std::printf("  %s\n", escapeControl(w).c_str());
-    }
+    else if (!scene.importWarnings.empty())
+        std::printf("warnings: %zu (an OBJ's materials: what was mapped or ignored)\n",
+                    scene.importWarnings.size());
     std::printf("image: %dx%d, %d spp, max depth %d, %s sampler, seed %llu\n", scene.film.width,
                 scene.film.height, scene.settings.spp, scene.settings.maxDepth,
                 std::string(render::kSamplerNames.name(scene.settings.sampler)).c_str(),

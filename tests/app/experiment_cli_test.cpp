@@ -103,21 +103,6 @@ TEST_F(ExperimentCli, ConvergenceSlopeOfAnUnbiasedEstimatorIsMinusOne) {
     EXPECT_EQ(found, 2) << r.output;
 }
 
-std::vector<std::vector<double>> readCsv(const fs::path& path) {
-    std::ifstream in(path);
-    std::string line;
-    std::getline(in, line);  // header
-    std::vector<std::vector<double>> rows;
-    while (std::getline(in, line)) {
-        std::stringstream s(line);
-        std::vector<double> row;
-        for (std::string f; std::getline(s, f, ',');)
-            row.push_back(std::stod(f));
-        rows.push_back(row);
-    }
-    return rows;
-}
-
 // The exact curve of `lamina fresnel` is the conductor Fresnel the BSDF uses in spectral mode:
 // a smooth gold mirror's reflection weight at each wavelength and angle.
 TEST_F(ExperimentCli, FresnelExactCurveIsTheBsdfsConductorFresnel) {

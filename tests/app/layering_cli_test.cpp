@@ -24,22 +24,6 @@ const char* kTinyTestObject = R"({
   "lights": [{"type": "environment", "radiance": 1}]
 })";
 
-std::vector<std::vector<double>> readCsv(const fs::path& path) {
-    std::ifstream in(path);
-    std::string line;
-    std::getline(in, line);  // header
-    std::vector<std::vector<double>> rows;
-    while (std::getline(in, line)) {
-        std::stringstream s(line);
-        std::string field;
-        std::vector<double> row;
-        while (std::getline(s, field, ','))
-            row.push_back(std::stod(field));
-        rows.push_back(std::move(row));
-    }
-    return rows;
-}
-
 class LayeringCli : public CliTest {};
 
 TEST_F(LayeringCli, WritesAReportWhoseNumbersMakeSense) {

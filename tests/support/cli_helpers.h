@@ -9,7 +9,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
+#include <vector>
 
 namespace lamina {
 
@@ -44,6 +46,22 @@ inline CommandRun runLamina(const std::string& args, const std::string& input = 
 /// Runs lamina with stdout discarded: `output` is what it printed on stderr alone.
 inline CommandRun runLaminaStderr(const std::string& args, const std::string& input = "") {
     return runLamina(args, input, " 2>&1 >/dev/null");
+}
+
+/// The numeric rows of a CSV file an experiment wrote, its header line skipped.
+inline std::vector<std::vector<double>> readCsv(const fs::path& path) {
+    std::ifstream in(path);
+    std::string line;
+    std::getline(in, line);  // header
+    std::vector<std::vector<double>> rows;
+    while (std::getline(in, line)) {
+        std::stringstream s(line);
+        std::vector<double> row;
+        for (std::string field; std::getline(s, field, ',');)
+            row.push_back(std::stod(field));
+        rows.push_back(std::move(row));
+    }
+    return rows;
 }
 
 /// An 8 x 8 scene that renders in milliseconds: a Lambertian sphere under a rectangle light.

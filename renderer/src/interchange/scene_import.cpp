@@ -18,12 +18,22 @@ struct Importer {
                                const std::filesystem::path& pathsRelativeTo);
 };
 
-// Every importer, by format. A format without an entry is refused with a clear error.
+// Every importer, by format. lamina's own format needs none.
 constexpr Importer kImporters[] = {
-    {SceneFormat::Lamina, nullptr},
     {SceneFormat::Mitsuba, mitsuba::importMitsubaScene},
     {SceneFormat::Pbrt, pbrt::importPbrt},
 };
+
+constexpr bool hasImporter(SceneFormat format) {
+    for (const Importer& importer : kImporters)
+        if (importer.format == format) return true;
+    return false;
+}
+
+// A format added to SceneFormat without an importer fails here, at compile time, rather than
+// with an error a user would meet.
+static_assert(hasImporter(SceneFormat::Mitsuba) && hasImporter(SceneFormat::Pbrt),
+              "every foreign scene format has an entry in kImporters");
 
 }  // namespace
 
@@ -49,11 +59,10 @@ ImportedScene importScene(const std::filesystem::path& file,
     const SceneFormat format = detectSceneFormat(file);
     if (format == SceneFormat::Lamina)
         throw InputError(file.string() + ": is a lamina scene already; nothing to convert");
-    for (const Importer& importer : kImporters)
-        if (importer.format == format && importer.translate)
-            return importer.translate(file, pathsRelativeTo);
-    throw InputError(file.string() + ": reading " + std::string(kSceneFormatNames.name(format)) +
-                     " scenes is not supported by this build");
+    const Importer* importer = kImporters;
+    while (importer->format != format)
+        ++importer;  // found: every foreign format has an entry (the static_assert above)
+    return importer->translate(file, pathsRelativeTo);
 }
 
 std::string documentPath(const std::filesystem::path& path, const std::filesystem::path& base) {
