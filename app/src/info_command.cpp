@@ -4,7 +4,6 @@
 #include <cstdio>
 
 #include "lamina/bsdf/material_builder.h"
-#include "lamina/core/printable.h"
 #include "lamina/render/render_memory.h"
 #include "lamina/render/scene_description.h"
 
