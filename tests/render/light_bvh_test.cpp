@@ -1,18 +1,25 @@
 // The light BVH's distribution (light_bvh.h, LightSet's `bvh` selection) at shading points:
 // choose() must draw each light with the probability probability() reports, exactly the
 // value it returns with the light, and the probabilities of all lights must sum to 1. Scenes: one
-// light of every kind (with a directional light and an environment, which take the fixed share) and
-// scenes/many-lights.json (1056 lights). Chi-square: 400 000 draws per point, cells with an
+// light of every kind (with a directional light, which takes the fixed share, and a constant
+// environment, which next-event estimation leaves to BSDF sampling) and scenes/many-lights.json
+// (1056 lights). Chi-square: 400 000 draws per point, cells with an
 // expected count below 5 pooled, 8 points at a family-wise significance of 1% (Sidak).
 #include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
 
 #include "chi2_helpers.h"
 #include "lamina/core/pcg32.h"
+#include "lamina/render/image_output.h"
 #include "lamina/render/lights.h"
 #include "render_helpers.h"
 
 namespace lamina::render {
 namespace {
+
+namespace fs = std::filesystem;
 
 struct ShadingPoint {
     Vec3f p, n;
@@ -129,8 +136,11 @@ TEST(LightBvh, ProbabilityIsExactlyWhatChooseReturns) {
     }
 }
 
-// Lights at infinity take a fixed share n / (n + 1) whatever the point, split in proportion
-// to their power distribution (which BDPT's MIS weights rely on).
+// Lights at infinity that next-event estimation samples take a fixed share n / (n + 1)
+// whatever the point, split in proportion to their power distribution (which BDPT's MIS
+// weights rely on). In the mixed scene the environment is constant, so the directional light
+// is the one such light (1/2); with an image environment beside a constant one both
+// environments are sampled (2/3) with the same ratio to their particle probabilities.
 TEST(LightBvh, LightsAtInfinityTakeAFixedShare) {
     const SceneDesc mixed = testing::sceneFromText(testing::kOneEmitterOfEveryKind);
     const Geometry geometry(mixed);
@@ -140,10 +150,77 @@ TEST(LightBvh, LightsAtInfinityTakeAFixedShare) {
         double share = 0;
         for (std::size_t i : lights.infiniteLights())
             share += lights.probability(i, at.p, at.n);
-        EXPECT_NEAR(share, 2.0 / 3.0, 1e-6);
-        const std::size_t a = lights.infiniteLights()[0], b = lights.infiniteLights()[1];
-        EXPECT_NEAR(lights.probability(a, at.p, at.n) / lights.emitterProbability(a),
-                    lights.probability(b, at.p, at.n) / lights.emitterProbability(b), 1e-5);
+        EXPECT_NEAR(share, 0.5, 1e-6);
+    }
+
+    const fs::path dir =
+        fs::temp_directory_path() / ("lamina-light-bvh-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const fs::path sky = dir / "sky.exr";
+    const auto pixels = testing::skyTestImage(16, 8);
+    std::vector<float> data;
+    for (const Rgb<float>& px : pixels)
+        for (int c = 0; c < 3; ++c)
+            data.push_back(px[c]);
+    writeFloatExr(sky, 16, 8, {"R", "G", "B"}, data);
+    const SceneDesc twoSkies = testing::sceneFromText(R"({
+      "materials": {"m": {"type": "lambert"}},
+      "shapes": [{"type": "rectangle", "material": "m", "emission": {"radiance": 2}}],
+      "lights": [{"type": "environment", "radiance": 0.3},
+                 {"type": "environment", "file": ")" + sky.string() +
+                                                      R"("}]
+    })");
+    const Geometry skiesGeometry(twoSkies);
+    const LightSet skies(twoSkies, skiesGeometry, LightSelection::Bvh);
+    fs::remove_all(dir);
+    ASSERT_EQ(skies.infiniteLights().size(), 2u);
+    for (const ShadingPoint& at : randomPoints(skiesGeometry, 50, 7)) {
+        const std::size_t a = skies.infiniteLights()[0], b = skies.infiniteLights()[1];
+        EXPECT_NEAR(skies.probability(a, at.p, at.n) + skies.probability(b, at.p, at.n), 2.0 / 3.0,
+                    1e-6);
+        EXPECT_NEAR(skies.probability(a, at.p, at.n) / skies.emitterProbability(a),
+                    skies.probability(b, at.p, at.n) / skies.emitterProbability(b), 1e-5);
+    }
+}
+
+// When every environment is constant, next-event estimation leaves them to BSDF sampling
+// under every selection: probability 0 everywhere, never chosen, the other lights' share
+// renormalised to 1; a scene lit by a constant environment alone has nothing to choose.
+TEST(NextEventLights, ConstantEnvironmentsAreLeftToBsdfSampling) {
+    const SceneDesc mixed = testing::sceneFromText(testing::kOneEmitterOfEveryKind);
+    const Geometry geometry(mixed);
+    const SceneDesc skyOnly = testing::sceneFromText(R"({
+      "materials": {"m": {"type": "lambert"}},
+      "shapes": [{"type": "rectangle", "material": "m"}],
+      "lights": [{"type": "environment", "radiance": 0.3}]
+    })");
+    const Geometry skyGeometry(skyOnly);
+    Pcg32 rng(11);
+    for (LightSelection s : {LightSelection::Bvh, LightSelection::Power, LightSelection::Uniform}) {
+        const LightSet lights(mixed, geometry, s);
+        const std::size_t sky = lights.infiniteLights()[1];
+        ASSERT_TRUE(lights.light(sky).isInfinite() && !lights.light(sky).isDelta());
+        EXPECT_FALSE(lights.nextEventSamples(sky));
+        for (std::size_t i = 0; i < lights.size(); ++i)
+            EXPECT_EQ(lights.nextEventSamples(i), i != sky) << "light " << i;
+        for (const ShadingPoint& at : randomPoints(geometry, 50, 8)) {
+            EXPECT_EQ(lights.probability(sky, at.p, at.n), 0.0f);
+            for (int k = 0; k < 200; ++k) {
+                const auto c = lights.choose(at.p, at.n, rng.nextFloat());
+                ASSERT_TRUE(c);
+                EXPECT_NE(c->index, sky);
+            }
+        }
+        // The extreme random numbers too (the cdf's last entries).
+        for (float u : {0.0f, kOneMinusEpsilon<float>}) {
+            const auto c = lights.choose(Vec3f(0.0f), Vec3f(0.0f, 1.0f, 0.0f), u);
+            ASSERT_TRUE(c);
+            EXPECT_NE(c->index, sky);
+        }
+        const LightSet alone(skyOnly, skyGeometry, s);
+        ASSERT_EQ(alone.size(), 1u);
+        EXPECT_FALSE(alone.choose(Vec3f(0.0f), Vec3f(0.0f, 1.0f, 0.0f), 0.5f));
+        EXPECT_EQ(alone.probability(0, Vec3f(0.0f), Vec3f(0.0f, 1.0f, 0.0f)), 0.0f);
     }
 }
 

@@ -44,9 +44,16 @@ float BdptMisWeights<S>::infiniteLightDensity(const Vec3f& direction) const {
 template <SpectrumType S>
 float BdptMisWeights<S>::selectionRatio(const Vertex& lightVertex, const Vertex& receiver) const {
     // An environment vertex of a camera path does not say which light it is: the ratio is the
-    // same for all lights at infinity (LightSet).
-    const std::size_t i = lightVertex.light >= 0 ? std::size_t(lightVertex.light)
-                                                 : c_.lights.infiniteLights().front();
+    // same for all environments (LightSet), which are the lights at infinity that are not
+    // delta.
+    std::size_t i = lightVertex.light >= 0 ? std::size_t(lightVertex.light)
+                                           : c_.lights.infiniteLights().front();
+    if (lightVertex.light < 0)
+        for (std::size_t k : c_.lights.infiniteLights())
+            if (!c_.lights.light(k).isDelta()) {
+                i = k;
+                break;
+            }
     return c_.lights.probability(i, receiver.p, receiver.ns) / c_.lights.emitterProbability(i);
 }
 

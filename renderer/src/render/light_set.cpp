@@ -91,7 +91,57 @@ LightSet::LightSet(const SceneDesc& scene, const Geometry& geometry, LightSelect
         cdf_[i] = float(running);
     }
     if (!cdf_.empty()) cdf_.back() = 1.0f;
+    chooseNextEventLights();
+    buildNextEventDistribution(w);
     if (selection == LightSelection::Bvh) buildBvh();
+}
+
+void LightSet::chooseNextEventLights() {
+    // A constant environment is found by BSDF sampling at least as well as by next-event
+    // estimation's direction uniform on the sphere (half of which points into the surface),
+    // for every BSDF whose sampling follows its lobe, and a next-event sample spent on it is
+    // one the other lights lose. So next-event estimation leaves it to BSDF sampling, as
+    // Cycles 3.4 does (it disables the background light when the world shader does not vary
+    // over directions, scene/light.cpp) and pbrt-v4 (UniformInfiniteLight::SampleLi returns
+    // nothing when an incomplete pdf is allowed). Only when every environment is constant:
+    // BDPT's MIS needs the same probability ratio for all environments (environment vertices
+    // of camera paths do not say which one they hit).
+    nextEvent_.assign(lights_.size(), 1);
+    bool allConstant = true;
+    for (const auto& l : lights_)
+        if (l->isInfinite() && !l->isDelta() && !dynamic_cast<const ConstantEnvironment*>(l.get()))
+            allConstant = false;
+    if (!allConstant) return;
+    for (std::size_t i = 0; i < lights_.size(); ++i)
+        if (lights_[i]->isInfinite() && !lights_[i]->isDelta()) nextEvent_[i] = 0;
+}
+
+void LightSet::buildNextEventDistribution(const std::vector<double>& weights) {
+    // pmf_'s formula over the lights next-event estimation samples: pmf_ itself, bit for bit,
+    // when it samples them all.
+    double total = 0;
+    std::size_t count = 0, last = 0;
+    for (std::size_t i = 0; i < lights_.size(); ++i)
+        if (nextEvent_[i]) {
+            total += weights[i];
+            ++count;
+            last = i;
+        }
+    nextEventPmf_.assign(lights_.size(), 0.0f);
+    nextEventCdf_.assign(lights_.size(), 0.0f);
+    if (count == 0) return;
+    double running = 0;
+    for (std::size_t i = 0; i < lights_.size(); ++i) {
+        if (nextEvent_[i]) {
+            const double p =
+                total > 0 ? 0.99 * weights[i] / total + 0.01 / double(count) : 1.0 / double(count);
+            nextEventPmf_[i] = float(p);
+            running += p;
+        }
+        // From the last sampled light on the cdf is 1, so that no light after it (which it
+        // never samples) takes up the rounding.
+        nextEventCdf_[i] = i >= last ? 1.0f : float(running);
+    }
 }
 
 void LightSet::buildBvh() {
@@ -112,20 +162,24 @@ void LightSet::buildBvh() {
             e.bounds.intensity = floor;
     bvh_ = LightBvh(std::move(bounded));
 
-    // The lights at infinity take a fixed share, as much as one light of the tree (pbrt-v4's
-    // BVHLightSampler), and among themselves follow their power distribution, so that
-    // probability / emitterProbability is the same for all of them.
-    const std::size_t n = infinite_.size();
+    // The lights at infinity that next-event estimation samples take a fixed share, as much
+    // as one light of the tree (pbrt-v4's BVHLightSampler), and among themselves follow their
+    // power distribution, so that probability / emitterProbability is the same for all of
+    // them.
+    for (std::size_t i : infinite_)
+        if (nextEvent_[i]) nextEventInfinite_.push_back(i);
+    const std::size_t n = nextEventInfinite_.size();
     infiniteShare_ = n == 0 ? 0.0f : bvh_.empty() ? 1.0f : float(n) / float(n + 1);
     infiniteSlot_.assign(lights_.size(), -1);
     double sum = 0;
-    for (std::size_t i : infinite_)
+    for (std::size_t i : nextEventInfinite_)
         sum += pmf_[i];
     double running = 0;
     for (std::size_t k = 0; k < n; ++k) {
-        infiniteSlot_[infinite_[k]] = int(k);
-        infinitePmf_.push_back(float(pmf_[infinite_[k]] / sum));
-        running += pmf_[infinite_[k]] / sum;
+        const std::size_t i = nextEventInfinite_[k];
+        infiniteSlot_[i] = int(k);
+        infinitePmf_.push_back(float(pmf_[i] / sum));
+        running += pmf_[i] / sum;
         infiniteCdf_.push_back(float(running));
     }
     if (!infiniteCdf_.empty()) infiniteCdf_.back() = 1.0f;
@@ -148,11 +202,15 @@ LightChoice LightSet::chooseEmitter(float u) const {
 
 std::optional<LightChoice> LightSet::choose(const Vec3f& p, const Vec3f& n, float u) const {
     if (lights_.empty()) return std::nullopt;
-    if (!useBvh_) return chooseEmitter(u);
+    if (!useBvh_) {
+        if (nextEventCdf_.empty() || !(nextEventCdf_.back() > 0.0f)) return std::nullopt;
+        const std::size_t i = pick(nextEventCdf_, u);
+        return LightChoice{i, nextEventPmf_[i]};
+    }
     if (u < infiniteShare_) {
         const std::size_t k =
             pick(infiniteCdf_, std::min(u / infiniteShare_, kOneMinusEpsilon<float>));
-        return LightChoice{infinite_[k], infiniteShare_ * infinitePmf_[k]};
+        return LightChoice{nextEventInfinite_[k], infiniteShare_ * infinitePmf_[k]};
     }
     const float uTree =
         std::min((u - infiniteShare_) / (1.0f - infiniteShare_), kOneMinusEpsilon<float>);
@@ -162,7 +220,8 @@ std::optional<LightChoice> LightSet::choose(const Vec3f& p, const Vec3f& n, floa
 }
 
 float LightSet::probability(std::size_t i, const Vec3f& p, const Vec3f& n) const {
-    if (!useBvh_) return pmf_[i];
+    if (!useBvh_) return nextEventPmf_[i];
+    if (!nextEvent_[i]) return 0.0f;
     if (const int k = infiniteSlot_[i]; k >= 0)
         return infiniteShare_ * infinitePmf_[std::size_t(k)];
     return bvh_.probability(i, p, n) * (1.0f - infiniteShare_);

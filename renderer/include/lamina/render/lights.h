@@ -84,9 +84,12 @@ class Light {
 /// Next-event estimation chooses at a shading point (choose, probability): with `bvh`
 /// selection the lights with a position through the light BVH and the lights at infinity with
 /// a fixed share, in proportion to their power among themselves; with `power` and `uniform`
-/// the same distribution everywhere. Particles (light tracing, BDPT's light subpaths) start
-/// from a light chosen independently of any point (chooseEmitter, emitterProbability): by
-/// power, or uniformly under `uniform` selection.
+/// the same distribution everywhere. It never chooses a constant environment when every
+/// environment of the scene is constant: BSDF sampling alone finds such light at least as
+/// well as a direction uniform on the sphere, and the next-event samples it would take go to
+/// the other lights (Cycles 3.4 and pbrt-v4 do the same; nextEventSamples). Particles (light
+/// tracing, BDPT's light subpaths) start from a light chosen independently of any point
+/// (chooseEmitter, emitterProbability): by power, or uniformly under `uniform` selection.
 class LightSet {
   public:
     LightSet(const SceneDesc& scene, const Geometry& geometry, LightSelection selection);
@@ -103,8 +106,13 @@ class LightSet {
     LightChoice chooseEmitter(float u) const;
     float emitterProbability(std::size_t i) const { return pmf_[i]; }
     /// Under every selection, probability(i, p, n) / emitterProbability(i) is the same for
-    /// all lights at infinity at a given point (BDPT's MIS relies on it).
+    /// all environment lights (the infinite lights that are not delta) at a given point
+    /// (BDPT's MIS relies on it).
     const std::vector<std::size_t>& infiniteLights() const { return infinite_; }
+    /// Whether next-event estimation ever chooses light i (probability(i, ., .) > 0
+    /// somewhere): false only for constant environments in a scene whose environments are
+    /// all constant.
+    bool nextEventSamples(std::size_t i) const { return nextEvent_[i] != 0; }
     /// The area light of a hit primitive, or -1.
     int lightAt(const SurfaceHit& hit) const;
 
@@ -115,10 +123,16 @@ class LightSet {
         bool perPrimitive = false;  ///< one light per triangle (meshes other than rectangles)
     };
 
+    void chooseNextEventLights();
+    void buildNextEventDistribution(const std::vector<double>& weights);
     void buildBvh();
 
     std::vector<std::unique_ptr<Light>> lights_;
-    std::vector<float> pmf_, cdf_;  ///< point-independent (power or uniform)
+    std::vector<float> pmf_, cdf_;  ///< point-independent (power or uniform): particles
+    /// Next-event estimation's point-independent distribution (`power`, `uniform`): pmf_
+    /// restricted to the lights it samples (nextEvent_) and renormalised.
+    std::vector<float> nextEventPmf_, nextEventCdf_;
+    std::vector<char> nextEvent_;  ///< per light: sampled by next-event estimation
     std::vector<std::size_t> infinite_;
     std::vector<ShapeLights> shapeLights_;  ///< indexed like Geometry::shapes()
     // `bvh` selection: the lights with a position, and the lights at infinity with the share
@@ -126,8 +140,9 @@ class LightSet {
     bool useBvh_ = false;
     LightBvh bvh_;
     float infiniteShare_ = 0.0f;
-    std::vector<float> infinitePmf_, infiniteCdf_;  ///< indexed like infinite_
-    std::vector<int> infiniteSlot_;                 ///< per light: its index in infinite_, or -1
+    std::vector<std::size_t> nextEventInfinite_;    ///< the lights of infinite_ it samples
+    std::vector<float> infinitePmf_, infiniteCdf_;  ///< indexed like nextEventInfinite_
+    std::vector<int> infiniteSlot_;  ///< per light: its index in nextEventInfinite_, or -1
 };
 
 }  // namespace lamina::render
