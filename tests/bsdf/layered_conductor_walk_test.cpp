@@ -1,0 +1,112 @@
+// The layered stack over a conductor base (bsdf/refracted_conductor.h) against the random walk
+// where the physics says they agree, and its energy. Fixed seeds; each group of z-tests is held
+// to a family-wise significance of 1% (Sidak: per comparison 1 - 0.99^(1/k)).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "lamina/bsdf/material_builder.h"
+#include "lamina/core/pcg32.h"
+#include "lamina/core/special_functions.h"
+
+namespace lamina {
+namespace {
+
+using S = Rgb<double>;
+
+std::unique_ptr<Bxdf<S>> material(const std::string& json) {
+    return buildBxdf(parseMaterialArgument(json), SpectrumContext<S>{});
+}
+
+// The two-sided z bound of a family of k comparisons at family-wise significance 1%.
+double sidakZ(int k) {
+    const double alpha = 1.0 - std::pow(0.99, 1.0 / double(k));
+    return std::sqrt(2.0) * erfInv(1.0 - alpha);
+}
+
+struct MeanAndError {
+    double mean = 0, error = 0;
+};
+
+// The mean of `values` and its standard error.
+MeanAndError meanOf(const std::vector<double>& values) {
+    double sum = 0, sum2 = 0;
+    for (double v : values) {
+        sum += v;
+        sum2 += v * v;
+    }
+    const double n = double(values.size()), mean = sum / n;
+    return {mean, std::sqrt(std::max(0.0, sum2 / n - mean * mean) / n)};
+}
+
+MeanAndError sampledAlbedo(const Bxdf<S>& b, const Vec3d& wo, int n, std::uint64_t seed) {
+    Pcg32 rng(seed);
+    double sum = 0, sum2 = 0;
+    for (int i = 0; i < n; ++i) {
+        const double uc = rng.nextDouble();
+        const Vec2d u(rng.nextDouble(), rng.nextDouble());
+        const auto s = b.sample(wo, uc, u, TransportMode::Radiance);
+        const double w = s ? s->weight[0] : 0.0;
+        sum += w;
+        sum2 += w * w;
+    }
+    const double mean = sum / n;
+    return {mean, std::sqrt(std::max(0.0, sum2 / n - mean * mean) / n)};
+}
+
+// A smooth coat over a dark rough conductor (F0 = 0.05), seen at normal incidence: light that
+// the coat reflects back down (F ~ 0.04) returns from the base with 5% of it, and the base's
+// lobe (alpha 0.04) sends almost nothing beyond the critical angle, so the walk's answer is the
+// single pass through the coat to 0.2%, which is what the albedo coupling computes for a smooth
+// coat. The walk's estimates are 40000 per point (standard error ~0.5%).
+TEST(LayeredConductorWalk, ASmoothCoatOverADarkConductorIsTheAlbedoTwinAtNormalIncidence) {
+    const std::string base = R"({"type":"conductor","f0":0.05,"roughness":0.2})";
+    const auto walkBsdf = material(R"({"type":"coated","ior":1.5,"base":)" + base + "}");
+    const auto& walk = dynamic_cast<const CoatedBxdf<S>&>(*walkBsdf);
+    const auto twin = material(R"({"type":"layered","interface":{"roughness":0,"ior":1.5,)"
+                               R"("fresnel":"exact"},"base":)" +
+                               base + R"(,"coupling":"albedo"})");
+    const Vec3d wo(0, 0, 1);
+    const std::vector<double> thetaI = {0, 4, 8, 12, 16};
+    const double z = sidakZ(int(thetaI.size()) + 1);
+    for (double t : thetaI) {
+        const double r = t * kPi<double> / 180.0;
+        const Vec3d wi(std::sin(r), 0, std::cos(r));
+        Pcg32 rng(101 + std::uint64_t(t));
+        std::vector<double> estimates;
+        for (int e = 0; e < 40000; ++e)
+            estimates.push_back(walk.estimate(wo, wi, TransportMode::Radiance, rng).value[0]);
+        const MeanAndError w = meanOf(estimates);
+        const double f = twin->eval(wo, wi, TransportMode::Radiance)[0];
+        EXPECT_GT(w.mean, 0.0);
+        EXPECT_LT(std::abs(f - w.mean), z * w.error)
+            << "theta_i " << t << ": twin " << f << ", walk " << w.mean << " +- " << w.error;
+    }
+    const MeanAndError a = sampledAlbedo(*twin, wo, 400000, 3);
+    const MeanAndError b = sampledAlbedo(walk, wo, 400000, 4);
+    EXPECT_LT(std::abs(a.mean - b.mean), z * std::hypot(a.error, b.error))
+        << "albedo: twin " << a.mean << " +- " << a.error << ", walk " << b.mean << " +- "
+        << b.error;
+}
+
+// A white conductor (F0 = 1) under a rough coat: with the albedo coupling the stack reflects at
+// most what it receives (E(mu_o) + (1 - E(mu_o)) x the base's albedo <= 1) at every angle, and a
+// white base through a smooth coat loses only what the single pass drops, so it keeps most.
+TEST(LayeredConductorWalk, AWhiteConductorUnderTheAlbedoCouplingConservesEnergy) {
+    const int n = 200000;
+    const double z = sidakZ(2 * 4);
+    for (const char* interface : {R"("roughness":0.5)", R"("roughness":0)"}) {
+        const auto b = material(std::string(R"({"type":"layered","interface":{)") + interface +
+                                R"(,"ior":1.5,"fresnel":"exact"},"base":{"type":"conductor",)"
+                                R"("f0":1,"roughness":0.3},"coupling":"albedo"})");
+        for (double theta : {0.0, 30.0, 60.0, 85.0}) {
+            const double r = theta * kPi<double> / 180.0;
+            const MeanAndError a = sampledAlbedo(*b, Vec3d(std::sin(r), 0, std::cos(r)), n, 7);
+            EXPECT_LT(a.mean - z * a.error, 1.0) << interface << " at " << theta;
+            EXPECT_GT(a.mean, 0.5) << interface << " at " << theta;
+        }
+    }
+}
+
+}  // namespace
+}  // namespace lamina
