@@ -8,11 +8,14 @@
 #include "lamina/bsdf/material_builder.h"
 #include "lamina/core/pcg32.h"
 #include "lamina/core/special_functions.h"
+#include "sampled_albedo.h"
 
 namespace lamina {
 namespace {
 
 using S = Rgb<double>;
+using testing::MeanAndError;
+using testing::sampledAlbedo;
 
 std::unique_ptr<Bxdf<S>> material(const std::string& json) {
     return buildBxdf(parseMaterialArgument(json), SpectrumContext<S>{});
@@ -24,10 +27,6 @@ double sidakZ(int k) {
     return std::sqrt(2.0) * erfInv(1.0 - alpha);
 }
 
-struct MeanAndError {
-    double mean = 0, error = 0;
-};
-
 // The mean of `values` and its standard error.
 MeanAndError meanOf(const std::vector<double>& values) {
     double sum = 0, sum2 = 0;
@@ -36,21 +35,6 @@ MeanAndError meanOf(const std::vector<double>& values) {
         sum2 += v * v;
     }
     const double n = double(values.size()), mean = sum / n;
-    return {mean, std::sqrt(std::max(0.0, sum2 / n - mean * mean) / n)};
-}
-
-MeanAndError sampledAlbedo(const Bxdf<S>& b, const Vec3d& wo, int n, std::uint64_t seed) {
-    Pcg32 rng(seed);
-    double sum = 0, sum2 = 0;
-    for (int i = 0; i < n; ++i) {
-        const double uc = rng.nextDouble();
-        const Vec2d u(rng.nextDouble(), rng.nextDouble());
-        const auto s = b.sample(wo, uc, u, TransportMode::Radiance);
-        const double w = s ? s->weight[0] : 0.0;
-        sum += w;
-        sum2 += w * w;
-    }
-    const double mean = sum / n;
     return {mean, std::sqrt(std::max(0.0, sum2 / n - mean * mean) / n)};
 }
 
@@ -119,8 +103,8 @@ TEST(LayeredConductorWalk, ASmoothCoatOverADarkConductorIsItsSinglePassPlusAtMos
         EXPECT_LT(w.mean - f, 0.01 * w.mean + z * w.error)
             << "theta_i " << t << ": twin " << f << ", walk " << w.mean << " +- " << w.error;
     }
-    const MeanAndError a = sampledAlbedo(*twin, Vec3d(0, 0, 1), 400000, 3);
-    const MeanAndError b = sampledAlbedo(walk, Vec3d(0, 0, 1), 400000, 4);
+    const MeanAndError a = sampledAlbedo(*twin, Vec3d(0, 0, 1), 400000, 0, 3);
+    const MeanAndError b = sampledAlbedo(walk, Vec3d(0, 0, 1), 400000, 0, 4);
     const double e = z * std::hypot(a.error, b.error);
     EXPECT_GT(b.mean - a.mean, -e) << "albedo: twin " << a.mean << " +- " << a.error << ", walk "
                                    << b.mean << " +- " << b.error;
@@ -140,7 +124,7 @@ TEST(LayeredConductorWalk, AWhiteConductorUnderTheAlbedoCouplingConservesEnergy)
                                 R"("f0":1,"roughness":0.3},"coupling":"albedo"})");
         for (double theta : {0.0, 30.0, 60.0, 85.0}) {
             const double r = theta * kPi<double> / 180.0;
-            const MeanAndError a = sampledAlbedo(*b, Vec3d(std::sin(r), 0, std::cos(r)), n, 7);
+            const MeanAndError a = sampledAlbedo(*b, Vec3d(std::sin(r), 0, std::cos(r)), n, 0, 7);
             EXPECT_LT(a.mean - z * a.error, 1.0) << interface << " at " << theta;
             EXPECT_GT(a.mean, 0.5) << interface << " at " << theta;
         }
