@@ -38,6 +38,35 @@ LayerCoupling readCoupling(const JsonReader& r, const StandardMaterial& s) {
     return r.choice("coupling", defaultCoupling, kLayerCouplingNames);
 }
 
+// The base of `layered`: a diffuse model (`type` one of kDiffuseModelNames, lambert by default)
+// or a rough conductor (`type` "conductor" with the keys of the conductor material).
+void readBase(const JsonReader& b, StandardMaterial& s) {
+    std::vector<std::string> types = kDiffuseModelNames.names();
+    types.emplace_back("conductor");
+    b.noteNames("type", types);
+    const std::string type = b.string("type", "lambert");
+    if (type == "conductor") {
+        auto conductor = std::get<ConductorMaterial>(readConductor(b));
+        const MicrofacetParams& m = conductor.microfacet;
+        if (std::max(m.alphaX, m.alphaY) < kSmoothAlpha)
+            b.fail(
+                "a conductor base needs a roughness (alpha >= 0.001): a smooth one would be a "
+                "second delta lobe under the interface, which the stack does not have");
+        s.conductorBase = std::make_shared<const ConductorMaterial>(std::move(conductor));
+        s.diffuse.reset();
+        return;
+    }
+    const auto model = kDiffuseModelNames.find(type);
+    if (!model) b.failAt("type", "expected one of " + knownNames(types) + ", got \"" + type + "\"");
+    s.diffuse = *model;
+    s.baseColor = readColor(b, "reflectance", 0.5);
+    if (s.diffuse != DiffuseModel::Lambert) {
+        MicrofacetParams m;
+        readRoughness(b, 0.5, m);
+        s.diffuseRoughness = m.perceptualRoughness();
+    }
+}
+
 }  // namespace
 
 MaterialModel readStandard(const JsonReader& r) {
@@ -100,20 +129,16 @@ MaterialModel readLayered(const JsonReader& r) {
     }
     if (const auto b = r.optionalChild("base")) {
         b->expectObject();
-        s.diffuse = b->choice("type", DiffuseModel::Lambert, kDiffuseModelNames);
-        s.baseColor = readColor(*b, "reflectance", 0.5);
-        if (s.diffuse != DiffuseModel::Lambert) {
-            MicrofacetParams m;
-            readRoughness(*b, 0.5, m);
-            s.diffuseRoughness = m.perceptualRoughness();
-        }
+        readBase(*b, s);
         b->finish();
     } else {
         s.diffuse.reset();
     }
     s.transmission = r.number("transmission", 0.0, Range::unit());
+    if (s.conductorBase && s.transmission > 0)
+        r.failAt("transmission", "a conductor base is opaque; transmission needs a diffuse base");
     s.coupling = readCoupling(r, s);
-    if (!s.specularLobe && !s.diffuse && s.transmission == 0)
+    if (!s.specularLobe && !s.diffuse && !s.conductorBase && s.transmission == 0)
         r.fail("a layered material needs an interface, a base or transmission");
     prepareEnergyTables(s);
     return s;
@@ -126,6 +151,7 @@ void prepareEnergyTables(StandardMaterial& s) {
     // The interface alone (with its compensation, if any), from the same builder.
     StandardMaterial interfaceOnly = s;
     interfaceOnly.diffuse.reset();
+    interfaceOnly.conductorBase.reset();
     interfaceOnly.transmission = 0;
     interfaceOnly.coupling = LayerCoupling::Fresnel;
     MaterialDesc desc{"standard", interfaceOnly};

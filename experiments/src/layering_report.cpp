@@ -159,6 +159,30 @@ std::string albedoTable(const LayeringMaterialResult& m, const LayeringResult& r
     return md.str();
 }
 
+/// One generated sentence per twin: its albedo error at normal and at the most grazing theta_o,
+/// and the share of its lobe points established within 20%.
+std::string inShort(const LayeringMaterialResult& m, const LayeringResult& r) {
+    std::string md = "In short:";
+    const std::size_t last = r.albedoAngles.size() - 1;
+    for (std::size_t k = 0; k < m.twins.size(); ++k) {
+        const LayeringTwinResult& t = m.twins[k];
+        const TwinComparison& a = t.albedo.comparisons.front();
+        const TwinComparison& b = t.albedo.comparisons[last];
+        BandCounts lobes;
+        for (const LayeringValues& l : t.lobes)
+            for (const TwinComparison& c : l.comparisons)
+                lobes.add(c);
+        md += formatText(
+            "%s the %s twin's albedo is %s%s +- %s off the walk's at theta_o = 0 and %s%s +- %s "
+            "at %g degrees, and %d of its %d lobe points are within 20%%%s",
+            k == 0 ? "" : ";", t.name.c_str(), a.error >= 0 ? "+" : "", percent(a.error).c_str(),
+            percent(a.standardError).c_str(), b.error >= 0 ? "+" : "", percent(b.error).c_str(),
+            percent(b.standardError).c_str(), r.albedoAngles[last], lobes.within[2], lobes.points,
+            k + 1 == m.twins.size() ? ".\n" : "");
+    }
+    return md;
+}
+
 std::string writeRenders(const LayeringMaterialResult& m, const Report& report) {
     if (m.walkRenders.empty()) return "";
     const char* modes[] = {"rgb", "spectral"};
@@ -229,7 +253,7 @@ std::string materialSection(const LayeringMaterialResult& m, const LayeringResul
         md << "| " << t.name << " | " << albedoRange(t, r, kToleranceBands[0]) << " | "
            << albedoRange(t, r, kToleranceBands[1]) << " | "
            << albedoRange(t, r, kToleranceBands[2]) << " |\n";
-    md << "\n" << albedoTable(m, r) << "\n";
+    md << "\n" << albedoTable(m, r) << "\n" << inShort(m, r) << "\n";
     for (const LayeringTwinResult& t : m.twins) {
         writeErrorMap(m, t, r, report);
         md << "![" << t.name << " error](" << m.stem << "_" << fileTag(t.name) << "_error.svg) ";
@@ -250,7 +274,9 @@ void writeLayeringReport(const LayeringResult& result, Report& report) {
         "# Layering: analytic stacks against the random walk\n\n"
         "Each coated material (the random walk of Guo, Hasan and Zhao 2018) against its "
         "analytic twins: the `layered` stack with the same interface and base, with the "
-        "article's (1 - F) coupling and with the albedo coupling. RGB mode, double precision, "
+        "article's (1 - F) coupling and with the albedo coupling (over a rough conductor base, "
+        "the conductor seen through the interface in one pass, docs/bsdf.md \"layered over a "
+        "conductor\"). RGB mode, double precision, "
         "luminance. The walk's f |cos| at each point is the mean of %d independent estimates "
         "(each the average of the material's `samples` walks); every directional albedo, the "
         "walk's and the twins', is the mean of %d sample() weights; seed %llu. An error is "

@@ -1,5 +1,6 @@
 #include "lamina/experiments/layering_twins.h"
 
+#include <algorithm>
 #include <filesystem>
 
 #include "lamina/core/error.h"
@@ -65,21 +66,28 @@ LayeringMaterial readLayeringMaterial(const std::string& argument, int index) {
 std::vector<LayeringTwin> analyticTwins(const LayeringMaterial& m, std::string& note) {
     note.clear();
     const CoatedMaterial& c = m.coated();
-    if (!std::holds_alternative<DiffuseMaterial>(c.base->model)) {
+    const auto* conductor = std::get_if<ConductorMaterial>(&c.base->model);
+    const bool smoothConductor = conductor && std::max(conductor->microfacet.alphaX,
+                                                       conductor->microfacet.alphaY) < kSmoothAlpha;
+    if ((!std::holds_alternative<DiffuseMaterial>(c.base->model) && !conductor) ||
+        smoothConductor) {
         note =
             "no analytic twin: the layered stack (bsdf/layered.h) takes a diffuse base "
-            "(lambert, oren_nayar, burley, frostbite) only, and this base is a " +
-            c.base->type +
-            "; a conductor under a dielectric interface needs its own coupled lobe, which "
-            "the stack does not have";
+            "(lambert, oren_nayar, burley, frostbite) or a rough conductor, and this base is " +
+            std::string(smoothConductor ? "a smooth conductor" : "a " + c.base->type);
         return {};
     }
-    const bool medium = c.thickness > 0;
-    if (medium)
+    if (conductor)
         note =
-            "the layered stack has no medium between its layers: the twins are the same "
-            "coat and base without the medium, so the error includes everything the "
-            "medium does (absorption, scattering, tint)";
+            "the twins of a conductor base are one pass through the coat "
+            "(bsdf/refracted_conductor.h): the conductor is evaluated at wo and wi refracted "
+            "into the coat, and the light the coat reflects back onto it, or that it sends "
+            "beyond the critical angle, is not followed";
+    if (c.thickness > 0)
+        note += std::string(note.empty() ? "" : "; ") +
+                "the layered stack has no medium between its layers: the twins are the same "
+                "coat and base without the medium, so the error includes everything the "
+                "medium does (absorption, scattering, tint)";
     const Json original = Json::parse(m.json);
     Json interface = {
         {"model", std::string(kNdfKindNames.name(c.microfacet.ndf))},

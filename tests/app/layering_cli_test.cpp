@@ -31,7 +31,9 @@ TEST_F(LayeringCli, WritesAReportWhoseNumbersMakeSense) {
     const fs::path out = dir_ / "layering";
     const CommandRun r = runLamina(
         std::string("layering '{\"type\":\"coated\",\"ior\":1,\"base\":{\"type\":\"lambert\","
-                    "\"reflectance\":0.6}}' coated-gold --estimates 16 --albedo-samples 65536 ") +
+                    "\"reflectance\":0.6}}' coated-gold "
+                    "'{\"type\":\"coated\",\"roughness\":0.2,\"base\":{\"type\":\"conductor\","
+                    "\"f0\":0.9}}' --estimates 16 --albedo-samples 65536 ") +
         "--scene " + scene + " --spp 2 -o " + out.string() + " 2>/dev/null");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     for (const char* f :
@@ -54,18 +56,29 @@ TEST_F(LayeringCli, WritesAReportWhoseNumbersMakeSense) {
             EXPECT_NEAR(row[c], 0.6, 4 * row[c + 1] + 1e-12) << "column " << c << " at " << row[0];
         }
     }
+    // Coated gold has its two twins (a rough conductor base); a smooth conductor base has none.
     const auto gold = readCsv(out / "coated-gold_albedo.csv");
+    ASSERT_EQ(gold.size(), 18u);
     for (const auto& row : gold) {
+        ASSERT_EQ(row.size(), 7u);
+        for (std::size_t c = 1; c < row.size(); c += 2) {
+            EXPECT_GT(row[c], 0.0) << "column " << c;
+            EXPECT_LT(row[c], 1.0) << "column " << c;
+            EXPECT_GT(row[c + 1], 0.0);  // every albedo carries a standard error
+        }
+    }
+    for (const auto& row : readCsv(out / "material3_albedo.csv")) {
         ASSERT_EQ(row.size(), 3u);  // no twin
         EXPECT_GT(row[1], 0.0);
         EXPECT_LT(row[1], 1.0);
-        EXPECT_GT(row[2], 0.0);  // the walk's albedo carries a standard error
+        EXPECT_GT(row[2], 0.0);
     }
     std::ifstream summary(out / "summary.md");
     const std::string text((std::istreambuf_iterator<char>(summary)), {});
     EXPECT_NE(text.find("| fresnel coupling | albedo | 18 | 18 / 0 / 0 |"), std::string::npos)
         << text;
     EXPECT_NE(text.find("no analytic twin"), std::string::npos);
+    EXPECT_NE(text.find("one pass through the coat"), std::string::npos);
     EXPECT_NE(text.find("mean CIEDE2000"), std::string::npos);
     // No NaN or infinity printed as a number.
     EXPECT_FALSE(std::regex_search(text, std::regex("[^a-z](nan|inf)[^a-z]"))) << text;

@@ -8,10 +8,13 @@
 #include "bsdf_cases.h"
 #include "chi2_helpers.h"
 #include "lamina/bsdf/coated.h"
+#include "sampled_albedo.h"
 
 namespace lamina {
 namespace {
 
+using testing::MeanAndError;
+using testing::sampledAlbedo;
 using testing::Spec;
 constexpr double kZ = 4.0;
 
@@ -21,27 +24,6 @@ std::shared_ptr<const Bxdf<Spec>> coated(const std::string& json) {
 
 const CoatedBxdf<Spec>& asCoated(const Bxdf<Spec>& b) {
     return dynamic_cast<const CoatedBxdf<Spec>&>(b);
-}
-
-struct MeanAndError {
-    double mean = 0, error = 0;
-};
-
-// Directional albedo from sample(): the mean weight (channel `c`), delta samples included.
-MeanAndError sampledAlbedo(const Bxdf<Spec>& b, const Vec3d& wo, int n, int c = 0,
-                           std::uint64_t seed = 1) {
-    Pcg32 rng(seed);
-    double sum = 0, sum2 = 0;
-    for (int i = 0; i < n; ++i) {
-        const double uc = rng.nextDouble();
-        const Vec2d u(rng.nextDouble(), rng.nextDouble());
-        const auto s = b.sample(wo, uc, u, TransportMode::Radiance);
-        const double w = s ? s->weight[c] : 0.0;
-        sum += w;
-        sum2 += w * w;
-    }
-    const double mean = sum / n;
-    return {mean, std::sqrt(std::max(0.0, sum2 / n - mean * mean) / n)};
 }
 
 // The same albedo from eval() (non-delta part only): cosine-weighted directions wi.

@@ -87,7 +87,7 @@ TEST(LayeringMaterials, NamesLiteralsAndRefusals) {
     }
 }
 
-TEST(LayeringMaterials, TwinsExistForDiffuseBasesAndSayWhatTheyLeaveOut) {
+TEST(LayeringMaterials, TwinsExistForDiffuseAndRoughConductorBasesAndSayWhatTheyLeaveOut) {
     std::string note;
     const auto twins = analyticTwins(readLayeringMaterial("varnished-wood", 1), note);
     ASSERT_EQ(twins.size(), 2u);
@@ -101,8 +101,23 @@ TEST(LayeringMaterials, TwinsExistForDiffuseBasesAndSayWhatTheyLeaveOut) {
     EXPECT_DOUBLE_EQ(s.microfacet.alphaX, 0.04);
     EXPECT_EQ(s.diffuse, DiffuseModel::OrenNayar);
 
-    EXPECT_TRUE(analyticTwins(readLayeringMaterial("coated-gold", 1), note).empty());
-    EXPECT_NE(note.find("conductor"), std::string::npos) << note;
+    const auto gold = analyticTwins(readLayeringMaterial("coated-gold", 1), note);
+    ASSERT_EQ(gold.size(), 2u);
+    EXPECT_NE(note.find("one pass through the coat"), std::string::npos) << note;
+    for (const LayeringTwin& t : gold) {
+        const auto& g = std::get<StandardMaterial>(t.desc.model);
+        ASSERT_TRUE(g.conductorBase) << t.name;
+        EXPECT_FALSE(g.diffuse.has_value());
+        EXPECT_DOUBLE_EQ(g.conductorBase->microfacet.alphaX, 0.09);
+        EXPECT_DOUBLE_EQ(g.microfacet.alphaX, 0.0225);
+    }
+    // A smooth conductor under the coat has no twin: the stack takes rough conductors only.
+    EXPECT_TRUE(analyticTwins(readLayeringMaterial(R"({"type":"coated","roughness":0.2,)"
+                                                   R"("base":{"type":"conductor","f0":0.9}})",
+                                                   1),
+                              note)
+                    .empty());
+    EXPECT_NE(note.find("a smooth conductor"), std::string::npos) << note;
     EXPECT_EQ(analyticTwins(readLayeringMaterial("tinted-coat", 1), note).size(), 2u);
     EXPECT_NE(note.find("medium"), std::string::npos) << note;
 }

@@ -141,11 +141,50 @@ inline std::vector<BsdfCase> bsdfCases() {
                              FresnelKind::SchlickShadowed),
                      true, 1.5});
 
+    // Layered over a rough conductor seen through the interface (refracted_conductor.h): the
+    // fresnel and sum couplings, rough and smooth interfaces, GGX and anisotropic Beckmann bases.
+    auto overConductor = [&](double interfaceAlpha, const MicrofacetDistribution<double>& base,
+                             const Fresnel<Spec>& baseFresnel, LayerCoupling c, double eta) {
+        typename LayeredBxdf<Spec>::Layers l;
+        l.interface.emplace(
+            MicrofacetDistribution<double>(NdfKind::Ggx, interfaceAlpha, interfaceAlpha),
+            Fresnel<Spec>::dielectric(Spec(eta)));
+        l.conductorBase.emplace(
+            ConductorBxdf<Spec>(MicrofacetReflectionLobe<Spec>(base, baseFresnel)), eta);
+        l.coupling = c;
+        return std::make_shared<LayeredBxdf<Spec>>(l);
+    };
+    for (double alpha : {0.05, 0.3})
+        cases.push_back(
+            {"layered_conductor_fresnel_a" + alphaName(alpha),
+             overConductor(0.1, MicrofacetDistribution<double>(NdfKind::Ggx, alpha, alpha),
+                           goldFresnel(), LayerCoupling::Fresnel, 1.5)});
+    cases.push_back(
+        {"layered_conductor_sum_beckmann_anisotropic",
+         overConductor(0.3, MicrofacetDistribution<double>(NdfKind::Beckmann, 0.15, 0.5),
+                       Fresnel<Spec>::schlick(Spec(0.9, 0.6, 0.3)), LayerCoupling::Sum, 1.33)});
+    cases.push_back({"layered_conductor_smooth_interface",
+                     overConductor(0.0, MicrofacetDistribution<double>(NdfKind::Ggx, 0.2, 0.2),
+                                   goldFresnel(), LayerCoupling::Fresnel, 1.5)});
+
     // Energy-compensated materials: Kulla-Conty multiple scattering and the albedo coupling.
     auto material = [](const std::string& json) {
         return std::shared_ptr<const Bxdf<Spec>>(
             buildBxdf(parseMaterialArgument(json), SpectrumContext<Spec>{}));
     };
+    // Gold's n, k as numbers: bsdf_chi2_test.cpp builds the catalogue during static
+    // initialisation, when the table of named metals may not exist yet.
+    cases.push_back(
+        {"layered_conductor_albedo_gold",
+         material(R"({"type":"layered","interface":{"roughness":0.15,"ior":1.5,)"
+                  R"("fresnel":"exact"},"base":{"type":"conductor","eta":[0.18,0.42,1.37],)"
+                  R"("k":[3.42,2.35,1.77],"roughness":0.3},"coupling":"albedo"})")});
+    cases.push_back(
+        {"layered_conductor_albedo_multiscatter",
+         material(R"({"type":"layered","interface":{"roughness":0.6,"ior":1.5,)"
+                  R"("fresnel":"exact","multiscatter":true},"base":{"type":"conductor",)"
+                  R"("f0":[0.9,0.6,0.3],"roughness":0.7,"multiscatter":true},)"
+                  R"("coupling":"albedo"})")});
     cases.push_back({"conductor_multiscatter_r0p3",
                      material(R"({"type":"conductor","eta":[0.2,0.4,1.4],"k":[3.4,2.4,1.8],)"
                               R"("fresnel":"exact","roughness":0.3,"multiscatter":true})")});

@@ -24,6 +24,7 @@ class ConductorBxdf final : public Bxdf<S> {
         : lobe_(lobe), ms_(isSmooth() ? std::nullopt : std::move(multiscatter)) {}
 
     bool isSmooth() const { return lobe_.distribution().effectivelySmooth(); }
+    const MicrofacetReflectionLobe<S>& lobe() const { return lobe_; }
 
     S eval(const V3& wo, const V3& wi, TransportMode) const override {
         if (isSmooth()) return S(Float(0));

@@ -13,6 +13,24 @@
 //   albedo   W = (1 - E(mu_o)) (1 - E(mu_i)) / (1 - E_avg) with E the interface's directional
 //            albedo (Kelemen and Szirmay-Kalos 2001; Kulla and Conty 2017): reciprocal, and
 //            a white base under any interface reflects exactly what the interface transmits.
+// The base may instead be a rough conductor under the interface (refracted_conductor.h: the
+// conductor evaluated at wo and wi refracted into the coat, Weidlich and Wilkie 2007), which adds
+//
+//   W_c(wo, wi) f_conductor(wo', wi') / eta^2
+//
+// with its own coupling W_c, the transmittance of the way in and the way out:
+//   fresnel  W_c = 1 - F(wi.h), as for the diffuse base (the article's weighting, applied once);
+//   sum      W_c = 1;
+//   albedo   W_c = (1 - E(mu_o)) (1 - E(mu_i)): what the rough interface lets through on the
+//            way in and on the way out, E its directional albedo (for a smooth interface
+//            E = F and this is the exact single-pass transmittance of Weidlich and Wilkie).
+//            It is reciprocal, and with the conductor's albedo <= 1 the stack reflects at most
+//            E(mu_o) + (1 - E(mu_o)) = 1. The diffuse base's 1 / (1 - E_avg) is left out: it
+//            returns the energy the interface reflects as a Lambertian base would spread it, so
+//            that a white Lambertian base reflects exactly what the interface transmits; a
+//            conductor keeps light near its mirror direction, and with that factor a white
+//            mirror under a smooth coat of index 1.5 would reflect 1.05 at normal incidence
+//            ((1 - 0.04)^2 / (1 - 0.09) + 0.04).
 // The interface may carry Kulla-Conty multiple-scattering compensation (multiscatter.h).
 // f_btdf is Walter's BTDF without its Fresnel factor, weighted by (1 - F) of the interface's
 // own Fresnel model on the refraction microfacet normal m_t, so reflection and transmission
@@ -22,8 +40,8 @@
 //
 // Sampling picks a lobe with probabilities estimated from wo (specular ~ F(cos_o), cosine
 // lobes (diffuse and multiple-scattering compensation) ~ their albedos, transmission ~
-// t (1 - F); 10% spread evenly so no lobe is starved), then weight = eval / pdf of the whole
-// mixture.
+// t (1 - F), the conductor base ~ its Fresnel at wo' times its coupling at wo; 10% spread evenly
+// so no lobe is starved), then weight = eval / pdf of the whole mixture.
 #pragma once
 
 #include <array>
@@ -32,6 +50,7 @@
 #include "lamina/bsdf/diffuse.h"
 #include "lamina/bsdf/microfacet_reflection.h"
 #include "lamina/bsdf/multiscatter.h"
+#include "lamina/bsdf/refracted_conductor.h"
 #include "lamina/bsdf/specular_lobe.h"
 #include "lamina/core/name_table.h"
 
@@ -58,6 +77,8 @@ class LayeredBxdf final : public Bxdf<S> {
         /// Albedo coupling: the interface's directional albedo (with compensation if any).
         std::shared_ptr<const AlbedoTable> interfaceAlbedo;
         std::optional<MultiscatterLobe<S>> interfaceMultiscatter;
+        /// A rough conductor under the interface (with or instead of the diffuse base).
+        std::optional<RefractedConductorLobe<S>> conductorBase;
     };
 
     explicit LayeredBxdf(Layers layers) : l_(std::move(layers)) {
@@ -88,6 +109,7 @@ class LayeredBxdf final : public Bxdf<S> {
         Float result = Float(0);
         if (l_.interface && !interfaceSmooth()) result += p[0] * l_.interface->pdf(o, i);
         if (hasCosineLobe()) result += p[1] * cosineHemispherePdf(i);
+        if (l_.conductorBase) result += p[3] * l_.conductorBase->pdf(o, i);
         return result;
     }
 
@@ -109,6 +131,11 @@ class LayeredBxdf final : public Bxdf<S> {
         } else if (uc < p[0] + p[1]) {  // diffuse base and compensation: cosine-distributed
             wi = squareToCosineHemisphere(u) * s;
             if (wi.z == Float(0)) return std::nullopt;
+        } else if (l_.conductorBase && uc >= p[0] + p[1] + p[2]) {  // conductor base
+            const Float ub = std::min((uc - (p[0] + p[1] + p[2])) / p[3], kOneMinusEpsilon<Float>);
+            const auto r = l_.conductorBase->sample(wo * s, ub, u, mode);
+            if (!r) return std::nullopt;
+            wi = *r * s;
         } else {  // transmission
             if (!l_.transmission) return std::nullopt;
             const auto t = l_.transmission->sampleRefraction(wo, u);
@@ -132,7 +159,7 @@ class LayeredBxdf final : public Bxdf<S> {
             flags = kLobeGlossyTransmission;
             eta = wo.z > Float(0) ? l_.transmission->eta() : Float(1) / l_.transmission->eta();
         } else {
-            flags = uc < p[0] ? kLobeGlossyReflection : kLobeDiffuseReflection;
+            flags = uc < p[0] || uc >= p[0] + p[1] ? kLobeGlossyReflection : kLobeDiffuseReflection;
         }
         return BsdfSample<S>{wi, weight, pdfValue, flags, eta};
     }
@@ -141,17 +168,18 @@ class LayeredBxdf final : public Bxdf<S> {
         std::uint32_t f = kLobeNone;
         if (l_.interface) f |= interfaceSmooth() ? kLobeSpecularReflection : kLobeGlossyReflection;
         if (hasCosineLobe()) f |= l_.diffuse ? kLobeDiffuseReflection : kLobeGlossyReflection;
+        if (l_.conductorBase) f |= kLobeGlossyReflection;
         if (l_.transmission)
             f |= l_.transmission->isSmooth() ? kLobeSpecularTransmission : kLobeGlossyTransmission;
         return f;
     }
 
-    /// Lobe selection probabilities (specular, diffuse, transmission) for wo.
-    std::array<Float, 3> lobeProbabilities(const V3& wo) const {
+    /// Lobe selection probabilities (specular, diffuse, transmission, conductor base) for wo.
+    std::array<Float, 4> lobeProbabilities(const V3& wo) const {
         const Float F =
             l_.interface ? l_.interface->fresnel().evaluate(std::abs(wo.z)).average() : Float(0);
         const Float t = l_.transmissionWeight;
-        std::array<Float, 3> w{};
+        std::array<Float, 4> w{};
         const Float mu = std::abs(wo.z);
         if (l_.interface) w[0] = std::max(F, Float(0));
         if (l_.diffuse) {
@@ -165,13 +193,21 @@ class LayeredBxdf final : public Bxdf<S> {
         if (l_.interfaceMultiscatter)
             w[1] += std::max(l_.interfaceMultiscatter->albedo(mu).average(), Float(0));
         if (l_.transmission) w[2] = t * (Float(1) - F);
-        const bool present[3] = {l_.interface.has_value(), hasCosineLobe(),
-                                 l_.transmission.has_value()};
-        const int n = int(present[0]) + int(present[1]) + int(present[2]);
-        const Float total = w[0] + w[1] + w[2];
-        std::array<Float, 3> p{};
+        if (l_.conductorBase) {
+            const V3 o(wo.x, wo.y, mu);
+            Float coupling = Float(1) - F;
+            if (l_.coupling == LayerCoupling::Sum) coupling = Float(1);
+            if (l_.coupling == LayerCoupling::Albedo)
+                coupling = sqr(Float(1) - Float((*l_.interfaceAlbedo)(mu)));
+            w[3] = l_.conductorBase->albedoEstimate(o) * coupling;
+        }
+        const bool present[4] = {l_.interface.has_value(), hasCosineLobe(),
+                                 l_.transmission.has_value(), l_.conductorBase.has_value()};
+        const int n = int(present[0]) + int(present[1]) + int(present[2]) + int(present[3]);
+        const Float total = w[0] + w[1] + w[2] + w[3];
+        std::array<Float, 4> p{};
         if (n == 0) return p;
-        for (int i = 0; i < 3; ++i) {
+        for (int i = 0; i < 4; ++i) {
             if (!present[i]) continue;
             p[i] = total > Float(0) ? Float(0.9) * w[i] / total + Float(0.1) / Float(n)
                                     : Float(1) / Float(n);
@@ -202,7 +238,21 @@ class LayeredBxdf final : public Bxdf<S> {
             result +=
                 l_.diffuse->eval(wo, wi, mode) * coupling * (Float(1) - l_.transmissionWeight);
         }
+        if (l_.conductorBase) {
+            const S f = l_.conductorBase->eval(wo, wi, mode);
+            if (!f.isZero()) result += f * conductorCoupling(wo, wi);
+        }
         return result;
+    }
+
+    // W_c of the conductor base (the top of this file).
+    S conductorCoupling(const V3& wo, const V3& wi) const {
+        if (l_.coupling == LayerCoupling::Sum || !l_.interface) return S(Float(1));
+        if (l_.coupling == LayerCoupling::Albedo) {
+            const AlbedoTable& e = *l_.interfaceAlbedo;
+            return S((Float(1) - Float(e(wo.z))) * (Float(1) - Float(e(wi.z))));
+        }
+        return S(Float(1)) - l_.interface->fresnelAt(wo, wi);
     }
 
     S evalTransmission(const V3& wo, const V3& wi, TransportMode mode) const {

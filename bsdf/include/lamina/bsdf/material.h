@@ -67,6 +67,8 @@ inline constexpr NameTable kSpecularModelNames{
     std::array{NameEntry{SpecularModel::Ggx, "ggx"}, NameEntry{SpecularModel::Beckmann, "beckmann"},
                NameEntry{SpecularModel::Phong, "phong"}}};
 
+struct ConductorMaterial;
+
 /// `standard`: the article's material (and its generalisations); see docs/bsdf.md.
 struct StandardMaterial {
     ColorInput baseColor{RgbInput(0.8)};
@@ -88,6 +90,9 @@ struct StandardMaterial {
     LayerCoupling coupling = LayerCoupling::Fresnel;
     /// Albedo coupling: the directional albedo of the specular interface (RGB average).
     std::shared_ptr<const AlbedoTable> interfaceAlbedo;
+    /// `layered` with a conductor base: the conductor under the interface (its optics relative
+    /// to the interface's medium of index `ior`), in place of the diffuse base.
+    std::shared_ptr<const ConductorMaterial> conductorBase;
 };
 
 /// `lambert`, `oren_nayar`, `burley`, `frostbite`.

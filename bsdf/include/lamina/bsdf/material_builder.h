@@ -154,15 +154,18 @@ class MaterialBuilder {
         }
     }
 
-    std::unique_ptr<Bxdf<S>> buildModel(const ConductorMaterial& c) const {
+    ConductorBxdf<S> conductorBxdf(const ConductorMaterial& c) const {
         const Fresnel<S> fresnel = conductorFresnel(c);
         std::optional<MultiscatterLobe<S>> ms;
         if (c.microfacet.multiscatter && c.microfacet.energyF1)
             ms.emplace(c.microfacet.energyF1, fresnel);
-        return std::make_unique<ConductorBxdf<S>>(
-            MicrofacetReflectionLobe<S>(distribution(c.microfacet), fresnel, c.microfacet.sampling,
-                                        c.microfacet.g2),
-            std::move(ms));
+        return ConductorBxdf<S>(MicrofacetReflectionLobe<S>(distribution(c.microfacet), fresnel,
+                                                            c.microfacet.sampling, c.microfacet.g2),
+                                std::move(ms));
+    }
+
+    std::unique_ptr<Bxdf<S>> buildModel(const ConductorMaterial& c) const {
+        return std::make_unique<ConductorBxdf<S>>(conductorBxdf(c));
     }
 
     // The article's F90 = min(1, luminance(F0) / 0.04), from the Rec.709 F0 in both modes.
@@ -234,6 +237,9 @@ class MaterialBuilder {
             layers.diffuse.emplace(
                 diffuseSpectrum(), *s.diffuse,
                 Float(s.diffuseRoughness.value_or(s.microfacet.perceptualRoughness())));
+        if (s.conductorBase)  // seen through the interface of index ior (none: index 1)
+            layers.conductorBase.emplace(conductorBxdf(*s.conductorBase),
+                                         Float(s.specularLobe ? s.ior : 1.0));
         if (s.transmission > 0.0) {
             layers.transmission.emplace(Float(s.ior), dist, s.microfacet.g2);
             layers.transmissionWeight = Float(s.transmission);

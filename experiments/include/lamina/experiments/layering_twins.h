@@ -9,10 +9,11 @@
 // with the albedo coupling. They are written as `layered` JSON and read by the material
 // reader, so a twin is exactly what a user gets from that JSON.
 //
-// The layered stack takes diffuse bases only (lambert, oren_nayar, burley, frostbite): a coat
-// over any other base (a conductor, another coated material, a mix) has no analytic twin, and
-// the stack has no medium between its layers, so a coat with a medium is compared with the
-// twins of the same coat without it (what the medium adds is then part of the error).
+// The layered stack takes diffuse bases (lambert, oren_nayar, burley, frostbite) and rough
+// conductors (one pass through the coat, bsdf/refracted_conductor.h): a coat over any other base
+// (a smooth conductor, another coated material, a mix) has no analytic twin, and the stack has
+// no medium between its layers, so a coat with a medium is compared with the twins of the same
+// coat without it (what the medium adds is then part of the error).
 #pragma once
 
 #include <string>
