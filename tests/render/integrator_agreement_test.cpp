@@ -141,6 +141,35 @@ TEST(IntegratorsAgree, OnCoatedObjects) {
     expectAgreement(testAgreement(light, bdpt, test), "light vs bdpt", 180);
 }
 
+// MIS with the coated material's estimated pdf against a reference that uses no pdf at all:
+// path tracing with next-event estimation and MIS, and path tracing by BSDF sampling alone
+// (`next_event` false: every emitter hit counts in full), on the coated scene without its spot
+// light (no ray can hit a delta light). The same blockwise Welch test at alpha = 0.01, plus
+// the binomial p-value of the number of rejected blocks (>= 0.001) and the image means within
+// three standard errors. Breaking the MIS weights (sample() reporting half of pdf(), so the
+// two strategies' weights of a path no longer sum to one) makes it fail (docs/bsdf.md).
+TEST(IntegratorsAgree, OnCoatedObjectsMisMatchesBsdfSamplingAlone) {
+    SceneDesc scene = loadScene(sourcePath("scenes/reciprocity/coated.json"));
+    scene.lights.clear();
+    SceneDesc reference = scene;
+    reference.settings.nextEvent = false;
+    RenderOptions o;
+    o.integrator = IntegratorKind::Path;
+    o.mode = RenderModeKind::Rgb;
+    o.seed = 11;
+    const BatchImages mis = renderBatches(scene, o, 512, 32);
+    o.seed = 44;
+    const BatchImages bsdfOnly = renderBatches(reference, o, 4096, 32);
+    ASSERT_GT(mis.region(0, 0, 32, 32).mean, 0.0) << "the scene renders black";
+    AgreementTest test;
+    test.alpha = 0.01;
+    test.blockSize = 2;
+    const AgreementResult r = testAgreement(mis, bsdfOnly, test);
+    expectAgreement(r, "MIS vs BSDF only", r.blocksTested);
+    EXPECT_GT(r.blocksTested, 150);
+    EXPECT_GE(r.blockRejectionPValue(test.alpha), 0.001);
+}
+
 TEST(IntegratorsAgreeBreakIt, WithoutTheAdjointCorrectionLightTracingDisagrees) {
     expectBrokenDisagrees("scenes/reciprocity/smooth-normals.json", IntegratorKind::Light,
                           &TransportAblations::noAdjointCorrection);
