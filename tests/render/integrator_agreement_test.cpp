@@ -174,6 +174,34 @@ TEST(IntegratorsAgree, OnCoatedObjectsMisMatchesBsdfSamplingAlone) {
     EXPECT_GE(r.blockRejectionPValue(test.alpha), 0.001);
 }
 
+// The key of that reference: read for `path` (default true), refused with the JSON path for the
+// integrators that have no next-event estimation to turn off.
+TEST(NextEventKey, IsReadForPathAndRefusedElsewhere) {
+    const auto withIntegrator = [](const std::string& integrator) {
+        return R"({"camera": {"position": [0, 0, -5], "look_at": [0, 0, 0]},
+                   "materials": {"m": {"type": "lambert"}},
+                   "shapes": [{"type": "sphere", "material": "m"}],
+                   "lights": [{"type": "point", "position": [0, 3, 0], "intensity": 1}],
+                   "integrator": )" +
+               integrator + "}";
+    };
+    EXPECT_TRUE(testing::sceneFromText(withIntegrator(R"({"type": "path"})")).settings.nextEvent);
+    EXPECT_FALSE(
+        testing::sceneFromText(withIntegrator(R"({"next_event": false})")).settings.nextEvent);
+    for (const char* other : {"light", "bdpt"}) {
+        try {
+            testing::sceneFromText(withIntegrator(std::string(R"({"type": ")") + other +
+                                                  R"(", "next_event": false})"));
+            ADD_FAILURE() << other << " took next_event";
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find(
+                          "integrator.next_event: only the path integrator takes next_event"),
+                      std::string::npos)
+                << e.what();
+        }
+    }
+}
+
 TEST(IntegratorsAgreeBreakIt, WithoutTheAdjointCorrectionLightTracingDisagrees) {
     expectBrokenDisagrees("scenes/reciprocity/smooth-normals.json", IntegratorKind::Light,
                           &TransportAblations::noAdjointCorrection);
