@@ -141,6 +141,67 @@ TEST(IntegratorsAgree, OnCoatedObjects) {
     expectAgreement(testAgreement(light, bdpt, test), "light vs bdpt", 180);
 }
 
+// MIS with the coated material's estimated pdf against a reference that uses no pdf at all:
+// path tracing with next-event estimation and MIS, and path tracing by BSDF sampling alone
+// (`next_event` false: every emitter hit counts in full), on the coated scene without its spot
+// light (no ray can hit a delta light). The same blockwise Welch test at alpha = 0.01, plus
+// the binomial p-value of the number of rejected blocks (>= 0.001) and the image means within
+// three standard errors. Breaking the MIS weights once on purpose (the BSDF sample of a coated
+// surface weighted with twice its pdf, the light sample with the true one, so that the two
+// weights of a path no longer sum to one) made it fail: MIS 2.9% brighter, six standard errors
+// (docs/integrators.md).
+TEST(IntegratorsAgree, OnCoatedObjectsMisMatchesBsdfSamplingAlone) {
+    SceneDesc scene = loadScene(sourcePath("scenes/reciprocity/coated.json"));
+    scene.lights.clear();
+    SceneDesc reference = scene;
+    reference.settings.nextEvent = false;
+    RenderOptions o;
+    o.integrator = IntegratorKind::Path;
+    o.mode = RenderModeKind::Rgb;
+    o.seed = 11;
+    const BatchImages mis = renderBatches(scene, o, 512, 32);
+    o.seed = 44;
+    const BatchImages bsdfOnly = renderBatches(reference, o, 4096, 32);
+    ASSERT_GT(mis.region(0, 0, 32, 32).mean, 0.0) << "the scene renders black";
+    AgreementTest test;
+    test.alpha = 0.01;
+    test.blockSize = 2;
+    const AgreementResult r = testAgreement(mis, bsdfOnly, test);
+    expectAgreement(r, "MIS vs BSDF only", r.blocksTested);
+    std::printf("  %d of %d blocks rejected, binomial p %.3f\n", r.blocksRejected, r.blocksTested,
+                r.blockRejectionPValue(test.alpha));
+    EXPECT_GT(r.blocksTested, 150);
+    EXPECT_GE(r.blockRejectionPValue(test.alpha), 0.001);
+}
+
+// The key of that reference: read for `path` (default true), refused with the JSON path for the
+// integrators that have no next-event estimation to turn off.
+TEST(NextEventKey, IsReadForPathAndRefusedElsewhere) {
+    const auto withIntegrator = [](const std::string& integrator) {
+        return R"({"camera": {"position": [0, 0, -5], "look_at": [0, 0, 0]},
+                   "materials": {"m": {"type": "lambert"}},
+                   "shapes": [{"type": "sphere", "material": "m"}],
+                   "lights": [{"type": "point", "position": [0, 3, 0], "intensity": 1}],
+                   "integrator": )" +
+               integrator + "}";
+    };
+    EXPECT_TRUE(testing::sceneFromText(withIntegrator(R"({"type": "path"})")).settings.nextEvent);
+    EXPECT_FALSE(
+        testing::sceneFromText(withIntegrator(R"({"next_event": false})")).settings.nextEvent);
+    for (const char* other : {"light", "bdpt"}) {
+        try {
+            testing::sceneFromText(withIntegrator(std::string(R"({"type": ")") + other +
+                                                  R"(", "next_event": false})"));
+            ADD_FAILURE() << other << " took next_event";
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find(
+                          "integrator.next_event: only the path integrator takes next_event"),
+                      std::string::npos)
+                << e.what();
+        }
+    }
+}
+
 TEST(IntegratorsAgreeBreakIt, WithoutTheAdjointCorrectionLightTracingDisagrees) {
     expectBrokenDisagrees("scenes/reciprocity/smooth-normals.json", IntegratorKind::Light,
                           &TransportAblations::noAdjointCorrection);

@@ -38,6 +38,9 @@ S PathIntegrator<S>::radiance(const Vec3f& rayOrigin, const Vec3f& rayDirection,
                               PathStatistics& stats, PixelAovs* aovs) const {
     S L(0.0f), beta(1.0f);
     float etaScale = 1.0f;
+    // Without next-event estimation BSDF sampling is the only strategy: every emitter it hits
+    // counts with full weight, as after a delta bounce.
+    const bool nextEvent = settings_.nextEvent;
     bool specularBounce = true;
     float prevPdf = 0.0f;
     Vec3f prevPoint(0.0f), prevNormal(0.0f);  // where the last light was chosen
@@ -51,7 +54,7 @@ S PathIntegrator<S>::radiance(const Vec3f& rayOrigin, const Vec3f& rayDirection,
                 const Emission Le = light.environment(-d);
                 if (Le.isZero()) continue;
                 const float w =
-                    specularBounce
+                    specularBounce || !nextEvent
                         ? 1.0f
                         : powerHeuristic(prevPdf, c_.lights.probability(i, prevPoint, prevNormal) *
                                                       light.environmentPdf(-d));
@@ -64,7 +67,7 @@ S PathIntegrator<S>::radiance(const Vec3f& rayOrigin, const Vec3f& rayDirection,
             const Emission Le = light.radiance(*hit, -d);
             if (!Le.isZero()) {
                 const float w =
-                    specularBounce
+                    specularBounce || !nextEvent
                         ? 1.0f
                         : powerHeuristic(prevPdf, c_.lights.probability(std::size_t(li), prevPoint,
                                                                         prevNormal) *
@@ -83,7 +86,7 @@ S PathIntegrator<S>::radiance(const Vec3f& rayOrigin, const Vec3f& rayDirection,
         const float uLight = sampler.get1D();
         const Vec2f uLightPoint = sampler.get2D();
         const bool smooth = (bsdf.flags() & (kLobeDiffuse | kLobeGlossy)) != 0;
-        if (smooth && !c_.lights.empty())
+        if (nextEvent && smooth && !c_.lights.empty())
             L += beta * directLight(*hit, at, bsdf, uLight, uLightPoint, path, stats);
 
         // Russian roulette on the throughput without the radiance eta^2 factors (pbrt-v4).

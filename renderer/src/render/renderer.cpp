@@ -42,7 +42,7 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
     const LightSet lights(scene, geometry, settings.lightSelection);
     const Camera camera(scene.camera, width, height);
     const PixelFilter filter(scene.film);
-    const RenderMode<S> mode(scene);
+    const RenderMode<S> mode(scene, settings.seed);
     const SceneContext context{scene, geometry, lights, camera};
     if (options.strategies && settings.integrator == IntegratorKind::Bdpt)
         result.strategies = std::make_unique<StrategyImages>(width, height);

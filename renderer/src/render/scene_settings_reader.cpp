@@ -97,6 +97,9 @@ void readIntegrator(const JsonReader& r, RenderSettings& settings) {
     settings.russianRouletteDepth = r.integer("rr_depth", 5, 1, 1024);
     settings.lightSelection =
         r.choice("light_selection", LightSelection::Bvh, kLightSelectionNames);
+    if (r.has("next_event") && settings.integrator != IntegratorKind::Path)
+        r.failAt("next_event", "only the path integrator takes next_event");
+    settings.nextEvent = r.boolean("next_event", true);
     r.finish();
 }
 

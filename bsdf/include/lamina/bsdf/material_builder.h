@@ -34,7 +34,10 @@ class MaterialBuilder {
     using Float = typename S::Float;
     using Distribution = MicrofacetDistribution<Float>;
 
-    explicit MaterialBuilder(const SpectrumContext<S>& context) : ctx_(context) {}
+    /// `walkSeed` seeds the random walks of `coated` materials (a render passes its own seed:
+    /// docs/bsdf.md, "Random numbers").
+    explicit MaterialBuilder(const SpectrumContext<S>& context, std::uint64_t walkSeed = 0)
+        : ctx_(context), walkSeed_(walkSeed) {}
 
     std::unique_ptr<Bxdf<S>> build(const MaterialDesc& desc) const {
         return std::visit([&](const auto& m) { return buildModel(m); }, desc.model);
@@ -87,9 +90,12 @@ class MaterialBuilder {
         medium.thickness = Float(c.thickness);
         medium.albedo = ctx_.reflectance(c.albedo);
         medium.g = Float(c.g);
+        // A coated base gets a seed of its own: with an index-matched coat its walk would see
+        // the same pairs as this one, and the same seed would replay this walk's numbers.
+        const MaterialBuilder baseBuilder(ctx_, hashValues({walkSeed_, 0x62617365ull}));
         return std::make_unique<CoatedBxdf<S>>(
             CoatInterface<S>(Float(c.ior), distribution(c.microfacet), c.microfacet.g2),
-            build(*c.base), medium, c.maxDepth, c.samples);
+            baseBuilder.build(*c.base), medium, c.maxDepth, c.samples, walkSeed_);
     }
 
     Fresnel<S> conductorFresnel(const ConductorMaterial& c) const {
@@ -248,6 +254,7 @@ class MaterialBuilder {
     }
 
     const SpectrumContext<S>& ctx_;
+    std::uint64_t walkSeed_;
 };
 
 /// The single-scattering albedo table of a microfacet lobe with F = 1 (what Kulla-Conty
@@ -269,10 +276,11 @@ inline std::shared_ptr<const AlbedoTable> microfacetEnergyTable(const Microfacet
 void prepareEnergyTables(StandardMaterial& s);
 void prepareEnergyTables(ConductorMaterial& c);
 
-/// Builds the BSDF of `desc` in the variant of `context`.
+/// Builds the BSDF of `desc` in the variant of `context`; `walkSeed` as in MaterialBuilder.
 template <SpectrumType S>
-std::unique_ptr<Bxdf<S>> buildBxdf(const MaterialDesc& desc, const SpectrumContext<S>& context) {
-    return MaterialBuilder<S>(context).build(desc);
+std::unique_ptr<Bxdf<S>> buildBxdf(const MaterialDesc& desc, const SpectrumContext<S>& context,
+                                   std::uint64_t walkSeed = 0) {
+    return MaterialBuilder<S>(context, walkSeed).build(desc);
 }
 
 }  // namespace lamina

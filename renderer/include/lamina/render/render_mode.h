@@ -5,6 +5,10 @@
 // compiled for both (src/integrators/*.cpp instantiate them for Rgb<float> and
 // SampledSpectrum<float>). The mode's names are kRenderModeNames (renderer.h).
 //
+// Both modes build their materials with the render's seed as the seed of the `coated`
+// material's random walks, so renders with different seeds get independent walk estimates
+// (docs/bsdf.md, "Random numbers").
+//
 // bsdf(material, uv, path) returns a reference valid until the next call to bsdf() from the
 // same thread (at the path's next vertex, or for another path): a textured material's BSDF is
 // rebuilt at every call, and in spectral mode a call for another path resets the per-thread
@@ -32,10 +36,10 @@ class RenderMode<Rgb<float>> {
     using Spectrum = Rgb<float>;
     struct Path {};
 
-    explicit RenderMode(const SceneDesc& scene) : scene_(scene) {
+    RenderMode(const SceneDesc& scene, std::uint64_t seed) : scene_(scene), seed_(seed) {
         const SpectrumContext<Spectrum> context;
         for (const MaterialDesc& m : scene.materials)
-            bsdfs_.push_back(buildBxdf(m, context));
+            bsdfs_.push_back(buildBxdf(m, context, seed));
     }
 
     static constexpr FilmSpace kFilmSpace = FilmSpace::Rec709;
@@ -48,13 +52,15 @@ class RenderMode<Rgb<float>> {
             return *bsdfs_[std::size_t(material)];
         // A textured material is built at every hit, with its parameters looked up at uv.
         thread_local std::unique_ptr<Bxdf<Spectrum>> textured;
-        textured = buildBxdf(texturedMaterial(scene_, material, uv), SpectrumContext<Spectrum>{});
+        textured =
+            buildBxdf(texturedMaterial(scene_, material, uv), SpectrumContext<Spectrum>{}, seed_);
         return *textured;
     }
     Rgb<double> filmValue(const Spectrum& L, const Path&) const { return Rgb<double>(L); }
 
   private:
     const SceneDesc& scene_;
+    std::uint64_t seed_;
     std::vector<std::unique_ptr<Bxdf<Spectrum>>> bsdfs_;
 };
 
@@ -72,7 +78,7 @@ class RenderMode<SampledSpectrum<float>> {
         std::uint64_t id = 0;  ///< distinguishes paths for the per-thread BSDF cache
     };
 
-    explicit RenderMode(const SceneDesc& scene) : scene_(scene) {}
+    RenderMode(const SceneDesc& scene, std::uint64_t seed) : scene_(scene), seed_(seed) {}
 
     static constexpr FilmSpace kFilmSpace = FilmSpace::Xyz;
 
@@ -100,7 +106,7 @@ class RenderMode<SampledSpectrum<float>> {
         BsdfCache& c = cache();
         if (scene_.materialTextures[std::size_t(material)].any()) {
             const SpectrumContext<Spectrum> context{path.lambda};
-            c.textured = buildBxdf(texturedMaterial(scene_, material, uv), context);
+            c.textured = buildBxdf(texturedMaterial(scene_, material, uv), context, seed_);
             return *c.textured;
         }
         if (c.pathId != path.id) {
@@ -112,7 +118,7 @@ class RenderMode<SampledSpectrum<float>> {
         auto& slot = c.bsdfs[std::size_t(material)];
         if (!slot) {
             const SpectrumContext<Spectrum> context{path.lambda};
-            slot = buildBxdf(scene_.materials[std::size_t(material)], context);
+            slot = buildBxdf(scene_.materials[std::size_t(material)], context, seed_);
         }
         return *slot;
     }
@@ -139,6 +145,7 @@ class RenderMode<SampledSpectrum<float>> {
     }
 
     const SceneDesc& scene_;
+    std::uint64_t seed_;
 };
 
 }  // namespace lamina::render

@@ -85,6 +85,8 @@ struct RenderSettings {
     MisHeuristic mis = MisHeuristic::Power;  ///< bdpt only
     int maxDepth = 16;                       ///< scattering events along a path
     int russianRouletteDepth = 5;
+    /// path only: false turns next-event estimation off (a BSDF-sampling-only reference)
+    bool nextEvent = true;
     int spp = 16;
     std::uint64_t seed = 0;
     SamplerKind sampler = SamplerKind::Sobol;

@@ -1,7 +1,9 @@
 // The `path` integrator: camera path tracing with next-event estimation and BSDF sampling
 // combined by multiple importance sampling (Veach 1997, ch. 9, power heuristic), emission
 // hit by BSDF sampling weighted the same way, Russian roulette on throughput, delta lobes and
-// delta lights handled. The same code runs in every render mode.
+// delta lights handled. The same code runs in every render mode. With `next_event` false
+// (RenderSettings::nextEvent) BSDF sampling is the only strategy: a reference that no light
+// sample and no MIS weight touches (delta lights, which no ray hits, then light nothing).
 #pragma once
 
 #include "lamina/render/integrator.h"
