@@ -303,9 +303,10 @@ TEST(SpectralMaterials, ColoursCollectedInAdvanceGiveTheSameBsdf) {
         const auto sa = fromTable->sample(wo, 0.3, {0.6, 0.2}, TransportMode::Radiance);
         const auto sb = collected->sample(wo, 0.3, {0.6, 0.2}, TransportMode::Radiance);
         ASSERT_EQ(sa.has_value(), sb.has_value());
-        if (sa)
+        if (sa) {
             for (int i = 0; i < 4; ++i)
                 EXPECT_EQ(sa->weight[i], sb->weight[i]) << i;
+        }
     }
 }
 

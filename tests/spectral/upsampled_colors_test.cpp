@@ -2,8 +2,6 @@
 // stays bounded whatever it is asked to keep.
 #include <gtest/gtest.h>
 
-#include <limits>
-
 #include "lamina/spectral/cie.h"
 #include "lamina/spectral/upsampled_colors.h"
 
@@ -40,11 +38,8 @@ TEST(UpsampledColors, KeptColoursAreTheTableLookups) {
 }
 
 TEST(UpsampledColors, StaysBounded) {
+    // A hundred different colours (what a textured material's builds would ask for).
     UpsampledColors colors;
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    for (int i = 0; i < 100; ++i)
-        colors.keep(Rgb<double>(nan, 0.5, 0.5), RgbSpectrumKind::Reflectance);  // never equal
-    EXPECT_EQ(colors.size(), UpsampledColors::kCapacity);
     for (int i = 0; i < 100; ++i)
         colors.keep(Rgb<double>(0.01 * i, 0.3, 0.2), RgbSpectrumKind::Reflectance);
     EXPECT_EQ(colors.size(), UpsampledColors::kCapacity);

@@ -14,8 +14,8 @@ namespace lamina {
 
 class UpsampledColors {
   public:
-    /// More than any material upsamples; a set that is full keeps nothing more (so colours
-    /// that never compare equal, NaN components for instance, cannot make it grow).
+    /// More than any material upsamples; a set that is full keeps nothing more (so a caller
+    /// that keeps ever new colours cannot make it grow).
     static constexpr std::size_t kCapacity = 16;
 
     /// The spectrum of `rgb` as `kind`: the one kept here, or else looked up in the table now.
