@@ -14,6 +14,14 @@ double cieZ(double nm) {
     return cie_data::kCmfZ(nm);
 }
 
+Vec3d cieXyz(double nm) {
+    // The three functions come from one table of colord-data (generate_cie_tables.cpp), so
+    // they share start, step and length: one position serves all three.
+    const std::optional<TabulatedCurve::Position> p = cie_data::kCmfY.locate(nm);
+    if (!p) return Vec3d(0.0);
+    return {cie_data::kCmfX.at(*p), cie_data::kCmfY.at(*p), cie_data::kCmfZ.at(*p)};
+}
+
 double cieYIntegral() {
     static const double integral = integrateAgainstCmf([](double) { return 1.0; }).y;
     return integral;

@@ -262,6 +262,54 @@ TEST(ConductorMaterial, InlineSpectraOfEtaAndK) {
                 "wavelengths must increase");
 }
 
+TEST(SpectralMaterials, ColoursCollectedInAdvanceGiveTheSameBsdf) {
+    // Spectral mode collects each material's colours once at load (render_mode.h) and builds
+    // it at every path from them: bit for bit the BSDF built from the table itself. One
+    // material per kind of colour input the builder upsamples.
+    const char* materials[] = {
+        R"({"type":"lambert","reflectance":[0.35,0.35,0.38]})",
+        R"({"type":"standard","base_color":[0.8,0.2,0.1],"roughness":0.3})",
+        R"({"type":"standard","base_color":[0.95,0.64,0.54],"metalness":1,"roughness":0.2})",
+        R"({"type":"standard","base_color":[0.9,0.6,0.2],"metalness":0.5,"fresnel":"f82",)"
+        R"("f82_tint":[1.1,0.9,0.8],"roughness":0.4})",
+        R"({"type":"conductor","f0":[0.9,0.6,0.3],"f82":[0.8,0.55,0.35],"roughness":0.3})",
+        R"({"type":"conductor","eta":[0.2,0.4,1.3],"k":[3.9,2.4,1.8],"roughness":0.3})",
+        R"({"type":"phong","reflectance":[0.6,0.3,0.2],"shininess":20})",
+        R"({"type":"diffuse_transmission","reflectance":[0.3,0.2,0.1],)"
+        R"("transmittance":[0.1,0.3,0.2]})",
+        R"({"type":"coated","roughness":0.1,"thickness":0.2,"albedo":[0.9,0.8,0.6],)"
+        R"("base":{"type":"lambert","reflectance":[0.2,0.5,0.3]}})",
+        R"({"type":"mix","a":{"type":"lambert","reflectance":[0.7,0.1,0.1]},)"
+        R"("b":{"type":"standard","base_color":[0.1,0.2,0.7]}})",
+    };
+    const Vec3<double> wo = normalize(Vec3<double>(0.3, -0.2, 0.8));
+    const Vec3<double> wi = normalize(Vec3<double>(-0.4, 0.1, 0.7));
+    for (const char* json : materials) {
+        SCOPED_TRACE(json);
+        const MaterialDesc m = parseMaterialArgument(json);
+        auto any = SampledWavelengths<double>::fixed({500, 500, 500, 500});
+        UpsampledColors colors;
+        (void)buildBxdf(m, SpectrumContext<SampledSpectrum<double>>{any, nullptr, &colors});
+        EXPECT_GT(colors.size(), 0u);
+        auto lambda = SampledWavelengths<double>::fixed({412, 487, 561, 688});
+        const auto fromTable = buildBxdf(m, SpectrumContext<SampledSpectrum<double>>{lambda});
+        const auto collected =
+            buildBxdf(m, SpectrumContext<SampledSpectrum<double>>{lambda, &colors});
+        const SampledSpectrum<double> a = fromTable->eval(wo, wi, TransportMode::Radiance);
+        const SampledSpectrum<double> b = collected->eval(wo, wi, TransportMode::Radiance);
+        EXPECT_GT(a.maxValue(), 0.0);
+        for (int i = 0; i < 4; ++i)
+            EXPECT_EQ(a[i], b[i]) << i;
+        const auto sa = fromTable->sample(wo, 0.3, {0.6, 0.2}, TransportMode::Radiance);
+        const auto sb = collected->sample(wo, 0.3, {0.6, 0.2}, TransportMode::Radiance);
+        ASSERT_EQ(sa.has_value(), sb.has_value());
+        if (sa) {
+            for (int i = 0; i < 4; ++i)
+                EXPECT_EQ(sa->weight[i], sb->weight[i]) << i;
+        }
+    }
+}
+
 TEST(DielectricMaterial, DispersiveGlassKeepsOnlyTheHeroWavelength) {
     const MaterialDesc glass = parseMaterialArgument(R"({"type":"dielectric","ior":"bk7"})");
     auto lambda = SampledWavelengths<float>::fixed({450, 550, 650, 700});

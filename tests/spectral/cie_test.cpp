@@ -20,6 +20,25 @@ TEST(Cie, TablesAreReadFromColord) {
     EXPECT_EQ(findCieIlluminant("D66"), nullptr);
 }
 
+TEST(Cie, XyzIsTheThreeFunctionsExactly) {
+    // cieXyz shares one table position among the three functions: bit for bit the same as
+    // looking each up, at knots, between them, at both ends and outside the range.
+    for (double nm : {300.0, 359.999, 360.0, 360.1, 412.5, 555.0, 557.3, 700.01, 829.9, 830.0,
+                      830.001, 900.0}) {
+        const Vec3d xyz = cieXyz(nm);
+        EXPECT_EQ(xyz.x, cieX(nm)) << nm;
+        EXPECT_EQ(xyz.y, cieY(nm)) << nm;
+        EXPECT_EQ(xyz.z, cieZ(nm)) << nm;
+    }
+    for (double nm = kLambdaMin; nm <= kLambdaMax; nm += 0.37) {
+        const Vec3d xyz = cieXyz(nm);
+        ASSERT_EQ(xyz.x, cieX(nm)) << nm;
+        ASSERT_EQ(xyz.y, cieY(nm)) << nm;
+        ASSERT_EQ(xyz.z, cieZ(nm)) << nm;
+    }
+    EXPECT_GT(cieXyz(830.0).x, 0.0);  // the last knot is inside
+}
+
 TEST(Cie, D65IntegratesToItsWhitePoint) {
     const Vec3d w = d65WhiteXyz();
     EXPECT_NEAR(w.x, 0.9505, 1e-3);

@@ -8,6 +8,7 @@
 #include "lamina/spectral/ior_spectrum.h"
 #include "lamina/spectral/rgb_to_spectrum.h"
 #include "lamina/spectral/sampled_wavelengths.h"
+#include "lamina/spectral/upsampled_colors.h"
 
 namespace lamina {
 
@@ -52,6 +53,12 @@ template <std::floating_point T>
 struct SpectrumContext<SampledSpectrum<T>> {
     static constexpr bool kSpectral = true;
     SampledWavelengths<T>& lambda;  ///< the path's: a dispersive material terminates it
+    /// The material's colours upsampled in advance (when the scene was loaded), or none:
+    /// then every colour is looked up in the table.
+    const UpsampledColors* colors = nullptr;
+    /// Where a build collects the colours it upsamples (done once per material at load,
+    /// to fill its UpsampledColors), or none.
+    UpsampledColors* collect = nullptr;
 
     /// A dispersive index splits the wavelengths into different directions: only the hero
     /// wavelength continues (Wilkie et al. 2014, section 4.3), with its own index.
@@ -67,7 +74,7 @@ struct SpectrumContext<SampledSpectrum<T>> {
     }
 
     SampledSpectrum<T> reflectance(const Rgb<double>& c) const {
-        return evaluate(RgbSpectrum(c, RgbSpectrumKind::Reflectance));
+        return evaluate(upsample(c, RgbSpectrumKind::Reflectance));
     }
     /// A colour input: its spectrum if it has one, else the upsampled colour.
     template <typename C>
@@ -81,7 +88,12 @@ struct SpectrumContext<SampledSpectrum<T>> {
     /// Grey values are constant spectra; others are upsampled as unbounded spectra (a tint).
     SampledSpectrum<T> unbounded(const Rgb<double>& c) const {
         if (c[0] == c[1] && c[1] == c[2]) return SampledSpectrum<T>(T(c[0]));
-        return evaluate(RgbSpectrum(c, RgbSpectrumKind::Unbounded));
+        return evaluate(upsample(c, RgbSpectrumKind::Unbounded));
+    }
+
+    RgbSpectrum upsample(const Rgb<double>& c, RgbSpectrumKind kind) const {
+        if (collect) collect->keep(c, kind);
+        return colors ? colors->spectrum(c, kind) : RgbSpectrum(c, kind);
     }
 
     template <typename F>

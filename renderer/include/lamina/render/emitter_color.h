@@ -3,11 +3,13 @@
 // RGB upsampled as an illuminant, so RGB (1, 1, 1) is D65 and stays white).
 #pragma once
 
+#include <array>
 #include <memory>
 #include <optional>
 
 #include "lamina/spectral/emission_spectrum.h"
 #include "lamina/spectral/rgb_to_spectrum.h"
+#include "lamina/spectral/sampled_wavelengths.h"
 
 namespace lamina::render {
 
@@ -31,6 +33,33 @@ class EmitterColor {
     Rgb<float> rgb_{0.0f};
     std::shared_ptr<const EmissionSpectrum> spectrum_;
     std::optional<RgbSpectrum> upsampled_;
+};
+
+/// The spectra of the emitters one spectral path has met, at its wavelengths: a path asks for
+/// the same few emitters again and again (next-event estimation samples a light at every
+/// vertex), and evaluating an emitter's spectrum costs per wavelength what its colour is (an
+/// upsampled RGB times D65, a black body, a table). A cache of the last kSlots emitters, valid
+/// for one set of wavelengths: it lives in the path, whose wavelengths are drawn once.
+template <typename Spectrum>
+class EmitterSpectra {
+  public:
+    static constexpr int kSlots = 4;
+
+    const Spectrum& at(const EmitterColor& color, const SampledWavelengths<float>& lambda) {
+        for (int k = 0; k < kSlots; ++k)
+            if (colors_[k] == &color) return values_[k];
+        const int k = next_;
+        next_ = (next_ + 1) % kSlots;
+        colors_[k] = &color;
+        for (int i = 0; i < Spectrum::kSize; ++i)
+            values_[k][i] = float(color.spectral(double(lambda[i])));
+        return values_[k];
+    }
+
+  private:
+    std::array<const EmitterColor*, kSlots> colors_{};
+    std::array<Spectrum, kSlots> values_{};
+    int next_ = 0;
 };
 
 /// Emitted radiance (or intensity / d^2, or irradiance): a colour times a scale. Image-based

@@ -45,7 +45,7 @@ class RenderMode<Rgb<float>> {
     static constexpr FilmSpace kFilmSpace = FilmSpace::Rec709;
 
     Path startPath(PixelSampler&) const { return {}; }
-    Spectrum emission(const Emission& e, const Path&) const { return e.rgb(); }
+    Spectrum emission(const Emission& e, Path&) const { return e.rgb(); }
     /// Valid until the next call from this thread (see the top of this file).
     const Bxdf<Spectrum>& bsdf(int material, const Vec2<float>& uv, Path&) const {
         if (!scene_.materialTextures[std::size_t(material)].any())
@@ -69,16 +69,29 @@ class RenderMode<Rgb<float>> {
 /// stays white), the film accumulating CIE XYZ:
 ///   XYZ = 1/N sum_i L(lambda_i) xyz-bar(lambda_i) / (p(lambda_i) integral of y-bar),
 /// which gives Y = 1 for a constant spectrum 1, as RGB mode gives luminance 1 for white 1.
+/// What does not depend on the wavelengths is done once: each material's RGB colours are
+/// upsampled when the mode is made (UpsampledColors), and a path keeps the spectra of the
+/// emitters it meets at its wavelengths (EmitterSpectra) for its later vertices.
 template <>
 class RenderMode<SampledSpectrum<float>> {
   public:
     using Spectrum = SampledSpectrum<float>;
     struct Path {
         SampledWavelengths<float> lambda;
-        std::uint64_t id = 0;  ///< distinguishes paths for the per-thread BSDF cache
+        std::uint64_t id = 0;               ///< distinguishes paths for the per-thread BSDF cache
+        EmitterSpectra<Spectrum> emitters;  ///< the emitters' spectra at lambda so far
     };
 
-    RenderMode(const SceneDesc& scene, std::uint64_t seed) : scene_(scene), seed_(seed) {}
+    // Every material is built once here, at arbitrary wavelengths, to collect the colours
+    // its builds upsample: the paths' builds then find their coefficients in colors_.
+    RenderMode(const SceneDesc& scene, std::uint64_t seed)
+        : scene_(scene), seed_(seed), colors_(scene.materials.size()) {
+        for (std::size_t m = 0; m < scene.materials.size(); ++m) {
+            SampledWavelengths<float> lambda = SampledWavelengths<float>::sample(0.5);
+            buildBxdf(scene.materials[m], SpectrumContext<Spectrum>{lambda, nullptr, &colors_[m]},
+                      seed_);
+        }
+    }
 
     static constexpr FilmSpace kFilmSpace = FilmSpace::Xyz;
 
@@ -86,17 +99,15 @@ class RenderMode<SampledSpectrum<float>> {
         return {SampledWavelengths<float>::sample(double(sampler.get1D())), ++cache().nextPathId};
     }
 
-    Spectrum emission(const Emission& e, const Path& path) const {
-        Spectrum out;
+    Spectrum emission(const Emission& e, Path& path) const {
         if (!e.color) {  // a texel: upsample once for the four wavelengths
+            Spectrum out;
             const RgbSpectrum s(Rgb<double>(e.texel), RgbSpectrumKind::Illuminant);
             for (int i = 0; i < Spectrum::kSize; ++i)
                 out[i] = float(s(double(path.lambda[i]))) * e.scale;
             return out;
         }
-        for (int i = 0; i < Spectrum::kSize; ++i)
-            out[i] = float(e.color->spectral(double(path.lambda[i]))) * e.scale;
-        return out;
+        return path.emitters.at(*e.color, path.lambda) * e.scale;
     }
 
     // A material's BSDF depends on the path's wavelengths: it is built at the first hit on
@@ -104,8 +115,10 @@ class RenderMode<SampledSpectrum<float>> {
     // cache, reset when the path changes). Valid until the next call from this thread.
     const Bxdf<Spectrum>& bsdf(int material, const Vec2<float>& uv, Path& path) const {
         BsdfCache& c = cache();
+        const UpsampledColors* colors = &colors_[std::size_t(material)];
         if (scene_.materialTextures[std::size_t(material)].any()) {
-            const SpectrumContext<Spectrum> context{path.lambda};
+            // Colours the textures do not replace are among those collected at load.
+            const SpectrumContext<Spectrum> context{path.lambda, colors};
             c.textured = buildBxdf(texturedMaterial(scene_, material, uv), context, seed_);
             return *c.textured;
         }
@@ -117,7 +130,7 @@ class RenderMode<SampledSpectrum<float>> {
         }
         auto& slot = c.bsdfs[std::size_t(material)];
         if (!slot) {
-            const SpectrumContext<Spectrum> context{path.lambda};
+            const SpectrumContext<Spectrum> context{path.lambda, colors};
             slot = buildBxdf(scene_.materials[std::size_t(material)], context, seed_);
         }
         return *slot;
@@ -146,6 +159,7 @@ class RenderMode<SampledSpectrum<float>> {
 
     const SceneDesc& scene_;
     std::uint64_t seed_;
+    std::vector<UpsampledColors> colors_;  ///< per material
 };
 
 }  // namespace lamina::render

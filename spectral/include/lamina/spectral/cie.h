@@ -19,9 +19,8 @@ inline constexpr double kLambdaMax = 830.0;
 double cieX(double nm);
 double cieY(double nm);
 double cieZ(double nm);
-inline Vec3d cieXyz(double nm) {
-    return {cieX(nm), cieY(nm), cieZ(nm)};
-}
+/// (cieX, cieY, cieZ) with one lookup: the three tables share their grid.
+Vec3d cieXyz(double nm);
 
 /// Integral of y-bar over [kLambdaMin, kLambdaMax] (about 106.86 nm).
 double cieYIntegral();
