@@ -47,8 +47,10 @@ const RgbToSpectrumTable& RgbToSpectrumTable::rec709() {
 }
 
 SigmoidPolynomial RgbToSpectrumTable::lookup(Rgb<double> rgb) const {
+    // Written so that a NaN component becomes 0: std::clamp would pass it on to the table
+    // indices below (out of the table). Components above 1 are 1.
     for (int c = 0; c < 3; ++c)
-        rgb[c] = std::clamp(rgb[c], 0.0, 1.0);
+        rgb[c] = rgb[c] > 0.0 ? std::min(rgb[c], 1.0) : 0.0;
     if (rgb[0] == rgb[1] && rgb[1] == rgb[2]) return SigmoidPolynomial::constant(rgb[0]);
     const int l = rgb[0] >= rgb[1] ? (rgb[0] >= rgb[2] ? 0 : 2) : (rgb[1] >= rgb[2] ? 1 : 2);
     const double z = rgb[l];

@@ -2,6 +2,9 @@
 // bounds, white light, and the unbiasedness of the hero-wavelength estimator.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+
 #include "lamina/core/pcg32.h"
 #include "lamina/spectral/cie.h"
 #include "lamina/spectral/color_space.h"
@@ -50,6 +53,24 @@ TEST(RgbToSpectrum, ReflectancesStayInTheUnitInterval) {
         for (double nm = kLambdaMin; nm <= kLambdaMax; nm += 5) {
             ASSERT_GE(s(nm), 0.0);
             ASSERT_LE(s(nm), 1.0);
+        }
+    }
+}
+
+// A colour computed from extreme inputs (inf - inf in a texture's arithmetic) may hold a NaN:
+// it upsamples as if that component were 0, never indexing out of the table.
+TEST(RgbToSpectrum, NotANumberComponentsUpsampleAsZero) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (const Rgb<double>& rgb :
+         {Rgb<double>(nan, 0.5, 0.2), Rgb<double>(0.3, nan, nan), Rgb<double>(nan)}) {
+        const RgbSpectrum reflectance(rgb, RgbSpectrumKind::Reflectance);
+        Rgb<double> zeroed = rgb;
+        for (int c = 0; c < 3; ++c)
+            zeroed[c] = std::isnan(rgb[c]) ? 0.0 : rgb[c];
+        const RgbSpectrum expected(zeroed, RgbSpectrumKind::Reflectance);
+        for (double nm = kLambdaMin; nm <= kLambdaMax; nm += 10) {
+            ASSERT_TRUE(std::isfinite(reflectance(nm))) << nm;
+            ASSERT_EQ(reflectance(nm), expected(nm)) << nm;
         }
     }
 }
