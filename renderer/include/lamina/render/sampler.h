@@ -86,73 +86,25 @@ inline std::uint32_t laineKarrasPermutation(std::uint32_t x, std::uint32_t seed)
 
 }  // namespace sobol_detail
 
-/// The scramble seeds of one pixel's dimensions. They depend on (seed, pixel, dimension) and
-/// not on the sample index, so the samples of a pixel share them: each dimension's three
-/// seeds (the index shuffle's and one per coordinate, three 64-bit hash finalisers) are
-/// computed at its first use in the pixel and looked up by the pixel's later samples. Not
-/// shared between threads.
-class PixelSeeds {
-  public:
-    struct Dimension {
-        std::uint32_t shuffle;  ///< the sample index's nested scramble
-        std::uint32_t first;    ///< the first coordinate's scramble
-        std::uint32_t second;   ///< the second coordinate's scramble
-    };
-
-    PixelSeeds(std::uint64_t seed, int x, int y)
-        : pixelSeed_(hashValues({seed, std::uint64_t(x), std::uint64_t(y)})),
-          dimensionSeedBase_(hashValues({pixelSeed_})) {}
-
-    std::uint64_t pixelSeed() const { return pixelSeed_; }
-
-    Dimension operator()(std::uint32_t dim) {
-        if (dim >= kCached) return compute(dim);
-        while (computed_ <= dim) {
-            cache_[computed_] = compute(computed_);
-            ++computed_;
-        }
-        return cache_[dim];
-    }
-
-  private:
-    // Paths of 16 bounces use about 90 dimensions; deeper ones compute the rest each time.
-    static constexpr std::uint32_t kCached = 128;
-
-    Dimension compute(std::uint32_t dim) const {
-        // hashValues({pixelSeed, dim}), its first step (which depends on the pixel alone)
-        // done once in the constructor.
-        const std::uint64_t h = dimensionSeedBase_;
-        const auto s = std::uint32_t(mixBits(h ^ (dim + 0x9e3779b97f4a7c15ULL + (h << 6u))));
-        return {s, mixSeed(s, 1), mixSeed(s, 2)};
-    }
-    static std::uint32_t mixSeed(std::uint32_t s, std::uint32_t k) {
-        return std::uint32_t(mixBits((std::uint64_t(s) << 8) ^ k));
-    }
-
-    std::uint64_t pixelSeed_;
-    std::uint64_t dimensionSeedBase_;
-    std::uint32_t computed_ = 0;
-    Dimension cache_[kCached];  // the first computed_ entries are set
-};
-
-/// One sample's random numbers: sample `sampleIndex` of the pixel whose seeds are `seeds`
-/// (which must outlive the sampler).
 class PixelSampler {
   public:
-    PixelSampler(SamplerKind kind, PixelSeeds& seeds, std::uint32_t sampleIndex)
-        : kind_(kind), reversedIndex_(sobol_detail::reverseBits(sampleIndex)), seeds_(&seeds) {
+    PixelSampler(SamplerKind kind, std::uint64_t seed, int x, int y, std::uint32_t sampleIndex)
+        : kind_(kind),
+          reversedIndex_(sobol_detail::reverseBits(sampleIndex)),
+          pixelSeed_(hashValues({seed, std::uint64_t(x), std::uint64_t(y)})),
+          dimensionSeedBase_(hashValues({pixelSeed_})) {
         // The Sobol sampler needs no generator; seeding one costs as much as a dimension.
         if (kind_ == SamplerKind::Independent)
-            rng_ = Pcg32(hashValues({seeds.pixelSeed(), sampleIndex}), seeds.pixelSeed());
+            rng_ = Pcg32(hashValues({pixelSeed_, sampleIndex}), pixelSeed_);
     }
 
     float get1D() {
         if (kind_ == SamplerKind::Independent) return get2D().x;
         // The first coordinate of the next 2D point, without computing the second.
         using namespace sobol_detail;
-        const PixelSeeds::Dimension d = (*seeds_)(dimension_++);
-        const std::uint32_t y = laineKarrasPermutation(reversedIndex_, d.shuffle);
-        return toFloat(reverseBits(laineKarrasPermutation(reverseBits(y), d.first)));
+        const std::uint32_t s = dimensionSeed(dimension_++);
+        const std::uint32_t y = laineKarrasPermutation(reversedIndex_, s);
+        return toFloat(reverseBits(laineKarrasPermutation(reverseBits(y), mixSeed(s, 1))));
     }
 
     /// The next dimension pair of the sample: the sample index shuffled by a nested uniform
@@ -171,22 +123,32 @@ class PixelSampler {
             return {a, rng_.nextFloat()};
         }
         using namespace sobol_detail;
-        const PixelSeeds::Dimension d = (*seeds_)(dimension_++);
-        const std::uint32_t y = laineKarrasPermutation(reversedIndex_, d.shuffle);
-        const std::uint32_t a = reverseBits(laineKarrasPermutation(reverseBits(y), d.first));
+        const std::uint32_t s = dimensionSeed(dimension_++);
+        const std::uint32_t y = laineKarrasPermutation(reversedIndex_, s);
+        const std::uint32_t a = reverseBits(laineKarrasPermutation(reverseBits(y), mixSeed(s, 1)));
         const std::uint32_t b =
-            reverseBits(laineKarrasPermutation(kReversedSobolDimension1(y), d.second));
+            reverseBits(laineKarrasPermutation(kReversedSobolDimension1(y), mixSeed(s, 2)));
         return {toFloat(a), toFloat(b)};
     }
 
   private:
+    /// hashValues({pixelSeed, dim}), its first step (which depends on the pixel alone) done
+    /// once in the constructor.
+    std::uint32_t dimensionSeed(std::uint32_t dim) const {
+        const std::uint64_t h = dimensionSeedBase_;
+        return std::uint32_t(mixBits(h ^ (dim + 0x9e3779b97f4a7c15ULL + (h << 6u))));
+    }
+    static std::uint32_t mixSeed(std::uint32_t s, std::uint32_t k) {
+        return std::uint32_t(mixBits((std::uint64_t(s) << 8) ^ k));
+    }
     static float toFloat(std::uint32_t v) {
         return std::min(kOneMinusEpsilon<float>, float(v >> 8) * 0x1p-24f);
     }
 
     SamplerKind kind_;
     std::uint32_t reversedIndex_;
-    PixelSeeds* seeds_;
+    std::uint64_t pixelSeed_;
+    std::uint64_t dimensionSeedBase_;
     Pcg32 rng_;
     std::uint32_t dimension_ = 0;
 };
