@@ -76,5 +76,14 @@ def test_layering():
         n = len(m["map_angles"])
         assert t["map_error"].shape == (n, n)
         assert np.all(np.abs(t["map_error"]) < 1e-6)
+    # Coated gold's twins are one pass through the coat over the rough conductor (the note
+    # says so); a smooth conductor base has no twin at all.
     (gold,) = lamina.layering(["coated-gold"], estimates=4, albedo_samples=256)
-    assert gold["twins"] == [] and "conductor" in gold["note"]
+    assert [t["name"] for t in gold["twins"]] == ["fresnel coupling", "albedo coupling"]
+    assert "one pass" in gold["note"]
+    for t in gold["twins"]:
+        assert np.all((t["albedo"] > 0) & (t["albedo"] < 1))
+    (mirror,) = lamina.layering(
+        ['{"type":"coated","ior":1.5,"base":{"type":"conductor","material":"Au","roughness":0}}'],
+        estimates=2, albedo_samples=64)
+    assert mirror["twins"] == [] and "smooth conductor" in mirror["note"]
