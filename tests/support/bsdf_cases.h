@@ -5,7 +5,9 @@
 // (bsdf_properties_test.cpp, material_test.cpp) cover them.
 #pragma once
 
+#include <functional>
 #include <memory>
+#include <mutex>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -21,9 +23,40 @@ namespace lamina::testing {
 
 using Spec = Rgb<double>;
 
+/// A case's BSDF, built when a test first dereferences it. gtest enumerates the catalogue in
+/// every test process, and CTest starts one process per test: a material with energy
+/// compensation computes its albedo tables when it is built, and building all of them up front
+/// cost every one of those processes about 0.8 s.
+class LazyBxdf {
+  public:
+    using Make = std::function<std::shared_ptr<const Bxdf<Spec>>()>;
+
+    template <class B>
+    LazyBxdf(std::shared_ptr<B> built) : state_(std::make_shared<State>()) {
+        state_->bxdf = std::move(built);
+        std::call_once(state_->once, [] {});
+    }
+    explicit LazyBxdf(Make make) : state_(std::make_shared<State>()) {
+        state_->make = std::move(make);
+    }
+
+    const Bxdf<Spec>& operator*() const {
+        std::call_once(state_->once, [s = state_.get()] { s->bxdf = s->make(); });
+        return *state_->bxdf;
+    }
+
+  private:
+    struct State {
+        std::once_flag once;
+        Make make;
+        std::shared_ptr<const Bxdf<Spec>> bxdf;
+    };
+    std::shared_ptr<State> state_;  ///< shared by the copies gtest makes of a case
+};
+
 struct BsdfCase {
     std::string name;
-    std::shared_ptr<const Bxdf<Spec>> bxdf;
+    LazyBxdf bxdf;
     bool transmissive = false;
     double eta = 1.0;  ///< relative index of the transmissive boundary (inside / outside)
 };
@@ -169,11 +202,11 @@ inline std::vector<BsdfCase> bsdfCases() {
 
     // Energy-compensated materials: Kulla-Conty multiple scattering and the albedo coupling.
     auto material = [](const std::string& json) {
-        return std::shared_ptr<const Bxdf<Spec>>(
-            buildBxdf(parseMaterialArgument(json), SpectrumContext<Spec>{}));
+        return LazyBxdf([json] {
+            return std::shared_ptr<const Bxdf<Spec>>(
+                buildBxdf(parseMaterialArgument(json), SpectrumContext<Spec>{}));
+        });
     };
-    // Gold's n, k as numbers: bsdf_chi2_test.cpp builds the catalogue during static
-    // initialisation, when the table of named metals may not exist yet.
     cases.push_back(
         {"layered_conductor_albedo_gold",
          material(R"({"type":"layered","interface":{"roughness":0.15,"ior":1.5,)"
@@ -215,8 +248,10 @@ inline std::vector<BsdfCase> bsdfCases() {
 /// statistical ones over these (docs/bsdf.md, "coated").
 inline std::vector<BsdfCase> coatedCases() {
     auto material = [](const std::string& json) {
-        return std::shared_ptr<const Bxdf<Spec>>(
-            buildBxdf(parseMaterialArgument(json), SpectrumContext<Spec>{}));
+        return LazyBxdf([json] {
+            return std::shared_ptr<const Bxdf<Spec>>(
+                buildBxdf(parseMaterialArgument(json), SpectrumContext<Spec>{}));
+        });
     };
     return {
         {"coated_rough_lambert",
