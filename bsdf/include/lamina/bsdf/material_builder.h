@@ -283,4 +283,28 @@ std::unique_ptr<Bxdf<S>> buildBxdf(const MaterialDesc& desc, const SpectrumConte
     return MaterialBuilder<S>(context, walkSeed).build(desc);
 }
 
+// The BSDF templates are compiled once, in bsdf_instantiations.cpp, for the four variants.
+// Without these declarations every file that builds a material (every renderer file that
+// includes render_mode.h, every command, every test) compiled the whole stack again for each
+// variant it touched: about a third of a renderer file's compile time, and of the CI's.
+// Callers reach the models through Bxdf's virtual functions, so nothing they inline is lost.
+#define LAMINA_EXTERN_BSDF_VARIANTS(Class)               \
+    extern template class Class<Rgb<float>>;             \
+    extern template class Class<Rgb<double>>;            \
+    extern template class Class<SampledSpectrum<float>>; \
+    extern template class Class<SampledSpectrum<double>>;
+LAMINA_EXTERN_BSDF_VARIANTS(DiffuseBxdf)
+LAMINA_EXTERN_BSDF_VARIANTS(ConductorBxdf)
+LAMINA_EXTERN_BSDF_VARIANTS(DielectricBxdf)
+LAMINA_EXTERN_BSDF_VARIANTS(DiffuseTransmissionBxdf)
+LAMINA_EXTERN_BSDF_VARIANTS(ThinDielectricBxdf)
+LAMINA_EXTERN_BSDF_VARIANTS(LayeredBxdf)
+LAMINA_EXTERN_BSDF_VARIANTS(MicrofacetReflectionLobe)
+LAMINA_EXTERN_BSDF_VARIANTS(MixBxdf)
+LAMINA_EXTERN_BSDF_VARIANTS(CoatedBxdf)
+LAMINA_EXTERN_BSDF_VARIANTS(MaterialBuilder)
+#undef LAMINA_EXTERN_BSDF_VARIANTS
+extern template class MicrofacetDistribution<float>;
+extern template class MicrofacetDistribution<double>;
+
 }  // namespace lamina
