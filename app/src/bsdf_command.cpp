@@ -17,6 +17,7 @@
 #include "lamina/bsdf/material_builder.h"
 #include "lamina/core/chi_square_test.h"
 #include "lamina/core/error.h"
+#include "lamina/core/json_reader.h"
 #include "lamina/core/output_files.h"
 #include "lamina/experiments/svg_heat_map.h"
 #include "lamina/experiments/svg_plot.h"

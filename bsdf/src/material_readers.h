@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "lamina/bsdf/material_builder.h"
+#include "lamina/core/json_reader.h"
 
 namespace lamina {
 

@@ -14,6 +14,7 @@
 #include "lamina/bsdf/albedo_estimate.h"
 #include "lamina/bsdf/material_builder.h"
 #include "lamina/core/error.h"
+#include "lamina/core/json_reader.h"
 #include "lamina/render/renderer.h"
 
 namespace lamina::python {

@@ -13,6 +13,7 @@
 #include "arrays.h"
 #include "bindings.h"
 #include "lamina/core/error.h"
+#include "lamina/core/json_reader.h"
 #include "lamina/render/image_output.h"
 #include "lamina/render/render_limits.h"
 #include "lamina/render/render_metadata.h"

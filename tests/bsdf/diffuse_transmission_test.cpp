@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "lamina/bsdf/material_builder.h"
+#include "lamina/core/error.h"
 
 namespace lamina {
 namespace {

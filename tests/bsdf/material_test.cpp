@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "lamina/bsdf/material_builder.h"
+#include "lamina/core/error.h"
 
 namespace lamina {
 namespace {

@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "lamina/bsdf/material_builder.h"
+#include "lamina/core/error.h"
 
 namespace lamina {
 namespace {

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "lamina/bsdf/material_builder.h"
+#include "lamina/core/error.h"
 #include "lamina/core/pcg32.h"
 
 namespace lamina {

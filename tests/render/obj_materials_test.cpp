@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "lamina/core/json_reader.h"
 #include "lamina/render/scene_description.h"
 #include "scratch_directory.h"
 

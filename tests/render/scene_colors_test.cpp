@@ -4,6 +4,7 @@
 // {"texture": name} stays a texture reference.
 #include <gtest/gtest.h>
 
+#include "lamina/core/json_reader.h"
 #include "lamina/render/scene_description.h"
 
 namespace lamina::render {

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "lamina/core/json_reader.h"
 #include "lamina/render/renderer.h"
 
 namespace lamina::testing {

@@ -1,4 +1,5 @@
 #include "lamina/render/material_textures.h"
+#include "lamina/core/json_reader.h"
 
 #include <algorithm>
 

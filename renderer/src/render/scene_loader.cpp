@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "lamina/core/printable.h"
+#include "lamina/render/scene_import.h"
 #include "lamina/render/scene_readers.h"
 
 namespace lamina::render {

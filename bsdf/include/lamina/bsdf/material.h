@@ -15,13 +15,16 @@
 #include "lamina/bsdf/diffuse.h"
 #include "lamina/bsdf/layered.h"
 #include "lamina/bsdf/microfacet_distribution.h"
-#include "lamina/core/json_reader.h"
 #include "lamina/core/name_table.h"
 #include "lamina/core/spectrum.h"
 #include "lamina/spectral/ior_spectrum.h"
 #include "lamina/spectral/nk_table.h"
 
 namespace lamina {
+
+// Declared only: the JSON library is the costliest header of the build, and most files that
+// use materials never parse one (bsdf/src/*_reader.cpp include core/json_reader.h).
+class JsonReader;
 
 using RgbInput = Rgb<double>;
 

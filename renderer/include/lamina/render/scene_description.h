@@ -14,8 +14,12 @@
 #include "lamina/core/name_table.h"
 #include "lamina/core/vector.h"
 #include "lamina/render/material_textures.h"
-#include "lamina/render/scene_import.h"
+#include "lamina/render/scene_format.h"
 #include "lamina/spectral/emission_spectrum.h"
+
+namespace lamina {
+struct JsonSource;  // core/json_reader.h
+}
 
 namespace lamina::render {
 

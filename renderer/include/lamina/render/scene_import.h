@@ -16,15 +16,9 @@
 #include <vector>
 
 #include "lamina/core/json_reader.h"
-#include "lamina/core/name_table.h"
+#include "lamina/render/scene_format.h"
 
 namespace lamina::render {
-
-/// The formats `lamina render`, `info` and `convert` read.
-enum class SceneFormat { Lamina, Pbrt, Mitsuba };
-inline constexpr NameTable kSceneFormatNames{
-    std::array{NameEntry{SceneFormat::Lamina, "lamina"}, NameEntry{SceneFormat::Pbrt, "pbrt-v4"},
-               NameEntry{SceneFormat::Mitsuba, "mitsuba"}}};
 
 /// A translated scene.
 struct ImportedScene {

@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "lamina/core/json_reader.h"
 #include "lamina/render/scene_description.h"
 
 namespace lamina::render {
