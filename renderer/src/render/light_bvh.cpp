@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <optional>
 
 namespace lamina::render {
 
@@ -47,7 +48,7 @@ int LightBvh::build(std::vector<Entry>& lights, std::size_t begin, std::size_t e
     depth_ = std::max(depth_, depth);
     if (end - begin == 1) {
         Node& leaf = nodes_[std::size_t(index)];
-        leaf.bounds = lights[begin].bounds;
+        leaf.bounds = ImportanceBounds(lights[begin].bounds);
         leaf.light = lights[begin].light;
         leafOf_[leaf.light] = index;
         return index;
@@ -124,7 +125,7 @@ int LightBvh::build(std::vector<Entry>& lights, std::size_t begin, std::size_t e
     const int left = build(lights, begin, mid, index, depth + 1);
     const int right = build(lights, mid, end, index, depth + 1);
     Node& node = nodes_[std::size_t(index)];
-    node.bounds = all;
+    node.bounds = ImportanceBounds(all);
     node.left = left;
     node.right = right;
     return index;
@@ -139,22 +140,20 @@ float LightBvh::leftProbability(const Node& node, const Vec3f& p, const Vec3f& n
     return float(l / (l + r));
 }
 
-std::optional<LightChoice> LightBvh::choose(const Vec3f& p, const Vec3f& n, float u) const {
-    if (nodes_.empty()) return std::nullopt;
+LightChoice LightBvh::choose(const Vec3f& p, const Vec3f& n, float u) const {
     const Node* node = &nodes_.front();
     float probability = 1.0f;
     while (!node->leaf()) {
         const float pLeft = leftProbability(*node, p, n);
+        const bool left = u < pLeft;
+        probability *= left ? pLeft : 1.0f - pLeft;
+        node = &nodes_[std::size_t(left ? node->left : node->right)];
         // u is reused below: rescaled to [0, 1) within the part of it that chose the child.
-        if (u < pLeft) {
-            u = std::min(u / pLeft, kOneMinusEpsilon<float>);
-            probability *= pLeft;
-            node = &nodes_[std::size_t(node->left)];
-        } else {
-            u = std::min((u - pLeft) / (1.0f - pLeft), kOneMinusEpsilon<float>);
-            probability *= 1.0f - pLeft;
-            node = &nodes_[std::size_t(node->right)];
-        }
+        // A leaf uses no more of it (and the two-light tree of a quad lamp then divides not
+        // at all).
+        if (node->leaf()) break;
+        u = left ? std::min(u / pLeft, kOneMinusEpsilon<float>)
+                 : std::min((u - pLeft) / (1.0f - pLeft), kOneMinusEpsilon<float>);
     }
     return LightChoice{node->light, probability};
 }

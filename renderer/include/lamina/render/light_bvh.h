@@ -9,7 +9,6 @@
 #pragma once
 
 #include <cstddef>
-#include <optional>
 #include <vector>
 
 #include "lamina/render/light_bounds.h"
@@ -36,11 +35,12 @@ class LightBvh {
     explicit LightBvh(std::vector<Entry> lights);
 
     bool empty() const { return nodes_.empty(); }
-    /// Picks a light for point `p` with surface normal `n` (the zero vector: none); nullopt
-    /// only for an empty tree. A light that cannot send light to p has probability 0 unless
-    /// its cluster's bounds could and none of the cluster's parts can (then the parts are
-    /// taken half and half), so the probabilities always sum to 1.
-    std::optional<LightChoice> choose(const Vec3f& p, const Vec3f& n, float u) const;
+    /// Picks a light for point `p` with surface normal `n` (the zero vector: none); the tree
+    /// must not be empty. A light that cannot send light to p has probability 0 unless its
+    /// cluster's bounds could and none of the cluster's parts can (then the parts are taken
+    /// half and half), so the probabilities always sum to 1. (Not an optional: a LightChoice
+    /// comes back in registers, and this runs at every next-event estimate.)
+    LightChoice choose(const Vec3f& p, const Vec3f& n, float u) const;
     /// The probability that choose(p, n, u) returns `light` for a uniform u (0 for a light
     /// that is not in the tree).
     float probability(std::size_t light, const Vec3f& p, const Vec3f& n) const;
@@ -49,7 +49,7 @@ class LightBvh {
 
   private:
     struct Node {
-        LightBounds bounds;
+        ImportanceBounds bounds;
         int left = -1, right = -1;  ///< children; -1 for a leaf
         int parent = -1;
         std::size_t light = 0;  ///< a leaf's light
