@@ -5,10 +5,10 @@
 // environment, which next-event estimation leaves to BSDF sampling) and scenes/many-lights.json
 // (1056 lights). Chi-square: 400 000 draws per point, cells with an
 // expected count below 5 pooled, 8 points at a family-wise significance of 1% (Sidak).
-// The tree keeps its nodes' bounds prepared for the importance (ImportanceBounds) and skips
-// work whose result is unused: the importance and the probabilities must be the same floats
-// as by the definition, at random bounds and points, in the two-light tree of the Cornell box
-// and in a one-light tree.
+// The tree keeps its nodes' children's bounds prepared for the importance and evaluates the
+// two together (ImportancePair) and skips work whose result is unused: the importances and
+// the probabilities must be the same floats as by the definition, at random bounds and
+// points, in the two-light tree of the Cornell box and in a one-light tree.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -308,9 +308,12 @@ LightBounds randomBounds(Pcg32& rng) {
     return b;
 }
 
+// The prepared bounds (ImportanceBounds) and the tree's two-at-a-time evaluation
+// (ImportancePair, SSE lanes) against the definition, bit for bit.
 TEST(LightBvh, PreparedBoundsGiveTheImportanceOfTheDefinition) {
     Pcg32 rng(21);
     int positive = 0;
+    LightBounds previous = randomBounds(rng);
     for (int k = 0; k < 200000; ++k) {
         const LightBounds b = randomBounds(rng);
         // Points outside and inside the box, and its centre (distance 0).
@@ -329,7 +332,19 @@ TEST(LightBvh, PreparedBoundsGiveTheImportanceOfTheDefinition) {
             << "sample " << k << ": " << prepared << " against " << expected;
         ASSERT_EQ(std::bit_cast<std::uint32_t>(b.importance(p, n)),
                   std::bit_cast<std::uint32_t>(expected));
+        // The pair in both orders: each lane is its cluster's importance.
+        const float other = importanceByTheDefinition(previous, p, n);
+        const auto ab =
+            ImportancePair(ImportanceBounds(b), ImportanceBounds(previous)).importances(p, n);
+        const auto ba =
+            ImportancePair(ImportanceBounds(previous), ImportanceBounds(b)).importances(p, n);
+        ASSERT_EQ(std::bit_cast<std::uint32_t>(ab[0]), std::bit_cast<std::uint32_t>(expected))
+            << "sample " << k << ": " << ab[0] << " against " << expected;
+        ASSERT_EQ(std::bit_cast<std::uint32_t>(ab[1]), std::bit_cast<std::uint32_t>(other));
+        ASSERT_EQ(std::bit_cast<std::uint32_t>(ba[0]), std::bit_cast<std::uint32_t>(other));
+        ASSERT_EQ(std::bit_cast<std::uint32_t>(ba[1]), std::bit_cast<std::uint32_t>(expected));
         if (expected > 0.0f) ++positive;
+        previous = b;
     }
     EXPECT_GT(positive, 50000);  // the comparisons are not all of zeros
 }

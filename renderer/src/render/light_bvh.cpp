@@ -40,18 +40,17 @@ LightBvh::LightBvh(std::vector<Entry> lights) {
     build(lights, 0, lights.size(), -1, 0);
 }
 
-int LightBvh::build(std::vector<Entry>& lights, std::size_t begin, std::size_t end, int parent,
-                    int depth) {
+LightBounds LightBvh::build(std::vector<Entry>& lights, std::size_t begin, std::size_t end,
+                            int parent, int depth) {
     const int index = int(nodes_.size());
     nodes_.emplace_back();
     nodes_[std::size_t(index)].parent = parent;
     depth_ = std::max(depth_, depth);
     if (end - begin == 1) {
         Node& leaf = nodes_[std::size_t(index)];
-        leaf.bounds = ImportanceBounds(lights[begin].bounds);
         leaf.light = lights[begin].light;
         leafOf_[leaf.light] = index;
-        return index;
+        return lights[begin].bounds;
     }
 
     LightBounds all = lights[begin].bounds;
@@ -122,18 +121,20 @@ int LightBvh::build(std::vector<Entry>& lights, std::size_t begin, std::size_t e
                              return a.bounds.center()[axis] < b.bounds.center()[axis];
                          });
     }
-    const int left = build(lights, begin, mid, index, depth + 1);
-    const int right = build(lights, mid, end, index, depth + 1);
+    const int left = int(nodes_.size());
+    const LightBounds leftBounds = build(lights, begin, mid, index, depth + 1);
+    const int right = int(nodes_.size());
+    const LightBounds rightBounds = build(lights, mid, end, index, depth + 1);
     Node& node = nodes_[std::size_t(index)];
-    node.bounds = ImportanceBounds(all);
+    node.children = ImportancePair(ImportanceBounds(leftBounds), ImportanceBounds(rightBounds));
     node.left = left;
     node.right = right;
-    return index;
+    return all;
 }
 
 float LightBvh::leftProbability(const Node& node, const Vec3f& p, const Vec3f& n) const {
-    const double l = nodes_[std::size_t(node.left)].bounds.importance(p, n);
-    const double r = nodes_[std::size_t(node.right)].bounds.importance(p, n);
+    const auto [left, right] = node.children.importances(p, n);
+    const double l = left, r = right;
     // Neither child can send light to p although the node's looser bounds allowed it: halves,
     // so that the probabilities still sum to 1 (the lights reached contribute nothing).
     if (!(l + r > 0.0)) return 0.5f;

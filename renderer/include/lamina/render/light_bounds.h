@@ -6,11 +6,9 @@
 // importance), with pbrt-v4's normal term at the receiver (LightBounds::Importance).
 #pragma once
 
-#include <algorithm>
-#include <cmath>
-#include <limits>
+#include <array>
+#include <cstddef>
 
-#include "lamina/core/math.h"
 #include "lamina/core/vector.h"
 
 namespace lamina::render {
@@ -36,11 +34,9 @@ struct LightBounds {
 };
 
 /// LightBounds in the form the importance is computed from, with what depends on the bounds
-/// alone (the centre, the bounding sphere's squared radius, sin theta_o) computed once: the
-/// light BVH's nodes keep their bounds so, since choosing a light evaluates two importances per
-/// level at every next-event estimate. importance() is defined here, inline, so that the
-/// tree's two evaluations per level compile into one function; it is the only definition
-/// (LightBounds::importance converts and calls it), so both give the same float.
+/// alone (the centre, the bounding sphere's squared radius, sin theta_o) computed once.
+/// importance() is the one definition of the importance (LightBounds::importance converts and
+/// calls it; ImportancePair computes the same floats two at a time).
 struct ImportanceBounds {
     Vec3f center{0.0f};
     float radius2 = 0.0f;  ///< the squared radius of the box's bounding sphere
@@ -50,17 +46,29 @@ struct ImportanceBounds {
     bool twoSided = false;
 
     ImportanceBounds() = default;
-    explicit ImportanceBounds(const LightBounds& b)
-        : center(b.center()),
-          radius2(0.25f * lengthSquared(b.upper - b.lower)),
-          axis(b.axis),
-          cosThetaO(b.cosThetaO),
-          sinThetaO(safeSqrt(1.0f - b.cosThetaO * b.cosThetaO)),
-          cosThetaE(b.cosThetaE),
-          intensity(b.intensity),
-          twoSided(b.twoSided) {}
+    explicit ImportanceBounds(const LightBounds& b);
+    float importance(const Vec3f& p, const Vec3f& n) const;
+};
 
-    inline float importance(const Vec3f& p, const Vec3f& n) const;
+/// Two clusters' ImportanceBounds side by side, for the light BVH, whose walk weighs the two
+/// children of a node against each other at every level of every next-event estimate.
+/// importances() evaluates both at once, lane by lane with SSE where the target has it: each
+/// lane does the IEEE operations of ImportanceBounds::importance in the same order (branches
+/// become selections), so it gives the same two floats, bit for bit.
+class ImportancePair {
+  public:
+    ImportancePair() = default;
+    ImportancePair(const ImportanceBounds& a, const ImportanceBounds& b);
+    /// {a.importance(p, n), b.importance(p, n)}.
+    std::array<float, 2> importances(const Vec3f& p, const Vec3f& n) const;
+
+  private:
+    ImportanceBounds lane(std::size_t k) const;
+
+    // Index 0: a, 1: b.
+    std::array<float, 2> cx_{}, cy_{}, cz_{}, radius2_{}, ax_{}, ay_{}, az_{}, cosO_{}, sinO_{},
+        cosE_{}, intensity_{};
+    std::array<bool, 2> twoSided_{};
 };
 
 /// The bounds of two clusters together: the union of the boxes, the smallest cone of normals
@@ -71,66 +79,5 @@ LightBounds unite(const LightBounds& a, const LightBounds& b);
 /// The cone of normals' solid-angle measure M_Omega, weighted by the cosine of emission
 /// (Conty Estevez and Kulla 2018, eq. 1), the orientation factor of the split cost.
 float orientationMeasure(const LightBounds& b);
-
-namespace detail {
-
-// cos(max(0, a - b)) and sin(max(0, a - b)) for angles a, b in [0, pi] given by their cosines
-// and sines, without an acos.
-inline float cosOfClampedDifference(float cosA, float sinA, float cosB, float sinB) {
-    if (cosA >= cosB) return 1.0f;
-    return cosA * cosB + sinA * sinB;
-}
-
-inline float sinOfClampedDifference(float cosA, float sinA, float cosB, float sinB) {
-    if (cosA >= cosB) return 0.0f;
-    return sinA * cosB - cosA * sinB;
-}
-
-inline float sinFromCos(float c) {
-    return safeSqrt(1.0f - c * c);
-}
-
-}  // namespace detail
-
-inline float ImportanceBounds::importance(const Vec3f& p, const Vec3f& n) const {
-    using detail::cosOfClampedDifference, detail::sinOfClampedDifference, detail::sinFromCos;
-    const Vec3f fromCenter = p - center;
-    const float d2 = glm::dot(fromCenter, fromCenter);
-    // theta_u: the half-angle of the cone from p that holds the cluster's bounding sphere (pi
-    // when p is inside it, so every angle below clamps to 0).
-    float cosU = -1.0f, sinU = 0.0f;
-    if (d2 > radius2) {
-        const float sin2U = radius2 / d2;
-        cosU = safeSqrt(1.0f - sin2U);
-        sinU = std::sqrt(sin2U);
-    }
-    const Vec3f w = d2 > 0.0f ? fromCenter / std::sqrt(d2) : Vec3f(0.0f);
-
-    // theta' = max(0, theta - theta_o - theta_u), theta the angle between the axis and the
-    // direction towards p (Conty Estevez and Kulla 2018, eq. 3); beyond theta_e no light of
-    // the cluster can leave towards p.
-    float cosTheta = glm::dot(axis, w);
-    if (twoSided) cosTheta = std::abs(cosTheta);
-    const float sinTheta = sinFromCos(cosTheta);
-    const float cosX = cosOfClampedDifference(cosTheta, sinTheta, cosThetaO, sinThetaO);
-    const float sinX = sinOfClampedDifference(cosTheta, sinTheta, cosThetaO, sinThetaO);
-    const float cosThetaP = cosOfClampedDifference(cosX, sinX, cosU, sinU);
-    if (cosThetaP <= cosThetaE) return 0.0f;
-
-    // The distance is the centre's, but no less than half the bounding radius: near the
-    // centre of a cluster its distance says little, and a point on a light would weigh
-    // infinitely. (A bound of the whole radius, measured on scenes/many-lights.json, gives
-    // 4x the variance: it makes every cluster around the point look equally far.)
-    float value =
-        intensity * cosThetaP / std::max({d2, 0.25f * radius2, std::numeric_limits<float>::min()});
-    if (n != Vec3f(0.0f)) {
-        // The receiver's cosine, |cos| so that transmission is not culled, at the smallest
-        // angle a direction into the bounding sphere can make with n.
-        const float cosI = std::abs(glm::dot(n, w));
-        value *= cosOfClampedDifference(cosI, sinFromCos(cosI), cosU, sinU);
-    }
-    if (!(value > 0.0f)) return 0.0f;
-    return std::min(value, std::numeric_limits<float>::max());
-}
 
 }  // namespace lamina::render

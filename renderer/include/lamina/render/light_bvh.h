@@ -49,16 +49,17 @@ class LightBvh {
 
   private:
     struct Node {
-        ImportanceBounds bounds;
+        ImportancePair children;    ///< the bounds of the left and the right child
         int left = -1, right = -1;  ///< children; -1 for a leaf
         int parent = -1;
         std::size_t light = 0;  ///< a leaf's light
         bool leaf() const { return left < 0; }
     };
 
-    /// Builds the subtree of lights [begin, end) at `depth` under `parent`; returns its node.
-    int build(std::vector<Entry>& lights, std::size_t begin, std::size_t end, int parent,
-              int depth);
+    /// Builds the subtree of lights [begin, end) at `depth` under `parent` (its root is the
+    /// next node); returns the subtree's bounds.
+    LightBounds build(std::vector<Entry>& lights, std::size_t begin, std::size_t end, int parent,
+                      int depth);
     /// The probability of taking the left child of interior node `node` at (p, n), in
     /// proportion to the children's importance (1/2 when both are 0).
     float leftProbability(const Node& node, const Vec3f& p, const Vec3f& n) const;
