@@ -5,9 +5,15 @@
 // environment, which next-event estimation leaves to BSDF sampling) and scenes/many-lights.json
 // (1056 lights). Chi-square: 400 000 draws per point, cells with an
 // expected count below 5 pooled, 8 points at a family-wise significance of 1% (Sidak).
+// The tree keeps its nodes' children's bounds prepared for the importance and evaluates the
+// two together (ImportancePair) and skips work whose result is unused: the importances and
+// the probabilities must be the same floats as by the definition, at random bounds and
+// points, in the two-light tree of the Cornell box and in a one-light tree.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <bit>
+#include <cmath>
 #include <filesystem>
 
 #include "chi2_helpers.h"
@@ -246,6 +252,162 @@ TEST(LightBvh, LightsThatCannotReachThePointAreNeverChosen) {
     const Vec3f centre = lights.light(rectangle).bounds()->center();
     EXPECT_EQ(lights.probability(rectangle, centre - 2.0f * n, Vec3f(0.0f)), 0.0f);
     EXPECT_GT(lights.probability(rectangle, centre + 2.0f * n, Vec3f(0.0f)), 0.0f);
+}
+
+// Conty Estevez and Kulla 2018, eq. 3, with pbrt-v4's receiver term, everything derived from
+// the bounds at the query, in the order of operations LightBounds::importance had before the
+// tree's nodes kept ImportanceBounds (the prepared form must give the same float, so that
+// images and every probability stay as they were).
+float importanceByTheDefinition(const LightBounds& b, const Vec3f& p, const Vec3f& n) {
+    const auto sinOf = [](float c) { return safeSqrt(1.0f - c * c); };
+    // cos and sin of max(0, a - b) from the angles' cosines and sines.
+    const auto cosMinus = [](float cosA, float sinA, float cosB, float sinB) {
+        return cosA >= cosB ? 1.0f : cosA * cosB + sinA * sinB;
+    };
+    const auto sinMinus = [](float cosA, float sinA, float cosB, float sinB) {
+        return cosA >= cosB ? 0.0f : sinA * cosB - cosA * sinB;
+    };
+    const Vec3f toP = p - 0.5f * (b.lower + b.upper);
+    const float d2 = glm::dot(toP, toP);
+    const float r2 = 0.25f * lengthSquared(b.upper - b.lower);
+    const float cosU = d2 > r2 ? safeSqrt(1.0f - r2 / d2) : -1.0f;
+    const float sinU = d2 > r2 ? std::sqrt(r2 / d2) : 0.0f;
+    const Vec3f w = d2 > 0.0f ? toP / std::sqrt(d2) : Vec3f(0.0f);
+    const float cosTheta = b.twoSided ? std::abs(glm::dot(b.axis, w)) : glm::dot(b.axis, w);
+    const float sinTheta = sinOf(cosTheta), sinO = sinOf(b.cosThetaO);
+    const float cosX = cosMinus(cosTheta, sinTheta, b.cosThetaO, sinO);
+    const float sinX = sinMinus(cosTheta, sinTheta, b.cosThetaO, sinO);
+    const float cosThetaP = cosMinus(cosX, sinX, cosU, sinU);
+    if (cosThetaP <= b.cosThetaE) return 0.0f;
+    float value =
+        b.intensity * cosThetaP / std::max({d2, 0.25f * r2, std::numeric_limits<float>::min()});
+    if (n != Vec3f(0.0f)) {
+        const float cosI = std::abs(glm::dot(n, w));
+        value *= cosMinus(cosI, sinOf(cosI), cosU, sinU);
+    }
+    return value > 0.0f ? std::min(value, std::numeric_limits<float>::max()) : 0.0f;
+}
+
+/// Random bounds: boxes from points to 3 units wide (flat ones too), cones of normals from a
+/// single direction to the sphere, surfaces and spot-light bands, one- and two-sided.
+LightBounds randomBounds(Pcg32& rng) {
+    const auto in = [&rng](float lo, float hi) { return lo + (hi - lo) * rng.nextFloat(); };
+    LightBounds b;
+    b.lower = Vec3f(in(-2.0f, 2.0f), in(-2.0f, 2.0f), in(-2.0f, 2.0f));
+    Vec3f extent(in(0.0f, 3.0f), in(0.0f, 3.0f), in(0.0f, 3.0f));
+    const std::uint32_t shape = rng.nextUint32() % 4;
+    if (shape == 0) extent = Vec3f(0.0f);  // a point light
+    if (shape == 1) extent.y = 0.0f;       // a flat light
+    b.upper = b.lower + extent;
+    b.axis = safeNormalize(Vec3f(in(-1.0f, 1.0f), in(-1.0f, 1.0f), in(-1.0f, 1.0f)));
+    const std::uint32_t cone = rng.nextUint32() % 3;
+    b.cosThetaO = cone == 0 ? 1.0f : cone == 1 ? -1.0f : in(-1.0f, 1.0f);
+    b.cosThetaE = rng.nextUint32() % 2 == 0 ? 0.0f : in(0.0f, 1.0f);
+    b.intensity = rng.nextUint32() % 8 == 0 ? 0.0f : in(0.0f, 10.0f);
+    b.twoSided = rng.nextUint32() % 2 == 0;
+    return b;
+}
+
+// The prepared bounds (ImportanceBounds) and the tree's two-at-a-time evaluation
+// (ImportancePair, SSE lanes) against the definition, bit for bit.
+TEST(LightBvh, PreparedBoundsGiveTheImportanceOfTheDefinition) {
+    Pcg32 rng(21);
+    int positive = 0;
+    LightBounds previous = randomBounds(rng);
+    for (int k = 0; k < 200000; ++k) {
+        const LightBounds b = randomBounds(rng);
+        // Points outside and inside the box, and its centre (distance 0).
+        const std::uint32_t where = rng.nextUint32() % 8;
+        Vec3f p = b.center();
+        if (where > 0) {
+            const Vec3f u(rng.nextFloat(), rng.nextFloat(), rng.nextFloat());
+            p = where < 3 ? b.lower + u * (b.upper - b.lower) : 8.0f * u - 4.0f;
+        }
+        Vec3f n(0.0f);
+        if (rng.nextUint32() % 3 != 0)
+            n = safeNormalize(Vec3f(rng.nextFloat(), rng.nextFloat(), rng.nextFloat()) - 0.5f);
+        const float expected = importanceByTheDefinition(b, p, n);
+        const float prepared = ImportanceBounds(b).importance(p, n);
+        ASSERT_EQ(std::bit_cast<std::uint32_t>(prepared), std::bit_cast<std::uint32_t>(expected))
+            << "sample " << k << ": " << prepared << " against " << expected;
+        ASSERT_EQ(std::bit_cast<std::uint32_t>(b.importance(p, n)),
+                  std::bit_cast<std::uint32_t>(expected));
+        // The pair in both orders: each lane is its cluster's importance.
+        const float other = importanceByTheDefinition(previous, p, n);
+        const auto ab =
+            ImportancePair(ImportanceBounds(b), ImportanceBounds(previous)).importances(p, n);
+        const auto ba =
+            ImportancePair(ImportanceBounds(previous), ImportanceBounds(b)).importances(p, n);
+        ASSERT_EQ(std::bit_cast<std::uint32_t>(ab[0]), std::bit_cast<std::uint32_t>(expected))
+            << "sample " << k << ": " << ab[0] << " against " << expected;
+        ASSERT_EQ(std::bit_cast<std::uint32_t>(ab[1]), std::bit_cast<std::uint32_t>(other));
+        ASSERT_EQ(std::bit_cast<std::uint32_t>(ba[0]), std::bit_cast<std::uint32_t>(other));
+        ASSERT_EQ(std::bit_cast<std::uint32_t>(ba[1]), std::bit_cast<std::uint32_t>(expected));
+        if (expected > 0.0f) ++positive;
+        previous = b;
+    }
+    EXPECT_GT(positive, 50000);  // the comparisons are not all of zeros
+}
+
+// The Cornell box's lamp is two triangles: a tree of one node and two leaves, no lights at
+// infinity, whose choice is one comparison of u with the left share l / (l + r) (in double,
+// as LightBvh computes it) and no rescaling of u. At random points its probabilities and
+// choices must be exactly those of the definition, u just below and at the share included.
+TEST(LightBvh, TwoLightTreeChoosesByTheShareOfTheDefinition) {
+    const SceneDesc box = loadScene(std::string(LAMINA_SOURCE_DIR) + "/scenes/cornell-box.json");
+    const Geometry geometry(box);
+    const LightSet lights(box, geometry, LightSelection::Bvh);
+    ASSERT_EQ(lights.size(), 2u);
+    ASSERT_TRUE(lights.infiniteLights().empty());
+    const LightBounds b0 = *lights.light(0).bounds(), b1 = *lights.light(1).bounds();
+    // Neither is below the intensity floor LightSet gives zero-luminance lights.
+    ASSERT_GT(std::min(b0.intensity, b1.intensity), 1e-6f * std::max(b0.intensity, b1.intensity));
+    // The left leaf is the one u = 0 reaches at a point both lights light.
+    const Vec3f below = 0.5f * (b0.center() + b1.center()) - Vec3f(0.0f, 100.0f, 0.0f);
+    const std::size_t left = lights.choose(below, Vec3f(0.0f, 1.0f, 0.0f), 0.0f)->index;
+    const std::size_t right = 1 - left;
+    const LightBounds& bLeft = left == 0 ? b0 : b1;
+    const LightBounds& bRight = left == 0 ? b1 : b0;
+    Pcg32 rng(22);
+    int split = 0;
+    for (const ShadingPoint& at : randomPoints(geometry, 5000, 23)) {
+        const double l = importanceByTheDefinition(bLeft, at.p, at.n);
+        const double r = importanceByTheDefinition(bRight, at.p, at.n);
+        const float pLeft = l + r > 0.0 ? float(l / (l + r)) : 0.5f;
+        ASSERT_EQ(lights.probability(left, at.p, at.n), pLeft);
+        ASSERT_EQ(lights.probability(right, at.p, at.n), 1.0f - pLeft);
+        if (pLeft > 0.0f && pLeft < 1.0f) ++split;
+        for (const float u : {rng.nextFloat(), pLeft, std::nextafter(pLeft, 0.0f)}) {
+            if (!(u < 1.0f)) continue;
+            const auto c = lights.choose(at.p, at.n, u);
+            ASSERT_TRUE(c);
+            const bool toLeft = u < pLeft;
+            EXPECT_EQ(c->index, toLeft ? left : right) << "u " << u << ", share " << pLeft;
+            EXPECT_EQ(c->probability, toLeft ? pLeft : 1.0f - pLeft);
+        }
+    }
+    EXPECT_GT(split, 2000);  // most points see both triangles
+}
+
+// A tree of one leaf: that light whatever u, with probability exactly 1.
+TEST(LightBvh, OneLightTreeAlwaysChoosesIt) {
+    const SceneDesc one = testing::sceneFromText(R"({
+      "materials": {"m": {"type": "lambert"}},
+      "shapes": [{"type": "mesh", "material": "m", "emission": {"radiance": 3},
+                  "positions": [[0, 0, 0], [1, 0, 0], [0, 0, 1]], "faces": [[0, 2, 1]]}]
+    })");
+    const Geometry geometry(one);
+    const LightSet lights(one, geometry, LightSelection::Bvh);
+    ASSERT_EQ(lights.size(), 1u);
+    for (const ShadingPoint& at : randomPoints(geometry, 200, 24)) {
+        EXPECT_EQ(lights.probability(0, at.p, at.n), 1.0f);
+        for (const float u : {0.0f, 0.5f, kOneMinusEpsilon<float>}) {
+            const auto c = lights.choose(at.p, at.n, u);
+            ASSERT_TRUE(c);
+            EXPECT_EQ(c->index, 0u);
+            EXPECT_EQ(c->probability, 1.0f);
+        }
+    }
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <optional>
 
 namespace lamina::render {
 
@@ -39,18 +40,17 @@ LightBvh::LightBvh(std::vector<Entry> lights) {
     build(lights, 0, lights.size(), -1, 0);
 }
 
-int LightBvh::build(std::vector<Entry>& lights, std::size_t begin, std::size_t end, int parent,
-                    int depth) {
+LightBounds LightBvh::build(std::vector<Entry>& lights, std::size_t begin, std::size_t end,
+                            int parent, int depth) {
     const int index = int(nodes_.size());
     nodes_.emplace_back();
     nodes_[std::size_t(index)].parent = parent;
     depth_ = std::max(depth_, depth);
     if (end - begin == 1) {
         Node& leaf = nodes_[std::size_t(index)];
-        leaf.bounds = lights[begin].bounds;
         leaf.light = lights[begin].light;
         leafOf_[leaf.light] = index;
-        return index;
+        return lights[begin].bounds;
     }
 
     LightBounds all = lights[begin].bounds;
@@ -121,40 +121,40 @@ int LightBvh::build(std::vector<Entry>& lights, std::size_t begin, std::size_t e
                              return a.bounds.center()[axis] < b.bounds.center()[axis];
                          });
     }
-    const int left = build(lights, begin, mid, index, depth + 1);
-    const int right = build(lights, mid, end, index, depth + 1);
+    const int left = int(nodes_.size());
+    const LightBounds leftBounds = build(lights, begin, mid, index, depth + 1);
+    const int right = int(nodes_.size());
+    const LightBounds rightBounds = build(lights, mid, end, index, depth + 1);
     Node& node = nodes_[std::size_t(index)];
-    node.bounds = all;
+    node.children = ImportancePair(ImportanceBounds(leftBounds), ImportanceBounds(rightBounds));
     node.left = left;
     node.right = right;
-    return index;
+    return all;
 }
 
 float LightBvh::leftProbability(const Node& node, const Vec3f& p, const Vec3f& n) const {
-    const double l = nodes_[std::size_t(node.left)].bounds.importance(p, n);
-    const double r = nodes_[std::size_t(node.right)].bounds.importance(p, n);
+    const auto [left, right] = node.children.importances(p, n);
+    const double l = left, r = right;
     // Neither child can send light to p although the node's looser bounds allowed it: halves,
     // so that the probabilities still sum to 1 (the lights reached contribute nothing).
     if (!(l + r > 0.0)) return 0.5f;
     return float(l / (l + r));
 }
 
-std::optional<LightChoice> LightBvh::choose(const Vec3f& p, const Vec3f& n, float u) const {
-    if (nodes_.empty()) return std::nullopt;
+LightChoice LightBvh::choose(const Vec3f& p, const Vec3f& n, float u) const {
     const Node* node = &nodes_.front();
     float probability = 1.0f;
     while (!node->leaf()) {
         const float pLeft = leftProbability(*node, p, n);
+        const bool left = u < pLeft;
+        probability *= left ? pLeft : 1.0f - pLeft;
+        node = &nodes_[std::size_t(left ? node->left : node->right)];
         // u is reused below: rescaled to [0, 1) within the part of it that chose the child.
-        if (u < pLeft) {
-            u = std::min(u / pLeft, kOneMinusEpsilon<float>);
-            probability *= pLeft;
-            node = &nodes_[std::size_t(node->left)];
-        } else {
-            u = std::min((u - pLeft) / (1.0f - pLeft), kOneMinusEpsilon<float>);
-            probability *= 1.0f - pLeft;
-            node = &nodes_[std::size_t(node->right)];
-        }
+        // A leaf uses no more of it (and the two-light tree of a quad lamp then divides not
+        // at all).
+        if (node->leaf()) break;
+        u = left ? std::min(u / pLeft, kOneMinusEpsilon<float>)
+                 : std::min((u - pLeft) / (1.0f - pLeft), kOneMinusEpsilon<float>);
     }
     return LightChoice{node->light, probability};
 }

@@ -212,10 +212,14 @@ std::optional<LightChoice> LightSet::choose(const Vec3f& p, const Vec3f& n, floa
             pick(infiniteCdf_, std::min(u / infiniteShare_, kOneMinusEpsilon<float>));
         return LightChoice{nextEventInfinite_[k], infiniteShare_ * infinitePmf_[k]};
     }
+    if (bvh_.empty()) return std::nullopt;
+    // Without lights at infinity u goes to the tree as it is: (u - 0) / 1 is u, and the
+    // probability times 1 the same float, so this skips a division and nothing else.
+    if (infiniteShare_ == 0.0f) return bvh_.choose(p, n, u);
     const float uTree =
         std::min((u - infiniteShare_) / (1.0f - infiniteShare_), kOneMinusEpsilon<float>);
-    auto c = bvh_.choose(p, n, uTree);
-    if (c) c->probability *= 1.0f - infiniteShare_;
+    LightChoice c = bvh_.choose(p, n, uTree);
+    c.probability *= 1.0f - infiniteShare_;
     return c;
 }
 

@@ -6,6 +6,9 @@
 // importance), with pbrt-v4's normal term at the receiver (LightBounds::Importance).
 #pragma once
 
+#include <array>
+#include <cstddef>
+
 #include "lamina/core/vector.h"
 
 namespace lamina::render {
@@ -25,8 +28,47 @@ struct LightBounds {
 
     Vec3f center() const { return 0.5f * (lower + upper); }
     /// Importance at point `p` with surface normal `n` (zero vector: no surface, such as a
-    /// point in a medium): 0 only when no light of the cluster can send light to p.
+    /// point in a medium): 0 only when no light of the cluster can send light to p
+    /// (ImportanceBounds::importance, below).
     float importance(const Vec3f& p, const Vec3f& n) const;
+};
+
+/// LightBounds in the form the importance is computed from, with what depends on the bounds
+/// alone (the centre, the bounding sphere's squared radius, sin theta_o) computed once.
+/// importance() is the one definition of the importance (LightBounds::importance converts and
+/// calls it; ImportancePair computes the same floats two at a time).
+struct ImportanceBounds {
+    Vec3f center{0.0f};
+    float radius2 = 0.0f;  ///< the squared radius of the box's bounding sphere
+    Vec3f axis{0.0f, 0.0f, 1.0f};
+    float cosThetaO = 1.0f, sinThetaO = 0.0f, cosThetaE = 0.0f;
+    float intensity = 0.0f;
+    bool twoSided = false;
+
+    ImportanceBounds() = default;
+    explicit ImportanceBounds(const LightBounds& b);
+    float importance(const Vec3f& p, const Vec3f& n) const;
+};
+
+/// Two clusters' ImportanceBounds side by side, for the light BVH, whose walk weighs the two
+/// children of a node against each other at every level of every next-event estimate.
+/// importances() evaluates both at once, lane by lane with SSE where the target has it: each
+/// lane does the IEEE operations of ImportanceBounds::importance in the same order (branches
+/// become selections), so it gives the same two floats, bit for bit.
+class ImportancePair {
+  public:
+    ImportancePair() = default;
+    ImportancePair(const ImportanceBounds& a, const ImportanceBounds& b);
+    /// {a.importance(p, n), b.importance(p, n)}.
+    std::array<float, 2> importances(const Vec3f& p, const Vec3f& n) const;
+
+  private:
+    ImportanceBounds lane(std::size_t k) const;
+
+    // Index 0: a, 1: b.
+    std::array<float, 2> cx_{}, cy_{}, cz_{}, radius2_{}, ax_{}, ay_{}, az_{}, cosO_{}, sinO_{},
+        cosE_{}, intensity_{};
+    std::array<bool, 2> twoSided_{};
 };
 
 /// The bounds of two clusters together: the union of the boxes, the smallest cone of normals

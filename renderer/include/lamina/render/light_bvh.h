@@ -9,7 +9,6 @@
 #pragma once
 
 #include <cstddef>
-#include <optional>
 #include <vector>
 
 #include "lamina/render/light_bounds.h"
@@ -36,11 +35,12 @@ class LightBvh {
     explicit LightBvh(std::vector<Entry> lights);
 
     bool empty() const { return nodes_.empty(); }
-    /// Picks a light for point `p` with surface normal `n` (the zero vector: none); nullopt
-    /// only for an empty tree. A light that cannot send light to p has probability 0 unless
-    /// its cluster's bounds could and none of the cluster's parts can (then the parts are
-    /// taken half and half), so the probabilities always sum to 1.
-    std::optional<LightChoice> choose(const Vec3f& p, const Vec3f& n, float u) const;
+    /// Picks a light for point `p` with surface normal `n` (the zero vector: none); the tree
+    /// must not be empty. A light that cannot send light to p has probability 0 unless its
+    /// cluster's bounds could and none of the cluster's parts can (then the parts are taken
+    /// half and half), so the probabilities always sum to 1. (Not an optional: a LightChoice
+    /// comes back in registers, and this runs at every next-event estimate.)
+    LightChoice choose(const Vec3f& p, const Vec3f& n, float u) const;
     /// The probability that choose(p, n, u) returns `light` for a uniform u (0 for a light
     /// that is not in the tree).
     float probability(std::size_t light, const Vec3f& p, const Vec3f& n) const;
@@ -49,16 +49,17 @@ class LightBvh {
 
   private:
     struct Node {
-        LightBounds bounds;
+        ImportancePair children;    ///< the bounds of the left and the right child
         int left = -1, right = -1;  ///< children; -1 for a leaf
         int parent = -1;
         std::size_t light = 0;  ///< a leaf's light
         bool leaf() const { return left < 0; }
     };
 
-    /// Builds the subtree of lights [begin, end) at `depth` under `parent`; returns its node.
-    int build(std::vector<Entry>& lights, std::size_t begin, std::size_t end, int parent,
-              int depth);
+    /// Builds the subtree of lights [begin, end) at `depth` under `parent` (its root is the
+    /// next node); returns the subtree's bounds.
+    LightBounds build(std::vector<Entry>& lights, std::size_t begin, std::size_t end, int parent,
+                      int depth);
     /// The probability of taking the left child of interior node `node` at (p, n), in
     /// proportion to the children's importance (1/2 when both are 0).
     float leftProbability(const Node& node, const Vec3f& p, const Vec3f& n) const;
