@@ -32,10 +32,8 @@ class LazyBxdf {
     using Make = std::function<std::shared_ptr<const Bxdf<Spec>>()>;
 
     template <class B>
-    LazyBxdf(std::shared_ptr<B> built) : state_(std::make_shared<State>()) {
-        state_->bxdf = std::move(built);
-        std::call_once(state_->once, [] {});
-    }
+    LazyBxdf(std::shared_ptr<B> built)
+        : LazyBxdf(Make([b = std::shared_ptr<const Bxdf<Spec>>(std::move(built))] { return b; })) {}
     explicit LazyBxdf(Make make) : state_(std::make_shared<State>()) {
         state_->make = std::move(make);
     }
@@ -77,6 +75,14 @@ inline std::string alphaName(double a) {
 /// Gold-like conductor optics at three wavelengths (n, k at ~650, 550, 450 nm).
 inline Fresnel<Spec> goldFresnel() {
     return Fresnel<Spec>::conductor(Spec(0.18, 0.42, 1.37), Spec(3.42, 2.35, 1.77));
+}
+
+/// The material of a JSON description (docs/bsdf.md), built on first use.
+inline LazyBxdf lazyMaterial(const std::string& json) {
+    return LazyBxdf([json] {
+        return std::shared_ptr<const Bxdf<Spec>>(
+            buildBxdf(parseMaterialArgument(json), SpectrumContext<Spec>{}));
+    });
 }
 
 inline std::vector<BsdfCase> bsdfCases() {
@@ -201,45 +207,42 @@ inline std::vector<BsdfCase> bsdfCases() {
                                    goldFresnel(), LayerCoupling::Fresnel, 1.5)});
 
     // Energy-compensated materials: Kulla-Conty multiple scattering and the albedo coupling.
-    auto material = [](const std::string& json) {
-        return LazyBxdf([json] {
-            return std::shared_ptr<const Bxdf<Spec>>(
-                buildBxdf(parseMaterialArgument(json), SpectrumContext<Spec>{}));
-        });
-    };
     cases.push_back(
         {"layered_conductor_albedo_gold",
-         material(R"({"type":"layered","interface":{"roughness":0.15,"ior":1.5,)"
-                  R"("fresnel":"exact"},"base":{"type":"conductor","eta":[0.18,0.42,1.37],)"
-                  R"("k":[3.42,2.35,1.77],"roughness":0.3},"coupling":"albedo"})")});
+         lazyMaterial(R"({"type":"layered","interface":{"roughness":0.15,"ior":1.5,)"
+                      R"("fresnel":"exact"},"base":{"type":"conductor","eta":[0.18,0.42,1.37],)"
+                      R"("k":[3.42,2.35,1.77],"roughness":0.3},"coupling":"albedo"})")});
     cases.push_back(
         {"layered_conductor_albedo_multiscatter",
-         material(R"({"type":"layered","interface":{"roughness":0.6,"ior":1.5,)"
-                  R"("fresnel":"exact","multiscatter":true},"base":{"type":"conductor",)"
-                  R"("f0":[0.9,0.6,0.3],"roughness":0.7,"multiscatter":true},)"
-                  R"("coupling":"albedo"})")});
+         lazyMaterial(R"({"type":"layered","interface":{"roughness":0.6,"ior":1.5,)"
+                      R"("fresnel":"exact","multiscatter":true},"base":{"type":"conductor",)"
+                      R"("f0":[0.9,0.6,0.3],"roughness":0.7,"multiscatter":true},)"
+                      R"("coupling":"albedo"})")});
     cases.push_back({"conductor_multiscatter_r0p3",
-                     material(R"({"type":"conductor","eta":[0.2,0.4,1.4],"k":[3.4,2.4,1.8],)"
-                              R"("fresnel":"exact","roughness":0.3,"multiscatter":true})")});
+                     lazyMaterial(R"({"type":"conductor","eta":[0.2,0.4,1.4],"k":[3.4,2.4,1.8],)"
+                                  R"("fresnel":"exact","roughness":0.3,"multiscatter":true})")});
     cases.push_back(
         {"conductor_multiscatter_r1",
-         material(R"({"type":"conductor","f0":0.9,"roughness":1,"multiscatter":true})")});
-    cases.push_back({"standard_albedo_coupling_r0p5",
-                     material(R"({"type":"standard","base_color":[0.8,0.5,0.2],"roughness":0.5,)"
-                              R"("coupling":"albedo"})")});
-    cases.push_back({"standard_albedo_multiscatter_r0p2",
-                     material(R"({"type":"standard","base_color":[0.8,0.5,0.2],"roughness":0.2,)"
-                              R"("coupling":"albedo","multiscatter":true})")});
+         lazyMaterial(R"({"type":"conductor","f0":0.9,"roughness":1,"multiscatter":true})")});
+    cases.push_back(
+        {"standard_albedo_coupling_r0p5",
+         lazyMaterial(R"({"type":"standard","base_color":[0.8,0.5,0.2],"roughness":0.5,)"
+                      R"("coupling":"albedo"})")});
+    cases.push_back(
+        {"standard_albedo_multiscatter_r0p2",
+         lazyMaterial(R"({"type":"standard","base_color":[0.8,0.5,0.2],"roughness":0.2,)"
+                      R"("coupling":"albedo","multiscatter":true})")});
     cases.push_back({"standard_albedo_multiscatter_metal_r0p8",
-                     material(R"({"type":"standard","base_color":[0.9,0.6,0.3],"metalness":1,)"
-                              R"("roughness":0.8,"coupling":"albedo","multiscatter":true})")});
+                     lazyMaterial(R"({"type":"standard","base_color":[0.9,0.6,0.3],"metalness":1,)"
+                                  R"("roughness":0.8,"coupling":"albedo","multiscatter":true})")});
     cases.push_back(
-        {"phong_r0p3", material(R"({"type":"phong","reflectance":0.9,"roughness":0.3})")});
+        {"phong_r0p3", lazyMaterial(R"({"type":"phong","reflectance":0.9,"roughness":0.3})")});
     cases.push_back(
-        {"phong_r0p8", material(R"({"type":"phong","reflectance":0.9,"roughness":0.8})")});
-    cases.push_back({"standard_phong_r0p5",
-                     material(R"({"type":"standard","base_color":[0.8,0.5,0.2],"roughness":0.5,)"
-                              R"("specular_model":"phong"})")});
+        {"phong_r0p8", lazyMaterial(R"({"type":"phong","reflectance":0.9,"roughness":0.8})")});
+    cases.push_back(
+        {"standard_phong_r0p5",
+         lazyMaterial(R"({"type":"standard","base_color":[0.8,0.5,0.2],"roughness":0.5,)"
+                      R"("specular_model":"phong"})")});
     return cases;
 }
 
@@ -247,25 +250,19 @@ inline std::vector<BsdfCase> bsdfCases() {
 /// properties run over bsdfCases() do not apply; tests/bsdf/coated_test.cpp runs the
 /// statistical ones over these (docs/bsdf.md, "coated").
 inline std::vector<BsdfCase> coatedCases() {
-    auto material = [](const std::string& json) {
-        return LazyBxdf([json] {
-            return std::shared_ptr<const Bxdf<Spec>>(
-                buildBxdf(parseMaterialArgument(json), SpectrumContext<Spec>{}));
-        });
-    };
     return {
         {"coated_rough_lambert",
-         material(R"({"type":"coated","roughness":0.4,"base":{"type":"lambert",)"
-                  R"("reflectance":[0.8,0.5,0.3]}})")},
+         lazyMaterial(R"({"type":"coated","roughness":0.4,"base":{"type":"lambert",)"
+                      R"("reflectance":[0.8,0.5,0.3]}})")},
         {"coated_smooth_rough_gold",
-         material(R"({"type":"coated","ior":1.5,"base":{"type":"conductor","material":"Au",)"
-                  R"("roughness":0.4}})")},
+         lazyMaterial(R"({"type":"coated","ior":1.5,"base":{"type":"conductor","material":"Au",)"
+                      R"("roughness":0.4}})")},
         {"coated_rough_medium",
-         material(R"({"type":"coated","roughness":0.3,"thickness":0.5,"albedo":[0.9,0.6,0.3],)"
-                  R"("g":0.4,"base":{"type":"lambert","reflectance":0.7}})")},
+         lazyMaterial(R"({"type":"coated","roughness":0.3,"thickness":0.5,"albedo":[0.9,0.6,0.3],)"
+                      R"("g":0.4,"base":{"type":"lambert","reflectance":0.7}})")},
         {"coated_rough_medium_over_mirror",
-         material(R"({"type":"coated","roughness":0.3,"thickness":1,"albedo":0.8,"g":-0.3,)"
-                  R"("base":{"type":"conductor","f0":0.9}})")},
+         lazyMaterial(R"({"type":"coated","roughness":0.3,"thickness":1,"albedo":0.8,"g":-0.3,)"
+                      R"("base":{"type":"conductor","f0":0.9}})")},
     };
 }
 
