@@ -10,13 +10,16 @@
 
 namespace lamina::experiments {
 
-double fittedSlope(const std::vector<ErrorLog::Row>& rows) {
+double fittedSlope(const std::vector<ErrorLog::Row>& rows, SlopeAxis axis) {
     if (rows.empty()) return NAN;
-    const double from = 0.1 * rows.back().seconds;
+    const auto along = [axis](const ErrorLog::Row& r) {
+        return axis == SlopeAxis::Seconds ? r.seconds : double(r.spp);
+    };
+    const double from = 0.1 * along(rows.back());
     double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
     for (const auto& r : rows) {
-        if (r.seconds < from || !(r.metrics.relmse > 0) || !(r.seconds > 0)) continue;
-        const double x = std::log(r.seconds), y = std::log(r.metrics.relmse);
+        if (along(r) < from || !(r.metrics.relmse > 0) || !(along(r) > 0)) continue;
+        const double x = std::log(along(r)), y = std::log(r.metrics.relmse);
         n += 1;
         sx += x;
         sy += y;

@@ -23,6 +23,10 @@ std::string formatSeconds(double s, double budget) {
     return std::isnan(s) ? formatText("> %.3g s", budget) : formatText("%.3g s", s);
 }
 
+std::string formatSlope(double slope) {
+    return std::isnan(slope) ? std::string("n/a") : formatText("%.2f", slope);
+}
+
 /// Writes the rendered references and says where the reference came from.
 std::string writeReferences(const ConvergenceResult& result, const Report& report) {
     const ConvergenceInputs& in = result.inputs;
@@ -86,26 +90,31 @@ std::string summary(const ConvergenceResult& result, const std::string& referenc
     md << "# Convergence: " << in.scene << "\n\n"
        << referenceNote << ". Each combination rendered for " << in.seconds
        << " s; relMSE = mean((x - ref)^2 / (ref^2 + 1e-2)) over the RGB channels.\n\n"
-       << "| integrator | mode | samples/s | spp | relMSE | MSE | slope |";
+       << "| integrator | mode | samples/s | spp | relMSE | MSE | slope (time) | slope (spp) |";
     for (const ErrorLevel& l : in.levels)
         md << " time to relMSE " << l.label << " |";
-    md << "\n|---|---|---|---|---|---|---|";
+    md << "\n|---|---|---|---|---|---|---|---|";
     for (std::size_t k = 0; k < in.levels.size(); ++k)
         md << "---|";
     md << "\n";
     for (const ConvergenceCurve& c : result.curves) {
         const auto& rows = c.log.rows();
         const ErrorLog::Row last = rows.empty() ? ErrorLog::Row{0, 0, {}} : rows.back();
-        md << formatText("| %s | %s | %.3g | %d | %.4g | %.4g | %.2f |",
+        md << formatText("| %s | %s | %.3g | %d | %.4g | %.4g | %s | %s |",
                          nameOf(c.integrator).c_str(), nameOf(c.mode).c_str(), c.pathsPerSecond,
-                         c.spp, last.metrics.relmse, last.metrics.mse, fittedSlope(rows));
+                         c.spp, last.metrics.relmse, last.metrics.mse,
+                         formatSlope(fittedSlope(rows, SlopeAxis::Seconds)).c_str(),
+                         formatSlope(fittedSlope(rows, SlopeAxis::Samples)).c_str());
         for (const ErrorLevel& l : in.levels)
             md << " " << formatSeconds(timeToReach(rows, l.relmse), in.seconds) << " |";
         md << "\n";
     }
-    md << "\nThe slope is the least-squares fit of log relMSE against log seconds after the "
-          "first tenth of the time: -1 for an unbiased estimator whose error is all variance; "
-          "flatter once the reference's own error (or a bias) dominates.\n\n"
+    md << "\nA slope is the least-squares fit of log relMSE against log seconds (time) or log "
+          "samples per pixel (spp) after the first tenth of the run: -1 for an unbiased "
+          "estimator whose error is all variance; flatter once the reference's own error (or a "
+          "bias) dominates. Where the two differ, the seconds of the passes were not in "
+          "proportion to their samples (a busy machine, start-up costs); n/a: fewer than three "
+          "passes after the first tenth.\n\n"
        << "![relMSE against time](convergence.svg)\n";
     return md.str();
 }

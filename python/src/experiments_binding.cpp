@@ -143,7 +143,8 @@ py::dict convergence(const std::string& scene, const std::vector<std::string>& i
         d["mse"] = mse;
         d["relmse"] = relmse;
         d["mae"] = mae;
-        d["slope"] = number(ex::fittedSlope(rows));
+        d["slope"] = number(ex::fittedSlope(rows, ex::SlopeAxis::Seconds));
+        d["slope_spp"] = number(ex::fittedSlope(rows, ex::SlopeAxis::Samples));
         d["paths_per_second"] = c.pathsPerSecond;
         d["time_to_relmse"] = reach;
         curves.append(d);

@@ -18,6 +18,7 @@
 #include "lamina/core/json_reader.h"
 #include "lamina/render/image_output.h"
 #include "lamina/render/render_memory.h"
+#include "source_files.h"
 
 namespace lamina {
 namespace {
@@ -242,7 +243,7 @@ TEST_F(CliTest, RenderMemoryIsPrintedAndCheckedUpFront) {
 // of the scene has 12 triangles (a trunk of 4 quads, two cards), placed 16 times.
 TEST_F(CliTest, InfoCountsInstancesAndTheTrianglesTheyReference) {
     const CommandRun info =
-        runLamina("info " + std::string(LAMINA_SOURCE_DIR) + "/scenes/instances-and-cutouts.json");
+        runLamina("info " + testing::sourceFile("scenes/instances-and-cutouts.json"));
     ASSERT_EQ(info.exitCode, 0) << info.output;
     EXPECT_THAT(info.output,
                 ::testing::HasSubstr("instances: 16 of 1 objects, referencing 192 triangles (12 "

@@ -15,6 +15,7 @@
 #include "cli_helpers.h"
 #include "lamina/bsdf/material_builder.h"
 #include "lamina/render/image_output.h"
+#include "source_files.h"
 
 namespace lamina {
 namespace {
@@ -98,14 +99,19 @@ TEST_F(ExperimentCli, ConvergenceSlopeOfAnUnbiasedEstimatorIsMinusOne) {
         std::cerr << "skipped: /usr/bin/python3 has no matplotlib (python3-matplotlib), the "
                      "generated convergence.py is not run\n";
     }
-    // | path | rgb | samples/s | spp | relMSE | MSE | slope | ...
-    const std::regex row(
-        R"(\| (path|bdpt) \| rgb \| [^|]+ \| [^|]+ \| [^|]+ \| [^|]+ \| ([-0-9.]+) \|)");
+    // | path | rgb | samples/s | spp | relMSE | MSE | slope (time) | slope (spp) | ...
+    // The slope against samples is the estimator's own and must be -1; the one against
+    // seconds is bent by the load of the machine the test runs on (under ctest -j2, beside
+    // other renders), so it only has to be near -1.
+    const std::regex row(R"(\| (path|bdpt) \| rgb \| [^|]+ \| [^|]+ \| [^|]+ \| [^|]+ \| )"
+                         R"(([-0-9.]+) \| ([-0-9.]+) \|)");
     int found = 0;
     for (std::sregex_iterator it(r.output.begin(), r.output.end(), row), end; it != end; ++it) {
-        const double slope = std::stod((*it)[2]);
-        EXPECT_GE(slope, -1.2) << (*it)[1];
-        EXPECT_LE(slope, -0.8) << (*it)[1];
+        const double perSecond = std::stod((*it)[2]), perSample = std::stod((*it)[3]);
+        EXPECT_GE(perSample, -1.2) << (*it)[1];
+        EXPECT_LE(perSample, -0.8) << (*it)[1];
+        EXPECT_GE(perSecond, -1.6) << (*it)[1];
+        EXPECT_LE(perSecond, -0.6) << (*it)[1];
         ++found;
     }
     EXPECT_EQ(found, 2) << r.output;
@@ -139,7 +145,7 @@ TEST_F(ExperimentCli, FresnelExactCurveIsTheBsdfsConductorFresnel) {
 }
 
 TEST_F(ExperimentCli, StabilityReportsAHealthyModelCleanAndRendersStressScenes) {
-    const std::string stress = std::string(LAMINA_SOURCE_DIR) + "/scenes/stress/ior-4.json";
+    const std::string stress = testing::sourceFile("scenes/stress/ior-4.json");
     const CommandRun r =
         runLamina(R"(stability '{"type":"lambert","reflectance":1}' --samples 256 )"
                   R"(--spp 4 --scenes )" +

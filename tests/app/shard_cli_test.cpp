@@ -10,11 +10,12 @@
 #include <iterator>
 
 #include "cli_helpers.h"
+#include "source_files.h"
 
 namespace lamina {
 namespace {
 
-const std::string kCornell = std::string(LAMINA_SOURCE_DIR) + "/scenes/cornell-box.json";
+const std::string kCornell = testing::sourceFile("scenes/cornell-box.json");
 const std::string kSmall = " --resolution 16x16 --max-depth 3 -q ";
 
 /// Every channel of an EXR by name, and its lamina: string attributes.

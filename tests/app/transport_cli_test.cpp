@@ -5,11 +5,12 @@
 
 #include "cli_helpers.h"
 #include "lamina/render/image_output.h"
+#include "source_files.h"
 
 namespace lamina {
 namespace {
 
-const std::string kCornell = std::string(LAMINA_SOURCE_DIR) + "/scenes/cornell-box.json";
+const std::string kCornell = testing::sourceFile("scenes/cornell-box.json");
 
 TEST_F(CliTest, BdptStrategyImagesAddUpToTheBdptImage) {
     const std::string out = (dir_ / "bdpt.exr").string();
@@ -66,7 +67,7 @@ TEST_F(CliTest, ReciprocityReportsAgreementAndWritesItsMaps) {
 // numbers mean nothing here and what sample count would do, not print them as if they did.
 TEST_F(CliTest, ReciprocityVerdictSaysWhenThePerPixelTestCannotBeTrusted) {
     const std::string scene =
-        std::string(LAMINA_SOURCE_DIR) + "/scenes/reciprocity/rough-glass.json";
+        testing::sourceFile("scenes/reciprocity/rough-glass.json");
     const CommandRun r =
         runLamina("reciprocity " + scene + " --spp 32 --batches 8 -o " + dir_.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
@@ -83,7 +84,7 @@ TEST_F(CliTest, ReciprocityVerdictSaysWhenThePerPixelTestCannotBeTrusted) {
 
 TEST_F(CliTest, ReciprocityExitsWithTwoWhenAnAblationBreaksLightTracing) {
     const std::string scene =
-        std::string(LAMINA_SOURCE_DIR) + "/scenes/reciprocity/smooth-normals.json";
+        testing::sourceFile("scenes/reciprocity/smooth-normals.json");
     const CommandRun r = runLamina("reciprocity " + scene +
                                    " --integrators path,light --spp 256 --batches 16 "
                                    "--ablate adjoint-correction -o " +

@@ -57,6 +57,23 @@ TEST(ConvergenceSlope, IgnoresTheFirstTenthOfTheTime) {
     EXPECT_NEAR(fittedSlope(rows), -1.0, 1e-12);
 }
 
+// A busy machine: the samples double every pass, and the last pass, run while another job
+// took the cores, took four times as long per sample. The slope against samples is the
+// estimator's -1; the one against seconds is bent by the load (to -0.57 here).
+TEST(ConvergenceSlope, AgainstSamplesIgnoresTheSecondsOfEachPass) {
+    std::vector<ErrorLog::Row> rows;
+    double seconds = 0;
+    for (int k = 0; k < 8; ++k) {
+        const int spp = 1 << k, added = k == 0 ? 1 : spp / 2;
+        seconds += added * (k == 7 ? 4.0 : 1.0);
+        ErrorLog::Row r{seconds, spp, {}};
+        r.metrics.relmse = 0.5 / spp;
+        rows.push_back(r);
+    }
+    EXPECT_NEAR(fittedSlope(rows, SlopeAxis::Samples), -1.0, 1e-12);
+    EXPECT_NEAR(fittedSlope(rows, SlopeAxis::Seconds), -0.57, 0.01);
+}
+
 TEST(ConvergenceSlope, NeedsThreePasses) {
     EXPECT_TRUE(std::isnan(fittedSlope({})));
     EXPECT_TRUE(std::isnan(fittedSlope({row(1, 1), row(2, 0.5)})));

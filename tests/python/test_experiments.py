@@ -54,6 +54,9 @@ def test_convergence(scene):
     assert curve["integrator"] == "path" and curve["seconds"].size >= 2
     # Error falls with time.
     assert curve["relmse"][-1] < curve["relmse"][0]
+    # Both slopes are numbers or None (too few passes), never NaN.
+    for key in ("slope", "slope_spp"):
+        assert curve[key] is None or np.isfinite(curve[key])
 
 
 def test_reciprocity(scene):

@@ -7,6 +7,7 @@
 
 #include "lamina/render/geometry.h"
 #include "render_helpers.h"
+#include "source_files.h"
 
 namespace lamina {
 namespace {
@@ -269,7 +270,7 @@ namespace {
 TEST(ExampleScenes, LoadAndRenderInBothModes) {
     int scenes = 0;
     for (const auto& entry :
-         std::filesystem::directory_iterator(std::string(LAMINA_SOURCE_DIR) + "/scenes")) {
+         std::filesystem::directory_iterator(testing::sourceFile("scenes"))) {
         if (entry.path().extension() != ".json") continue;
         const auto scene = render::loadScene(entry.path());
         for (auto mode : {render::RenderModeKind::Rgb, render::RenderModeKind::Spectral}) {

@@ -11,11 +11,12 @@
 #include "lamina/experiments/layering_statistics.h"
 #include "lamina/render/render_mode.h"
 #include "render_helpers.h"
+#include "source_files.h"
 
 namespace lamina::render {
 namespace {
 
-const std::string kCoatedScene = std::string(LAMINA_SOURCE_DIR) + "/scenes/reciprocity/coated.json";
+const std::string kCoatedScene = testing::sourceFile("scenes/reciprocity/coated.json");
 
 int materialIndex(const SceneDesc& scene, const std::string& name) {
     const auto at = std::find(scene.materialNames.begin(), scene.materialNames.end(), name);

@@ -13,12 +13,13 @@
 #include <sstream>
 
 #include "render_helpers.h"
+#include "source_files.h"
 
 namespace lamina::render {
 namespace {
 
 Json cutoutsSceneWithout(const std::vector<std::string>& names) {
-    std::ifstream in(std::string(LAMINA_SOURCE_DIR) + "/scenes/reciprocity/cutouts.json");
+    std::ifstream in(testing::sourceFile("scenes/reciprocity/cutouts.json"));
     std::stringstream text;
     text << in.rdbuf();
     Json j = parseJsonText(text.str(), {"cutouts.json", "."});

@@ -17,6 +17,7 @@
 
 #include "lamina/experiments/estimator_agreement.h"
 #include "render_helpers.h"
+#include "source_files.h"
 
 namespace lamina::render {
 namespace {
@@ -30,7 +31,7 @@ struct AgreementCase {
 };
 
 std::string sourcePath(const std::string& relative) {
-    return std::string(LAMINA_SOURCE_DIR) + "/" + relative;
+    return testing::sourceFile(relative);
 }
 
 BatchImages render(const SceneDesc& scene, IntegratorKind integrator, RenderModeKind mode,

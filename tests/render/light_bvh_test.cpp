@@ -21,6 +21,7 @@
 #include "lamina/render/image_output.h"
 #include "lamina/render/lights.h"
 #include "render_helpers.h"
+#include "source_files.h"
 
 namespace lamina::render {
 namespace {
@@ -42,7 +43,7 @@ const ShadingPoint kManyLightPoints[] = {{{0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}
 constexpr int kChiSquareTests = 8;
 
 SceneDesc manyLights() {
-    return loadScene(std::string(LAMINA_SOURCE_DIR) + "/scenes/many-lights.json");
+    return loadScene(testing::sourceFile("scenes/many-lights.json"));
 }
 
 /// Pearson's test of choose()'s frequencies at `at` against probability().
@@ -354,7 +355,7 @@ TEST(LightBvh, PreparedBoundsGiveTheImportanceOfTheDefinition) {
 // as LightBvh computes it) and no rescaling of u. At random points its probabilities and
 // choices must be exactly those of the definition, u just below and at the share included.
 TEST(LightBvh, TwoLightTreeChoosesByTheShareOfTheDefinition) {
-    const SceneDesc box = loadScene(std::string(LAMINA_SOURCE_DIR) + "/scenes/cornell-box.json");
+    const SceneDesc box = loadScene(testing::sourceFile("scenes/cornell-box.json"));
     const Geometry geometry(box);
     const LightSet lights(box, geometry, LightSelection::Bvh);
     ASSERT_EQ(lights.size(), 2u);

@@ -10,6 +10,7 @@
 
 #include "lamina/experiments/estimator_agreement.h"
 #include "render_helpers.h"
+#include "source_files.h"
 
 namespace lamina::render {
 namespace {
@@ -102,7 +103,7 @@ double varianceEstimate(const SceneDesc& scene, IntegratorKind integrator,
 }
 
 TEST(LightSelection, BvhHasAFractionOfPowerSelectionsErrorAmongManyLights) {
-    const SceneDesc scene = loadScene(std::string(LAMINA_SOURCE_DIR) + "/scenes/many-lights.json");
+    const SceneDesc scene = loadScene(testing::sourceFile("scenes/many-lights.json"));
     for (IntegratorKind integrator : {IntegratorKind::Path, IntegratorKind::Bdpt}) {
         const double bvh = varianceEstimate(scene, integrator, LightSelection::Bvh);
         const double power = varianceEstimate(scene, integrator, LightSelection::Power);

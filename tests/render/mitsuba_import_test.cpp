@@ -11,6 +11,7 @@
 #include "lamina/render/scene_import.h"
 #include "lamina/render/scene_readers.h"
 #include "scratch_directory.h"
+#include "source_files.h"
 
 namespace lamina::render {
 namespace {
@@ -669,7 +670,7 @@ TEST_F(MitsubaBsdf, SpectraForms) {
 // ---- the test scenes of tests/data/interchange/mitsuba ------------------------------------------
 
 std::string mitsubaData(const std::string& name) {
-    return std::string(LAMINA_SOURCE_DIR) + "/tests/data/interchange/mitsuba/" + name;
+    return testing::sourceFile("tests/data/interchange/mitsuba/").append(name);
 }
 
 TEST(MitsubaScenes, InstancesTranslateToTheHandWrittenObjects) {

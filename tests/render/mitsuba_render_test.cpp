@@ -16,12 +16,13 @@
 #include "lamina/render/scene_import.h"
 #include "render_helpers.h"
 #include "scratch_directory.h"
+#include "source_files.h"
 
 namespace lamina::render {
 namespace {
 
 std::string mitsubaData(const std::string& name) {
-    return std::string(LAMINA_SOURCE_DIR) + "/tests/data/interchange/mitsuba/" + name;
+    return testing::sourceFile("tests/data/interchange/mitsuba/").append(name);
 }
 
 struct AgreementCase {

@@ -16,6 +16,7 @@
 #include "lamina/render/renderer.h"
 #include "lamina/render/scene_import.h"
 #include "scratch_directory.h"
+#include "source_files.h"
 
 namespace lamina::render {
 namespace {
@@ -23,7 +24,7 @@ namespace {
 using namespace lamina::experiments;
 
 std::string dataPath(const std::string& name) {
-    return std::string(LAMINA_SOURCE_DIR) + "/tests/data/interchange/pbrt/" + name;
+    return testing::sourceFile("tests/data/interchange/pbrt/").append(name);
 }
 
 struct PbrtCase {

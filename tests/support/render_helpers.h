@@ -7,6 +7,7 @@
 
 #include "lamina/core/json_reader.h"
 #include "lamina/render/renderer.h"
+#include "source_files.h"
 
 namespace lamina::testing {
 
@@ -57,7 +58,7 @@ inline render::SceneDesc sceneFromText(const std::string& json) {
 }
 
 inline std::string sharedCornellBox() {
-    return std::string(LAMINA_SOURCE_DIR) + "/scenes/cornell-box.json";
+    return sourceFile("scenes/cornell-box.json");
 }
 
 /// Mean of a channel over the image and its standard error from the per-pixel variances

@@ -80,10 +80,16 @@ std::optional<std::string> referenceCorrelation(const render::RgbImage& referenc
                                                 const render::SceneDesc& scene,
                                                 const render::RenderOptions& measured);
 
-/// Least-squares slope of log(relMSE) against log(seconds) over the passes after the first
-/// tenth of the time (the first passes are dominated by start-up costs); NAN with fewer than
-/// three such passes.
-double fittedSlope(const std::vector<ErrorLog::Row>& rows);
+/// What a fitted slope is taken against: the render's seconds (what an equal-time comparison
+/// cares about) or its samples per pixel (the estimator's own convergence, which the machine's
+/// load cannot bend: on a busy machine the seconds of a pass vary, the samples do not).
+enum class SlopeAxis { Seconds, Samples };
+
+/// Least-squares slope of log(relMSE) against log(seconds) or log(spp) over the passes after
+/// the first tenth of the run on that axis (the first passes are dominated by start-up costs);
+/// NAN with fewer than three such passes. -1 for an unbiased estimator whose error is all
+/// variance.
+double fittedSlope(const std::vector<ErrorLog::Row>& rows, SlopeAxis axis = SlopeAxis::Seconds);
 
 /// The first time relMSE reaches `level` (log-log interpolation between passes), or NAN.
 double timeToReach(const std::vector<ErrorLog::Row>& rows, double level);
