@@ -1,6 +1,7 @@
 #include "lamina/spectral/cie.h"
 
 #include "lamina/spectral/cie_tables.h"
+#include "lamina/spectral/cie_xyz_table.h"
 
 namespace lamina {
 
@@ -25,6 +26,16 @@ Vec3d cieXyz(double nm) {
 double cieYIntegral() {
     static const double integral = integrateAgainstCmf([](double) { return 1.0; }).y;
     return integral;
+}
+
+const CieXyzTable& CieXyzTable::normalized() {
+    static const CieXyzTable table = [] {
+        const double inverse = 1.0 / cieYIntegral();
+        return CieXyzTable{ResampledSpectrum([&](double nm) { return cieX(nm) * inverse; }),
+                           ResampledSpectrum([&](double nm) { return cieY(nm) * inverse; }),
+                           ResampledSpectrum([&](double nm) { return cieZ(nm) * inverse; })};
+    }();
+    return table;
 }
 
 const TabulatedCurve* findCieIlluminant(std::string_view name) {

@@ -1,65 +1,38 @@
 // The colour of an emitter in both modes, prepared once when the scene is loaded: its RGB
 // (an RGB input, or the reduction of a spectrum) and its spectrum (the spectrum given, or the
-// RGB upsampled as an illuminant, so RGB (1, 1, 1) is D65 and stays white).
+// RGB upsampled as an illuminant, so RGB (1, 1, 1) is D65 and stays white), resampled at 1 nm
+// (ResampledSpectrum): spectral mode evaluates it at four wavelengths at every emitter a path
+// meets, and the resampled table is a lerp where the spectrum itself is a sigmoid, a square
+// root and a division per wavelength. Emitters of the same colour share one table (a mesh
+// light is one TriangleLight per triangle).
 #pragma once
 
-#include <array>
 #include <memory>
-#include <optional>
 
 #include "lamina/spectral/emission_spectrum.h"
-#include "lamina/spectral/rgb_to_spectrum.h"
-#include "lamina/spectral/sampled_wavelengths.h"
+#include "lamina/spectral/resampled_spectrum.h"
 
 namespace lamina::render {
 
 class EmitterColor {
   public:
     EmitterColor() = default;
-    EmitterColor(const Rgb<double>& rgb, std::shared_ptr<const EmissionSpectrum> spectrum)
-        : rgbD_(spectrum ? spectrum->rgb() : rgb),
-          rgb_(float(rgbD_[0]), float(rgbD_[1]), float(rgbD_[2])),
-          spectrum_(std::move(spectrum)) {
-        if (!spectrum_) upsampled_.emplace(rgb, RgbSpectrumKind::Illuminant);
-    }
+    EmitterColor(const Rgb<double>& rgb, std::shared_ptr<const EmissionSpectrum> spectrum);
 
     const Rgb<float>& rgb() const { return rgb_; }
     const Rgb<double>& rgbDouble() const { return rgbD_; }
-    double spectral(double nm) const { return spectrum_ ? (*spectrum_)(nm) : (*upsampled_)(nm); }
-    bool isBlack() const { return rgb_.maxValue() <= 0.0f && !spectrum_; }
+    /// The spectrum at a path's wavelengths (zero for a default-constructed colour).
+    template <int N>
+    SampledSpectrum<float, N> spectral(const SampledWavelengths<float, N>& lambda) const {
+        return table_ ? table_->at(lambda) : SampledSpectrum<float, N>();
+    }
+    bool isBlack() const { return rgb_.maxValue() <= 0.0f && !given_; }
 
   private:
     Rgb<double> rgbD_{0.0};
     Rgb<float> rgb_{0.0f};
-    std::shared_ptr<const EmissionSpectrum> spectrum_;
-    std::optional<RgbSpectrum> upsampled_;
-};
-
-/// The spectra of the emitters one spectral path has met, at its wavelengths: a path asks for
-/// the same few emitters again and again (next-event estimation samples a light at every
-/// vertex), and evaluating an emitter's spectrum costs per wavelength what its colour is (an
-/// upsampled RGB times D65, a black body, a table). A cache of the last kSlots emitters, valid
-/// for one set of wavelengths: it lives in the path, whose wavelengths are drawn once.
-template <typename Spectrum>
-class EmitterSpectra {
-  public:
-    static constexpr int kSlots = 4;
-
-    const Spectrum& at(const EmitterColor& color, const SampledWavelengths<float>& lambda) {
-        for (int k = 0; k < kSlots; ++k)
-            if (colors_[k] == &color) return values_[k];
-        const int k = next_;
-        next_ = (next_ + 1) % kSlots;
-        colors_[k] = &color;
-        for (int i = 0; i < Spectrum::kSize; ++i)
-            values_[k][i] = float(color.spectral(double(lambda[i])));
-        return values_[k];
-    }
-
-  private:
-    std::array<const EmitterColor*, kSlots> colors_{};
-    std::array<Spectrum, kSlots> values_{};
-    int next_ = 0;
+    std::shared_ptr<const EmissionSpectrum> given_;  ///< the spectrum given, if any
+    std::shared_ptr<const ResampledSpectrum> table_;
 };
 
 /// Emitted radiance (or intensity / d^2, or irradiance): a colour times a scale. Image-based

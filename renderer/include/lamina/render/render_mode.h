@@ -22,7 +22,7 @@
 #include "lamina/render/emitter_color.h"
 #include "lamina/render/film.h"
 #include "lamina/render/sampler.h"
-#include "lamina/spectral/cie.h"
+#include "lamina/spectral/cie_xyz_table.h"
 
 namespace lamina::render {
 
@@ -70,16 +70,15 @@ class RenderMode<Rgb<float>> {
 ///   XYZ = 1/N sum_i L(lambda_i) xyz-bar(lambda_i) / (p(lambda_i) integral of y-bar),
 /// which gives Y = 1 for a constant spectrum 1, as RGB mode gives luminance 1 for white 1.
 /// What does not depend on the wavelengths is done once: each material's RGB colours are
-/// upsampled when the mode is made (UpsampledColors), and a path keeps the spectra of the
-/// emitters it meets at its wavelengths (EmitterSpectra) for its later vertices.
+/// upsampled when the mode is made (UpsampledColors), the emitters' spectra and the colour
+/// matching functions are resampled at 1 nm (EmitterColor, CieXyzTable).
 template <>
 class RenderMode<SampledSpectrum<float>> {
   public:
     using Spectrum = SampledSpectrum<float>;
     struct Path {
         SampledWavelengths<float> lambda;
-        std::uint64_t id = 0;               ///< distinguishes paths for the per-thread BSDF cache
-        EmitterSpectra<Spectrum> emitters;  ///< the emitters' spectra at lambda so far
+        std::uint64_t id = 0;  ///< distinguishes paths for the per-thread BSDF cache
     };
 
     // Every material is built once here, at arbitrary wavelengths, to collect the colours
@@ -107,7 +106,7 @@ class RenderMode<SampledSpectrum<float>> {
                 out[i] = float(s(double(path.lambda[i]))) * e.scale;
             return out;
         }
-        return path.emitters.at(*e.color, path.lambda) * e.scale;
+        return e.color->spectral(path.lambda) * e.scale;
     }
 
     // A material's BSDF depends on the path's wavelengths: it is built at the first hit on
@@ -137,13 +136,18 @@ class RenderMode<SampledSpectrum<float>> {
     }
 
     Rgb<double> filmValue(const Spectrum& L, const Path& path) const {
-        Vec3d xyz(0.0);
+        float x = 0.0f, y = 0.0f, z = 0.0f;
         const Spectrum pdf = path.lambda.pdf();
-        for (int i = 0; i < Spectrum::kSize; ++i)
-            if (pdf[i] > 0.0f)
-                xyz += cieXyz(double(path.lambda[i])) * (double(L[i]) / double(pdf[i]));
-        xyz /= double(Spectrum::kSize) * cieYIntegral();
-        return {xyz.x, xyz.y, xyz.z};
+        for (int i = 0; i < Spectrum::kSize; ++i) {
+            if (!(pdf[i] > 0.0f)) continue;
+            const float w = L[i] / pdf[i];
+            const ResampledSpectrum::Position p = ResampledSpectrum::locate(path.lambda[i]);
+            x += w * cmf_.x.at(p);
+            y += w * cmf_.y.at(p);
+            z += w * cmf_.z.at(p);
+        }
+        constexpr double kInverseN = 1.0 / Spectrum::kSize;
+        return {double(x) * kInverseN, double(y) * kInverseN, double(z) * kInverseN};
     }
 
   private:
@@ -160,6 +164,7 @@ class RenderMode<SampledSpectrum<float>> {
     const SceneDesc& scene_;
     std::uint64_t seed_;
     std::vector<UpsampledColors> colors_;  ///< per material
+    const CieXyzTable& cmf_ = CieXyzTable::normalized();
 };
 
 }  // namespace lamina::render

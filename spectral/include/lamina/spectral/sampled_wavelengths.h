@@ -7,11 +7,20 @@
 //
 // The importance density follows the shape pbrt-v4 uses for visible wavelengths (Pharr,
 // Jakob and Humphreys 2023, "Physically Based Rendering", 4th ed., section 4.6.4),
-// p(lambda) proportional to sech^2(a (lambda - mu)) with a = 0.0072 / nm and mu = 538 nm,
-// here normalised exactly over lamina's range [360, 830] nm and inverted in closed form:
+// sech^2(a (lambda - mu)) with a = 0.0072 / nm and mu = 538 nm, normalised over lamina's
+// range [360, 830] nm, whose cdf inverts in closed form:
 //   F(lambda) = (tanh(a (lambda - mu)) - t0) / (t1 - t0),  t0,1 = tanh(a (360|830 - mu)).
+// The renderer draws from a piecewise-constant version of it: the range cut at the
+// wavelengths F^-1(j / 256), j = 0..256, into 256 intervals of probability 1/256 each, with a
+// constant density in each (1/256 over the interval's width: 1 nm near 538 nm, 15 nm at
+// 830 nm where the density is lowest). That density is within 2% of sech^2 over 400-700 nm
+// and 12% at the ends of the range, where the colour matching functions are nearly 0; it is
+// exactly the density the samples have, so estimates stay unbiased, and drawing from it costs
+// a multiply and a lerp where the closed form costs a division and a logarithm per wavelength
+// (with four wavelengths per path, 10% of a spectral render of scenes/white-furnace.json).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -25,48 +34,67 @@ enum class WavelengthSampling { Visible, Uniform };
 namespace visible_wavelengths {
 inline constexpr double kA = 0.0072;
 inline constexpr double kMu = 538.0;
-/// tanh(a (360 - mu)) and tanh(a (830 - mu)), computed once: every path samples four
-/// wavelengths, and recomputing them cost five tanh per wavelength.
-struct RangeTanh {
-    double t0, t1;
-};
-inline const RangeTanh& rangeTanh() {
-    static const RangeTanh r{std::tanh(kA * (kLambdaMin - kMu)),
-                             std::tanh(kA * (kLambdaMax - kMu))};
-    return r;
-}
-inline double t0() {
-    return rangeTanh().t0;
-}
-inline double t1() {
-    return rangeTanh().t1;
+inline constexpr int kIntervals = 256;
+
+/// The closed-form inverse cdf of the sech^2 density (where the intervals are cut).
+inline double sech2InverseCdf(double u) {
+    const double t0 = std::tanh(kA * (kLambdaMin - kMu)), t1 = std::tanh(kA * (kLambdaMax - kMu));
+    return std::clamp(kMu + std::atanh(t0 + u * (t1 - t0)) / kA, kLambdaMin, kLambdaMax);
 }
 
+/// The interval ends (F^-1(j / 256)) and each interval's density, in double and in float.
+struct Intervals {
+    std::array<double, kIntervals + 1> nm{};
+    std::array<double, kIntervals> density{};
+    std::array<float, kIntervals + 1> nmFloat{};
+    std::array<float, kIntervals> densityFloat{};
+};
+inline const Intervals& intervals() {
+    static const Intervals table = [] {
+        Intervals t;
+        for (int j = 0; j <= kIntervals; ++j)
+            t.nm[j] =
+                j == 0 ? kLambdaMin
+                       : (j == kIntervals ? kLambdaMax : sech2InverseCdf(double(j) / kIntervals));
+        for (int j = 0; j < kIntervals; ++j)
+            t.density[j] = 1.0 / (kIntervals * (t.nm[j + 1] - t.nm[j]));
+        for (int j = 0; j <= kIntervals; ++j)
+            t.nmFloat[j] = float(t.nm[j]);
+        for (int j = 0; j < kIntervals; ++j)
+            t.densityFloat[j] = float(t.density[j]);
+        return t;
+    }();
+    return table;
+}
+
+/// The density at `nm` (the interval's; 0 outside the range).
 inline double pdf(double nm) {
     if (nm < kLambdaMin || nm > kLambdaMax) return 0.0;
-    return kA / (sqr(std::cosh(kA * (nm - kMu))) * (t1() - t0()));
+    const Intervals& t = intervals();
+    const auto upper = std::upper_bound(t.nm.begin() + 1, t.nm.end() - 1, nm);
+    return t.density[std::size_t(upper - t.nm.begin() - 1)];
 }
-inline double sample(double u) {
-    const double t = t0() + u * (t1() - t0());
-    return clamp(kMu + std::atanh(t) / kA, kLambdaMin, kLambdaMax);
-}
-/// sample(u) and its pdf together, in the precision of T: at lambda = F^-1(u),
-/// tanh(a (lambda - mu)) is the t the inversion started from, so sech^2 = 1 - t^2 needs no
-/// cosh, and atanh(t) = log((1 + t) / (1 - t)) / 2 is one logarithm (in float for the
-/// renderer's float wavelengths: double atanh was 8% of a spectral render's profile).
+
+/// The wavelength at u in [0, 1) and its density: interval floor(256 u), linearly within it.
 template <std::floating_point T>
 T sample(T u, T& pdfOut) {
-    const RangeTanh& r = rangeTanh();
-    const T t0 = T(r.t0), t1 = T(r.t1);
-    const T t = t0 + u * (t1 - t0);
-    const T nm = T(kMu) + std::log((T(1) + t) / (T(1) - t)) / T(2 * kA);
-    if (!(nm > T(kLambdaMin) && nm < T(kLambdaMax))) {  // rounding at the ends of the range
-        const T clamped = clamp(nm, T(kLambdaMin), T(kLambdaMax));
-        pdfOut = T(pdf(double(clamped)));
-        return clamped;
+    const Intervals& t = intervals();
+    const T x = std::clamp(u, T(0), T(1)) * T(kIntervals);
+    const int j = std::min(static_cast<int>(x), kIntervals - 1);
+    const T f = x - T(j);
+    if constexpr (std::same_as<T, float>) {
+        const float a = t.nmFloat[j], b = t.nmFloat[j + 1];
+        pdfOut = t.densityFloat[j];
+        return a + f * (b - a);
+    } else {
+        const T a = T(t.nm[j]), b = T(t.nm[j + 1]);
+        pdfOut = T(t.density[j]);
+        return a + f * (b - a);
     }
-    pdfOut = T(kA) * (T(1) - t * t) / (t1 - t0);
-    return nm;
+}
+inline double sample(double u) {
+    double p;
+    return sample(u, p);
 }
 }  // namespace visible_wavelengths
 
