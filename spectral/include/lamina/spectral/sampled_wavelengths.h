@@ -107,9 +107,12 @@ class SampledWavelengths {
     static SampledWavelengths sample(double u,
                                      WavelengthSampling method = WavelengthSampling::Visible) {
         SampledWavelengths w;
+        const T u0 = static_cast<T>(u);
         for (int k = 0; k < N; ++k) {
-            double uk = u + static_cast<double>(k) / N;
-            if (uk >= 1.0) uk -= 1.0;
+            // In T: a float path's rotation needs no double arithmetic (u0 + k/N < 2 is exact
+            // enough for a primary sample).
+            T uk = u0 + static_cast<T>(k) / T(N);
+            if (uk >= T(1)) uk -= T(1);
             if (method == WavelengthSampling::Visible) {
                 T p;
                 w.lambda_[k] = visible_wavelengths::sample(static_cast<T>(uk), p);
