@@ -82,6 +82,10 @@ TEST_F(ImageFiles, ExrRoundTripsBitForBitWithItsDataWindowAndMetadata) {
     EXPECT_EQ(back.metadata.ints, meta.ints);
     EXPECT_EQ(back.metadata.matrices, meta.matrices);
     EXPECT_EQ(back.attributes.at("compression"), "zip");
+    // The standard attributes under OpenImageIO's names, as its reader gave them before.
+    EXPECT_EQ(back.attributes.at("PixelAspectRatio"), "1");
+    EXPECT_EQ(back.attributes.at("screenWindowCenter"), "0, 0");
+    EXPECT_EQ(back.attributes.count("DateTime"), 1u);
     EXPECT_EQ(back.attributes.at("lamina:spp"), "-7");
     EXPECT_EQ(back.attributes.at("lamina:seconds"), "0.1");
 }

@@ -41,7 +41,7 @@ struct ImageHeader {
     bool floatingPoint = true;                      ///< stored as half or float
     std::string colorSpace;                         ///< "oiio:ColorSpace", if the file says
     ImageMetadata laminaMetadata;                   ///< the "lamina:<key>" attributes, typed
-    std::map<std::string, std::string> attributes;  ///< every other attribute too, as text
+    std::map<std::string, std::string> attributes;  ///< every attribute, as text
 };
 
 /// Why an image could not be read: the reader's message, and what the library (libpng)

@@ -1,6 +1,7 @@
 #include "exr_file.h"
 
 #include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfChromaticitiesAttribute.h>
 #include <OpenEXR/ImfCompressionAttribute.h>
 #include <OpenEXR/ImfDoubleAttribute.h>
 #include <OpenEXR/ImfFloatAttribute.h>
@@ -12,11 +13,14 @@
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfStringAttribute.h>
+#include <OpenEXR/ImfVecAttribute.h>
+#include <OpenEXR/ImfVersion.h>
 
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <ctime>
+#include <fstream>
 #include <limits>
 #include <tuple>
 
@@ -153,6 +157,14 @@ void readAttributes(const Imf::Header& header, ImageHeader& out) {
                     text += (r || c ? ", " : "") + floatText(m->value()[r][c]);
                 }
             if (lamina) meta.matrices[key] = v;
+        } else if (type == "v2f") {
+            const auto* v = static_cast<const Imf::V2fAttribute*>(&a);
+            text = floatText(v->value().x) + ", " + floatText(v->value().y);
+        } else if (type == "chromaticities") {
+            const Imf::Chromaticities& c =
+                static_cast<const Imf::ChromaticitiesAttribute*>(&a)->value();
+            for (const Imath::V2f& v : {c.red, c.green, c.blue, c.white})
+                text += (text.empty() ? "" : ", ") + floatText(v.x) + ", " + floatText(v.y);
         } else if (type == "compression") {
             const auto* z = static_cast<const Imf::CompressionAttribute*>(&a);
             static const char* const names[] = {"none",  "rle", "zips", "zip",  "piz",
@@ -163,7 +175,11 @@ void readAttributes(const Imf::Header& header, ImageHeader& out) {
             continue;  // the window, channel list and other structured attributes
         }
         if (name == "oiio:ColorSpace") out.colorSpace = text;
-        out.attributes[name] = text;
+        // Under the names OpenImageIO gave them (what readRgbImage's metadata had before).
+        const std::string shown = name == "capDate"            ? "DateTime"
+                                  : name == "pixelAspectRatio" ? "PixelAspectRatio"
+                                                               : name;
+        out.attributes[shown] = text;
     }
 }
 
@@ -218,6 +234,12 @@ class ExrReader : public ImageFileReader {
 };
 
 }  // namespace
+
+bool startsLikeExr(const std::string& file) {
+    char magic[4] = {};
+    std::ifstream in(file, std::ios::binary);
+    return in.read(magic, sizeof magic) && Imf::isImfMagic(magic);
+}
 
 std::unique_ptr<ImageFileReader> openExrFile(const std::string& file, Failure& failure) {
     try {

@@ -15,6 +15,9 @@ namespace lamina::render {
 /// failed: ...") otherwise.
 bool writeExrFile(const std::string& file, const ImageToWrite& image, std::string& error);
 
+/// The file begins with OpenEXR's magic number.
+bool startsLikeExr(const std::string& file);
+
 /// nullptr and `failure` if the file is not a readable EXR.
 std::unique_ptr<ImageFileReader> openExrFile(const std::string& file, Failure& failure);
 

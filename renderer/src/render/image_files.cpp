@@ -61,7 +61,9 @@ bool isExrPath(const std::filesystem::path& path) {
 
 std::unique_ptr<ImageFileReader> openImageFile(const std::filesystem::path& path,
                                                Failure& failure) {
-    if (isExrPath(path)) return openExrFile(path.string(), failure);
+    // By the extension and the content, as OpenImageIO chose: a file named .exr that is not one
+    // (a PNG renamed, a broken file) goes to OpenImageIO's other readers, and its messages.
+    if (isExrPath(path) && startsLikeExr(path.string())) return openExrFile(path.string(), failure);
 
     // Everything else through OpenImageIO: the reader of the module, behind this interface.
     class ModuleReader : public ImageFileReader {
