@@ -32,8 +32,7 @@ Imath::Box2i box(int x, int y, int width, int height) {
     return Imath::Box2i(Imath::V2i(x, y), Imath::V2i(x + width - 1, y + height - 1));
 }
 
-/// Every float (and so every sample) in the one format OpenImageIO used for lamina's
-/// metadata as text (printf's %g).
+/// A number of an attribute as text, as OpenImageIO gave lamina's metadata (printf's %g).
 std::string floatText(double v) {
     char text[32];
     std::snprintf(text, sizeof text, "%g", v);

@@ -12,16 +12,22 @@ namespace lamina::render {
 
 namespace {
 
-/// $LAMINA_OIIO_MODULE, else the build's module if it is there, else the one beside the
-/// executable (an installed or copied lamina).
+/// $LAMINA_OIIO_MODULE, else the build's module if it is there, else the one beside the binary
+/// that holds lamina_render (the executable, or the Python extension; an installed or copied
+/// lamina).
 std::string modulePath() {
     if (const char* env = std::getenv("LAMINA_OIIO_MODULE"); env && *env) return env;
     const std::filesystem::path built = LAMINA_OIIO_MODULE_PATH;
     std::error_code ec;
     if (std::filesystem::exists(built, ec)) return built.string();
-    const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-    if (ec) return built.string();
-    return (exe.parent_path() / built.filename()).string();
+    std::filesystem::path binary;
+    Dl_info info{};
+    if (::dladdr(reinterpret_cast<void*>(&modulePath), &info) && info.dli_fname)
+        binary = info.dli_fname;
+    if (binary.empty() || binary.is_relative())  // the executable, as it was started
+        binary = std::filesystem::read_symlink("/proc/self/exe", ec);
+    if (binary.empty()) return built.string();
+    return (binary.parent_path() / built.filename()).string();
 }
 
 struct LoadedModule {
