@@ -19,6 +19,7 @@ if(LAMINA_BUILD_APP)
   lamina_require(embree libembree-dev 3)
   lamina_require(TBB libtbb-dev)
   lamina_require(OpenImageIO libopenimageio-dev)
+  lamina_require(OpenEXR libopenexr-dev)
   # Debian 12's OpenImageIO config lists /usr/include/opencv4 among its include directories
   # although OpenImageIO's headers need no OpenCV; CMake refuses a non-existent path. Keep
   # only the directories that exist.

@@ -1,7 +1,6 @@
 // `lamina render --samples/--crop` and `lamina merge` end to end: four shards merged on the
 // command line give the single render's R, G, B and Variance.Y (relative 1e-6); conflicting
 // shards and malformed ranges end with one error line and the documented exit status.
-#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,6 +9,7 @@
 #include <iterator>
 
 #include "cli_helpers.h"
+#include "lamina/render/image_output.h"
 #include "source_files.h"
 
 namespace lamina {
@@ -25,20 +25,15 @@ struct Channels {
 };
 
 Channels readChannels(const std::string& path) {
-    auto in = OIIO::ImageInput::open(path);
-    EXPECT_TRUE(in) << path;
+    const render::FloatImage image = render::readFloatImage(path);
     Channels out;
-    if (!in) return out;
-    const OIIO::ImageSpec& spec = in->spec();
-    std::vector<float> all(std::size_t(spec.width) * spec.height * spec.nchannels);
-    in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, all.data());
-    for (int c = 0; c < spec.nchannels; ++c) {
-        auto& v = out.values[spec.channel_name(c)];
-        for (std::size_t i = 0; i < all.size() / std::size_t(spec.nchannels); ++i)
-            v.push_back(all[i * std::size_t(spec.nchannels) + std::size_t(c)]);
+    const std::size_t nc = image.channels.size();
+    for (std::size_t c = 0; c < nc; ++c) {
+        auto& v = out.values[image.channels[c]];
+        for (std::size_t i = 0; i < image.samples.size() / nc; ++i)
+            v.push_back(image.samples[i * nc + c]);
     }
-    for (const auto& p : spec.extra_attribs)
-        out.metadata[p.name().string()] = p.get_string();
+    out.metadata = image.attributes;
     return out;
 }
 

@@ -2,36 +2,24 @@
 // relative 1e-6 per pixel (with an absolute floor of 1e-12 times the channel's largest |B|,
 // for values that are rounding noise around zero), 1 otherwise, naming the worst pixel. The
 // cluster test's comparison of a merged image with a single-process render.
-#include <OpenImageIO/imageio.h>
-
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <string>
 #include <vector>
 
+#include "lamina/render/image_output.h"
+
 namespace {
 
-struct Image {
-    OIIO::ImageSpec spec;
-    std::vector<float> pixels;
-};
-
-bool read(const char* path, Image& image) {
-    auto in = OIIO::ImageInput::open(path);
-    if (!in) {
-        std::fprintf(stderr, "exr_agreement: %s: %s\n", path, OIIO::geterror().c_str());
+bool read(const char* path, lamina::render::FloatImage& image) {
+    try {
+        image = lamina::render::readFloatImage(path);
+        return true;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "exr_agreement: %s\n", e.what());
         return false;
     }
-    image.spec = in->spec();
-    image.pixels.resize(std::size_t(image.spec.width) * image.spec.height * image.spec.nchannels);
-    return in->read_image(0, 0, 0, image.spec.nchannels, OIIO::TypeDesc::FLOAT,
-                          image.pixels.data());
-}
-
-int channel(const Image& image, const std::string& name) {
-    for (int c = 0; c < image.spec.nchannels; ++c)
-        if (image.spec.channel_name(c) == name) return c;
-    return -1;
 }
 
 }  // namespace
@@ -41,34 +29,35 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "usage: exr_agreement A.exr B.exr CHANNEL...\n");
         return 2;
     }
-    Image a, b;
+    lamina::render::FloatImage a, b;
     if (!read(argv[1], a) || !read(argv[2], b)) return 1;
-    if (a.spec.width != b.spec.width || a.spec.height != b.spec.height) {
+    if (a.width != b.width || a.height != b.height) {
         std::fprintf(stderr, "exr_agreement: %s and %s differ in size\n", argv[1], argv[2]);
         return 1;
     }
-    const std::size_t n = std::size_t(a.spec.width) * a.spec.height;
+    const std::size_t n = std::size_t(a.width) * a.height;
     for (int i = 3; i < argc; ++i) {
-        const int ca = channel(a, argv[i]), cb = channel(b, argv[i]);
+        const int ca = a.channel(argv[i]), cb = b.channel(argv[i]);
         if (ca < 0 || cb < 0) {
             std::fprintf(stderr, "exr_agreement: channel %s missing\n", argv[i]);
             return 1;
         }
         double largest = 0;
         for (std::size_t p = 0; p < n; ++p)
-            largest = std::max(largest, std::abs(double(b.pixels[p * b.spec.nchannels + cb])));
+            largest = std::max(
+                largest, std::abs(double(b.samples[p * b.channels.size() + std::size_t(cb)])));
         double worst = 0;
         std::size_t at = 0;
         for (std::size_t p = 0; p < n; ++p) {
-            const double x = a.pixels[p * a.spec.nchannels + ca];
-            const double y = b.pixels[p * b.spec.nchannels + cb];
+            const double x = a.samples[p * a.channels.size() + std::size_t(ca)];
+            const double y = b.samples[p * b.channels.size() + std::size_t(cb)];
             const double excess = std::abs(x - y) / (1e-6 * std::abs(y) + 1e-12 * largest);
             if (!(excess <= worst)) {
                 worst = excess;
                 at = p;
             }
         }
-        const int x = int(at % std::size_t(a.spec.width)), y = int(at / std::size_t(a.spec.width));
+        const int x = int(at % std::size_t(a.width)), y = int(at / std::size_t(a.width));
         std::printf("%s: largest difference %.3g of the tolerance at pixel (%d, %d)\n", argv[i],
                     worst, x, y);
         if (!(worst <= 1)) return 1;

@@ -3,7 +3,6 @@
 // values in meshes and images; image paths that are not regular files. Each is an
 // InputError naming the file and the first bad element, never a crash, a hang or a silent
 // loss of geometry.
-#include <OpenImageIO/imageio.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
@@ -140,13 +139,7 @@ TEST_F(InputFiles, ImagesWithNonFiniteSamplesAreRefused) {
     const fs::path file = dir_ / "nan.exr";
     std::vector<float> pixels(4 * 2 * 3, 0.5f);
     pixels[(1 * 4 + 2) * 3 + 1] = std::numeric_limits<float>::quiet_NaN();
-    {
-        auto out = OIIO::ImageOutput::create(file.string());
-        ASSERT_TRUE(out);
-        ASSERT_TRUE(out->open(file.string(), OIIO::ImageSpec(4, 2, 3, OIIO::TypeDesc::FLOAT)));
-        ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()));
-        out->close();
-    }
+    writeFloatExr(file, 4, 2, {"R", "G", "B"}, pixels);
     // Spectral mode crashed in the RGB -> spectrum lookup on such a texel.
     EXPECT_THAT(errorOf([&] { ImageTexture(file, Vec2<float>(1.0f), false, false); }),
                 HasSubstr("nan.exr: the texture has a sample that is not finite (NaN) at pixel "

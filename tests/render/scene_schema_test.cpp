@@ -7,7 +7,6 @@
 //   - the material types are the loader's table of types, each with examples it accepts.
 // That the shipped scenes and the examples are valid by the schema's own rules (ranges,
 // required keys) is checked with a JSON Schema validator (tests/app/validate_scene_schema.py).
-#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -20,6 +19,7 @@
 #include "json_schema_map.h"
 #include "lamina/bsdf/material.h"
 #include "lamina/core/input_file.h"
+#include "lamina/render/image_output.h"
 #include "lamina/render/scene_description.h"
 
 namespace lamina::render {
@@ -78,8 +78,9 @@ class SceneSchema : public ::testing::Test {
         const fs::path dir =
             fs::temp_directory_path() / ("lamina-schema-" + std::to_string(::getpid()));
         fs::create_directories(dir);
-        writeImage(dir / "photo.png", OIIO::TypeDesc::UINT8);
-        writeImage(dir / "sky.exr", OIIO::TypeDesc::FLOAT);
+        const std::vector<float> grey(2 * 2 * 3, 0.5f);  // 2 x 2 grey images
+        render::writeRgb8(dir / "photo.png", 2, 2, grey);
+        render::writeFloatExr(dir / "sky.exr", 2, 2, {"R", "G", "B"}, grey);
         int sceneIndex = 0;
         for (const auto& example : schema_["examples"]) {
             ReadDocument& d =
@@ -103,15 +104,6 @@ class SceneSchema : public ::testing::Test {
         }
         for (const auto& d : documents_)
             visited_.insert(d.map->visited().begin(), d.map->visited().end());
-    }
-
-    // A 2 x 2 grey image.
-    static void writeImage(const fs::path& file, OIIO::TypeDesc type) {
-        const std::vector<float> grey(2 * 2 * 3, 0.5f);
-        auto out = OIIO::ImageOutput::create(file.string());
-        ASSERT_TRUE(out && out->open(file.string(), OIIO::ImageSpec(2, 2, 3, type)));
-        ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, grey.data()));
-        out->close();
     }
 
     static ReadDocument& add(std::string name, Json value) {

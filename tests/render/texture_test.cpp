@@ -1,13 +1,13 @@
 // Textures: image lookups (sRGB decoding, bilinear, repeat, invert), a checkerboard driving a
 // material's colour in a render, textured roughness, the scale and mix operations (exact
 // values), and the errors (reference cycles among them).
-#include <OpenImageIO/imageio.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
 
+#include "lamina/render/image_output.h"
 #include "lamina/render/texture.h"
 #include "render_helpers.h"
 
@@ -23,15 +23,13 @@ double srgbToLinear(double v) {
 TEST(ImageTexture, DecodesSrgbAndInterpolatesBilinearly) {
     const fs::path file =
         fs::temp_directory_path() / ("lamina-tex-" + std::to_string(::getpid()) + ".png");
-    // 2 x 2 pixels: top row 0 and 255, bottom row 128 and 64 (all channels equal).
-    const unsigned char px[12] = {0, 0, 0, 255, 255, 255, 128, 128, 128, 64, 64, 64};
-    {
-        auto out = OIIO::ImageOutput::create(file.string());
-        ASSERT_TRUE(out);
-        ASSERT_TRUE(out->open(file.string(), OIIO::ImageSpec(2, 2, 3, OIIO::TypeDesc::UINT8)));
-        ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, px));
-        out->close();
-    }
+    // 2 x 2 pixels: top row 0 and 255, bottom row 128 and 64 (all channels equal). Written by
+    // lamina's PNG writer, read through the OpenImageIO module.
+    const int bytes[12] = {0, 0, 0, 255, 255, 255, 128, 128, 128, 64, 64, 64};
+    std::vector<float> px;
+    for (int b : bytes)
+        px.push_back(float(b) / 255.0f);
+    render::writeRgb8(file, 2, 2, px);
     const render::ImageTexture srgb(file, Vec2<float>(1.0f), true, false);
     const render::ImageTexture linear(file, Vec2<float>(1.0f), false, false);
     // Texel centres: (u, v) = (0.25, 0.75) is the top-left texel (v = 0 at the bottom).
@@ -196,14 +194,7 @@ TEST(TextureOperations, InvertGivesOneMinusTheValue) {
     const fs::path file =
         fs::temp_directory_path() / ("lamina-invert-" + std::to_string(::getpid()) + ".exr");
     // 1 x 1 float pixels (linear): 0.25, 0.5 and 1.5 (above 1: inverted to 0, as pbrt clamps).
-    const float px[3] = {0.25f, 0.5f, 1.5f};
-    {
-        auto out = OIIO::ImageOutput::create(file.string());
-        ASSERT_TRUE(out);
-        ASSERT_TRUE(out->open(file.string(), OIIO::ImageSpec(1, 1, 3, OIIO::TypeDesc::FLOAT)));
-        ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, px));
-        out->close();
-    }
+    render::writeFloatExr(file, 1, 1, {"R", "G", "B"}, {0.25f, 0.5f, 1.5f});
     const auto scene = sceneWithTextures(R"({
       "plain": {"type": "image", "file": ")" +
                                              file.string() + R"("},

@@ -1,54 +1,50 @@
 #include "lamina/render/image_output.h"
 
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 
+#include "image_files.h"
 #include "lamina/core/error.h"
 #include "lamina/core/input_file.h"
 #include "lamina/core/output_files.h"
-#include "lamina/render/stderr_capture.h"
 #include "lamina/spectral/color_space.h"
 
 namespace lamina::render {
 
 namespace {
 
-void writeAtomically(const std::filesystem::path& path, const OIIO::ImageSpec& spec,
-                     const std::vector<float>& data) {
-    const StderrCapture quiet;  // libpng writes its warnings to stderr
-    TemporaryFile tmp(path);    // removed if anything below fails
-    auto out = OIIO::ImageOutput::create(path.string());
-    if (!out) throw InputError(path.string() + ": cannot write this image format");
-    if (!out->open(tmp.path().string(), spec))
-        throw InputError(path.string() + ": cannot write: " + out->geterror());
-    const bool ok = out->write_image(OIIO::TypeDesc::FLOAT, data.data());
-    const bool closed = out->close();
-    if (!ok || !closed) throw InputError(path.string() + ": write failed: " + out->geterror());
-    tmp.commit();
-}
-
-void addMetadata(OIIO::ImageSpec& spec, const ImageMetadata& metadata) {
-    for (const auto& [k, v] : metadata.strings)
-        spec.attribute("lamina:" + k, v);
-    for (const auto& [k, v] : metadata.floats)
-        spec.attribute("lamina:" + k, v);
-    for (const auto& [k, v] : metadata.ints)
-        spec.attribute("lamina:" + k, v);
-    for (const auto& [k, v] : metadata.matrices)
-        spec.attribute("lamina:" + k, OIIO::TypeMatrix44, v.data());
+ImageToWrite floatImage(int width, int height, const std::vector<std::string>& channels,
+                        const std::vector<float>& data, const ImageMetadata& metadata) {
+    ImageToWrite image;
+    image.width = image.fullWidth = width;
+    image.height = image.fullHeight = height;
+    image.channels = channels;
+    image.zip = true;  // OpenImageIO's default for EXR, which these files had before
+    image.metadata = metadata;
+    image.samples = data.data();
+    return image;
 }
 
 /// Places the image at `window` of a fullWidth x fullHeight image.
-void setDataWindow(OIIO::ImageSpec& spec, const PixelBounds& window, int fullWidth,
-                   int fullHeight) {
-    spec.x = window.x0;
-    spec.y = window.y0;
-    spec.full_x = spec.full_y = 0;
-    spec.full_width = fullWidth;
-    spec.full_height = fullHeight;
+void setDataWindow(ImageToWrite& image, const PixelBounds& window, int fullWidth, int fullHeight) {
+    image.x = window.x0;
+    image.y = window.y0;
+    image.width = window.width();
+    image.height = window.height();
+    image.fullWidth = fullWidth;
+    image.fullHeight = fullHeight;
+}
+
+/// An 8-bit RGB image of display-ready values.
+ImageToWrite rgb8Image(int width, int height, const std::vector<float>& rgb) {
+    ImageToWrite image;
+    image.width = image.fullWidth = width;
+    image.height = image.fullHeight = height;
+    image.channels = {"R", "G", "B"};
+    image.eightBit = true;
+    image.samples = rgb.data();
+    return image;
 }
 
 }  // namespace
@@ -56,8 +52,7 @@ void setDataWindow(OIIO::ImageSpec& spec, const PixelBounds& window, int fullWid
 void checkOutputPath(const std::filesystem::path& path,
                      const std::vector<std::filesystem::path>& inputs) {
     checkOutputFile(path, inputs);
-    auto out = OIIO::ImageOutput::create(path.string());
-    if (!out)
+    if (!canWriteImageFormat(path))
         throw InputError(path.string() + ": unknown image format \"" + path.extension().string() +
                          "\" (use .exr)");
 }
@@ -73,21 +68,17 @@ void writeExr(const std::filesystem::path& path, const Film& film, bool aovs,
         channels.push_back("Variance.Y");
     if (variance) channels.insert(channels.end(), {"Variance.R", "Variance.G", "Variance.B"});
     const std::size_t nc = channels.size();
-    OIIO::ImageSpec spec(w, h, int(nc), OIIO::TypeDesc::FLOAT);
-    setDataWindow(spec, film.window(), film.fullWidth(), film.fullHeight());
-    spec.channelnames = channels;
-    spec.attribute("compression", "zip");
-    addMetadata(spec, metadata);
+    std::vector<float> data(std::size_t(w) * h * nc);
+    ImageToWrite image = floatImage(w, h, channels, data, metadata);
+    setDataWindow(image, film.window(), film.fullWidth(), film.fullHeight());
     // The primaries and white of lamina's linear Rec.709 (the EXR "chromaticities" attribute).
     const RgbColorSpace& cs = RgbColorSpace::rec709();
     const Vec3d white = cs.whiteXyz();
     const double sum = white.x + white.y + white.z;
-    const float chroma[8] = {float(cs.red().x),    float(cs.red().y),   float(cs.green().x),
-                             float(cs.green().y),  float(cs.blue().x),  float(cs.blue().y),
-                             float(white.x / sum), float(white.y / sum)};
-    spec.attribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8), chroma);
+    image.chromaticities = std::array<float, 8>{
+        float(cs.red().x),  float(cs.red().y),  float(cs.green().x),  float(cs.green().y),
+        float(cs.blue().x), float(cs.blue().y), float(white.x / sum), float(white.y / sum)};
 
-    std::vector<float> data(std::size_t(w) * h * nc);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             float* p = &data[(std::size_t(y) * w + x) * nc];
@@ -111,38 +102,30 @@ void writeExr(const std::filesystem::path& path, const Film& film, bool aovs,
             p[9] = float(a.depth);
             p[10] = float(film.varianceOfMean(x, y));
         }
-    writeAtomically(path, spec, data);
+    writeImageFile(path, image);
 }
 
 void writeFloatExr(const std::filesystem::path& path, int width, int height,
                    const std::vector<std::string>& channels, const std::vector<float>& data,
                    const ImageMetadata& metadata) {
-    OIIO::ImageSpec spec(width, height, int(channels.size()), OIIO::TypeDesc::FLOAT);
-    spec.channelnames = channels;
-    addMetadata(spec, metadata);
-    writeAtomically(path, spec, data);
+    writeImageFile(path, floatImage(width, height, channels, data, metadata));
 }
 
 void writeFloatExr(const std::filesystem::path& path, const PixelBounds& window, int fullWidth,
                    int fullHeight, const std::vector<std::string>& channels,
                    const std::vector<float>& data, const ImageMetadata& metadata) {
-    OIIO::ImageSpec spec(window.width(), window.height(), int(channels.size()),
-                         OIIO::TypeDesc::FLOAT);
-    setDataWindow(spec, window, fullWidth, fullHeight);
-    spec.channelnames = channels;
-    spec.attribute("compression", "zip");
-    addMetadata(spec, metadata);
-    writeAtomically(path, spec, data);
+    ImageToWrite image = floatImage(window.width(), window.height(), channels, data, metadata);
+    setDataWindow(image, window, fullWidth, fullHeight);
+    writeImageFile(path, image);
 }
 
 void writeRgb8(const std::filesystem::path& path, int width, int height,
                const std::vector<float>& rgb) {
-    writeAtomically(path, OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::UINT8), rgb);
+    writeImageFile(path, rgb8Image(width, height, rgb));
 }
 
 void writePngPreview(const std::filesystem::path& path, const Film& film, double exposure) {
     const int w = film.width(), h = film.height();
-    OIIO::ImageSpec spec(w, h, 3, OIIO::TypeDesc::UINT8);
     std::vector<float> data(std::size_t(w) * h * 3);
     const double scale = std::exp2(exposure);
     for (int y = 0; y < h; ++y)
@@ -155,26 +138,26 @@ void writePngPreview(const std::filesystem::path& path, const Film& film, double
                 data[(std::size_t(y) * w + x) * 3 + std::size_t(c)] = float(e);
             }
         }
-    writeAtomically(path, spec, data);
+    writeImageFile(path, rgb8Image(w, h, data));
 }
 
 namespace {
 
 /// The index of channel `name`, or -1.
-int channelIndex(const OIIO::ImageSpec& spec, const std::string& name) {
-    for (int c = 0; c < spec.nchannels; ++c)
-        if (spec.channel_name(c) == name) return c;
+int channelIndex(const ImageHeader& header, const std::string& name) {
+    for (std::size_t c = 0; c < header.channels.size(); ++c)
+        if (header.channels[c] == name) return int(c);
     return -1;
 }
 
 /// An 8- or 16-bit file is sRGB-encoded unless it says otherwise (PNG, JPEG); a float file is
 /// linear unless it says it is sRGB.
-bool isSrgbEncoded(const OIIO::ImageSpec& spec) {
-    std::string cs = spec.get_string_attribute("oiio:ColorSpace");
+bool isSrgbEncoded(const ImageHeader& header) {
+    std::string cs = header.colorSpace;
     std::transform(cs.begin(), cs.end(), cs.begin(),
                    [](unsigned char c) { return std::tolower(c); });
     if (cs.find("srgb") != std::string::npos && cs.find("lin") == std::string::npos) return true;
-    const bool integer = !spec.format.is_floating_point();
+    const bool integer = !header.floatingPoint;
     return integer && cs.empty();
 }
 
@@ -185,40 +168,58 @@ double srgbToLinear(double e) {
 
 }  // namespace
 
-RgbImage readRgbImage(const std::filesystem::path& path) {
+namespace {
+
+/// The file open, its pixel count within kMaxImagePixels.
+std::unique_ptr<ImageFileReader> openWithinLimits(const std::filesystem::path& path) {
     checkInputFile(path, kMaxImageFileBytes);
-    const StderrCapture quiet;  // libpng writes its warnings to stderr
-    auto in = OIIO::ImageInput::open(path.string());
-    if (!in) throw InputError(path.string() + ": cannot read image: " + OIIO::geterror());
-    const OIIO::ImageSpec& spec = in->spec();
+    Failure failure;
+    auto in = openImageFile(path, failure);
+    if (!in) throw InputError(path.string() + ": cannot read image: " + failure.message);
+    const ImageHeader& header = in->header();
     // A small header can claim any resolution: refuse before allocating for it.
-    if (std::uintmax_t(std::max(spec.width, 0)) * std::uintmax_t(std::max(spec.height, 0)) >
+    if (std::uintmax_t(std::max(header.width, 0)) * std::uintmax_t(std::max(header.height, 0)) >
         kMaxImagePixels)
-        throw InputError(path.string() + ": " + std::to_string(spec.width) + " x " +
-                         std::to_string(spec.height) + " pixels, more than the limit of " +
+        throw InputError(path.string() + ": " + std::to_string(header.width) + " x " +
+                         std::to_string(header.height) + " pixels, more than the limit of " +
                          std::to_string(kMaxImagePixels));
+    return in;
+}
+
+/// Every channel of every pixel, interleaved.
+std::vector<float> readAllChannels(ImageFileReader& in, const std::filesystem::path& path) {
+    const ImageHeader& header = in.header();
+    std::vector<float> all(std::size_t(header.width) * std::size_t(header.height) *
+                           header.channels.size());
+    Failure failure;
+    if (!in.read(int(header.channels.size()), all.data(), failure))
+        throw InputError(path.string() + ": cannot read image: " + failure.message +
+                         (failure.library.empty() ? "" : " (" + failure.library + ")"));
+    return all;
+}
+
+}  // namespace
+
+RgbImage readRgbImage(const std::filesystem::path& path) {
+    const auto in = openWithinLimits(path);
+    const ImageHeader& header = in->header();
     // By name, not by position: an EXR's channels are stored sorted (A before B, G, R, and
     // AOV layers such as Albedo.R before R).
-    const int channels[3] = {channelIndex(spec, "R"), channelIndex(spec, "G"),
-                             channelIndex(spec, "B")};
+    const int channels[3] = {channelIndex(header, "R"), channelIndex(header, "G"),
+                             channelIndex(header, "B")};
     if (channels[0] < 0 || channels[1] < 0 || channels[2] < 0) {
         std::string names;
-        for (int c = 0; c < spec.nchannels; ++c)
-            names += std::string(c ? ", " : "") + std::string(spec.channel_name(c));
+        for (std::size_t c = 0; c < header.channels.size(); ++c)
+            names += std::string(c ? ", " : "") + header.channels[c];
         throw InputError(path.string() + ": expected channels R, G and B, found " +
                          (names.empty() ? std::string("none") : names));
     }
     RgbImage img;
-    img.width = spec.width;
-    img.height = spec.height;
-    img.displayReferred = isSrgbEncoded(spec);
-    const std::size_t nc = std::size_t(spec.nchannels), n = std::size_t(spec.width) * spec.height;
-    std::vector<float> all(n * nc);
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, all.data())) {
-        const std::string library = quiet.text();  // libpng's reason, if it gave one
-        throw InputError(path.string() + ": cannot read image: " + in->geterror() +
-                         (library.empty() ? "" : " (" + library + ")"));
-    }
+    img.width = header.width;
+    img.height = header.height;
+    img.displayReferred = isSrgbEncoded(header);
+    const std::size_t nc = header.channels.size(), n = std::size_t(header.width) * header.height;
+    const std::vector<float> all = readAllChannels(*in, path);
     img.pixels.resize(n * 3);
     for (std::size_t i = 0; i < n; ++i)
         for (int c = 0; c < 3; ++c) {
@@ -226,10 +227,31 @@ RgbImage readRgbImage(const std::filesystem::path& path) {
             img.pixels[i * 3 + std::size_t(c)] =
                 img.displayReferred ? float(srgbToLinear(double(v))) : v;
         }
-    for (const auto& p : spec.extra_attribs)
-        img.metadata[p.name().string()] = p.get_string();
-    in->close();
+    img.metadata = header.attributes;
     return img;
+}
+
+FloatImage readFloatImage(const std::filesystem::path& path) {
+    const auto in = openWithinLimits(path);
+    const ImageHeader& header = in->header();
+    FloatImage img;
+    img.x = header.x;
+    img.y = header.y;
+    img.width = header.width;
+    img.height = header.height;
+    img.fullWidth = header.fullWidth;
+    img.fullHeight = header.fullHeight;
+    img.channels = header.channels;
+    img.samples = readAllChannels(*in, path);
+    img.metadata = header.laminaMetadata;
+    img.attributes = header.attributes;
+    return img;
+}
+
+int FloatImage::channel(const std::string& name) const {
+    for (std::size_t c = 0; c < channels.size(); ++c)
+        if (channels[c] == name) return int(c);
+    return -1;
 }
 
 RgbImage readLinearRgbImage(const std::filesystem::path& path) {

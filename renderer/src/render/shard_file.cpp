@@ -1,11 +1,10 @@
 #include "lamina/render/shard_file.h"
 
-#include <OpenImageIO/imageio.h>
-
 #include <cmath>
 #include <functional>
 #include <sstream>
 
+#include "image_files.h"
 #include "lamina/core/error.h"
 #include "lamina/core/input_file.h"
 #include "lamina/render/render_metadata.h"
@@ -136,25 +135,6 @@ void writeShardExr(const std::filesystem::path& path, const Film& film,
 
 namespace {
 
-void readMetadata(const OIIO::ImageSpec& spec, ImageMetadata& meta) {
-    for (const auto& p : spec.extra_attribs) {
-        const std::string name = p.name().string();
-        if (name.rfind("lamina:", 0) != 0) continue;
-        const std::string key = name.substr(7);
-        if (p.type() == OIIO::TypeDesc::INT)
-            meta.ints[key] = p.get_int();
-        else if (p.type() == OIIO::TypeDesc::FLOAT)
-            meta.floats[key] = p.get_float();
-        else if (p.type() == OIIO::TypeMatrix44) {
-            std::array<float, 16> m{};
-            const float* v = static_cast<const float*>(p.data());
-            std::copy(v, v + 16, m.begin());
-            meta.matrices[key] = m;
-        } else
-            meta.strings[key] = p.get_string();
-    }
-}
-
 PixelBounds parseBounds(const std::string& text, const std::string& file) {
     PixelBounds b;
     char c1 = 0, c2 = 0, c3 = 0;
@@ -170,12 +150,14 @@ PixelBounds parseBounds(const std::string& text, const std::string& file) {
 ShardFile readShardExr(const std::filesystem::path& path) {
     const std::string file = path.string();
     checkInputFile(path, kMaxImageFileBytes);
-    auto in = OIIO::ImageInput::open(file);
-    if (!in) throw InputError(file + ": cannot read image: " + OIIO::geterror());
-    const OIIO::ImageSpec spec = in->spec();
+    Failure failure;
+    const auto in = openImageFile(path, failure);
+    if (!in) throw InputError(file + ": cannot read image: " + failure.message);
+    const ImageHeader& spec = in->header();
+    const int nchannels = int(spec.channels.size());
     ShardFile shard;
     shard.path = path;
-    readMetadata(spec, shard.metadata);
+    shard.metadata = spec.laminaMetadata;
     const ImageMetadata& m = shard.metadata;
     if (!m.ints.contains("shard") || m.ints.at("shard") != 1)
         throw InputError(file + ": lamina:shard: not a shard (render it with --samples or --crop)");
@@ -209,12 +191,18 @@ ShardFile readShardExr(const std::filesystem::path& path) {
         shard.samplesDone > shard.requested.count)
         throw InputError(file + ": lamina:samples_done: expected 0 to lamina:sample_count");
 
-    std::vector<float> all(std::size_t(spec.width) * spec.height * std::size_t(spec.nchannels));
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, all.data()))
-        throw InputError(file + ": cannot read image: " + in->geterror());
+    // The window matches the crop, inside the full image, whose size the header gave: refuse
+    // one larger than any image before allocating for it.
+    if (std::uintmax_t(spec.width) * std::uintmax_t(spec.height) > kMaxImagePixels)
+        throw InputError(file + ": " + std::to_string(spec.width) + " x " +
+                         std::to_string(spec.height) + " pixels, more than the limit of " +
+                         std::to_string(kMaxImagePixels));
+    std::vector<float> all(std::size_t(spec.width) * spec.height * std::size_t(nchannels));
+    if (!in->read(nchannels, all.data(), failure))
+        throw InputError(file + ": cannot read image: " + failure.message);
     const auto channel = [&](const std::string& name) {
-        for (int i = 0; i < spec.nchannels; ++i)
-            if (spec.channel_name(i) == name) return i;
+        for (int i = 0; i < nchannels; ++i)
+            if (spec.channels[std::size_t(i)] == name) return i;
         throw InputError(file + ": channel " + name + ": missing (not a complete shard)");
     };
     const auto& sums = sumChannels();
@@ -228,7 +216,7 @@ ShardFile readShardExr(const std::filesystem::path& path) {
                              channel(kLowPrefix + std::string(kSplatCountChannel))};
     shard.film = std::make_unique<Film>(shard.fullWidth, shard.fullHeight, c,
                                         space == "xyz" ? FilmSpace::Xyz : FilmSpace::Rec709);
-    const std::size_t nc = std::size_t(spec.nchannels);
+    const std::size_t nc = std::size_t(nchannels);
     for (int y = 0; y < spec.height; ++y)
         for (int x = 0; x < spec.width; ++x) {
             const float* v = &all[(std::size_t(y) * spec.width + x) * nc];
@@ -252,7 +240,6 @@ ShardFile readShardExr(const std::filesystem::path& path) {
                                      " is not finite");
             shard.film->addSums(c.x0 + x, c.y0 + y, p);
         }
-    in->close();
     return shard;
 }
 

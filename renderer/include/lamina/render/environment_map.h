@@ -48,7 +48,8 @@ struct EnvironmentLayout {
 
 class EnvironmentMap {
   public:
-    /// Loads an image (EXR, HDR, PNG, ... through OpenImageIO); InputError if it cannot, or
+    /// Loads an image (EXR through OpenEXR; HDR, PNG, ... through lamina's OpenImageIO module,
+    /// image_input.h); InputError if it cannot, or
     /// if an equal-area octahedral image is not square.
     EnvironmentMap(const std::filesystem::path& file, const EnvironmentLayout& layout);
     /// An image in memory, rows from the top (tests).

@@ -1,7 +1,7 @@
-// Reading an input image (a texture, an environment map) through OpenImageIO behind the
-// checks every input file gets: a regular file of sane size (input_file.h), a sane number of
-// pixels before anything is allocated, and every sample finite. Errors name the file and the
-// first bad pixel.
+// Reading an input image (a texture, an environment map: EXR through OpenEXR, anything else through
+// lamina's OpenImageIO module, loaded on first use) behind the checks every input file gets: a
+// regular file of sane size (input_file.h), a sane number of pixels before anything is allocated,
+// and every sample finite. Errors name the file and the first bad pixel.
 #pragma once
 
 #include <filesystem>

@@ -1,29 +1,24 @@
-// Writing renders: OpenEXR (through OpenImageIO), float RGB with metadata and optional AOV
-// layers that Blender and tev read (Albedo.R/G/B, N.X/Y/Z, Z, Variance.Y), and a PNG preview
-// (sRGB, with exposure). Files are written under a temporary name in the same directory and
+// Writing renders: OpenEXR (through the OpenEXR library), float RGB with metadata and optional
+// AOV layers that Blender and tev read (Albedo.R/G/B, N.X/Y/Z, Z, Variance.Y), and a PNG preview
+// (sRGB, with exposure; lamina's own PNG writer). Other formats go through lamina's OpenImageIO
+// module, loaded only for them. Files are written under a temporary name in the same directory and
 // renamed, so an interrupted write never leaves a broken file behind.
 #pragma once
 
-#include <array>
 #include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
 
 #include "lamina/render/film.h"
+#include "lamina/render/image_metadata.h"
 
 namespace lamina::render {
 
-struct ImageMetadata {
-    std::map<std::string, std::string> strings;  ///< written as "lamina:<key>"
-    std::map<std::string, float> floats;
-    std::map<std::string, int> ints;
-    std::map<std::string, std::array<float, 16>> matrices;  ///< row-major 4x4 (M44f)
-};
-
 /// Checks that the image `path` can be written before a long render starts (checkOutputFile:
 /// a writable directory, not a directory, not one of `inputs`, a name that fits; and a format
-/// OpenImageIO knows from the extension); InputError otherwise.
+/// known from the extension: .exr, .png, or one OpenImageIO writes, which loads the module);
+/// InputError otherwise.
 void checkOutputPath(const std::filesystem::path& path,
                      const std::vector<std::filesystem::path>& inputs = {});
 
@@ -56,9 +51,28 @@ struct RgbImage {
     float at(int x, int y, int c) const { return pixels[(std::size_t(y) * width + x) * 3 + c]; }
 };
 /// Channels R, G and B by name (an InputError names the channels found otherwise); an
-/// sRGB-encoded file is decoded to linear and marked displayReferred.
+/// sRGB-encoded file is decoded to linear and marked displayReferred. EXR through OpenEXR,
+/// anything else through lamina's OpenImageIO module.
 RgbImage readRgbImage(const std::filesystem::path& path);
 /// The same for a reference of a linear render: refuses a display-referred image.
 RgbImage readLinearRgbImage(const std::filesystem::path& path);
+
+/// Every channel of an image as stored (no decoding), with its data window and metadata.
+struct FloatImage {
+    int x = 0, y = 0, width = 0, height = 0;  ///< the data window
+    int fullWidth = 0, fullHeight = 0;        ///< the display window, from (0, 0)
+    /// In the order OpenImageIO gives them: R, G, B, A of each layer first, layers by name.
+    std::vector<std::string> channels;
+    std::vector<float> samples;  ///< width * height * channels.size(), interleaved, top row first
+    ImageMetadata metadata;      ///< the "lamina:<key>" attributes, typed
+    std::map<std::string, std::string> attributes;  ///< every attribute, as text
+    /// The index of channel `name`, -1 if there is none.
+    int channel(const std::string& name) const;
+    float at(int px, int py, int c) const {
+        return samples[(std::size_t(py) * width + px) * channels.size() + std::size_t(c)];
+    }
+};
+/// InputError naming the file if it cannot be read or has more than kMaxImagePixels pixels.
+FloatImage readFloatImage(const std::filesystem::path& path);
 
 }  // namespace lamina::render

@@ -1,9 +1,10 @@
-// Textures for material parameters (colours and roughness), looked up by the surface's uv:
-// a checkerboard and images through OpenImageIO (bilinear, repeating; 8-bit images are
-// decoded from sRGB unless declared linear; optionally inverted), and the operations on
-// textures that pbrt-v4 scenes use: a texture times a number, and a mix of two. Only the renderer
-// knows textures: the BSDF library receives the looked-up values (material_textures.h reads them
-// from a scene file and looks them up; render_mode.h rebuilds a textured material per hit).
+// Textures for material parameters (colours and roughness), looked up by the surface's uv: a
+// checkerboard and images (EXR through OpenEXR, other formats through lamina's OpenImageIO module,
+// image_input.h; bilinear, repeating; 8-bit images are decoded from sRGB unless declared linear;
+// optionally inverted), and the operations on textures that pbrt-v4 scenes use: a texture times a
+// number, and a mix of two. Only the renderer knows textures: the BSDF library receives the
+// looked-up values (material_textures.h reads them from a scene file and looks them up;
+// render_mode.h rebuilds a textured material per hit).
 #pragma once
 
 #include <filesystem>

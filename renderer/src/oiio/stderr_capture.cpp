@@ -1,4 +1,4 @@
-#include "lamina/render/stderr_capture.h"
+#include "stderr_capture.h"
 
 #include <unistd.h>
 

@@ -1,8 +1,9 @@
-// Libraries that talk on stderr: OpenImageIO creates libpng's reader and writer with libpng's
-// default handlers, which print "libpng warning: ..." and "libpng error: ..." straight to file
-// descriptor 2, past lamina's one-line error policy. While a StderrCapture is alive, whatever
-// is written to descriptor 2 goes to a temporary file instead; text() returns it, so a failed
-// read can name the library's reason on lamina's own line, and a successful one stays quiet.
+// Libraries that talk on stderr (used inside lamina's OpenImageIO module, oiio_images.cpp):
+// OpenImageIO creates libpng's reader and writer with libpng's default handlers, which print
+// "libpng warning: ..." and "libpng error: ..." straight to file descriptor 2, past lamina's
+// one-line error policy. While a StderrCapture is alive, whatever is written to descriptor 2 goes
+// to a temporary file instead; text() returns it, so a failed read can name the library's reason on
+// lamina's own line, and a successful one stays quiet.
 #pragma once
 
 #include <mutex>
