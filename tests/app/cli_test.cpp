@@ -234,7 +234,7 @@ TEST_F(CliTest, RenderMemoryIsPrintedAndCheckedUpFront) {
 // of the scene has 12 triangles (a trunk of 4 quads, two cards), placed 16 times.
 TEST_F(CliTest, InfoCountsInstancesAndTheTrianglesTheyReference) {
     const CommandRun info =
-        runLamina("info " + testing::sourceFile("scenes/instances-and-cutouts.json"));
+        runLamina("info " + testing::sourceFile("scenes/instances-and-cutouts.json").string());
     ASSERT_EQ(info.exitCode, 0) << info.output;
     EXPECT_THAT(info.output,
                 ::testing::HasSubstr("instances: 16 of 1 objects, referencing 192 triangles (12 "

@@ -269,8 +269,7 @@ namespace {
 // samples: the scenes in the repository stay valid as the format evolves.
 TEST(ExampleScenes, LoadAndRenderInBothModes) {
     int scenes = 0;
-    for (const auto& entry :
-         std::filesystem::directory_iterator(testing::sourceFile("scenes"))) {
+    for (const auto& entry : std::filesystem::directory_iterator(testing::sourceFile("scenes"))) {
         if (entry.path().extension() != ".json") continue;
         const auto scene = render::loadScene(entry.path());
         for (auto mode : {render::RenderModeKind::Rgb, render::RenderModeKind::Spectral}) {

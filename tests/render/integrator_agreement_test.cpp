@@ -31,7 +31,7 @@ struct AgreementCase {
 };
 
 std::string sourcePath(const std::string& relative) {
-    return testing::sourceFile(relative);
+    return testing::sourceFile(relative).string();
 }
 
 BatchImages render(const SceneDesc& scene, IntegratorKind integrator, RenderModeKind mode,

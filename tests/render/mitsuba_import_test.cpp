@@ -478,7 +478,8 @@ TEST_F(MitsubaImport, EnvironmentMapLooksUpThePixelsMitsubaDoes) {
             const glm::dvec3 local(std::sin(theta) * std::sin(phi), std::cos(theta),
                                    -std::sin(theta) * std::cos(phi));
             const Vec3<float> w(mitsubaToWorld * local);
-            EXPECT_EQ(map.lookup(w)[0], float(row * width + col)) << "row " << row << " col " << col;
+            EXPECT_EQ(map.lookup(w)[0], float(row * width + col))
+                << "row " << row << " col " << col;
         }
 }
 
@@ -670,7 +671,7 @@ TEST_F(MitsubaBsdf, SpectraForms) {
 // ---- the test scenes of tests/data/interchange/mitsuba ------------------------------------------
 
 std::string mitsubaData(const std::string& name) {
-    return testing::sourceFile("tests/data/interchange/mitsuba/").append(name);
+    return (testing::sourceFile("tests/data/interchange/mitsuba") / name).string();
 }
 
 TEST(MitsubaScenes, InstancesTranslateToTheHandWrittenObjects) {

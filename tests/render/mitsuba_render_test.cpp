@@ -22,7 +22,7 @@ namespace lamina::render {
 namespace {
 
 std::string mitsubaData(const std::string& name) {
-    return testing::sourceFile("tests/data/interchange/mitsuba/").append(name);
+    return (testing::sourceFile("tests/data/interchange/mitsuba") / name).string();
 }
 
 struct AgreementCase {

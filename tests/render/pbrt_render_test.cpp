@@ -24,7 +24,7 @@ namespace {
 using namespace lamina::experiments;
 
 std::string dataPath(const std::string& name) {
-    return testing::sourceFile("tests/data/interchange/pbrt/").append(name);
+    return (testing::sourceFile("tests/data/interchange/pbrt") / name).string();
 }
 
 struct PbrtCase {

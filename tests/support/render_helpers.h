@@ -58,7 +58,7 @@ inline render::SceneDesc sceneFromText(const std::string& json) {
 }
 
 inline std::string sharedCornellBox() {
-    return sourceFile("scenes/cornell-box.json");
+    return sourceFile("scenes/cornell-box.json").string();
 }
 
 /// Mean of a channel over the image and its standard error from the per-pixel variances
