@@ -19,12 +19,19 @@ set(LAMINA_PCH_HEADERS
     <memory> <optional> <ostream> <set> <sstream> <string> <string_view> <utility> <variant>
     <vector> "${PROJECT_SOURCE_DIR}/core/include/lamina/core/vector.h")
 
-# lamina_precompile_headers(target [HEADERS header...]): the common set plus the target's
-# own heavy third-party headers (GoogleTest for the tests, CLI11 for the command).
+# lamina_precompile_headers(target [HEADERS header...] [REUSE_FROM owner]): the common set plus
+# the target's own heavy third-party headers (GoogleTest for the tests, CLI11 for the command);
+# or the header precompiled for owner, a target compiled with the same flags and definitions
+# (the static libraries share lamina_core's, the test binaries lamina_unit_tests'): building a
+# header once per target cost as much as a dozen source files each time.
 function(lamina_precompile_headers target)
   if(NOT LAMINA_PRECOMPILE_HEADERS)
     return()
   endif()
-  cmake_parse_arguments(arg "" "" "HEADERS" ${ARGN})
-  target_precompile_headers(${target} PRIVATE ${LAMINA_PCH_HEADERS} ${arg_HEADERS})
+  cmake_parse_arguments(arg "" "REUSE_FROM" "HEADERS" ${ARGN})
+  if(arg_REUSE_FROM)
+    target_precompile_headers(${target} REUSE_FROM ${arg_REUSE_FROM})
+  else()
+    target_precompile_headers(${target} PRIVATE ${LAMINA_PCH_HEADERS} ${arg_HEADERS})
+  endif()
 endfunction()
