@@ -28,6 +28,12 @@ double cieYIntegral() {
     return integral;
 }
 
+CieXyzTable::CieXyzTable(ResampledSpectrum xBar, ResampledSpectrum yBar, ResampledSpectrum zBar)
+    : x(xBar), y(yBar), z(zBar) {
+    for (int i = 0; i < ResampledSpectrum::kSamples; ++i)
+        rows[std::size_t(i)] = {x.value(i), y.value(i), z.value(i), 0.0f};
+}
+
 const CieXyzTable& CieXyzTable::normalized() {
     static const CieXyzTable table = [] {
         const double inverse = 1.0 / cieYIntegral();

@@ -311,6 +311,69 @@ TEST(SpectralMaterials, ColoursCollectedInAdvanceGiveTheSameBsdf) {
     }
 }
 
+// A build records whether it read the path's wavelengths (spectrum_context.h): spectral mode
+// shares the BSDF of a material whose build did not (render_mode.h). Grey colours and plain
+// numbers read none, and then builds at two sets of wavelengths give the same eval, pdf and
+// sample bit for bit; every colour, spectrum, index spectrum or n, k input reads them.
+TEST(SpectralMaterials, BuildsThatReadNoWavelengthAreTheSameAtAnyWavelengths) {
+    const std::pair<const char*, bool> materials[] = {
+        {R"({"type":"lambert","reflectance":1})", false},
+        {R"({"type":"lambert","reflectance":[0.4,0.4,0.4]})", false},
+        {R"({"type":"conductor","f0":1,"roughness":1,"multiscatter":true})", false},
+        {R"({"type":"standard","base_color":1,"roughness":0.3,"coupling":"albedo",)"
+         R"("multiscatter":true})",
+         false},
+        {R"({"type":"standard","base_color":0.5,"metalness":0.5,"roughness":0.4})", false},
+        {R"({"type":"conductor","eta":1.5,"k":3,"roughness":0.3})", false},
+        {R"({"type":"dielectric","ior":1.5,"roughness":0.2})", false},
+        {R"({"type":"coated","roughness":0.1,"thickness":0.2,"albedo":0.8,)"
+         R"("base":{"type":"lambert","reflectance":0.5}})",
+         false},
+        {R"({"type":"mix","a":{"type":"lambert","reflectance":0.7},)"
+         R"("b":{"type":"conductor","f0":0.9,"roughness":0.5}})",
+         false},
+        {R"({"type":"lambert","reflectance":[0.35,0.35,0.38]})", true},
+        {R"({"type":"standard","base_color":[0.8,0.2,0.1],"roughness":0.3})", true},
+        {R"({"type":"conductor","material":"Au","roughness":0.2})", true},
+        {R"({"type":"conductor","eta":[0.2,0.4,1.3],"k":[3.9,2.4,1.8]})", true},
+        {R"({"type":"dielectric","ior":"bk7"})", true},
+        {R"({"type":"mix","a":{"type":"lambert","reflectance":0.7},)"
+         R"("b":{"type":"lambert","reflectance":[0.1,0.2,0.7]}})",
+         true},
+    };
+    const Vec3<double> wo = normalize(Vec3<double>(0.3, -0.2, 0.8));
+    const Vec3<double> wi = normalize(Vec3<double>(-0.4, 0.1, 0.7));
+    for (const auto& [json, reads] : materials) {
+        SCOPED_TRACE(json);
+        const MaterialDesc m = parseMaterialArgument(json);
+        auto lambdaA = SampledWavelengths<double>::fixed({412, 487, 561, 688});
+        auto lambdaB = SampledWavelengths<double>::fixed({371, 530, 602, 799});
+        bool readA = false, readB = false;
+        const auto a = buildBxdf(
+            m, SpectrumContext<SampledSpectrum<double>>{lambdaA, nullptr, nullptr, &readA}, 3);
+        const auto b = buildBxdf(
+            m, SpectrumContext<SampledSpectrum<double>>{lambdaB, nullptr, nullptr, &readB}, 3);
+        EXPECT_EQ(readA, reads);
+        EXPECT_EQ(readB, reads);
+        if (reads) continue;
+        const SampledSpectrum<double> fa = a->eval(wo, wi, TransportMode::Radiance);
+        const SampledSpectrum<double> fb = b->eval(wo, wi, TransportMode::Radiance);
+        for (int i = 0; i < 4; ++i)
+            EXPECT_EQ(fa[i], fb[i]) << i;
+        EXPECT_EQ(a->pdf(wo, wi), b->pdf(wo, wi));
+        for (const double u : {0.1, 0.5, 0.9}) {
+            const auto sa = a->sample(wo, u, {0.6, 0.2}, TransportMode::Radiance);
+            const auto sb = b->sample(wo, u, {0.6, 0.2}, TransportMode::Radiance);
+            ASSERT_EQ(sa.has_value(), sb.has_value());
+            if (!sa) continue;
+            EXPECT_EQ(sa->wi, sb->wi);
+            EXPECT_EQ(sa->pdf, sb->pdf);
+            for (int i = 0; i < 4; ++i)
+                EXPECT_EQ(sa->weight[i], sb->weight[i]) << i;
+        }
+    }
+}
+
 TEST(DielectricMaterial, DispersiveGlassKeepsOnlyTheHeroWavelength) {
     const MaterialDesc glass = parseMaterialArgument(R"({"type":"dielectric","ior":"bk7"})");
     auto lambda = SampledWavelengths<float>::fixed({450, 550, 650, 700});

@@ -4,7 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <random>
+#include <vector>
 
 #include "lamina/spectral/cie_xyz_table.h"
 #include "lamina/spectral/emission_spectrum.h"
@@ -66,6 +69,56 @@ TEST(ResampledSpectrum, SampledWavelengthsAndTheEndsOfTheRange) {
     EXPECT_FLOAT_EQ(r(300.0f), 3.6f);
     EXPECT_FLOAT_EQ(r(900.0f), 8.3f);
     EXPECT_FLOAT_EQ(r(830.0f), 8.3f);
+}
+
+// A path's table positions, found in four lanes at once, are locate() of each wavelength, and
+// the spectrum at them is operator() of each, bit for bit (inside the range and beyond its
+// ends, where the lanes clamp as the scalar code does).
+TEST(ResampledSpectrum, FourLanePositionsAreTheScalarOnes) {
+    const ResampledSpectrum r([](double nm) { return std::sin(nm / 37.0) + 1.5; });
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> nm(300.0f, 900.0f);
+    std::vector<std::array<float, 4>> cases = {
+        {float(kLambdaMin), float(kLambdaMax), 829.999f, 360.001f},
+        {300.0f, 900.0f, 361.0f, 829.0f}};
+    for (int n = 0; n < 50000; ++n)
+        cases.push_back({nm(rng), nm(rng), nm(rng), nm(rng)});
+    for (const auto& c : cases) {
+        const auto lambda = SampledWavelengths<float>::fixed(c);
+        const ResampledSpectrum::Positions<4> p = ResampledSpectrum::locate(lambda);
+        const SampledSpectrum<float> s = r.at(p);
+        for (int k = 0; k < 4; ++k) {
+            const ResampledSpectrum::Position q = ResampledSpectrum::locate(c[std::size_t(k)]);
+            ASSERT_EQ(p.i[std::size_t(k)], q.i) << c[std::size_t(k)];
+            ASSERT_EQ(p.t[std::size_t(k)], q.t) << c[std::size_t(k)];
+            ASSERT_EQ(s[k], r(c[std::size_t(k)])) << c[std::size_t(k)];
+        }
+    }
+}
+
+// The film's XYZ sum in one register is the scalar sum over the lanes, in lane order, of
+// w_k times each table at lambda_k, bit for bit.
+TEST(ResampledSpectrum, ColourMatchingSumIsTheScalarSumBitForBit) {
+    const CieXyzTable& t = CieXyzTable::normalized();
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f), weight(-2.0f, 50.0f);
+    for (int n = 0; n < 50000; ++n) {
+        const auto lambda = SampledWavelengths<float>::sample(double(u(rng)));
+        SampledSpectrum<float> w;
+        for (int k = 0; k < 4; ++k)
+            w[k] = n % 7 == 0 && k == 2 ? 0.0f : weight(rng);
+        const std::array<float, 3> sum = t.weightedSum(w, ResampledSpectrum::locate(lambda));
+        float x = 0.0f, y = 0.0f, z = 0.0f;
+        for (int k = 0; k < 4; ++k) {
+            const ResampledSpectrum::Position p = ResampledSpectrum::locate(lambda[k]);
+            x += w[k] * t.x.at(p);
+            y += w[k] * t.y.at(p);
+            z += w[k] * t.z.at(p);
+        }
+        ASSERT_EQ(sum[0], x) << n;
+        ASSERT_EQ(sum[1], y) << n;
+        ASSERT_EQ(sum[2], z) << n;
+    }
 }
 
 }  // namespace

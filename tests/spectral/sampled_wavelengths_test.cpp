@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
+#include <vector>
 
 #include "lamina/core/math.h"
 #include "lamina/spectral/sampled_wavelengths.h"
@@ -74,6 +76,38 @@ TEST(SampledWavelengths, VisibleDensityFollowsTheSech2Shape) {
     }
     EXPECT_EQ(t.nm.front(), kLambdaMin);
     EXPECT_EQ(t.nm.back(), kLambdaMax);
+}
+
+// The four lanes of a float path (drawn in one register from the rotated tables) are the
+// definition in sampled_wavelengths.h bit for bit: u_k = frac(u + k/4) computed exactly (in
+// double, where u + k/4 is exact for a float u), then interval floor(256 u_k) and the float
+// lerp within it. Random u, the ends of the range and u at and next to interval edges.
+TEST(SampledWavelengths, FourLanesAreTheScalarDefinitionBitForBit) {
+    using namespace visible_wavelengths;
+    const Intervals& t = intervals();
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    std::vector<float> us = {0.0f, 0.25f, 0.5f, 0.75f, std::nextafter(1.0f, 0.0f)};
+    for (int j = 1; j < kIntervals; ++j) {
+        const float edge = float(j) / kIntervals;
+        us.insert(us.end(), {edge, std::nextafter(edge, 0.0f), std::nextafter(edge, 1.0f)});
+    }
+    for (int n = 0; n < 100000; ++n)
+        us.push_back(std::min(uniform(rng), std::nextafter(1.0f, 0.0f)));
+    for (const float u : us) {
+        const auto w = SampledWavelengths<float>::sample(double(u));
+        const SampledSpectrum<float> pdf = w.pdf();
+        for (int k = 0; k < 4; ++k) {
+            double uk = double(u) + 0.25 * k;
+            if (uk >= 1.0) uk -= 1.0;
+            const double x = uk * kIntervals;
+            const int j = int(x);
+            const float f = float(x - j);
+            const float expected = t.nmFloat[j] + f * (t.nmFloat[j + 1] - t.nmFloat[j]);
+            ASSERT_EQ(w[k], expected) << u << " lane " << k;
+            ASSERT_EQ(pdf[k], t.densityFloat[j]) << u << " lane " << k;
+        }
+    }
 }
 
 TEST(SampledWavelengths, HeroRotation) {

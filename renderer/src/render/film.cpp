@@ -35,6 +35,7 @@ Film::Film(int fullWidth, int fullHeight, const PixelBounds& window, FilmSpace s
       fullHeight_(fullHeight),
       window_(window),
       space_(space),
+      xyzToRec709_(RgbColorSpace::rec709().xyzToRgb()),
       pixels_(std::size_t(width_) * std::size_t(height_)),
       splatIteration_(std::size_t(width_) * std::size_t(height_), Rgb<double>(0.0)) {}
 
@@ -104,7 +105,7 @@ void Film::endSplatIteration(double scale) {
 
 Rgb<double> Film::toRec709(const Rgb<double>& v) const {
     if (space_ == FilmSpace::Rec709) return v;
-    const Vec3d rgb = RgbColorSpace::rec709().toRgb(Vec3d(v[0], v[1], v[2]));
+    const Vec3d rgb = xyzToRec709_ * Vec3d(v[0], v[1], v[2]);
     return Rgb<double>(rgb.x, rgb.y, rgb.z);
 }
 

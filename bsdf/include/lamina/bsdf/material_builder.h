@@ -108,7 +108,7 @@ class MaterialBuilder {
                 if (c.fresnel == FresnelChoice::Auto || c.fresnel == FresnelChoice::Exact) {
                     S eta, k;
                     for (int i = 0; i < S::kSize; ++i) {
-                        const double nm = double(ctx_.lambda[i]);
+                        const double nm = double(ctx_.wavelength(i));
                         const NkTable::Nk nk =
                             o.table ? (*o.table)(nm)
                                     : NkTable::Nk{o.spectrum->n(nm), o.spectrum->k(nm)};

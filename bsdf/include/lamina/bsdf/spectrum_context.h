@@ -60,11 +60,24 @@ struct SpectrumContext<SampledSpectrum<T>> {
     /// to fill its UpsampledColors), or none.
     UpsampledColors* collect = nullptr;
 
+    /// Set to true by a build that reads the wavelengths: a colour that is not grey, a
+    /// spectrum, an index or n, k at the path's wavelengths (or none is recorded). A build that
+    /// leaves it false made the same BSDF as at any other wavelengths, and spectral mode builds
+    /// such a material once for every path (render_mode.h). Read `lambda` only through
+    /// wavelength() and hero(), which record it.
+    bool* readsWavelengths = nullptr;
+
+    T wavelength(int i) const {
+        noteWavelengthsRead();
+        return lambda[i];
+    }
+    T hero() const { return wavelength(0); }
+
     /// A dispersive index splits the wavelengths into different directions: only the hero
     /// wavelength continues (Wilkie et al. 2014, section 4.3), with its own index.
     T dielectricIor(const IorSpectrum& ior) const {
         if (ior.dispersive()) lambda.terminateSecondary();
-        return T(ior.n(double(lambda.hero())));
+        return T(ior.n(double(hero())));
     }
 
     /// The index at each of the path's wavelengths, for a boundary that does not bend the path
@@ -75,6 +88,11 @@ struct SpectrumContext<SampledSpectrum<T>> {
 
     SampledSpectrum<T> reflectance(const Rgb<double>& c) const {
         return evaluate(upsample(c, RgbSpectrumKind::Reflectance));
+    }
+    /// An upsampled colour at the path's wavelengths; a grey one is the same at all of them.
+    SampledSpectrum<T> evaluate(const RgbSpectrum& s) const {
+        if (s.isConstant()) return SampledSpectrum<T>(T(s.value()));
+        return evaluate([&](double nm) { return s(nm); });
     }
     /// A colour input: its spectrum if it has one, else the upsampled colour.
     template <typename C>
@@ -100,8 +118,13 @@ struct SpectrumContext<SampledSpectrum<T>> {
     SampledSpectrum<T> evaluate(const F& f) const {
         SampledSpectrum<T> s;
         for (int i = 0; i < SampledSpectrum<T>::kSize; ++i)
-            s[i] = T(f(double(lambda[i])));
+            s[i] = T(f(double(wavelength(i))));
         return s;
+    }
+
+  private:
+    void noteWavelengthsRead() const {
+        if (readsWavelengths) *readsWavelengths = true;
     }
 };
 

@@ -21,10 +21,11 @@ class EmitterColor {
 
     const Rgb<float>& rgb() const { return rgb_; }
     const Rgb<double>& rgbDouble() const { return rgbD_; }
-    /// The spectrum at a path's wavelengths (zero for a default-constructed colour).
+    /// The spectrum at a path's wavelengths, given by their table positions (zero for a
+    /// default-constructed colour).
     template <int N>
-    SampledSpectrum<float, N> spectral(const SampledWavelengths<float, N>& lambda) const {
-        return table_ ? table_->at(lambda) : SampledSpectrum<float, N>();
+    SampledSpectrum<float, N> spectral(const ResampledSpectrum::Positions<N>& at) const {
+        return table_ ? table_->at(at) : SampledSpectrum<float, N>();
     }
     bool isBlack() const { return rgb_.maxValue() <= 0.0f && !given_; }
 

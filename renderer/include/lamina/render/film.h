@@ -123,6 +123,7 @@ class Film {
     int fullWidth_, fullHeight_;
     PixelBounds window_;
     FilmSpace space_;
+    Mat3<double> xyzToRec709_;  ///< looked up once: every sample's squares are taken in Rec.709
     std::vector<Pixel> pixels_;
     std::vector<Rgb<double>> splatIteration_;
     int splatIterations_ = 0;

@@ -78,24 +78,36 @@ class RenderMode<SampledSpectrum<float>> {
     using Spectrum = SampledSpectrum<float>;
     struct Path {
         SampledWavelengths<float> lambda;
+        /// Where lambda falls in the 1 nm tables (emitters, colour matching); a dispersive
+        /// event changes only the densities, so it stays valid.
+        ResampledSpectrum::Positions<Spectrum::kSize> at;
         std::uint64_t id = 0;  ///< distinguishes paths for the per-thread BSDF cache
     };
 
     // Every material is built once here, at arbitrary wavelengths, to collect the colours
-    // its builds upsample: the paths' builds then find their coefficients in colors_.
+    // its builds upsample: the paths' builds then find their coefficients in colors_. A
+    // build that read no wavelength (grey colours, no spectra) is the BSDF of every path: it
+    // is kept and shared, as in RGB mode.
     RenderMode(const SceneDesc& scene, std::uint64_t seed)
-        : scene_(scene), seed_(seed), colors_(scene.materials.size()) {
+        : scene_(scene),
+          seed_(seed),
+          colors_(scene.materials.size()),
+          shared_(scene.materials.size()) {
         for (std::size_t m = 0; m < scene.materials.size(); ++m) {
             SampledWavelengths<float> lambda = SampledWavelengths<float>::sample(0.5);
-            buildBxdf(scene.materials[m], SpectrumContext<Spectrum>{lambda, nullptr, &colors_[m]},
-                      seed_);
+            bool readsWavelengths = false;
+            auto bsdf = buildBxdf(
+                scene.materials[m],
+                SpectrumContext<Spectrum>{lambda, nullptr, &colors_[m], &readsWavelengths}, seed_);
+            if (!readsWavelengths) shared_[m] = std::move(bsdf);
         }
     }
 
     static constexpr FilmSpace kFilmSpace = FilmSpace::Xyz;
 
     Path startPath(PixelSampler& sampler) const {
-        return {SampledWavelengths<float>::sample(double(sampler.get1D())), ++cache().nextPathId};
+        const auto lambda = SampledWavelengths<float>::sample(double(sampler.get1D()));
+        return {lambda, ResampledSpectrum::locate(lambda), ++cache().nextPathId};
     }
 
     Spectrum emission(const Emission& e, Path& path) const {
@@ -106,12 +118,13 @@ class RenderMode<SampledSpectrum<float>> {
                 out[i] = float(s(double(path.lambda[i]))) * e.scale;
             return out;
         }
-        return e.color->spectral(path.lambda) * e.scale;
+        return e.color->spectral(path.at) * e.scale;
     }
 
-    // A material's BSDF depends on the path's wavelengths: it is built at the first hit on
+    // A material's BSDF that depends on the path's wavelengths is built at the first hit on
     // that material along a path and reused at later hits of the same path (a per-thread
-    // cache, reset when the path changes). Valid until the next call from this thread.
+    // cache, reset when the path changes); one that does not is the one built at load. Valid
+    // until the next call from this thread.
     const Bxdf<Spectrum>& bsdf(int material, const Vec2<float>& uv, Path& path) const {
         BsdfCache& c = cache();
         const UpsampledColors* colors = &colors_[std::size_t(material)];
@@ -121,6 +134,7 @@ class RenderMode<SampledSpectrum<float>> {
             c.textured = buildBxdf(texturedMaterial(scene_, material, uv), context, seed_);
             return *c.textured;
         }
+        if (const auto& shared = shared_[std::size_t(material)]) return *shared;
         if (c.pathId != path.id) {
             c.pathId = path.id;
             c.bsdfs.resize(scene_.materials.size());
@@ -136,18 +150,15 @@ class RenderMode<SampledSpectrum<float>> {
     }
 
     Rgb<double> filmValue(const Spectrum& L, const Path& path) const {
-        float x = 0.0f, y = 0.0f, z = 0.0f;
+        // A wavelength of density 0 (terminated by dispersion) contributes nothing.
+        using namespace simd;
+        Spectrum w;
         const Spectrum pdf = path.lambda.pdf();
-        for (int i = 0; i < Spectrum::kSize; ++i) {
-            if (!(pdf[i] > 0.0f)) continue;
-            const float w = L[i] / pdf[i];
-            const ResampledSpectrum::Position p = ResampledSpectrum::locate(path.lambda[i]);
-            x += w * cmf_.x.at(p);
-            y += w * cmf_.y.at(p);
-            z += w * cmf_.z.at(p);
-        }
+        const Float4 p = load(&pdf[0]);
+        store(&w[0], select(p > splat(0.0f), load(&L[0]) / p, splat(0.0f)));
+        const std::array<float, 3> xyz = cmf_.weightedSum(w, path.at);
         constexpr double kInverseN = 1.0 / Spectrum::kSize;
-        return {double(x) * kInverseN, double(y) * kInverseN, double(z) * kInverseN};
+        return {double(xyz[0]) * kInverseN, double(xyz[1]) * kInverseN, double(xyz[2]) * kInverseN};
     }
 
   private:
@@ -164,6 +175,8 @@ class RenderMode<SampledSpectrum<float>> {
     const SceneDesc& scene_;
     std::uint64_t seed_;
     std::vector<UpsampledColors> colors_;  ///< per material
+    /// per material: its BSDF if it does not depend on the wavelengths, else null
+    std::vector<std::unique_ptr<Bxdf<Spectrum>>> shared_;
     const CieXyzTable& cmf_ = CieXyzTable::normalized();
 };
 

@@ -15,7 +15,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
+#include <cstring>
 
+#include "lamina/core/float4.h"
 #include "lamina/core/spectrum.h"
 #include "lamina/spectral/cie.h"
 #include "lamina/spectral/sampled_wavelengths.h"
@@ -51,14 +54,61 @@ class ResampledSpectrum {
     }
     float operator()(float nm) const { return at(locate(nm)); }
 
+    /// Where a path's wavelengths fall (locate() of each lane): found once per path, it serves
+    /// every table the path reads at them (its emitters, the film's colour matching).
+    template <int N>
+    struct Positions {
+        std::array<std::int32_t, N> i{};
+        std::array<float, N> t{};
+    };
+    template <int N>
+    static Positions<N> locate(const SampledWavelengths<float, N>& lambda) {
+        Positions<N> p;
+        if constexpr (N == 4) {  // locate() in four lanes: the same operations, in one register
+            using namespace simd;
+            Float4 x =
+                Float4{lambda[0], lambda[1], lambda[2], lambda[3]} - splat(float(kLambdaMin));
+            x = select(x < splat(0.0f), splat(0.0f), x);
+            x = select(splat(float(kSamples - 1)) < x, splat(float(kSamples - 1)), x);
+            Int4 i = truncate(x);
+            i = i > Int4{} + (kSamples - 2) ? Int4{} + (kSamples - 2) : i;
+            std::memcpy(p.i.data(), &i, sizeof i);
+            store(p.t.data(), x - toFloat(i));
+        } else {
+            for (int k = 0; k < N; ++k) {
+                const Position q = locate(lambda[k]);
+                p.i[std::size_t(k)] = q.i;
+                p.t[std::size_t(k)] = q.t;
+            }
+        }
+        return p;
+    }
+
     /// The spectrum at a path's wavelengths.
     template <int N>
-    SampledSpectrum<float, N> at(const SampledWavelengths<float, N>& lambda) const {
+    SampledSpectrum<float, N> at(const Positions<N>& p) const {
         SampledSpectrum<float, N> s;
-        for (int k = 0; k < N; ++k)
-            s[k] = (*this)(lambda[k]);
+        if constexpr (N == 4) {  // at() in four lanes
+            using namespace simd;
+            Float4 a, b;
+            for (int k = 0; k < 4; ++k) {
+                a[k] = values_[std::size_t(p.i[std::size_t(k)])];
+                b[k] = values_[std::size_t(p.i[std::size_t(k)]) + 1];
+            }
+            store(&s[0], a + load(p.t.data()) * (b - a));
+        } else {
+            for (int k = 0; k < N; ++k)
+                s[k] = at(Position{p.i[std::size_t(k)], p.t[std::size_t(k)]});
+        }
         return s;
     }
+    template <int N>
+    SampledSpectrum<float, N> at(const SampledWavelengths<float, N>& lambda) const {
+        return at(locate(lambda));
+    }
+
+    /// The sample at nm = 360 + i.
+    float value(int i) const { return values_[std::size_t(i)]; }
 
   private:
     std::array<float, kSamples> values_{};

@@ -45,6 +45,10 @@ class RgbSpectrum {
   public:
     RgbSpectrum(const Rgb<double>& rgb, RgbSpectrumKind kind);
     double operator()(double nm) const;
+    /// True when operator() gives the same value at every wavelength (a grey reflectance or
+    /// unbounded value: the sigmoid of a constant polynomial): value() is then that value.
+    bool isConstant() const { return !illuminant_ && poly_.c0 == 0.0 && poly_.c1 == 0.0; }
+    double value() const { return scale_ * SigmoidPolynomial::sigmoid(poly_.c2); }
 
   private:
     SigmoidPolynomial poly_;

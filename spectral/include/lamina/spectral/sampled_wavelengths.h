@@ -24,6 +24,7 @@
 #include <array>
 #include <cmath>
 
+#include "lamina/core/float4.h"
 #include "lamina/core/spectrum.h"
 #include "lamina/spectral/cie.h"
 
@@ -75,13 +76,22 @@ inline double pdf(double nm) {
     return t.density[std::size_t(upper - t.nm.begin() - 1)];
 }
 
-/// The wavelength at u in [0, 1) and its density: interval floor(256 u), linearly within it.
-template <std::floating_point T>
-T sample(T u, T& pdfOut) {
-    const Intervals& t = intervals();
-    const T x = std::clamp(u, T(0), T(1)) * T(kIntervals);
+/// Where u in [0, 1) falls: interval floor(256 u) and the fraction within it. In double, where
+/// it is exact for a float u (256 u only moves the exponent).
+struct Position {
+    int interval;
+    double fraction;
+};
+inline Position locate(double u) {
+    const double x = std::clamp(u, 0.0, 1.0) * kIntervals;
     const int j = std::min(static_cast<int>(x), kIntervals - 1);
-    const T f = x - T(j);
+    return {j, x - double(j)};
+}
+
+/// The wavelength at fraction f of interval j, linearly within it, and its density.
+template <std::floating_point T>
+T atInterval(int j, T f, T& pdfOut) {
+    const Intervals& t = intervals();
     if constexpr (std::same_as<T, float>) {
         const float a = t.nmFloat[j], b = t.nmFloat[j + 1];
         pdfOut = t.densityFloat[j];
@@ -92,9 +102,45 @@ T sample(T u, T& pdfOut) {
         return a + f * (b - a);
     }
 }
+
+/// The wavelength at u in [0, 1) and its density: interval floor(256 u), linearly within it.
+template <std::floating_point T>
+T sample(double u, T& pdfOut) {
+    const Position p = locate(u);
+    return atInterval(p.interval, T(p.fraction), pdfOut);
+}
 inline double sample(double u) {
     double p;
     return sample(u, p);
+}
+
+/// The four rotations of sample() with N = 4 side by side: lane k of row j holds interval
+/// (j + 64 k) mod 256, so a path's four wavelengths are three loads and a lerp in one register
+/// (each lane the float operations of atInterval, in the same order).
+struct RotatedFour {
+    alignas(16) std::array<std::array<float, 4>, kIntervals> start{}, width{}, density{};
+};
+inline const RotatedFour& rotatedFourTable() {
+    static const RotatedFour table = [] {
+        const Intervals& t = intervals();
+        RotatedFour r;
+        for (int j = 0; j < kIntervals; ++j)
+            for (int k = 0; k < 4; ++k) {
+                const int i = (j + k * (kIntervals / 4)) % kIntervals;
+                r.start[j][k] = t.nmFloat[i];
+                r.width[j][k] = t.nmFloat[i + 1] - t.nmFloat[i];
+                r.density[j][k] = t.densityFloat[i];
+            }
+        return r;
+    }();
+    return table;
+}
+inline void rotatedFour(const Position& p, float* lambda, float* pdf) {
+    const RotatedFour& t = rotatedFourTable();
+    const auto j = std::size_t(p.interval);
+    const simd::Float4 f = simd::splat(float(p.fraction));
+    simd::store(lambda, simd::load(t.start[j].data()) + f * simd::load(t.width[j].data()));
+    simd::store(pdf, simd::load(t.density[j].data()));
 }
 }  // namespace visible_wavelengths
 
@@ -103,24 +149,32 @@ class SampledWavelengths {
   public:
     using Spectrum = SampledSpectrum<T, N>;
 
-    /// Hero wavelength from u in [0, 1), the others rotated by k/N.
+    /// Hero wavelength from u in [0, 1), the others rotated by k/N. With the visible density
+    /// the rotation is done on the intervals: frac(u + k/N) lies in interval
+    /// (j + 256 k / N) mod 256 at the same fraction as u in its interval j, since N divides 256
+    /// (exact, where u + k/N rounded in float would move the fraction by an ulp).
     static SampledWavelengths sample(double u,
                                      WavelengthSampling method = WavelengthSampling::Visible) {
         SampledWavelengths w;
-        const T u0 = static_cast<T>(u);
-        for (int k = 0; k < N; ++k) {
-            // In T: a float path's rotation needs no double arithmetic (u0 + k/N < 2 is exact
-            // enough for a primary sample).
-            T uk = u0 + static_cast<T>(k) / T(N);
-            if (uk >= T(1)) uk -= T(1);
-            if (method == WavelengthSampling::Visible) {
-                T p;
-                w.lambda_[k] = visible_wavelengths::sample(static_cast<T>(uk), p);
-                w.pdf_[k] = p;
+        if (method == WavelengthSampling::Visible) {
+            static_assert(visible_wavelengths::kIntervals % N == 0);
+            const visible_wavelengths::Position p = visible_wavelengths::locate(u);
+            if constexpr (std::same_as<T, float> && N == 4) {
+                visible_wavelengths::rotatedFour(p, w.lambda_.data(), w.pdf_.data());
             } else {
-                w.lambda_[k] = static_cast<T>(kLambdaMin + uk * (kLambdaMax - kLambdaMin));
-                w.pdf_[k] = static_cast<T>(1.0 / (kLambdaMax - kLambdaMin));
+                for (int k = 0; k < N; ++k) {
+                    const int j = (p.interval + k * (visible_wavelengths::kIntervals / N)) %
+                                  visible_wavelengths::kIntervals;
+                    w.lambda_[k] = visible_wavelengths::atInterval(j, T(p.fraction), w.pdf_[k]);
+                }
             }
+            return w;
+        }
+        for (int k = 0; k < N; ++k) {
+            double uk = u + double(k) / N;
+            if (uk >= 1.0) uk -= 1.0;
+            w.lambda_[k] = static_cast<T>(kLambdaMin + uk * (kLambdaMax - kLambdaMin));
+            w.pdf_[k] = static_cast<T>(1.0 / (kLambdaMax - kLambdaMin));
         }
         return w;
     }
