@@ -164,8 +164,8 @@ class PixelSampler {
     /// The three scramble seeds of dimension pair `dim`, from one 64-bit hash of (pixel, dim):
     /// its low and high halves, and the high half of its product with an odd constant (which
     /// depends on every bit of the hash). pbrt-v4's PaddedSobolSampler likewise takes the
-    /// index permutation's and both coordinates' seeds from one 64-bit hash; one mixBits per
-    /// dimension instead of three halves the cost of the seeds.
+    /// index permutation's and both coordinates' seeds from one 64-bit hash. One mixBits per
+    /// pair, where three were used before.
     struct DimensionSeeds {
         std::uint32_t shuffle, first, second;
     };
@@ -181,7 +181,7 @@ class PixelSampler {
     }
     /// An odd multiplier (so the product is a bijection of the hash) of good spectral quality
     /// for a 64-bit LCG: Steele and Vigna 2022, "Computationally easy, spectrally good
-    /// multipliers for congruential pseudorandom number generators", table 7.
+    /// multipliers for congruential pseudorandom number generators" (a 64-bit one they list).
     static constexpr std::uint64_t kSecondSeedMultiplier = 0xd1342543de82ef95ULL;
     static float toFloat(std::uint32_t v) {
         return std::min(kOneMinusEpsilon<float>, float(v >> 8) * 0x1p-24f);
