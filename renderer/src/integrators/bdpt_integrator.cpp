@@ -19,7 +19,7 @@ BdptIntegrator<S>::BdptIntegrator(const IntegratorSetup<S>& setup)
 
 template <SpectrumType S>
 std::optional<CameraEstimate<S>> BdptIntegrator<S>::sample(const PixelSample<S>& ps) const {
-    const CameraSample cs = sampleCamera(filter_, ps.sampler, ps.x, ps.y);
+    const CameraSample cs = sampleCamera(filter_, c_.camera, ps.sampler, ps.x, ps.y);
     thread_local std::vector<Vertex> cameraPath, lightPath;
     cameraPath.clear();
     lightPath.clear();

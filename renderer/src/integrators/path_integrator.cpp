@@ -23,7 +23,7 @@ PathIntegrator<S>::PathIntegrator(const IntegratorSetup<S>& setup)
 
 template <SpectrumType S>
 std::optional<CameraEstimate<S>> PathIntegrator<S>::sample(const PixelSample<S>& ps) const {
-    const CameraSample cs = sampleCamera(filter_, ps.sampler, ps.x, ps.y);
+    const CameraSample cs = sampleCamera(filter_, c_.camera, ps.sampler, ps.x, ps.y);
     const auto ray = c_.camera.generateRay(cs.raster.x, cs.raster.y, cs.lens);
     CameraEstimate<S> estimate{S(0.0f), cs.filterWeight, std::nullopt};
     if (aovs_) estimate.aovs.emplace();
@@ -81,13 +81,18 @@ S PathIntegrator<S>::radiance(const Vec3f& rayOrigin, const Vec3f& rayDirection,
         const Bxdf<S>& bsdf = mode_.bsdf(shape.material, hit->uv, path);
         const ShadingPoint at(hit->p, hit->ng, hit->ns, -d, c_.geometry.rayOffsetScale());
 
-        // Next-event estimation (always draws its three numbers, so the sampler's
-        // dimensions mean the same thing at every vertex).
-        const float uLight = sampler.get1D();
-        const Vec2f uLightPoint = sampler.get2D();
+        // Next-event estimation (its two dimensions are used at every vertex, skipped when
+        // there is no estimate to make, so the sampler's dimensions mean the same thing at
+        // every vertex).
         const bool smooth = (bsdf.flags() & (kLobeDiffuse | kLobeGlossy)) != 0;
-        if (nextEvent && smooth && !c_.lights.empty())
+        if (nextEvent && smooth && !c_.lights.empty()) {
+            const float uLight = sampler.get1D();
+            const Vec2f uLightPoint = sampler.get2D();
             L += beta * directLight(*hit, at, bsdf, uLight, uLightPoint, path, stats);
+        } else {
+            sampler.skip();
+            sampler.skip();
+        }
 
         // Russian roulette on the throughput without the radiance eta^2 factors (pbrt-v4).
         const auto step =

@@ -67,8 +67,9 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
 
     // One sample of pixel (x, y): the integrator's camera-side estimate goes to the pixel, its
     // splats (light, bdpt) anywhere on the film.
-    const auto renderSample = [&](int x, int y, int s, PathStatistics& stats) {
-        PixelSampler sampler(settings.sampler, settings.seed, x, y, std::uint32_t(s));
+    const auto renderSample = [&](int x, int y, const PixelSeed& pixelSeed, int s,
+                                  PathStatistics& stats) {
+        PixelSampler sampler(settings.sampler, pixelSeed, std::uint32_t(s));
         auto path = mode.startPath(sampler);
         const auto estimate = integrator->sample({x, y, sampler, path, film, stats});
         if (!estimate) return;
@@ -85,9 +86,11 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
                 const int x1 = std::min(x0 + kTileSize, traced.x1),
                           y1 = std::min(y0 + kTileSize, traced.y1);
                 for (int y = y0; y < y1; ++y)
-                    for (int x = x0; x < x1; ++x)
+                    for (int x = x0; x < x1; ++x) {
+                        const PixelSeed pixelSeed(settings.seed, x, y);
                         for (int s = first; s < first + count; ++s)
-                            renderSample(x, y, s, stats);
+                            renderSample(x, y, pixelSeed, s, stats);
+                    }
                 pixelsDone.fetch_add(std::uint64_t((x1 - x0) * (y1 - y0)) * count);
             }
             rays.fetch_add(stats.rays);

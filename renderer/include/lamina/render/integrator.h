@@ -45,8 +45,10 @@ struct CameraSample {
     float filterWeight;  ///< f / pdf of the film position
 };
 
-/// Draws the camera sample of pixel (x, y): the filter's two numbers, then the lens's two.
-CameraSample sampleCamera(const PixelFilter& filter, PixelSampler& sampler, int x, int y);
+/// Draws the camera sample of pixel (x, y): the filter's two numbers, then the lens's two
+/// (skipped for a pinhole, which has no use for them).
+CameraSample sampleCamera(const PixelFilter& filter, const Camera& camera, PixelSampler& sampler,
+                          int x, int y);
 
 /// One sample of one pixel, as the renderer hands it to an integrator.
 template <SpectrumType S>

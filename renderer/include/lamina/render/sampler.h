@@ -4,7 +4,8 @@
 //   SobolSampler        2D Sobol points with Owen scrambling by hashing (Burley 2020,
 //                       "Practical Hash-based Owen Scrambling", JCGT 9(4)); each pair of
 //                       dimensions gets its own shuffle of the sample index and its own
-//                       scramble ("padding", so every 2D pair is a (0, 2)-sequence).
+//                       scramble ("padding", so every 2D pair is a (0, 2)-sequence); the
+//                       three seeds of a pair come from one 64-bit hash of (pixel, pair).
 #pragma once
 
 #include <bit>
@@ -86,25 +87,53 @@ inline std::uint32_t laineKarrasPermutation(std::uint32_t x, std::uint32_t seed)
 
 }  // namespace sobol_detail
 
+/// What every sample of one pixel shares: the hash of (seed, pixel) and the pixel's part of
+/// each dimension's hash. The renderer computes it once per pixel, not once per sample.
+struct PixelSeed {
+    PixelSeed(std::uint64_t seed, int x, int y)
+        : pixel(hashValues({seed, std::uint64_t(x), std::uint64_t(y)})),
+          dimensionBase(hashValues({pixel})),
+          dimensionSalt(0x9e3779b97f4a7c15ULL + (dimensionBase << 6u)) {}
+
+    std::uint64_t pixel;
+    std::uint64_t dimensionBase;  ///< hashValues({pixel})
+    /// The part of hashValues({pixel, dim})'s last step that does not depend on dim.
+    std::uint64_t dimensionSalt;
+};
+
 class PixelSampler {
   public:
     PixelSampler(SamplerKind kind, std::uint64_t seed, int x, int y, std::uint32_t sampleIndex)
+        : PixelSampler(kind, PixelSeed(seed, x, y), sampleIndex) {}
+    PixelSampler(SamplerKind kind, const PixelSeed& pixel, std::uint32_t sampleIndex)
         : kind_(kind),
           reversedIndex_(sobol_detail::reverseBits(sampleIndex)),
-          pixelSeed_(hashValues({seed, std::uint64_t(x), std::uint64_t(y)})),
-          dimensionSeedBase_(hashValues({pixelSeed_})) {
+          dimensionBase_(pixel.dimensionBase),
+          dimensionSalt_(pixel.dimensionSalt) {
         // The Sobol sampler needs no generator; seeding one costs as much as a dimension.
         if (kind_ == SamplerKind::Independent)
-            rng_ = Pcg32(hashValues({pixelSeed_, sampleIndex}), pixelSeed_);
+            rng_ = Pcg32(hashValues({pixel.pixel, sampleIndex}), pixel.pixel);
     }
 
     float get1D() {
         if (kind_ == SamplerKind::Independent) return get2D().x;
         // The first coordinate of the next 2D point, without computing the second.
         using namespace sobol_detail;
-        const std::uint32_t s = dimensionSeed(dimension_++);
-        const std::uint32_t y = laineKarrasPermutation(reversedIndex_, s);
-        return toFloat(reverseBits(laineKarrasPermutation(reverseBits(y), mixSeed(s, 1))));
+        const DimensionSeeds s = dimensionSeeds(dimension_++);
+        const std::uint32_t y = laineKarrasPermutation(reversedIndex_, s.shuffle);
+        return toFloat(reverseBits(laineKarrasPermutation(reverseBits(y), s.first)));
+    }
+
+    /// Moves past the next dimension (what get1D or get2D would return) without computing
+    /// it, for a number a path does not use this time (the lens point of a pinhole camera, a
+    /// Russian roulette that cannot end the path yet): every later dimension then holds the
+    /// numbers it holds when the skipped one is drawn, so images do not change.
+    void skip() {
+        if (kind_ == SamplerKind::Independent) {
+            rng_.nextUint32();
+            rng_.nextUint32();
+        }
+        ++dimension_;
     }
 
     /// The next dimension pair of the sample: the sample index shuffled by a nested uniform
@@ -123,32 +152,44 @@ class PixelSampler {
             return {a, rng_.nextFloat()};
         }
         using namespace sobol_detail;
-        const std::uint32_t s = dimensionSeed(dimension_++);
-        const std::uint32_t y = laineKarrasPermutation(reversedIndex_, s);
-        const std::uint32_t a = reverseBits(laineKarrasPermutation(reverseBits(y), mixSeed(s, 1)));
+        const DimensionSeeds s = dimensionSeeds(dimension_++);
+        const std::uint32_t y = laineKarrasPermutation(reversedIndex_, s.shuffle);
+        const std::uint32_t a = reverseBits(laineKarrasPermutation(reverseBits(y), s.first));
         const std::uint32_t b =
-            reverseBits(laineKarrasPermutation(kReversedSobolDimension1(y), mixSeed(s, 2)));
+            reverseBits(laineKarrasPermutation(kReversedSobolDimension1(y), s.second));
         return {toFloat(a), toFloat(b)};
     }
 
   private:
-    /// hashValues({pixelSeed, dim}), its first step (which depends on the pixel alone) done
-    /// once in the constructor.
-    std::uint32_t dimensionSeed(std::uint32_t dim) const {
-        const std::uint64_t h = dimensionSeedBase_;
-        return std::uint32_t(mixBits(h ^ (dim + 0x9e3779b97f4a7c15ULL + (h << 6u))));
+    /// The three scramble seeds of dimension pair `dim`, from one 64-bit hash of (pixel, dim):
+    /// its low and high halves, and the high half of its product with an odd constant (which
+    /// depends on every bit of the hash). pbrt-v4's PaddedSobolSampler likewise takes the
+    /// index permutation's and both coordinates' seeds from one 64-bit hash. One mixBits per
+    /// pair, where three were used before.
+    struct DimensionSeeds {
+        std::uint32_t shuffle, first, second;
+    };
+    DimensionSeeds dimensionSeeds(std::uint32_t dim) const {
+        const std::uint64_t h = dimensionHash(dim);
+        return {std::uint32_t(h), std::uint32_t(h >> 32),
+                std::uint32_t((h * kSecondSeedMultiplier) >> 32)};
     }
-    static std::uint32_t mixSeed(std::uint32_t s, std::uint32_t k) {
-        return std::uint32_t(mixBits((std::uint64_t(s) << 8) ^ k));
+    /// hashValues({pixelSeed, dim}), what depends on the pixel alone done once per pixel
+    /// (PixelSeed; the sum dim + salt is the same number in either order).
+    std::uint64_t dimensionHash(std::uint32_t dim) const {
+        return mixBits(dimensionBase_ ^ (dim + dimensionSalt_));
     }
+    /// An odd multiplier (so the product is a bijection of the hash) of good spectral quality
+    /// for a 64-bit LCG: Steele and Vigna 2022, "Computationally easy, spectrally good
+    /// multipliers for congruential pseudorandom number generators" (a 64-bit one they list).
+    static constexpr std::uint64_t kSecondSeedMultiplier = 0xd1342543de82ef95ULL;
     static float toFloat(std::uint32_t v) {
         return std::min(kOneMinusEpsilon<float>, float(v >> 8) * 0x1p-24f);
     }
 
     SamplerKind kind_;
     std::uint32_t reversedIndex_;
-    std::uint64_t pixelSeed_;
-    std::uint64_t dimensionSeedBase_;
+    std::uint64_t dimensionBase_, dimensionSalt_;
     Pcg32 rng_;
     std::uint32_t dimension_ = 0;
 };

@@ -3,7 +3,8 @@
 // and the geometric surface agree on its side (shading_normals.h), update the throughput by
 // the integrator's rule, play Russian roulette and spawn the next ray. The sampler's numbers
 // are drawn in one order everywhere: the lobe choice (1D), the direction (2D), then, for a
-// direction kept, the roulette (1D).
+// direction kept, the roulette (1D; skipped, not computed, while the roulette cannot end the
+// path).
 #pragma once
 
 #include <optional>
@@ -17,9 +18,14 @@ namespace lamina::render {
 /// Russian roulette once `bounces` reaches `rrDepth`: the path survives with probability
 /// min(1, rrBeta) (rrBeta: its throughput relative to its start) and its throughput is divided
 /// by that probability. Returns false when the path ends.
+/// Whether Russian roulette can end the path at all (else it uses no random number).
+inline bool rouletteApplies(float rrBeta, int bounces, int rrDepth) {
+    return bounces >= rrDepth && !(rrBeta >= 1.0f);
+}
+
 template <SpectrumType S>
 bool russianRoulette(S& beta, float rrBeta, int bounces, int rrDepth, float u) {
-    if (bounces < rrDepth || rrBeta >= 1.0f) return true;
+    if (!rouletteApplies(rrBeta, bounces, rrDepth)) return true;
     const float q = std::max(0.0f, 1.0f - rrBeta);
     if (u < q) return false;
     beta /= 1.0f - q;
@@ -72,8 +78,13 @@ ScatterResult<S> scatter(const Bxdf<S>& bsdf, const ShadingPoint& at, TransportM
     // shading normals) would leak light through the surface.
     if (!sidesAgree(at.woWorld, wi, at.ng, at.ns)) return result;
     const float rrBeta = updateThroughput(beta, *s, wi);
-    const float uRoulette = sampler.get1D();
-    if (!russianRoulette(beta, rrBeta, bounces, rrDepth, uRoulette)) return result;
+    // The roulette's number is computed only when the roulette can end the path; otherwise
+    // its dimension is skipped, so the numbers after it are the same either way.
+    if (rouletteApplies(rrBeta, bounces, rrDepth)) {
+        if (!russianRoulette(beta, rrBeta, bounces, rrDepth, sampler.get1D())) return result;
+    } else {
+        sampler.skip();
+    }
     if (!beta.isFinite() || beta.maxValue() <= 0.0f) return result;
     result.next = Ray(offsetRayOrigin(at.p, facing(at.ng, wi), at.offsetScale), wi);
     return result;
