@@ -49,6 +49,38 @@ TEST_P(BsdfProperties, WeightIsEvalOverPdf) {
     EXPECT_GT(checked, 100);
 }
 
+// A BSDF that says sample() does not read its lobe number must give the same sample, bit for
+// bit, whatever the number is (the integrators skip its dimension for it). One test over the
+// catalogue: most BSDFs read it and have nothing to check.
+TEST(BsdfLobeChoice, ABsdfThatDoesNotReadItGivesTheSameSampleForAnyNumber) {
+    int checked = 0;
+    for (const testing::BsdfCase& bsdfCase : testing::bsdfCases()) {
+        const Bxdf<Spec>& bxdf = *bsdfCase.bxdf;
+        if (bxdf.usesLobeChoice()) continue;
+        ++checked;
+        Pcg32 rng(29);
+        for (double theta : {0.0, 30.0, 60.0, 85.0})
+            for (double side : {1.0, -1.0}) {
+                Vec3d wo = testing::directionAt(theta);
+                wo.z *= side;
+                for (int i = 0; i < 200; ++i) {
+                    const Vec2d u(rng.nextDouble(), rng.nextDouble());
+                    const auto a = bxdf.sample(wo, rng.nextDouble(), u, TransportMode::Radiance);
+                    const auto b = bxdf.sample(wo, rng.nextDouble(), u, TransportMode::Radiance);
+                    ASSERT_EQ(a.has_value(), b.has_value()) << bsdfCase.name;
+                    if (!a) continue;
+                    ASSERT_EQ(a->wi, b->wi) << bsdfCase.name;
+                    ASSERT_EQ(a->pdf, b->pdf);
+                    ASSERT_EQ(a->flags, b->flags);
+                    ASSERT_EQ(a->eta, b->eta);
+                    for (int c = 0; c < 3; ++c)
+                        ASSERT_EQ(a->weight[c], b->weight[c]);
+                }
+            }
+    }
+    EXPECT_GE(checked, 2);  // Lambert and Oren-Nayar at least
+}
+
 TEST_P(BsdfProperties, ReciprocityAndAdjointTransmission) {
     const Bxdf<Spec>& bxdf = *GetParam().bxdf;
     Pcg32 rng(23);

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "lamina/core/math.h"
@@ -31,6 +33,33 @@ TEST(Math, SqrPow5Polynomial) {
     EXPECT_DOUBLE_EQ(pow5(0.5), 0.03125);
     const double c[] = {1.0, 2.0, 3.0};  // 1 + 2x + 3x^2
     EXPECT_DOUBLE_EQ(evalPolynomial(2.0, c), 17.0);
+}
+
+// The polynomial sine and cosine against double precision on a dense grid of [-pi/4, pi/4]
+// (every float there has a neighbour within 1e-7 in the grid): within 3 ulps of the
+// correctly rounded value, odd and even as sin and cos are, and exact at 0.
+TEST(Math, SinCosWithinQuarterPiIsWithinThreeUlps) {
+    auto ulps = [](float got, double exact) {
+        const float rounded = float(exact);
+        const float ulp = std::nextafter(std::abs(rounded), 2.0f) - std::abs(rounded);
+        return std::abs(double(got) - exact) / double(ulp);
+    };
+    double worstSin = 0, worstCos = 0;
+    const int n = 4000000;
+    for (int i = 0; i <= n; ++i) {
+        const float a = std::min(kPi<float> / 4.0f,
+                                 -kPi<float> / 4.0f + kPi<float> / 2.0f * float(i) / float(n));
+        const SinCos sc = sinCosWithinQuarterPi(a);
+        worstSin = std::max(worstSin, ulps(sc.sin, std::sin(double(a))));
+        worstCos = std::max(worstCos, ulps(sc.cos, std::cos(double(a))));
+        const SinCos negated = sinCosWithinQuarterPi(-a);
+        ASSERT_EQ(negated.sin, -sc.sin) << a;
+        ASSERT_EQ(negated.cos, sc.cos) << a;
+    }
+    EXPECT_LE(worstSin, 3.0);
+    EXPECT_LE(worstCos, 3.0);
+    EXPECT_EQ(sinCosWithinQuarterPi(0.0f).sin, 0.0f);
+    EXPECT_EQ(sinCosWithinQuarterPi(0.0f).cos, 1.0f);
 }
 
 TEST(Math, OneMinusEpsilonIsBelowOne) {

@@ -78,6 +78,17 @@ TEST(WarpChi2, ConcentricDisk) {
         [](const Vec3d& p) { return uniformDiskPdf(Vec2d(p)); })));
 }
 
+// The single-precision map takes its sine and cosine from a polynomial (math.h).
+TEST(WarpChi2, ConcentricDiskInSinglePrecision) {
+    EXPECT_TRUE(testing::passes(runChiSquareTest(
+        planeConfig({-1, -1}, {1, 1}),
+        [](Pcg32& r) {
+            const Vec2f p = squareToUniformDiskConcentric(Vec2f(next2(r)));
+            return std::optional(Vec3d(Vec2d(p), 0.0));
+        },
+        [](const Vec3d& p) { return uniformDiskPdf(Vec2d(p)); })));
+}
+
 TEST(WarpChi2, UniformTriangle) {
     EXPECT_TRUE(testing::passes(runChiSquareTest(
         planeConfig({0, 0}, {1, 1}),

@@ -350,12 +350,16 @@ TEST(LightBvh, PreparedBoundsGiveTheImportanceOfTheDefinition) {
     EXPECT_GT(positive, 50000);  // the comparisons are not all of zeros
 }
 
-// The Cornell box's lamp is two triangles: a tree of one node and two leaves, no lights at
+// The Cornell box's lamp as two triangle lights: a tree of one node and two leaves, no lights at
 // infinity, whose choice is one comparison of u with the left share l / (l + r) (in double,
 // as LightBvh computes it) and no rescaling of u. At random points its probabilities and
 // choices must be exactly those of the definition, u just below and at the share included.
 TEST(LightBvh, TwoLightTreeChoosesByTheShareOfTheDefinition) {
-    const SceneDesc box = loadScene(testing::sourceFile("scenes/cornell-box.json"));
+    SceneDesc box = loadScene(testing::sourceFile("scenes/cornell-box.json"));
+    // The lamp's two triangles in another order than the fan of its quad, so that they are
+    // two lights (the fan of a rectangle is one, RectangleLight::isRectangle).
+    for (MeshDesc& m : box.meshes)
+        if (m.name == "light") m.triangles = {{0, 1, 2}, {2, 3, 0}};
     const Geometry geometry(box);
     const LightSet lights(box, geometry, LightSelection::Bvh);
     ASSERT_EQ(lights.size(), 2u);
@@ -409,6 +413,67 @@ TEST(LightBvh, OneLightTreeAlwaysChoosesIt) {
             EXPECT_EQ(c->probability, 1.0f);
         }
     }
+}
+
+// choose() reads no number exactly when it has one light to return (the integrators then skip
+// the sampler's dimension): under every selection, on scenes with one light (a triangle; a
+// rectangle beside a constant environment, which next-event estimation leaves to BSDF
+// sampling; a directional light alone) every u gives the same choice, bit for bit, at random
+// points; on scenes with several (two triangles, one emitter of every kind, the many-light
+// scene) some point has two numbers that choose different lights. chooseEmitter() reads none
+// only with one light in all.
+TEST(LightSet, ChoiceReadsNoNumberExactlyWhenThereIsOneLightToChoose) {
+    const std::string triangle = R"({"type": "mesh", "material": "m", "emission": {"radiance": 3},
+        "positions": [[0, 0, 0], [1, 0, 0], [0, 0, 1]], "faces": [[0, 2, 1]]})";
+    auto scene = [](const std::string& shapes, const std::string& lights) {
+        return testing::sceneFromText(R"({"materials": {"m": {"type": "lambert"}},
+            "shapes": [{"type": "sphere", "center": [0, -2, 0], "radius": 1, "material": "m"})" +
+                                      shapes + R"(], "lights": [)" + lights + "]}");
+    };
+    struct Case {
+        const char* name;
+        SceneDesc scene;
+        bool severalChoices, severalEmitters;
+    };
+    // The triangle and its neighbour across the edge (1, 2), both facing +y.
+    SceneDesc twoTriangles = scene(", " + triangle, "");
+    twoTriangles.meshes[0].positions.push_back({1, 0, 1});
+    twoTriangles.meshes[0].triangles.push_back({1, 2, 3});
+    const Case cases[] = {
+        {"one triangle", scene(", " + triangle, ""), false, false},
+        {"rectangle and constant sky",
+         scene(R"(, {"type": "rectangle", "material": "m", "emission": {"radiance": 1}})",
+               R"({"type": "environment", "radiance": 0.3})"),
+         false, true},
+        {"directional light",
+         scene("", R"({"type": "directional", "direction": [0, -1, 0], "irradiance": 1})"), false,
+         false},
+        {"two triangles", twoTriangles, true, true},
+        {"one emitter of every kind", testing::sceneFromText(testing::kOneEmitterOfEveryKind), true,
+         true},
+        {"many lights", manyLights(), true, true},
+    };
+    const float us[] = {0.0f, 0.1f, 0.3f, 0.5f, 0.7f, 0.9f, kOneMinusEpsilon<float>};
+    for (const Case& c : cases)
+        for (LightSelection s :
+             {LightSelection::Bvh, LightSelection::Power, LightSelection::Uniform}) {
+            const Geometry geometry(c.scene);
+            const LightSet lights(c.scene, geometry, s);
+            EXPECT_EQ(lights.choiceReadsNumber(), c.severalChoices) << c.name;
+            EXPECT_EQ(lights.emitterChoiceReadsNumber(), c.severalEmitters) << c.name;
+            bool differs = false;
+            for (const ShadingPoint& at : randomPoints(geometry, 100, 31)) {
+                const auto first = lights.choose(at.p, at.n, us[0]);
+                ASSERT_TRUE(first) << c.name;
+                for (const float u : us) {
+                    const auto other = lights.choose(at.p, at.n, u);
+                    ASSERT_TRUE(other) << c.name;
+                    differs = differs || other->index != first->index ||
+                              other->probability != first->probability;
+                }
+            }
+            EXPECT_EQ(differs, c.severalChoices) << c.name << ", selection " << int(s);
+        }
 }
 
 }  // namespace

@@ -86,35 +86,66 @@ TEST(RectangleLight, RendersTheSameAsTheQuadSampledByArea) {
             )" +
                light + R"(]})";
     };
-    const auto rect = render::renderScene(
-        testing::sceneFromText(sceneWith(
-            R"({"type": "rectangle", "material": "lamp", "emission": {"radiance": 5},
-                "transform": [{"scale": [0.5, 0.3, 1]}, {"rotate": {"axis": [1, 0, 0], "angle": 90}},
-                              {"translate": [0.3, 2, 0.2]}]})")),
-        [] {
-            render::RenderOptions o;
-            o.spp = 128;
-            return o;
-        }());
+    const auto rectScene = testing::sceneFromText(sceneWith(
+        R"({"type": "rectangle", "material": "lamp", "emission": {"radiance": 5},
+            "transform": [{"scale": [0.5, 0.3, 1]}, {"rotate": {"axis": [1, 0, 0], "angle": 90}},
+                          {"translate": [0.3, 2, 0.2]}]})"));
     // The same quad: after the transform its corners are (x, 2, z) with x in [-0.2, 0.8],
-    // z in [-0.1, 0.5], facing down.
-    const auto mesh =
-        render::renderScene(testing::sceneFromText(sceneWith(
-                                R"({"type": "mesh", "material": "lamp", "emission": {"radiance": 5},
-                "positions": [[-0.2, 2, -0.1], [0.8, 2, -0.1], [0.8, 2, 0.5], [-0.2, 2, 0.5]],
-                "faces": [[0, 1, 2, 3]]})")),
-                            [] {
-                                render::RenderOptions o;
-                                o.spp = 128;
-                                o.seed = 99;
-                                return o;
-                            }());
+    // z in [-0.1, 0.5], facing down; given as two triangles that are not the fan of a face
+    // (0, 1, 2, 3), so they are two triangle lights sampled by area.
+    const auto meshScene = testing::sceneFromText(sceneWith(
+        R"({"type": "mesh", "material": "lamp", "emission": {"radiance": 5},
+            "positions": [[-0.2, 2, -0.1], [0.8, 2, -0.1], [0.8, 2, 0.5], [-0.2, 2, 0.5]],
+            "faces": [[0, 1, 2], [2, 3, 0]]})"));
+    auto lightCount = [](const render::SceneDesc& scene) {
+        const render::Geometry geometry(scene);
+        return render::LightSet(scene, geometry, render::LightSelection::Bvh).size();
+    };
+    ASSERT_EQ(lightCount(rectScene), 1u);
+    ASSERT_EQ(lightCount(meshScene), 2u);
+    render::RenderOptions options;
+    options.spp = 128;
+    const auto rect = render::renderScene(rectScene, options);
+    options.seed = 99;
+    const auto mesh = render::renderScene(meshScene, options);
     for (int c = 0; c < 3; ++c) {
         const auto a = testing::imageMean(*rect.film, c), b = testing::imageMean(*mesh.film, c);
         EXPECT_LT(std::abs(a.mean - b.mean), 3.29 * std::hypot(a.standardError, b.standardError))
             << "rectangle " << a.mean << " mesh " << b.mean;
         EXPECT_GT(a.mean, 0.01);
     }
+}
+
+// A mesh of one four-cornered face is one rectangle light when the face is a rectangle split
+// as its fan (the Cornell box's lamp), and stays two triangle lights otherwise: a
+// parallelogram, a quad whose fourth corner is off the rectangle, the same triangles in
+// another order, a mirrored transform (which reverses the winding).
+TEST(RectangleLight, AMeshFaceIsOneLightExactlyWhenItIsARectangle) {
+    auto lightsOf = [](const std::string& positions, const std::string& faces,
+                       const std::string& transform = "[]") {
+        const auto scene = testing::sceneFromText(
+            R"({"materials": {"m": {"type": "lambert", "reflectance": 0}},
+                "shapes": [{"type": "mesh", "material": "m", "emission": {"radiance": 1},
+                            "positions": )" +
+            positions + R"(, "faces": )" + faces + R"(, "transform": )" + transform + "}]}");
+        const render::Geometry geometry(scene);
+        return render::LightSet(scene, geometry, render::LightSelection::Bvh).size();
+    };
+    const std::string square = "[[0, 0, 0], [2, 0, 0], [2, 1, 0], [0, 1, 0]]";
+    EXPECT_EQ(lightsOf(square, "[[0, 1, 2, 3]]"), 1u);
+    EXPECT_EQ(
+        lightsOf(square, "[[0, 1, 2, 3]]",
+                 R"([{"rotate": {"axis": [1, 2, 3], "angle": 40}}, {"translate": [5, 0, 1]}])"),
+        1u);
+    EXPECT_EQ(lightsOf(square, "[[0, 1, 2], [2, 3, 0]]"), 2u);
+    EXPECT_EQ(lightsOf(square, "[[0, 1, 2, 3]]", R"([{"scale": [-1, 1, 1]}])"), 2u);
+    EXPECT_EQ(lightsOf("[[0, 0, 0], [2, 0, 0], [2.5, 1, 0], [0.5, 1, 0]]", "[[0, 1, 2, 3]]"), 2u);
+    EXPECT_EQ(lightsOf("[[0, 0, 0], [2, 0, 0], [2, 1, 0.01], [0, 1, 0]]", "[[0, 1, 2, 3]]"), 2u);
+    EXPECT_EQ(lightsOf("[[0, 0, 0], [2, 0, 0], [2.01, 1, 0], [0, 1, 0]]", "[[0, 1, 2, 3]]"), 2u);
+
+    const render::SceneDesc box = render::loadScene(testing::sourceFile("scenes/cornell-box.json"));
+    const render::Geometry geometry(box);
+    EXPECT_EQ(render::LightSet(box, geometry, render::LightSelection::Bvh).size(), 1u);
 }
 
 }  // namespace

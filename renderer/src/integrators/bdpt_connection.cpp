@@ -60,7 +60,8 @@ BdptConnection<S> BdptConnector<S>::connect(const std::vector<Vertex>& lightPath
         // Light vertex s-1 (a surface: s >= 2, since (1, 1) is skipped) seen by the camera.
         const Vertex& lv = lightPath[std::size_t(s - 1)];
         if (lv.delta) return result;
-        const auto cc = c_.camera.sampleConnection(lv.p, sampler.get2D());
+        const auto cc =
+            c_.camera.sampleConnection(lv.p, sampler.get2DIfUsed(!c_.camera.isPinhole()));
         if (!cc) return result;
         sampled.type = BdptVertexType::Camera;
         sampled.p = cc->lensPoint;
@@ -74,7 +75,7 @@ BdptConnection<S> BdptConnector<S>::connect(const std::vector<Vertex>& lightPath
     } else if (s == 1) {
         // Next-event estimation: a fresh point on a light.
         if (cv.type != BdptVertexType::Surface || cv.delta) return result;
-        const float uLight = sampler.get1D();
+        const float uLight = sampler.get1DIfUsed(c_.lights.choiceReadsNumber());
         const Vec2f uPoint = sampler.get2D();
         if (c_.lights.empty()) return result;
         const auto choice = c_.lights.choose(cv.p, cv.ns, uLight);

@@ -29,7 +29,7 @@ void LightIntegrator<S>::traceParticle(PixelSampler& sampler, typename Mode::Pat
     const Light& light = c_.lights.light(particle->light);
 
     // The emitter itself seen by the camera (no scattering).
-    const Vec2f uLens = sampler.get2D();
+    const Vec2f uLens = sampler.get2DIfUsed(!c_.camera.isPinhole());
     if (particle->onSurface) {
         if (const auto cc = c_.camera.sampleConnection(e.point, uLens)) {
             SurfaceHit at;
@@ -62,7 +62,7 @@ void LightIntegrator<S>::traceParticle(PixelSampler& sampler, typename Mode::Pat
                               c_.geometry.rayOffsetScale());  // wo towards the light's side
 
         // Connection to the camera.
-        const Vec2f uCamera = sampler.get2D();
+        const Vec2f uCamera = sampler.get2DIfUsed(!c_.camera.isPinhole());
         if ((bsdf.flags() & (kLobeDiffuse | kLobeGlossy)) != 0) {
             if (const auto cc = c_.camera.sampleConnection(hit->p, uCamera);
                 cc && sidesAgree(at.woWorld, cc->wi, hit->ng, hit->ns)) {

@@ -8,7 +8,7 @@ template <SpectrumType S>
 std::optional<ParticleStart<S>> startParticle(const LightSet& lights, const Geometry& geometry,
                                               const RenderMode<S>& mode, PixelSampler& sampler,
                                               typename RenderMode<S>::Path& path) {
-    const float uLight = sampler.get1D();
+    const float uLight = sampler.get1DIfUsed(lights.emitterChoiceReadsNumber());
     const Vec2f uPosition = sampler.get2D(), uDirection = sampler.get2D();
     if (lights.empty()) return std::nullopt;
     const auto [index, pmf] = lights.chooseEmitter(uLight);

@@ -86,7 +86,7 @@ S PathIntegrator<S>::radiance(const Vec3f& rayOrigin, const Vec3f& rayDirection,
         // every vertex).
         const bool smooth = (bsdf.flags() & (kLobeDiffuse | kLobeGlossy)) != 0;
         if (nextEvent && smooth && !c_.lights.empty()) {
-            const float uLight = sampler.get1D();
+            const float uLight = sampler.get1DIfUsed(c_.lights.choiceReadsNumber());
             const Vec2f uLightPoint = sampler.get2D();
             L += beta * directLight(*hit, at, bsdf, uLight, uLightPoint, path, stats);
         } else {

@@ -154,10 +154,20 @@ RectangleLight::RectangleLight(const MeshDesc& mesh) : AreaLight(*mesh.emission,
 }
 
 bool RectangleLight::isRectangle(const MeshDesc& m) {
-    if (!m.isRectangle || m.positions.size() != 4) return false;
-    const Vec3d ex = Vec3d(m.positions[1] - m.positions[0]),
-                ey = Vec3d(m.positions[3] - m.positions[0]);
-    return std::abs(glm::dot(ex, ey)) <= 1e-6 * glm::length(ex) * glm::length(ey);
+    if (m.positions.size() != 4 || m.triangles.size() != 2) return false;
+    // The fan of the face (0, 1, 2, 3), as `rectangle` shapes and the scene file's quads are
+    // split (shape_reader.cpp): then the two triangles cover exactly the rectangle sampled.
+    using Triangle = std::array<std::uint32_t, 3>;
+    if (m.triangles[0] != Triangle{0, 1, 2} || m.triangles[1] != Triangle{0, 2, 3}) return false;
+    const Vec3d p0(m.positions[0]), ex = Vec3d(m.positions[1]) - p0,
+                                    ey = Vec3d(m.positions[3]) - p0;
+    const double lx = glm::length(ex), ly = glm::length(ey);
+    if (!(lx > 0) || !(ly > 0)) return false;
+    // Perpendicular sides, and the fourth corner where the other three put it, to within
+    // the rounding of float positions (a relative 1e-6 of the sides).
+    const double tolerance = 1e-6 * std::max(lx, ly);
+    return std::abs(glm::dot(ex, ey)) <= 1e-6 * lx * ly &&
+           glm::length(Vec3d(m.positions[2]) - (p0 + ex + ey)) <= tolerance;
 }
 
 std::optional<LightSample> RectangleLight::sample(const Vec3f& refF, const Vec2f& u) const {

@@ -160,7 +160,7 @@ LightChoice LightBvh::choose(const Vec3f& p, const Vec3f& n, float u) const {
 }
 
 float LightBvh::probability(std::size_t light, const Vec3f& p, const Vec3f& n) const {
-    if (light >= leafOf_.size() || leafOf_[light] < 0) return 0.0f;
+    if (!contains(light)) return 0.0f;
     // The nodes from the leaf up to the root, then the same products as choose() top down.
     std::array<int, kMaxDepth + 1> trail;
     int length = 0;

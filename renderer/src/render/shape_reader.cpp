@@ -217,10 +217,10 @@ void readTriangles(const JsonReader& r, ShapeKind kind, MeshDesc& mesh) {
             break;
         case ShapeKind::Rectangle:
             // The square [-1, 1]^2 in the plane z = 0, facing +z; place it with `transform`.
+            // An emitting one is one light (RectangleLight::isRectangle).
             mesh.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
             mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
             mesh.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-            mesh.isRectangle = true;
             break;
         case ShapeKind::Sphere:
         case ShapeKind::Disk:

@@ -106,6 +106,7 @@ class DiffuseBxdf final : public Bxdf<S> {
     }
 
     std::uint32_t flags() const override { return kLobeDiffuseReflection; }
+    bool usesLobeChoice() const override { return false; }
 
   private:
     S reflectance_;

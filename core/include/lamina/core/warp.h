@@ -2,6 +2,8 @@
 // Every function takes a point u in [0,1)^2; directions are in the local frame (z up).
 #pragma once
 
+#include <type_traits>
+
 #include "lamina/core/frame.h"
 
 namespace lamina {
@@ -12,6 +14,15 @@ template <typename T>
 Vec2<T> squareToUniformDiskConcentric(const Vec2<T>& u) {
     const T x = T(2) * u.x - T(1), y = T(2) * u.y - T(1);
     if (x == T(0) && y == T(0)) return Vec2<T>(T(0));
+    if constexpr (std::is_same_v<T, float>) {
+        // The angle is (pi/4) t in the first case, pi/2 - (pi/4) t in the second, |t| <= 1:
+        // the sine and cosine of (pi/4) t, swapped in the second case (cos(pi/2 - a) is
+        // sin(a)), by the polynomial for |a| <= pi/4.
+        const bool xMajor = std::abs(x) > std::abs(y);
+        const float r = xMajor ? x : y;
+        const SinCos sc = sinCosWithinQuarterPi((kPi<float> / 4.0f) * (xMajor ? y / x : x / y));
+        return xMajor ? Vec2<T>(r * sc.cos, r * sc.sin) : Vec2<T>(r * sc.sin, r * sc.cos);
+    }
     T r, phi;
     if (std::abs(x) > std::abs(y)) {
         r = x;

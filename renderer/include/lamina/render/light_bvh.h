@@ -44,6 +44,8 @@ class LightBvh {
     /// The probability that choose(p, n, u) returns `light` for a uniform u (0 for a light
     /// that is not in the tree).
     float probability(std::size_t light, const Vec3f& p, const Vec3f& n) const;
+    /// Whether LightSet light `light` is a leaf of the tree.
+    bool contains(std::size_t light) const { return light < leafOf_.size() && leafOf_[light] >= 0; }
     /// The number of levels below the root of the deepest leaf.
     int depth() const { return depth_; }
 

@@ -102,8 +102,13 @@ class LightSet {
     std::optional<LightChoice> choose(const Vec3f& p, const Vec3f& n, float u) const;
     /// The probability that choose(p, n, u) returns light i for a uniform u.
     float probability(std::size_t i, const Vec3f& p, const Vec3f& n) const;
+    /// Whether choose() reads u: false when there is at most one light it can return (the
+    /// Cornell box's lamp), and the integrators then skip the sampler's dimension for it.
+    bool choiceReadsNumber() const { return choiceReadsNumber_; }
     /// Chooses the light a particle starts from.
     LightChoice chooseEmitter(float u) const;
+    /// Whether chooseEmitter() reads u: false for a scene of one light.
+    bool emitterChoiceReadsNumber() const { return lights_.size() > 1; }
     float emitterProbability(std::size_t i) const { return pmf_[i]; }
     /// Under every selection, probability(i, p, n) / emitterProbability(i) is the same for
     /// all environment lights (the infinite lights that are not delta) at a given point
@@ -135,6 +140,7 @@ class LightSet {
     std::vector<char> nextEvent_;  ///< per light: sampled by next-event estimation
     std::vector<std::size_t> infinite_;
     std::vector<ShapeLights> shapeLights_;  ///< indexed like Geometry::shapes()
+    bool choiceReadsNumber_ = true;
     // `bvh` selection: the lights with a position, and the lights at infinity with the share
     // infiniteShare_, among themselves by infiniteCdf_ (their pmf_ renormalised).
     bool useBvh_ = false;

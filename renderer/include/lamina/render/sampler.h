@@ -136,6 +136,22 @@ class PixelSampler {
         ++dimension_;
     }
 
+    /// get1D() when the number is `used`; otherwise skip() and 0, for a number the path has
+    /// no use for this time (the lobe choice of a BSDF of one lobe, the choice of a light
+    /// among one).
+    float get1DIfUsed(bool used) {
+        if (used) return get1D();
+        skip();
+        return 0.0f;
+    }
+    /// get2D() when the numbers are `used`; otherwise skip() and the centre (a pinhole's lens
+    /// point).
+    Vec2<float> get2DIfUsed(bool used) {
+        if (used) return get2D();
+        skip();
+        return Vec2<float>(0.5f);
+    }
+
     /// The next dimension pair of the sample: the sample index shuffled by a nested uniform
     /// scramble of its own (so pairs are decorrelated), then Sobol dimensions 0 and 1 of the
     /// shuffled index, each scrambled with a seed of its own. Everything is computed in the

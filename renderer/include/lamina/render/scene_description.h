@@ -132,9 +132,6 @@ struct MeshDesc {
     std::vector<std::array<std::uint32_t, 3>> triangles;
     int material = -1;
     std::optional<EmissionDesc> emission;
-    /// A `rectangle` shape: positions[0] is a corner, positions[1] and [3] its neighbours
-    /// (an emitting rectangle is sampled by solid angle).
-    bool isRectangle = false;
     AlphaDesc alpha;
 };
 

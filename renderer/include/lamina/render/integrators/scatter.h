@@ -2,9 +2,9 @@
 // paths of light and bdpt): sample the BSDF, keep the direction only when the shading frame
 // and the geometric surface agree on its side (shading_normals.h), update the throughput by
 // the integrator's rule, play Russian roulette and spawn the next ray. The sampler's numbers
-// are drawn in one order everywhere: the lobe choice (1D), the direction (2D), then, for a
-// direction kept, the roulette (1D; skipped, not computed, while the roulette cannot end the
-// path).
+// are drawn in one order everywhere: the lobe choice (1D; skipped, not computed, for a BSDF
+// that does not read it), the direction (2D), then, for a direction kept, the roulette (1D;
+// skipped while the roulette cannot end the path).
 #pragma once
 
 #include <optional>
@@ -68,7 +68,7 @@ ScatterResult<S> scatter(const Bxdf<S>& bsdf, const ShadingPoint& at, TransportM
                          int bounces, int rrDepth, PixelSampler& sampler, S& beta,
                          UpdateThroughput&& updateThroughput) {
     ScatterResult<S> result;
-    const float uc = sampler.get1D();
+    const float uc = sampler.get1DIfUsed(bsdf.usesLobeChoice());
     const Vec2f u = sampler.get2D();
     result.sample = bsdf.sample(at.wo, uc, u, mode);
     const auto& s = result.sample;
