@@ -416,7 +416,8 @@ TEST(LightBvh, OneLightTreeAlwaysChoosesIt) {
 }
 
 // choose() reads no number exactly when it has one light to return (the integrators then skip
-// the sampler's dimension): under every selection, on scenes with one light (a triangle; a
+// the sampler's dimension), and returns none exactly when nextEventChooses() says so (a
+// constant sky alone): under every selection, on scenes with one light (a triangle; a
 // rectangle beside a constant environment, which next-event estimation leaves to BSDF
 // sampling; a directional light alone) every u gives the same choice, bit for bit, at random
 // points; on scenes with several (two triangles, one emitter of every kind, the many-light
@@ -434,6 +435,7 @@ TEST(LightSet, ChoiceReadsNoNumberExactlyWhenThereIsOneLightToChoose) {
         const char* name;
         SceneDesc scene;
         bool severalChoices, severalEmitters;
+        bool chooses = true;
     };
     // The triangle and its neighbour across the edge (1, 2), both facing +y.
     SceneDesc twoTriangles = scene(", " + triangle, "");
@@ -452,6 +454,8 @@ TEST(LightSet, ChoiceReadsNoNumberExactlyWhenThereIsOneLightToChoose) {
         {"one emitter of every kind", testing::sceneFromText(testing::kOneEmitterOfEveryKind), true,
          true},
         {"many lights", manyLights(), true, true},
+        {"constant sky alone", scene("", R"({"type": "environment", "radiance": 0.3})"), false,
+         false, false},
     };
     const float us[] = {0.0f, 0.1f, 0.3f, 0.5f, 0.7f, 0.9f, kOneMinusEpsilon<float>};
     for (const Case& c : cases)
@@ -461,8 +465,14 @@ TEST(LightSet, ChoiceReadsNoNumberExactlyWhenThereIsOneLightToChoose) {
             const LightSet lights(c.scene, geometry, s);
             EXPECT_EQ(lights.choiceReadsNumber(), c.severalChoices) << c.name;
             EXPECT_EQ(lights.emitterChoiceReadsNumber(), c.severalEmitters) << c.name;
+            EXPECT_EQ(lights.nextEventChooses(), c.chooses) << c.name;
             bool differs = false;
             for (const ShadingPoint& at : randomPoints(geometry, 100, 31)) {
+                if (!c.chooses) {
+                    for (const float u : us)
+                        EXPECT_FALSE(lights.choose(at.p, at.n, u)) << c.name;
+                    continue;
+                }
                 const auto first = lights.choose(at.p, at.n, us[0]);
                 ASSERT_TRUE(first) << c.name;
                 for (const float u : us) {

@@ -46,6 +46,54 @@ TEST(RectangleLight, SamplingMatchesItsDensity) {
     }
 }
 
+// From a point nearer the plane than the diagonal (here 1.61) the samples are uniform in solid
+// angle: every one has the same density. From farther away they are drawn by area: the density
+// is the area one, d^2 / (|cos| A), and varies over the rectangle. Behind a one-sided
+// rectangle nothing is sampled.
+TEST(RectangleLight, NearerThanItsDiagonalItIsSampledBySolidAngle) {
+    const auto scene = testing::sceneFromText(kScene);
+    render::Geometry geometry(scene);
+    const render::LightSet lights(scene, geometry, render::LightSelection::Power);
+    const render::Light& light = lights.light(0);
+    const auto& m = scene.meshes[0];
+    const Vec3d p0(m.positions[0]), ex = Vec3d(m.positions[1]) - p0,
+                                    ey = Vec3d(m.positions[3]) - p0;
+    const Vec3d n = glm::normalize(glm::cross(ex, ey)), centre = p0 + 0.5 * (ex + ey);
+    const double diagonal = glm::length(ex + ey), area = glm::length(glm::cross(ex, ey));
+    Pcg32 rng(5);
+    for (const double height : {0.3 * diagonal, 0.9 * diagonal, 1.1 * diagonal, 3.0 * diagonal})
+        for (const double side : {1.0, -1.0}) {
+            const Vec3f ref(centre + 0.2 * ex + side * height * n);
+            double lowest = 1e300, highest = 0;
+            for (int i = 0; i < 2000; ++i) {
+                const auto s = light.sample(ref, Vec2f(rng.nextFloat(), rng.nextFloat()));
+                ASSERT_TRUE(s);
+                lowest = std::min(lowest, double(s->pdf));
+                highest = std::max(highest, double(s->pdf));
+                if (height > diagonal) {
+                    const Vec3d d = Vec3d(s->point) - Vec3d(ref);
+                    const double byArea =
+                        glm::dot(d, d) / (std::abs(glm::dot(n, glm::normalize(d))) * area);
+                    ASSERT_NEAR(s->pdf, byArea, 1e-4 * byArea);
+                }
+            }
+            if (height < diagonal)
+                EXPECT_LT(highest, lowest * (1 + 1e-6)) << "height " << height;
+            else
+                EXPECT_GT(highest, lowest * 1.01) << "height " << height;
+        }
+    // One-sided, from behind: nothing.
+    const auto oneSided = testing::sceneFromText(
+        R"({"materials": {"m": {"type": "lambert", "reflectance": 0}},
+            "shapes": [{"type": "rectangle", "material": "m", "emission": {"radiance": 1}}]})");
+    const render::Geometry g1(oneSided);
+    const render::LightSet l1(oneSided, g1, render::LightSelection::Power);
+    for (const float z : {-0.5f, -5.0f, 0.0f}) {
+        EXPECT_FALSE(l1.light(0).sample(Vec3f(0.1f, 0.2f, z), Vec2f(0.3f, 0.6f))) << z;
+        EXPECT_TRUE(l1.light(0).sample(Vec3f(0.1f, 0.2f, -z + 0.5f), Vec2f(0.3f, 0.6f))) << z;
+    }
+}
+
 TEST(RectangleLight, FarAwayTheAreaFallbackIsUnbiased) {
     // From far away (solid angle below 1e-4 sr) the light is sampled by area; E[1 / pdf] over
     // its samples is the solid angle, A cos(theta) / d^2 to first order.

@@ -82,10 +82,10 @@ S PathIntegrator<S>::radiance(const Vec3f& rayOrigin, const Vec3f& rayDirection,
         const ShadingPoint at(hit->p, hit->ng, hit->ns, -d, c_.geometry.rayOffsetScale());
 
         // Next-event estimation (its two dimensions are used at every vertex, skipped when
-        // there is no estimate to make, so the sampler's dimensions mean the same thing at
-        // every vertex).
+        // there is no estimate to make or, the light's, no light to choose between, so the
+        // sampler's dimensions mean the same thing at every vertex).
         const bool smooth = (bsdf.flags() & (kLobeDiffuse | kLobeGlossy)) != 0;
-        if (nextEvent && smooth && !c_.lights.empty()) {
+        if (nextEvent && smooth && c_.lights.nextEventChooses()) {
             const float uLight = sampler.get1DIfUsed(c_.lights.choiceReadsNumber());
             const Vec2f uLightPoint = sampler.get2D();
             L += beta * directLight(*hit, at, bsdf, uLight, uLightPoint, path, stats);

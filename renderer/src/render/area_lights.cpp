@@ -151,6 +151,7 @@ RectangleLight::RectangleLight(const MeshDesc& mesh) : AreaLight(*mesh.emission,
         glm::cross(Vec3d(mesh.positions[1]) - corner_, Vec3d(mesh.positions[2]) - corner_);
     if (glm::dot(winding, n_) < 0) n_ = -n_;
     area_ = lx_ * ly_;
+    diagonal2_ = lx_ * lx_ + ly_ * ly_;
 }
 
 bool RectangleLight::isRectangle(const MeshDesc& m) {
@@ -170,38 +171,41 @@ bool RectangleLight::isRectangle(const MeshDesc& m) {
            glm::length(Vec3d(m.positions[2]) - (p0 + ex + ey)) <= tolerance;
 }
 
+bool RectangleLight::bySolidAngle(const Vec3d& ref) const {
+    const double h = glm::dot(ref - corner_, n_);
+    return diagonal2_ > h * h;
+}
+
 std::optional<LightSample> RectangleLight::sample(const Vec3f& refF, const Vec2f& u) const {
     const Vec3d ref(refF);
-    Vec3d p;
-    double pdf;
+    // Behind a one-sided rectangle every point of it faces away (towards() would say so for
+    // each): nothing to compute.
+    if (!twoSided_ && !(glm::dot(ref - corner_, n_) > 0)) return std::nullopt;
+    // By area as every flat light is, in single precision, as pdf() then computes it.
+    if (!bySolidAngle(ref)) return AreaLight::sample(refF, u);
     const Spherical sph = spherical(ref);
-    if (sph.solidAngle > kMinSolidAngle) {
-        // Section 4 of the paper: invert the area of the sub-rectangle left of x_u, then
-        // the height along y at that x.
-        const double au = double(u.x) * sph.solidAngle + sph.k;
-        const double fu = (std::cos(au) * sph.b0 - sph.b1) / std::sin(au);
-        double cu = (fu > 0 ? 1.0 : -1.0) / std::sqrt(fu * fu + sph.b0 * sph.b0);
-        cu = std::clamp(cu, -1.0, 1.0);
-        double xu = -(cu * sph.z0) / std::sqrt(std::max(1e-300, 1.0 - cu * cu));
-        xu = std::clamp(xu, sph.x0, sph.x1);
-        const double dd = std::sqrt(xu * xu + sph.z0 * sph.z0);
-        const double h0 = sph.y0 / std::sqrt(dd * dd + sph.y0 * sph.y0);
-        const double h1 = sph.y1 / std::sqrt(dd * dd + sph.y1 * sph.y1);
-        const double hv = h0 + double(u.y) * (h1 - h0), hv2 = hv * hv;
-        const double yv = hv2 < 1.0 - 1e-12 ? hv * dd / std::sqrt(1.0 - hv2) : sph.y1;
-        p = ref + xu * sph.x + yv * sph.y + sph.z0 * sph.z;
-        pdf = 1.0 / sph.solidAngle;
-    } else {
-        const AreaPoint a = samplePoint(u);
-        p = a.p;
-        pdf = solidAngleDensity(ref, a);
-    }
-    return towards(ref, p, n_, pdf);
+    if (!(sph.solidAngle > kMinSolidAngle)) return AreaLight::sample(refF, u);
+    // Section 4 of the paper: invert the area of the sub-rectangle left of x_u, then the
+    // height along y at that x.
+    const double au = double(u.x) * sph.solidAngle + sph.k;
+    const double fu = (std::cos(au) * sph.b0 - sph.b1) / std::sin(au);
+    double cu = (fu > 0 ? 1.0 : -1.0) / std::sqrt(fu * fu + sph.b0 * sph.b0);
+    cu = std::clamp(cu, -1.0, 1.0);
+    double xu = -(cu * sph.z0) / std::sqrt(std::max(1e-300, 1.0 - cu * cu));
+    xu = std::clamp(xu, sph.x0, sph.x1);
+    const double dd = std::sqrt(xu * xu + sph.z0 * sph.z0);
+    const double h0 = sph.y0 / std::sqrt(dd * dd + sph.y0 * sph.y0);
+    const double h1 = sph.y1 / std::sqrt(dd * dd + sph.y1 * sph.y1);
+    const double hv = h0 + double(u.y) * (h1 - h0), hv2 = hv * hv;
+    const double yv = hv2 < 1.0 - 1e-12 ? hv * dd / std::sqrt(1.0 - hv2) : sph.y1;
+    const Vec3d p = ref + xu * sph.x + yv * sph.y + sph.z0 * sph.z;
+    return towards(ref, p, n_, 1.0 / sph.solidAngle);
 }
 
 float RectangleLight::pdf(const Vec3f& refF, const SurfaceHit& hit) const {
-    const Spherical sph = spherical(Vec3d(refF));
-    if (sph.solidAngle > kMinSolidAngle) return float(1.0 / sph.solidAngle);
+    if (bySolidAngle(Vec3d(refF)))
+        if (const Spherical sph = spherical(Vec3d(refF)); sph.solidAngle > kMinSolidAngle)
+            return float(1.0 / sph.solidAngle);
     return AreaLight::pdf(refF, hit);
 }
 

@@ -96,10 +96,9 @@ LightSet::LightSet(const SceneDesc& scene, const Geometry& geometry, LightSelect
     if (selection == LightSelection::Bvh) buildBvh();
     // The lights choose() can return: with the tree, its leaves (the lights with bounds) and
     // the lights at infinity next-event estimation samples; else every light it samples.
-    std::size_t choices = 0;
     for (std::size_t i = 0; i < lights_.size(); ++i)
-        if (nextEvent_[i] && (!useBvh_ || infiniteSlot_[i] >= 0 || bvh_.contains(i))) ++choices;
-    choiceReadsNumber_ = choices > 1;
+        if (nextEvent_[i] && (!useBvh_ || infiniteSlot_[i] >= 0 || bvh_.contains(i)))
+            ++nextEventChoices_;
 }
 
 void LightSet::chooseNextEventLights() {

@@ -68,8 +68,9 @@ class TriangleLight final : public AreaLight {
 
 /// An emitting rectangle, sampled uniformly in the solid angle it subtends (Urena, Fajardo
 /// and King 2013, "An Area-Preserving Parametrization for Spherical Rectangles", EGSR; the
-/// algorithm of their section 4, in double precision), or by area when the solid angle is
-/// too small for that to be accurate (below 1e-4 sr the spherical quantities cancel).
+/// algorithm of their section 4, in double precision) from points nearer its plane than its
+/// diagonal is long, and by area from farther away or when the solid angle is too small for
+/// the spherical quantities to be accurate (below 1e-4 sr they cancel).
 class RectangleLight final : public AreaLight {
   public:
     explicit RectangleLight(const MeshDesc& mesh);
@@ -89,6 +90,14 @@ class RectangleLight final : public AreaLight {
 
     static constexpr double kMinSolidAngle = 1e-4;
 
+    /// Whether `ref` is nearer the rectangle's plane than its diagonal is long: only there
+    /// does the area density vary enough over the rectangle (its cosine and squared distance)
+    /// to pay for the solid-angle map's four arccosines and a sine. Sampled by solid angle
+    /// from everywhere, the Cornell box took 18% more time for 8% less variance per sample.
+    /// Cycles 3.4 makes the same choice for triangles, with their longest edge
+    /// (kernel/light/triangle.h).
+    bool bySolidAngle(const Vec3d& ref) const;
+
     // The rectangle seen from `ref`, in the local frame of the paper (z towards the plane).
     struct Spherical {
         Vec3d x, y, z;
@@ -98,7 +107,7 @@ class RectangleLight final : public AreaLight {
     Spherical spherical(const Vec3d& ref) const;
 
     Vec3d corner_, x_, y_, n_;
-    double lx_ = 0, ly_ = 0;
+    double lx_ = 0, ly_ = 0, diagonal2_ = 0;
 };
 
 /// An emitting disk, sampled uniformly by area (the concentric mapping) in double precision.

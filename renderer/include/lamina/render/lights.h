@@ -102,9 +102,12 @@ class LightSet {
     std::optional<LightChoice> choose(const Vec3f& p, const Vec3f& n, float u) const;
     /// The probability that choose(p, n, u) returns light i for a uniform u.
     float probability(std::size_t i, const Vec3f& p, const Vec3f& n) const;
+    /// Whether choose() can return a light at all: false without lights or when the only ones
+    /// are constant environments (nextEventSamples), such as the white furnace's.
+    bool nextEventChooses() const { return nextEventChoices_ > 0; }
     /// Whether choose() reads u: false when there is at most one light it can return (the
     /// Cornell box's lamp), and the integrators then skip the sampler's dimension for it.
-    bool choiceReadsNumber() const { return choiceReadsNumber_; }
+    bool choiceReadsNumber() const { return nextEventChoices_ > 1; }
     /// Chooses the light a particle starts from.
     LightChoice chooseEmitter(float u) const;
     /// Whether chooseEmitter() reads u: false for a scene of one light.
@@ -140,7 +143,7 @@ class LightSet {
     std::vector<char> nextEvent_;  ///< per light: sampled by next-event estimation
     std::vector<std::size_t> infinite_;
     std::vector<ShapeLights> shapeLights_;  ///< indexed like Geometry::shapes()
-    bool choiceReadsNumber_ = true;
+    std::size_t nextEventChoices_ = 0;      ///< the lights choose() can return
     // `bvh` selection: the lights with a position, and the lights at infinity with the share
     // infiniteShare_, among themselves by infiniteCdf_ (their pmf_ renormalised).
     bool useBvh_ = false;
