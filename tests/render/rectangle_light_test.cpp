@@ -70,6 +70,10 @@ TEST(RectangleLight, NearerThanItsDiagonalItIsSampledBySolidAngle) {
                 ASSERT_TRUE(s);
                 lowest = std::min(lowest, double(s->pdf));
                 highest = std::max(highest, double(s->pdf));
+                // The density pdf() gives the point hit along the sample, as MIS asks it.
+                const auto hit = geometry.intersect(ref, s->wi);
+                ASSERT_TRUE(hit);
+                ASSERT_NEAR(light.pdf(ref, *hit), s->pdf, 1e-3 * s->pdf);
                 if (height > diagonal) {
                     const Vec3d d = Vec3d(s->point) - Vec3d(ref);
                     const double byArea =
@@ -91,6 +95,36 @@ TEST(RectangleLight, NearerThanItsDiagonalItIsSampledBySolidAngle) {
     for (const float z : {-0.5f, -5.0f, 0.0f}) {
         EXPECT_FALSE(l1.light(0).sample(Vec3f(0.1f, 0.2f, z), Vec2f(0.3f, 0.6f))) << z;
         EXPECT_TRUE(l1.light(0).sample(Vec3f(0.1f, 0.2f, -z + 0.5f), Vec2f(0.3f, 0.6f))) << z;
+    }
+}
+
+// A one-sided rectangle under a mirroring transform is sampled from the side its triangles
+// face (the side that emits when hit), for the `rectangle` shape and for a mesh face alike.
+TEST(RectangleLight, AMirroredRectangleIsSampledFromTheSideItEmitsTo) {
+    for (const char* shape : {R"({"type": "rectangle", "material": "m", "emission": {"radiance": 1},
+              "transform": [{"scale": [-1, 1, 1]}]})",
+                              R"({"type": "mesh", "material": "m", "emission": {"radiance": 1},
+              "positions": [[-1, -1, 0], [1, -1, 0], [1, 1, 0], [-1, 1, 0]],
+              "faces": [[0, 1, 2, 3]], "transform": [{"scale": [1, -1, 1]}]})"}) {
+        const auto scene = testing::sceneFromText(
+            std::string(R"({"materials": {"m": {"type": "lambert", "reflectance": 0}},
+                            "shapes": [)") +
+            shape + "]}");
+        const render::Geometry geometry(scene);
+        const render::LightSet lights(scene, geometry, render::LightSelection::Power);
+        ASSERT_EQ(lights.size(), 1u) << shape;
+        for (const float z : {0.5f, 3.0f, -0.5f, -3.0f}) {
+            const Vec3f ref(0.1f, 0.2f, z);
+            const auto hit = geometry.intersect(ref, Vec3f(0.0f, 0.0f, z > 0 ? -1.0f : 1.0f));
+            ASSERT_TRUE(hit);
+            const bool emitsToRef =
+                !lights.light(0).radiance(*hit, glm::normalize(ref - hit->p)).isZero();
+            const auto s = lights.light(0).sample(ref, Vec2f(0.4f, 0.7f));
+            EXPECT_EQ(s.has_value(), emitsToRef) << shape << " z " << z;
+            if (s) {
+                EXPECT_GT(glm::dot(s->normal, hit->ng), 0.99f);
+            }
+        }
     }
 }
 
@@ -165,9 +199,9 @@ TEST(RectangleLight, RendersTheSameAsTheQuadSampledByArea) {
 }
 
 // A mesh of one four-cornered face is one rectangle light when the face is a rectangle split
-// as its fan (the Cornell box's lamp), and stays two triangle lights otherwise: a
-// parallelogram, a quad whose fourth corner is off the rectangle, the same triangles in
-// another order, a mirrored transform (which reverses the winding).
+// as its fan (the Cornell box's lamp), also under a mirroring transform (which reverses the
+// winding), and stays two triangle lights otherwise: a parallelogram, a quad whose fourth
+// corner is off the rectangle, the same triangles in another order.
 TEST(RectangleLight, AMeshFaceIsOneLightExactlyWhenItIsARectangle) {
     auto lightsOf = [](const std::string& positions, const std::string& faces,
                        const std::string& transform = "[]") {
@@ -186,7 +220,7 @@ TEST(RectangleLight, AMeshFaceIsOneLightExactlyWhenItIsARectangle) {
                  R"([{"rotate": {"axis": [1, 2, 3], "angle": 40}}, {"translate": [5, 0, 1]}])"),
         1u);
     EXPECT_EQ(lightsOf(square, "[[0, 1, 2], [2, 3, 0]]"), 2u);
-    EXPECT_EQ(lightsOf(square, "[[0, 1, 2, 3]]", R"([{"scale": [-1, 1, 1]}])"), 2u);
+    EXPECT_EQ(lightsOf(square, "[[0, 1, 2, 3]]", R"([{"scale": [-1, 1, 1]}])"), 1u);
     EXPECT_EQ(lightsOf("[[0, 0, 0], [2, 0, 0], [2.5, 1, 0], [0.5, 1, 0]]", "[[0, 1, 2, 3]]"), 2u);
     EXPECT_EQ(lightsOf("[[0, 0, 0], [2, 0, 0], [2, 1, 0.01], [0, 1, 0]]", "[[0, 1, 2, 3]]"), 2u);
     EXPECT_EQ(lightsOf("[[0, 0, 0], [2, 0, 0], [2.01, 1, 0], [0, 1, 0]]", "[[0, 1, 2, 3]]"), 2u);

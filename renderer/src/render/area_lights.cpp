@@ -147,8 +147,11 @@ RectangleLight::RectangleLight(const MeshDesc& mesh) : AreaLight(*mesh.emission,
     y_ = ey / ly_;
     n_ = glm::normalize(glm::cross(ex, ey));
     // The winding of (0, 1, 2) gives the front side, as for the triangles.
-    const Vec3d winding =
-        glm::cross(Vec3d(mesh.positions[1]) - corner_, Vec3d(mesh.positions[2]) - corner_);
+    // The first triangle's winding gives the front side, as it does the triangles' own
+    // geometric normal (a mirroring transform reverses both, shape_reader.cpp).
+    const auto& t = mesh.triangles.front();
+    const Vec3d winding = glm::cross(Vec3d(mesh.positions[t[1]]) - Vec3d(mesh.positions[t[0]]),
+                                     Vec3d(mesh.positions[t[2]]) - Vec3d(mesh.positions[t[0]]));
     if (glm::dot(winding, n_) < 0) n_ = -n_;
     area_ = lx_ * ly_;
     diagonal2_ = lx_ * lx_ + ly_ * ly_;
@@ -157,9 +160,14 @@ RectangleLight::RectangleLight(const MeshDesc& mesh) : AreaLight(*mesh.emission,
 bool RectangleLight::isRectangle(const MeshDesc& m) {
     if (m.positions.size() != 4 || m.triangles.size() != 2) return false;
     // The fan of the face (0, 1, 2, 3), as `rectangle` shapes and the scene file's quads are
-    // split (shape_reader.cpp): then the two triangles cover exactly the rectangle sampled.
+    // split (shape_reader.cpp), or the same fan mirrored (a transform of negative determinant
+    // swaps each triangle's last two vertices): then the two triangles cover exactly the
+    // rectangle sampled.
     using Triangle = std::array<std::uint32_t, 3>;
-    if (m.triangles[0] != Triangle{0, 1, 2} || m.triangles[1] != Triangle{0, 2, 3}) return false;
+    const bool fan = m.triangles[0] == Triangle{0, 1, 2} && m.triangles[1] == Triangle{0, 2, 3};
+    const bool mirroredFan =
+        m.triangles[0] == Triangle{0, 2, 1} && m.triangles[1] == Triangle{0, 3, 2};
+    if (!fan && !mirroredFan) return false;
     const Vec3d p0(m.positions[0]), ex = Vec3d(m.positions[1]) - p0,
                                     ey = Vec3d(m.positions[3]) - p0;
     const double lx = glm::length(ex), ly = glm::length(ey);

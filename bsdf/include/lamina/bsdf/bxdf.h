@@ -36,7 +36,7 @@ class Bxdf {
     /// The union of the flags of the lobes this BSDF has.
     virtual std::uint32_t flags() const = 0;
 
-    /// Whether sample() reads `uc`. A BSDF of one lobe (Lambert, Oren-Nayar) does not, and
+    /// Whether sample() reads `uc`. A BSDF of one lobe (DiffuseBxdf, every model) does not, and
     /// the integrators then skip the sampler's dimension for it rather than compute a number
     /// nobody reads (scatter.h); every other number of the path is the same either way.
     virtual bool usesLobeChoice() const { return true; }

@@ -75,10 +75,10 @@ class RectangleLight final : public AreaLight {
   public:
     explicit RectangleLight(const MeshDesc& mesh);
 
-    /// A mesh that is one rectangle, split into the triangles (0, 1, 2) and (0, 2, 3): a
-    /// `rectangle` shape, or a mesh of one four-cornered face with right angles, such as the
-    /// Cornell box's lamp. It is one light, not two triangles: sampled by the solid angle it
-    /// subtends, and with nothing for the light BVH to choose between.
+    /// A mesh that is one rectangle, split into the triangles (0, 1, 2) and (0, 2, 3) (or
+    /// those mirrored): a `rectangle` shape, or a mesh of one four-cornered face with right
+    /// angles, such as the Cornell box's lamp. It is one light, not two triangles: sampled by the
+    /// solid angle it subtends, and with nothing for the light BVH to choose between.
     static bool isRectangle(const MeshDesc& m);
 
     std::optional<LightSample> sample(const Vec3f& ref, const Vec2f& u) const override;
