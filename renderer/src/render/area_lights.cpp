@@ -179,18 +179,18 @@ bool RectangleLight::isRectangle(const MeshDesc& m) {
            glm::length(Vec3d(m.positions[2]) - (p0 + ex + ey)) <= tolerance;
 }
 
-bool RectangleLight::bySolidAngle(const Vec3d& ref) const {
-    const double h = glm::dot(ref - corner_, n_);
-    return diagonal2_ > h * h;
+double RectangleLight::height(const Vec3d& ref) const {
+    return glm::dot(ref - corner_, n_);
 }
 
 std::optional<LightSample> RectangleLight::sample(const Vec3f& refF, const Vec2f& u) const {
     const Vec3d ref(refF);
     // Behind a one-sided rectangle every point of it faces away (towards() would say so for
     // each): nothing to compute.
-    if (!twoSided_ && !(glm::dot(ref - corner_, n_) > 0)) return std::nullopt;
+    const double h = height(ref);
+    if (!twoSided_ && !(h > 0)) return std::nullopt;
     // By area as every flat light is, in single precision, as pdf() then computes it.
-    if (!bySolidAngle(ref)) return AreaLight::sample(refF, u);
+    if (!bySolidAngle(h)) return AreaLight::sample(refF, u);
     const Spherical sph = spherical(ref);
     if (!(sph.solidAngle > kMinSolidAngle)) return AreaLight::sample(refF, u);
     // Section 4 of the paper: invert the area of the sub-rectangle left of x_u, then the
@@ -211,7 +211,7 @@ std::optional<LightSample> RectangleLight::sample(const Vec3f& refF, const Vec2f
 }
 
 float RectangleLight::pdf(const Vec3f& refF, const SurfaceHit& hit) const {
-    if (bySolidAngle(Vec3d(refF)))
+    if (bySolidAngle(height(Vec3d(refF))))
         if (const Spherical sph = spherical(Vec3d(refF)); sph.solidAngle > kMinSolidAngle)
             return float(1.0 / sph.solidAngle);
     return AreaLight::pdf(refF, hit);

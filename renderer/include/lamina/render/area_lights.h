@@ -90,13 +90,15 @@ class RectangleLight final : public AreaLight {
 
     static constexpr double kMinSolidAngle = 1e-4;
 
-    /// Whether `ref` is nearer the rectangle's plane than its diagonal is long: only there
-    /// does the area density vary enough over the rectangle (its cosine and squared distance)
+    /// The signed distance of `ref` from the rectangle's plane, positive on its front.
+    double height(const Vec3d& ref) const;
+    /// Whether a point at `height` from the plane is nearer it than the diagonal is long: only
+    /// there does the area density vary enough over the rectangle (its cosine and squared distance)
     /// to pay for the solid-angle map's four arccosines and a sine. Sampled by solid angle
     /// from everywhere, the Cornell box took 18% more time for 8% less variance per sample.
     /// Cycles 3.4 makes the same choice for triangles, with their longest edge
     /// (kernel/light/triangle.h).
-    bool bySolidAngle(const Vec3d& ref) const;
+    bool bySolidAngle(double height) const { return diagonal2_ > height * height; }
 
     // The rectangle seen from `ref`, in the local frame of the paper (z towards the plane).
     struct Spherical {
