@@ -1,6 +1,7 @@
 #include "pbrt_params.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "lamina/core/error.h"
 #include "pbrt_tokenizer.h"
@@ -61,7 +62,8 @@ int ParamList::integer(const std::string& name, int fallback) const {
     if (!has(name)) return fallback;
     const Param& p = single(name, {"integer"});
     const double v = p.numbers[0];
-    if (v != double(int(v)) || v < -2147483647.0 || v > 2147483647.0)
+    // The range first: converting a double outside int's range (or NaN) is undefined.
+    if (!(v >= -2147483647.0 && v <= 2147483647.0) || v != std::trunc(v))
         fail(p, "expected an integer");
     return int(v);
 }
