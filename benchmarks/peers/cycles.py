@@ -342,10 +342,16 @@ class Runner:
         if self.args.clock == "cpu":
             # The whole process (start-up and scene loading included: counted against lamina).
             return out, (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-        m = re.search(r"spp, [^,]+, [^,]+, ([0-9.]+) s,", p.stderr)
+        # The summary line "OUT: WxH, N spp, MODE mode, INTEGRATOR integrator, T s, R paths/s,
+        # ...", not a progress line "progress: P% (N spp, T s, ETA E s)" before it: fields
+        # never run across lines, and the line must name the samples asked for.
+        m = re.search(r"^.*, (\d+) spp, [^,\n]+, [^,\n]+, ([0-9.]+) s, [^,\n]+ paths/s", p.stderr,
+                      re.MULTILINE)
         if not m:
             sys.exit(f"cycles.py: no render time in lamina's output:\n{p.stderr}")
-        return out, float(m.group(1))
+        if int(m.group(1)) != spp:
+            sys.exit(f"cycles.py: lamina rendered {m.group(1)} spp where {spp} were asked:\n{p.stderr}")
+        return out, float(m.group(2))
 
     def cycles(self, scene, spp, seed, name):
         out = os.path.join(self.work, name + ".exr")
@@ -377,31 +383,47 @@ def measure_scene(runner, scene, args):
         halves = [render(scene, args.reference_spp // 2, seed, f"{tag}-{name}-reference-{seed}")
                   for seed in (101, 102)]
         h1, h2 = halves[0][0], halves[1][0]
-        references[name] = (h1, h2, runner.mse(h1, h2)[0] / 2.0, halves[0][1] + halves[1][1])
+        between_halves = runner.mse(h1, h2)
+        references[name] = (h1, h2, between_halves[0] / 2.0, halves[0][1] + halves[1][1],
+                            between_halves[1])
     agreement = runner.mse(references["lamina"][0], references["cycles"][0])[1]
     print(f"\n## {scene}")
     print(f"references: {args.reference_spp} spp each as two halves (lamina {references['lamina'][3]:.1f} s, "
           f"Cycles {references['cycles'][3]:.1f} s); relMSE of lamina's half against Cycles' half: "
-          f"{agreement:.3g} (the two renderers agree on the image when this is near the halves' own "
-          f"noise)")
+          f"{agreement:.3g}, of lamina's two halves {references['lamina'][4]:.3g}, of Cycles' two "
+          f"halves {references['cycles'][4]:.3g} (the two renderers agree on the image when the "
+          f"first lies between the other two: a difference between the images would add to it)")
     print("| time budget | lamina spp | lamina s | lamina MSE | Cycles spp | Cycles s | Cycles MSE "
           "| lamina / Cycles efficiency |")
     print("|---|---|---|---|---|---|---|---|")
     ratios = []
     for budget in args.times:
-        row = {}
+        row, noisy = {}, []
         for name, render in renderers.items():
             spp = max(1, round(budget / per_spp[name]))
             image, t = render(scene, spp, 0, f"{tag}-{name}-{budget:g}s")
-            h1, h2, half_variance, _ = references[name]
+            h1, h2, half_variance = references[name][:3]
             mse = 0.5 * (runner.mse(image, h1)[0] + runner.mse(image, h2)[0]) - half_variance
+            # The subtraction is unbiased, but once a reference half is as noisy as the image
+            # the estimate is mostly the halves' noise: such a row proves nothing.
+            if not mse >= half_variance or not t > 0:
+                noisy.append(name)
             row[name] = (spp, t, mse)
         (ls, lt, lm), (cs, ct, cm) = row["lamina"], row["cycles"]
-        ratio = (cm * ct) / (lm * lt) if lm > 0 and lt > 0 else float("nan")
+        if noisy:
+            print(f"| {budget:g} s | {ls} | {lt:.2f} | {lm:.3g} | {cs} | {ct:.2f} | {cm:.3g} | not "
+                  f"measured: {' and '.join(noisy)}'s reference halves are as noisy as the image "
+                  f"(raise --reference-spp above {args.reference_spp}) |")
+            continue
+        ratio = (cm * ct) / (lm * lt)
         ratios.append(ratio)
         print(f"| {budget:g} s | {ls} | {lt:.2f} | {lm:.3g} | {cs} | {ct:.2f} | {cm:.3g} | {ratio:.2f}x |")
+    if not ratios:
+        print("efficiency ratio lamina / Cycles: no budget measured (references too short)")
+        return None
     geometric_mean = math.exp(sum(math.log(r) for r in ratios) / len(ratios))
-    print(f"efficiency ratio lamina / Cycles, geometric mean over the budgets: {geometric_mean:.2f}x")
+    print(f"efficiency ratio lamina / Cycles, geometric mean over the {len(ratios)} measured "
+          f"budgets: {geometric_mean:.2f}x")
     return geometric_mean
 
 
