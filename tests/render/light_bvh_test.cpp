@@ -356,10 +356,14 @@ TEST(LightBvh, PreparedBoundsGiveTheImportanceOfTheDefinition) {
 // choices must be exactly those of the definition, u just below and at the share included.
 TEST(LightBvh, TwoLightTreeChoosesByTheShareOfTheDefinition) {
     SceneDesc box = loadScene(testing::sourceFile("scenes/cornell-box.json"));
-    // The lamp's two triangles in another order than the fan of its quad, so that they are
-    // two lights (the fan of a rectangle is one, RectangleLight::isRectangle).
+    // The lamp's two triangles with vertices of their own, so that they are two lights (two
+    // triangles on four vertices that make a rectangle are one, RectangleLight::isRectangle).
     for (MeshDesc& m : box.meshes)
-        if (m.name == "light") m.triangles = {{0, 1, 2}, {2, 3, 0}};
+        if (m.name == "light") {
+            const auto p = m.positions;
+            m.positions = {p[0], p[1], p[2], p[2], p[3], p[0]};
+            m.triangles = {{0, 1, 2}, {3, 4, 5}};
+        }
     const Geometry geometry(box);
     const LightSet lights(box, geometry, LightSelection::Bvh);
     ASSERT_EQ(lights.size(), 2u);
@@ -439,7 +443,8 @@ TEST(LightSet, ChoiceReadsNoNumberExactlyWhenThereIsOneLightToChoose) {
     };
     // The triangle and its neighbour across the edge (1, 2), both facing +y.
     SceneDesc twoTriangles = scene(", " + triangle, "");
-    twoTriangles.meshes[0].positions.push_back({1, 0, 1});
+    // The second triangle's far corner off the square, so the two are not one rectangle light.
+    twoTriangles.meshes[0].positions.push_back({2, 0, 1});
     twoTriangles.meshes[0].triangles.push_back({1, 2, 3});
     const Case cases[] = {
         {"one triangle", scene(", " + triangle, ""), false, false},

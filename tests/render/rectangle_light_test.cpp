@@ -1,10 +1,12 @@
 // Rectangle emitters are sampled by solid angle (Urena et al. 2013): the sampler matches its
 // density (chi-square, significance 0.01, Sidak over the cases) from near, oblique, far (area
-// fallback) and behind (two-sided) points, and a scene lit by a `rectangle` renders the same
+// fallback) and behind (two-sided) points, for a `rectangle` shape and for a quad given in
+// pbrt-v4's bilinear corner order, and a scene lit by a `rectangle` renders the same
 // (z-test) as by the same quad given as a `mesh` (sampled by area).
 #include <gtest/gtest.h>
 
 #include "lamina/core/chi_square_test.h"
+#include "lamina/render/area_lights.h"
 #include "lamina/render/lights.h"
 #include "render_helpers.h"
 
@@ -19,30 +21,46 @@ const char* kScene = R"({
               "emission": {"radiance": 1, "two_sided": true}}]
 })";
 
+// The same kind of rectangle as a mesh whose two triangles are a pbrt-v4 bilinear patch's
+// (corners p00, p10, p01, p11, the face (0, 1, 3, 2): triangles (0, 1, 3), (0, 3, 2)), so the
+// light's corner and sides come from another vertex order than a `rectangle` shape's. Its
+// corners are those of kScene's rectangle.
+const char* kBilinearPatchScene = R"({
+  "materials": {"m": {"type": "lambert", "reflectance": 0}},
+  "shapes": [{"type": "mesh", "material": "m",
+              "positions": [[-0.7, -0.4, 0], [0.7, -0.4, 0], [-0.7, 0.4, 0], [0.7, 0.4, 0]],
+              "faces": [[0, 1, 3, 2]],
+              "transform": [{"rotate": {"axis": [1, 0.3, 0], "angle": 35}},
+                            {"translate": [0.2, 0.1, 2]}],
+              "emission": {"radiance": 1, "two_sided": true}}]
+})";
+
 TEST(RectangleLight, SamplingMatchesItsDensity) {
-    const auto scene = testing::sceneFromText(kScene);
-    render::Geometry geometry(scene);
-    const render::LightSet lights(scene, geometry, render::LightSelection::Power);
-    ASSERT_EQ(lights.size(), 1u);  // one light for the whole rectangle
-    const render::Light& light = lights.light(0);
-    const Vec3f refs[] = {{0, 0, 0}, {1.5f, -0.5f, 1.2f}, {0.2f, 0.1f, 2.6f}};
-    for (const Vec3f& ref : refs) {
-        ChiSquareConfig config;
-        config.sampleCount = 300000;
-        config.testCount = 3;
-        const auto r = runChiSquareTest(
-            config,
-            [&](Pcg32& rng) -> std::optional<Vec3d> {
-                const auto s = light.sample(ref, Vec2f(rng.nextFloat(), rng.nextFloat()));
-                if (!s) return std::nullopt;
-                return Vec3d(s->wi);
-            },
-            [&](const Vec3d& w) {
-                const auto hit = geometry.intersect(ref, Vec3f(w));
-                return hit ? double(light.pdf(ref, *hit)) : 0.0;
-            });
-        EXPECT_TRUE(r.passed) << "from " << ref.x << "," << ref.y << "," << ref.z << ": "
-                              << r.message;
+    for (const char* text : {kScene, kBilinearPatchScene}) {
+        const auto scene = testing::sceneFromText(text);
+        render::Geometry geometry(scene);
+        const render::LightSet lights(scene, geometry, render::LightSelection::Power);
+        ASSERT_EQ(lights.size(), 1u);  // one light for the whole rectangle
+        const render::Light& light = lights.light(0);
+        const Vec3f refs[] = {{0, 0, 0}, {1.5f, -0.5f, 1.2f}, {0.2f, 0.1f, 2.6f}};
+        for (const Vec3f& ref : refs) {
+            ChiSquareConfig config;
+            config.sampleCount = 300000;
+            config.testCount = 6;
+            const auto r = runChiSquareTest(
+                config,
+                [&](Pcg32& rng) -> std::optional<Vec3d> {
+                    const auto s = light.sample(ref, Vec2f(rng.nextFloat(), rng.nextFloat()));
+                    if (!s) return std::nullopt;
+                    return Vec3d(s->wi);
+                },
+                [&](const Vec3d& w) {
+                    const auto hit = geometry.intersect(ref, Vec3f(w));
+                    return hit ? double(light.pdf(ref, *hit)) : 0.0;
+                });
+            EXPECT_TRUE(r.passed) << "from " << ref.x << "," << ref.y << "," << ref.z << ": "
+                                  << r.message;
+        }
     }
 }
 
@@ -173,12 +191,13 @@ TEST(RectangleLight, RendersTheSameAsTheQuadSampledByArea) {
             "transform": [{"scale": [0.5, 0.3, 1]}, {"rotate": {"axis": [1, 0, 0], "angle": 90}},
                           {"translate": [0.3, 2, 0.2]}]})"));
     // The same quad: after the transform its corners are (x, 2, z) with x in [-0.2, 0.8],
-    // z in [-0.1, 0.5], facing down; given as two triangles that are not the fan of a face
-    // (0, 1, 2, 3), so they are two triangle lights sampled by area.
+    // z in [-0.1, 0.5], facing down; given as two triangles that share no vertex (six
+    // vertices, not four), so they are two triangle lights sampled by area.
     const auto meshScene = testing::sceneFromText(sceneWith(
         R"({"type": "mesh", "material": "lamp", "emission": {"radiance": 5},
-            "positions": [[-0.2, 2, -0.1], [0.8, 2, -0.1], [0.8, 2, 0.5], [-0.2, 2, 0.5]],
-            "faces": [[0, 1, 2], [2, 3, 0]]})"));
+            "positions": [[-0.2, 2, -0.1], [0.8, 2, -0.1], [0.8, 2, 0.5],
+                          [0.8, 2, 0.5], [-0.2, 2, 0.5], [-0.2, 2, -0.1]],
+            "faces": [[0, 1, 2], [3, 4, 5]]})"));
     auto lightCount = [](const render::SceneDesc& scene) {
         const render::Geometry geometry(scene);
         return render::LightSet(scene, geometry, render::LightSelection::Bvh).size();
@@ -198,10 +217,12 @@ TEST(RectangleLight, RendersTheSameAsTheQuadSampledByArea) {
     }
 }
 
-// A mesh of one four-cornered face is one rectangle light when the face is a rectangle split
-// as its fan (the Cornell box's lamp), also under a mirroring transform (which reverses the
-// winding), and stays two triangle lights otherwise: a parallelogram, a quad whose fourth
-// corner is off the rectangle, the same triangles in another order.
+// A mesh of four vertices and two triangles is one rectangle light when the triangles make a
+// rectangle: the fan of a face (the Cornell box's lamp), also under a mirroring transform
+// (which reverses the winding), the other diagonal, the triangles in another order, a pbrt-v4
+// bilinear patch's corner order. It stays two triangle lights otherwise: a parallelogram, a
+// quad whose fourth corner is off the rectangle, triangles facing opposite sides, two
+// triangles sharing only a corner.
 TEST(RectangleLight, AMeshFaceIsOneLightExactlyWhenItIsARectangle) {
     auto lightsOf = [](const std::string& positions, const std::string& faces,
                        const std::string& transform = "[]") {
@@ -219,11 +240,37 @@ TEST(RectangleLight, AMeshFaceIsOneLightExactlyWhenItIsARectangle) {
         lightsOf(square, "[[0, 1, 2, 3]]",
                  R"([{"rotate": {"axis": [1, 2, 3], "angle": 40}}, {"translate": [5, 0, 1]}])"),
         1u);
-    EXPECT_EQ(lightsOf(square, "[[0, 1, 2], [2, 3, 0]]"), 2u);
+    EXPECT_EQ(lightsOf(square, "[[0, 1, 2], [2, 3, 0]]"), 1u);
+    EXPECT_EQ(lightsOf(square, "[[0, 1, 3], [1, 2, 3]]"), 1u);
+    EXPECT_EQ(lightsOf(square, "[[1, 2, 3], [0, 1, 3]]"), 1u);
+    EXPECT_EQ(lightsOf(square, "[[3, 2, 1, 0]]"), 1u);
+    // pbrt-v4's p00, p10, p01, p11 as the importer writes them (the face 0, 1, 3, 2).
+    EXPECT_EQ(lightsOf("[[0, 0, 0], [2, 0, 0], [0, 1, 0], [2, 1, 0]]", "[[0, 1, 3, 2]]"), 1u);
+    EXPECT_EQ(lightsOf(square, "[[0, 1, 2], [0, 3, 2]]"), 2u);  // opposite sides
+    EXPECT_EQ(lightsOf("[[0, 0, 0], [2, 0, 0], [2, 1, 0], [0, 1, 0], [4, 0, 0]]",
+                       "[[0, 1, 2], [1, 4, 2]]"),
+              2u);  // five vertices
     EXPECT_EQ(lightsOf(square, "[[0, 1, 2, 3]]", R"([{"scale": [-1, 1, 1]}])"), 1u);
     EXPECT_EQ(lightsOf("[[0, 0, 0], [2, 0, 0], [2.5, 1, 0], [0.5, 1, 0]]", "[[0, 1, 2, 3]]"), 2u);
     EXPECT_EQ(lightsOf("[[0, 0, 0], [2, 0, 0], [2, 1, 0.01], [0, 1, 0]]", "[[0, 1, 2, 3]]"), 2u);
     EXPECT_EQ(lightsOf("[[0, 0, 0], [2, 0, 0], [2.01, 1, 0], [0, 1, 0]]", "[[0, 1, 2, 3]]"), 2u);
+
+    // The corners in boundary order from vertex 0 towards its lower neighbour, whichever way
+    // the triangles run; none for a degenerate triangle or triangles sharing one corner.
+    auto corners = [](std::vector<std::array<std::uint32_t, 3>> triangles) {
+        render::MeshDesc m;
+        m.positions.assign(4, Vec3f(0.0f));
+        m.triangles = std::move(triangles);
+        return render::RectangleLight::quadCorners(m);
+    };
+    using Q = render::RectangleLight::QuadCorners;
+    EXPECT_EQ(corners({{0, 1, 2}, {0, 2, 3}}), (Q{0, 1, 2, 3}));
+    EXPECT_EQ(corners({{0, 2, 1}, {0, 3, 2}}), (Q{0, 1, 2, 3}));
+    EXPECT_EQ(corners({{2, 3, 0}, {0, 1, 2}}), (Q{0, 1, 2, 3}));
+    EXPECT_EQ(corners({{0, 1, 3}, {0, 3, 2}}), (Q{0, 1, 3, 2}));
+    EXPECT_EQ(corners({{0, 1, 2}, {2, 3, 2}}), std::nullopt);
+    EXPECT_EQ(corners({{0, 1, 2}, {0, 2, 1}}), std::nullopt);
+    EXPECT_EQ(corners({{0, 1, 2}, {0, 3, 2}}), std::nullopt);
 
     const render::SceneDesc box = render::loadScene(testing::sourceFile("scenes/cornell-box.json"));
     const render::Geometry geometry(box);

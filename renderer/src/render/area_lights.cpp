@@ -139,8 +139,11 @@ AreaLight::AreaPoint TriangleLight::samplePoint(const Vec2f& u) const {
 }
 
 RectangleLight::RectangleLight(const MeshDesc& mesh) : AreaLight(*mesh.emission, 0.0) {
-    corner_ = Vec3d(mesh.positions[0]);
-    const Vec3d ex = Vec3d(mesh.positions[1]) - corner_, ey = Vec3d(mesh.positions[3]) - corner_;
+    // isRectangle(mesh) holds, so the quad has corners.
+    const QuadCorners q = *quadCorners(mesh);
+    corner_ = Vec3d(mesh.positions[q[0]]);
+    const Vec3d ex = Vec3d(mesh.positions[q[1]]) - corner_,
+                ey = Vec3d(mesh.positions[q[3]]) - corner_;
     lx_ = glm::length(ex);
     ly_ = glm::length(ey);
     x_ = ex / lx_;
@@ -157,26 +160,65 @@ RectangleLight::RectangleLight(const MeshDesc& mesh) : AreaLight(*mesh.emission,
     diagonal2_ = lx_ * lx_ + ly_ * ly_;
 }
 
+std::optional<RectangleLight::QuadCorners> RectangleLight::quadCorners(const MeshDesc& m) {
+    if (m.positions.size() != 4 || m.triangles.size() != 2) return std::nullopt;
+    const auto& t0 = m.triangles[0];
+    const auto& t1 = m.triangles[1];
+    auto has = [](const std::array<std::uint32_t, 3>& t, std::uint32_t v) {
+        return t[0] == v || t[1] == v || t[2] == v;
+    };
+    auto distinct = [](const std::array<std::uint32_t, 3>& t) {
+        return t[0] != t[1] && t[1] != t[2] && t[0] != t[2];
+    };
+    if (!distinct(t0) || !distinct(t1)) return std::nullopt;
+    // Two triangles are one quad when they share one edge, its diagonal: t0 then holds one
+    // corner t1 lacks (the apex) and t1 one corner t0 lacks.
+    int apex = -1, shared = 0;
+    for (int k = 0; k < 3; ++k) {
+        if (has(t1, t0[std::size_t(k)]))
+            ++shared;
+        else
+            apex = k;
+    }
+    if (shared != 2) return std::nullopt;
+    std::uint32_t opposite = 0;
+    for (const std::uint32_t v : t1)
+        if (!has(t0, v)) opposite = v;
+    // t0 in its own order from the apex: apex, s1, s2 (the diagonal is s1 - s2). t1 must run
+    // along the diagonal the other way, s2 then s1, or the two triangles face opposite sides.
+    const std::uint32_t s1 = t0[std::size_t((apex + 1) % 3)], s2 = t0[std::size_t((apex + 2) % 3)];
+    bool sameSide = false;
+    for (std::size_t k = 0; k < 3; ++k)
+        if (t1[k] == s2 && t1[(k + 1) % 3] == s1) sameSide = true;
+    if (!sameSide) return std::nullopt;
+    // The boundary apex, s1, opposite, s2, from corner 0 towards its lower-numbered neighbour:
+    // the fan (0, 1, 2), (0, 2, 3) and that fan mirrored give (0, 1, 2, 3).
+    const QuadCorners boundary{t0[std::size_t(apex)], s1, opposite, s2};
+    const std::size_t zero =
+        std::size_t(std::find(boundary.begin(), boundary.end(), 0u) - boundary.begin());
+    const bool forward = boundary[(zero + 1) % 4] < boundary[(zero + 3) % 4];
+    QuadCorners q{};
+    for (std::size_t k = 0; k < 4; ++k)
+        q[k] = boundary[(zero + (forward ? k : 4 - k)) % 4];
+    return q;
+}
+
 bool RectangleLight::isRectangle(const MeshDesc& m) {
-    if (m.positions.size() != 4 || m.triangles.size() != 2) return false;
-    // The fan of the face (0, 1, 2, 3), as `rectangle` shapes and the scene file's quads are
-    // split (shape_reader.cpp), or the same fan mirrored (a transform of negative determinant
-    // swaps each triangle's last two vertices): then the two triangles cover exactly the
-    // rectangle sampled.
-    using Triangle = std::array<std::uint32_t, 3>;
-    const bool fan = m.triangles[0] == Triangle{0, 1, 2} && m.triangles[1] == Triangle{0, 2, 3};
-    const bool mirroredFan =
-        m.triangles[0] == Triangle{0, 2, 1} && m.triangles[1] == Triangle{0, 3, 2};
-    if (!fan && !mirroredFan) return false;
-    const Vec3d p0(m.positions[0]), ex = Vec3d(m.positions[1]) - p0,
-                                    ey = Vec3d(m.positions[3]) - p0;
+    // Any split of the quad along a diagonal covers it exactly, so the triangles may come in
+    // any order and either diagonal (a pbrt-v4 bilinear patch's p00, p10, p01, p11 become
+    // (0, 1, 3), (0, 3, 2), pbrt_shapes.cpp); the first triangle's winding gives the front
+    // (the constructor).
+    const auto q = quadCorners(m);
+    if (!q) return false;
+    const Vec3d p0(m.positions[(*q)[0]]), ex = Vec3d(m.positions[(*q)[1]]) - p0,
+                                          ey = Vec3d(m.positions[(*q)[3]]) - p0;
     const double lx = glm::length(ex), ly = glm::length(ey);
     if (!(lx > 0) || !(ly > 0)) return false;
     // Perpendicular sides, and the fourth corner where the other three put it, to within
     // the rounding of float positions (a relative 1e-6 of the sides).
     const double tolerance = 1e-6 * std::max(lx, ly);
     return std::abs(glm::dot(ex, ey)) <= 1e-6 * lx * ly &&
-           glm::length(Vec3d(m.positions[2]) - (p0 + ex + ey)) <= tolerance;
+           glm::length(Vec3d(m.positions[(*q)[2]]) - (p0 + ex + ey)) <= tolerance;
 }
 
 double RectangleLight::height(const Vec3d& ref) const {

@@ -4,6 +4,10 @@
 // Triangles work in single precision, rectangles, disks and spheres in double.
 #pragma once
 
+#include <array>
+#include <cstdint>
+#include <optional>
+
 #include "lamina/render/lights.h"
 
 namespace lamina::render {
@@ -75,11 +79,19 @@ class RectangleLight final : public AreaLight {
   public:
     explicit RectangleLight(const MeshDesc& mesh);
 
-    /// A mesh that is one rectangle, split into the triangles (0, 1, 2) and (0, 2, 3) (or
-    /// those mirrored): a `rectangle` shape, or a mesh of one four-cornered face with right
-    /// angles, such as the Cornell box's lamp. It is one light, not two triangles: sampled by the
+    /// A mesh of four vertices and two triangles that together are a rectangle: split along
+    /// either diagonal, the triangles in any order, both facing the same side. A `rectangle`
+    /// shape, a mesh of one four-cornered face with right angles such as the Cornell box's
+    /// lamp, a pbrt-v4 bilinear patch. It is one light, not two triangles: sampled by the
     /// solid angle it subtends, and with nothing for the light BVH to choose between.
     static bool isRectangle(const MeshDesc& m);
+
+    /// The four vertices of two triangles that form one quad, in the order of its boundary
+    /// from vertex 0 towards its lower-numbered neighbour ((0, 1, 2, 3) for the fan of the
+    /// face (0, 1, 2, 3), mirrored or not); none when the triangles do not share exactly one
+    /// edge, or run along it the same way (they would face opposite sides).
+    using QuadCorners = std::array<std::uint32_t, 4>;
+    static std::optional<QuadCorners> quadCorners(const MeshDesc& m);
 
     std::optional<LightSample> sample(const Vec3f& ref, const Vec2f& u) const override;
     float pdf(const Vec3f& ref, const SurfaceHit& hit) const override;
