@@ -75,9 +75,16 @@ BdptConnection<S> BdptConnector<S>::connect(const std::vector<Vertex>& lightPath
     } else if (s == 1) {
         // Next-event estimation: a fresh point on a light.
         if (cv.type != BdptVertexType::Surface || cv.delta) return result;
+        // Without a light choose() can return (no lights, or only constant environments, which
+        // next-event estimation leaves to the other strategies) both numbers are skipped, not
+        // drawn, as the path integrator does: later dimensions keep their values.
+        if (!c_.lights.nextEventChooses()) {
+            sampler.skip();
+            sampler.skip();
+            return result;
+        }
         const float uLight = sampler.get1DIfUsed(c_.lights.choiceReadsNumber());
         const Vec2f uPoint = sampler.get2D();
-        if (c_.lights.empty()) return result;
         const auto choice = c_.lights.choose(cv.p, cv.ns, uLight);
         if (!choice) return result;
         const std::size_t index = choice->index;
