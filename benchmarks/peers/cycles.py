@@ -6,7 +6,8 @@ A benchmark, not a test (never run in CI): it needs Blender 3.4 from Debian
 reads it and builds the same scene in Cycles with bpy (the settings of ../shared/PEERS.md
 that make Cycles unbiased and comparable), then for each scene
 
-  1. renders a calibration image with each renderer (16 spp) to learn its time per sample;
+  1. renders two calibration images with each renderer (16 and 64 spp) to learn its fixed
+     time (BVH, scene sync) and its time per sample;
   2. renders a long reference with each renderer, as two independent halves (seeds 101 and
      102), so that the reference's own noise can be taken out of the error: for an image x
      and halves h1, h2 of an unbiased renderer, E[(x - h)^2] = MSE(x) + var(h) and
@@ -44,7 +45,11 @@ import sys
 import tempfile
 import time
 
-CALIBRATION_SPP = 16
+# Two calibration renders per renderer: the time of a render is about fixed + spp x per_spp
+# (the fixed part is lamina's BVH build, Cycles' scene sync and BVH), and a single short
+# render cannot tell the two apart: budgets set from 16 spp alone came out 55-137% of the time
+# asked.
+CALIBRATION_SPP = (16, 64)
 
 
 def strip_comments(text):
@@ -376,10 +381,13 @@ class Runner:
 def measure_scene(runner, scene, args):
     tag = os.path.splitext(os.path.basename(scene))[0]
     renderers = {"lamina": runner.lamina, "cycles": runner.cycles}
-    per_spp, references = {}, {}
+    timing, references = {}, {}
     for name, render in renderers.items():
-        _, t = render(scene, CALIBRATION_SPP, 7, f"{tag}-{name}-calibration")
-        per_spp[name] = t / CALIBRATION_SPP
+        (n0, n1) = CALIBRATION_SPP
+        t0 = render(scene, n0, 7, f"{tag}-{name}-calibration-{n0}")[1]
+        t1 = render(scene, n1, 7, f"{tag}-{name}-calibration-{n1}")[1]
+        per_spp = max(t1 - t0, 1e-6) / (n1 - n0)
+        timing[name] = (max(0.0, t0 - n0 * per_spp), per_spp)
         halves = [render(scene, args.reference_spp // 2, seed, f"{tag}-{name}-reference-{seed}")
                   for seed in (101, 102)]
         h1, h2 = halves[0][0], halves[1][0]
@@ -400,7 +408,8 @@ def measure_scene(runner, scene, args):
     for budget in args.times:
         row, noisy = {}, []
         for name, render in renderers.items():
-            spp = max(1, round(budget / per_spp[name]))
+            fixed, per_spp = timing[name]
+            spp = max(1, round((budget - fixed) / per_spp))
             image, t = render(scene, spp, 0, f"{tag}-{name}-{budget:g}s")
             h1, h2, half_variance = references[name][:3]
             mse = 0.5 * (runner.mse(image, h1)[0] + runner.mse(image, h2)[0]) - half_variance
