@@ -8,8 +8,8 @@
 #include <exception>
 #include <string>
 
-#include "lamina/render/embree_limit.h"
-#include "lamina/render/scene_description.h"
+#include "lamina/geometry/embree_limit.h"
+#include "lamina/scene/scene_description.h"
 
 int main(int argc, char** argv) {
     try {

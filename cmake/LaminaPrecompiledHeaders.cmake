@@ -1,6 +1,6 @@
 # Precompiled headers for lamina's targets: the standard library, glm (through
 # lamina/core/vector.h) and a target's own heavy third-party headers. Parsing them was most of the
-# compile time of a typical file (renderer/src/render/point_lights.cpp: 2.3 s without, 0.7 s
+# compile time of a typical file (renderer/lights/src/point_lights.cpp: 2.3 s without, 0.7 s
 # with), and a clean build is what CI pays for on every run.
 #
 # Off by default when a compiler launcher (ccache) is set: ccache caches nothing that uses a

@@ -6,7 +6,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 
-#include "lamina/render/embree_limit.h"
+#include "lamina/geometry/embree_limit.h"
 #include "lamina/render/renderer.h"
 
 namespace lamina::app {

@@ -7,8 +7,8 @@
 
 #include "lamina/core/output_files.h"
 #include "lamina/core/printable.h"
-#include "lamina/render/scene_description.h"
-#include "lamina/render/scene_import.h"
+#include "lamina/scene/scene_description.h"
+#include "lamina/interchange/scene_import.h"
 
 namespace lamina::app {
 

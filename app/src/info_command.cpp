@@ -5,7 +5,7 @@
 
 #include "lamina/bsdf/material_builder.h"
 #include "lamina/render/render_memory.h"
-#include "lamina/render/scene_description.h"
+#include "lamina/scene/scene_description.h"
 
 namespace lamina::app {
 

@@ -6,9 +6,9 @@
 #include <cstdio>
 
 #include "lamina/core/printable.h"
-#include "lamina/render/image_output.h"
-#include "lamina/render/render_metadata.h"
-#include "lamina/render/shard_merge.h"
+#include "lamina/output/image_output.h"
+#include "lamina/output/render_metadata.h"
+#include "lamina/output/shard_merge.h"
 #include "lamina/version.h"
 
 namespace lamina::app {

@@ -12,10 +12,10 @@
 #include "lamina/core/output_files.h"
 #include "lamina/core/printable.h"
 #include "lamina/experiments/image_metrics.h"
-#include "lamina/render/image_output.h"
-#include "lamina/render/render_metadata.h"
+#include "lamina/output/image_output.h"
+#include "lamina/output/render_metadata.h"
 #include "lamina/render/renderer.h"
-#include "lamina/render/shard_file.h"
+#include "lamina/output/shard_file.h"
 #include "lamina/version.h"
 #include "option_parsing.h"
 

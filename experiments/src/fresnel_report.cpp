@@ -9,7 +9,7 @@
 #include "lamina/experiments/svg_plot.h"
 #include "lamina/experiments/svg_swatches.h"
 #include "lamina/experiments/text_format.h"
-#include "lamina/render/image_output.h"
+#include "lamina/output/image_output.h"
 #include "lamina/spectral/color_space.h"
 
 namespace lamina::experiments {

@@ -3,8 +3,8 @@
 #include <cstdio>
 
 #include "lamina/core/error.h"
-#include "lamina/render/render_metadata.h"
-#include "lamina/render/scene_description.h"
+#include "lamina/output/render_metadata.h"
+#include "lamina/scene/scene_description.h"
 
 namespace lamina::experiments {
 

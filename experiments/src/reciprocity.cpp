@@ -6,7 +6,7 @@
 #include "lamina/core/error.h"
 #include "lamina/core/hash.h"
 #include "lamina/experiments/text_format.h"
-#include "lamina/render/image_output.h"
+#include "lamina/output/image_output.h"
 
 namespace lamina::experiments {
 

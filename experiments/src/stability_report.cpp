@@ -8,7 +8,7 @@
 #include "lamina/experiments/stability.h"
 #include "lamina/experiments/svg_heat_map.h"
 #include "lamina/experiments/text_format.h"
-#include "lamina/render/image_output.h"
+#include "lamina/output/image_output.h"
 
 namespace lamina::experiments {
 

@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "lamina/core/output_files.h"
-#include "lamina/render/image_output.h"
+#include "lamina/output/image_output.h"
 #include "svg_text.h"
 
 namespace lamina::experiments {

@@ -14,9 +14,9 @@
 #include "bindings.h"
 #include "lamina/core/error.h"
 #include "lamina/core/json_reader.h"
-#include "lamina/render/image_output.h"
+#include "lamina/output/image_output.h"
 #include "lamina/render/render_limits.h"
-#include "lamina/render/render_metadata.h"
+#include "lamina/output/render_metadata.h"
 #include "lamina/render/renderer.h"
 #include "lamina/version.h"
 

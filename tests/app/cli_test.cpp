@@ -15,7 +15,7 @@
 #include "cli_helpers.h"
 #include "lamina/bsdf/material_builder.h"
 #include "lamina/core/json_reader.h"
-#include "lamina/render/image_output.h"
+#include "lamina/output/image_output.h"
 #include "lamina/render/render_memory.h"
 #include "source_files.h"
 

@@ -14,7 +14,7 @@
 
 #include "cli_helpers.h"
 #include "lamina/bsdf/material_builder.h"
-#include "lamina/render/image_output.h"
+#include "lamina/output/image_output.h"
 #include "source_files.h"
 
 namespace lamina {

@@ -14,7 +14,7 @@
 #include <thread>
 
 #include "cli_helpers.h"
-#include "lamina/render/image_output.h"
+#include "lamina/output/image_output.h"
 
 extern char** environ;
 

@@ -9,7 +9,7 @@
 #include <regex>
 
 #include "cli_helpers.h"
-#include "lamina/render/image_output.h"
+#include "lamina/output/image_output.h"
 
 namespace lamina {
 namespace {

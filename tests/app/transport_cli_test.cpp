@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "cli_helpers.h"
-#include "lamina/render/image_output.h"
+#include "lamina/output/image_output.h"
 #include "source_files.h"
 
 namespace lamina {

@@ -2,7 +2,7 @@
 """Validates every shipped scene and every example in docs/scene.schema.json with a JSON
 Schema validator (python3-jsonschema), and checks that the schema refuses what the loader
 refuses in a few known cases. The schema's keys and names are held to the readers by
-tests/render/scene_schema_test.cpp; this test holds the shipped files to the schema's rules.
+tests/scene/scene_schema_test.cpp; this test holds the shipped files to the schema's rules.
 
 Usage: validate_scene_schema.py SOURCE_DIR. Exits 77 (skipped) when jsonschema is absent.
 """

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "lamina/render/image_output.h"
+#include "lamina/output/image_output.h"
 
 namespace {
 

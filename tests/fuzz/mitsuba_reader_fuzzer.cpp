@@ -10,7 +10,7 @@
 #include <string>
 
 #include "fuzz_input_file.h"
-#include "lamina/render/scene_import.h"
+#include "lamina/interchange/scene_import.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     static const std::filesystem::path directory = [] {

@@ -4,7 +4,7 @@
 #include <cstdint>
 
 #include "fuzz_input_file.h"
-#include "lamina/render/mesh_files.h"
+#include "lamina/scene/mesh_files.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const lamina::fuzz::InputFile file(data, size, ".obj");

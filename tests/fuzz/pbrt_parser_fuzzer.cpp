@@ -4,7 +4,7 @@
 #include <cstdint>
 
 #include "fuzz_input_file.h"
-#include "lamina/render/scene_import.h"
+#include "lamina/interchange/scene_import.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const lamina::fuzz::InputFile file(data, size, ".pbrt");

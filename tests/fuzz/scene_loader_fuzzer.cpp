@@ -7,7 +7,7 @@
 
 #include "fuzz_input_file.h"
 #include "lamina/core/json_reader.h"
-#include "lamina/render/scene_description.h"
+#include "lamina/scene/scene_description.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     static const std::filesystem::path directory = [] {

@@ -5,7 +5,7 @@
 
 #include <filesystem>
 
-#include "lamina/render/geometry.h"
+#include "lamina/geometry/geometry.h"
 #include "render_helpers.h"
 #include "source_files.h"
 

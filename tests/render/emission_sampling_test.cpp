@@ -7,7 +7,7 @@
 
 #include "lamina/core/pcg32.h"
 #include "lamina/render/camera.h"
-#include "lamina/render/lights.h"
+#include "lamina/lights/lights.h"
 #include "lamina/spectral/color_space.h"
 #include "render_helpers.h"
 

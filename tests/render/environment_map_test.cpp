@@ -7,8 +7,8 @@
 #include <filesystem>
 
 #include "lamina/core/chi_square_test.h"
-#include "lamina/render/environment_map.h"
-#include "lamina/render/image_output.h"
+#include "lamina/lights/environment_map.h"
+#include "lamina/output/image_output.h"
 #include "render_helpers.h"
 
 namespace lamina {

@@ -14,9 +14,9 @@
 
 #include "chi2_helpers.h"
 #include "lamina/core/pcg32.h"
-#include "lamina/render/environment_map.h"
-#include "lamina/render/equal_area_sphere.h"
-#include "lamina/render/image_output.h"
+#include "lamina/lights/environment_map.h"
+#include "lamina/lights/equal_area_sphere.h"
+#include "lamina/output/image_output.h"
 #include "render_helpers.h"
 
 namespace lamina {

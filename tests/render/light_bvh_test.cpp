@@ -18,8 +18,8 @@
 
 #include "chi2_helpers.h"
 #include "lamina/core/pcg32.h"
-#include "lamina/render/image_output.h"
-#include "lamina/render/lights.h"
+#include "lamina/output/image_output.h"
+#include "lamina/lights/lights.h"
 #include "render_helpers.h"
 #include "source_files.h"
 

@@ -5,8 +5,8 @@
 
 #include "lamina/core/pcg32.h"
 #include "lamina/core/warp.h"
-#include "lamina/render/geometry.h"
-#include "lamina/render/ray_offset.h"
+#include "lamina/geometry/geometry.h"
+#include "lamina/geometry/ray_offset.h"
 #include "render_helpers.h"
 
 namespace lamina {

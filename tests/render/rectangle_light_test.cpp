@@ -6,8 +6,8 @@
 #include <gtest/gtest.h>
 
 #include "lamina/core/chi_square_test.h"
-#include "lamina/render/area_lights.h"
-#include "lamina/render/lights.h"
+#include "lamina/lights/area_lights.h"
+#include "lamina/lights/lights.h"
 #include "render_helpers.h"
 
 namespace lamina {

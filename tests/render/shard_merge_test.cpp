@@ -7,9 +7,9 @@
 
 #include <cmath>
 
-#include "lamina/render/render_metadata.h"
-#include "lamina/render/shard_file.h"
-#include "lamina/render/shard_merge.h"
+#include "lamina/output/render_metadata.h"
+#include "lamina/output/shard_file.h"
+#include "lamina/output/shard_merge.h"
 #include "render_helpers.h"
 #include "scratch_directory.h"
 

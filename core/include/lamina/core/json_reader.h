@@ -23,7 +23,7 @@ using Json = nlohmann::json;
 
 /// What readers asked of a JSON document: every key, present or not, with the path of the
 /// object it was asked of, and for a key read as a name the names it accepts. The test that
-/// holds docs/scene.schema.json to the readers (tests/render/scene_schema_test.cpp) reads it.
+/// holds docs/scene.schema.json to the readers (tests/scene/scene_schema_test.cpp) reads it.
 struct JsonKeyLog {
     struct Key {
         std::string objectPath;  ///< as JsonReader::path(): "shapes[2].material"

@@ -13,7 +13,7 @@
 #include "lamina/experiments/image_metrics.h"
 #include "lamina/experiments/progress.h"
 #include "lamina/experiments/report.h"
-#include "lamina/render/render_metadata.h"
+#include "lamina/output/render_metadata.h"
 #include "lamina/render/renderer.h"
 
 namespace lamina::experiments {

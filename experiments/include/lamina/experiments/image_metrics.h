@@ -11,7 +11,7 @@
 
 #include "lamina/core/name_table.h"
 #include "lamina/render/film.h"
-#include "lamina/render/image_output.h"
+#include "lamina/output/image_output.h"
 
 namespace lamina::experiments {
 

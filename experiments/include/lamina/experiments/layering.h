@@ -25,7 +25,7 @@
 #include "lamina/experiments/layering_twins.h"
 #include "lamina/experiments/progress.h"
 #include "lamina/experiments/report.h"
-#include "lamina/render/image_output.h"
+#include "lamina/output/image_output.h"
 #include "lamina/render/renderer.h"
 
 namespace lamina::experiments {

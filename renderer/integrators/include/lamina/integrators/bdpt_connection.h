@@ -1,0 +1,53 @@
+// BDPT's connection step: the contribution of strategy (s, t), s light vertices and t camera
+// vertices (Veach 1997, section 10.2):
+//   s = 0       the camera subpath's end is an emitter (or escaped to an infinite light);
+//   s = 1       next-event estimation from camera vertex t-1 (a fresh light sample);
+//   t = 1       light vertex s-1 connected to the lens (light tracing), to be splatted;
+//   s, t >= 2   a deterministic connection of the two subpath ends, with a shadow ray.
+// Light-subpath vertices evaluate the adjoint BSDF with the shading-normal correction
+// (transport_ablations.h), camera-subpath vertices the BSDF.
+#pragma once
+
+#include <vector>
+
+#include "lamina/integrators/bdpt_mis.h"
+
+namespace lamina::render {
+
+/// What a connection gives: zero, or the unweighted contribution and its MIS weight.
+template <SpectrumType S>
+struct BdptConnection {
+    S contribution{0.0f};  ///< unweighted
+    float misWeight = 0.0f;
+    Vec2f splatAt{0.0f};  ///< the film position of a t = 1 strategy
+};
+
+template <SpectrumType S>
+class BdptConnector {
+  public:
+    using Mode = RenderMode<S>;
+    using Vertex = BdptVertex<S>;
+
+    BdptConnector(const SceneContext& context, const Mode& mode,
+                  const TransportAblations& ablations, const BdptMisWeights<S>& mis)
+        : c_(context), mode_(mode), ablations_(ablations), mis_(mis) {}
+
+    /// Strategy (s, t) of the two subpaths; s = 1 and t = 1 draw their fresh vertex from
+    /// `sampler` (a light point: 1D + 2D; a lens point: 2D).
+    BdptConnection<S> connect(const std::vector<Vertex>& lightPath, int s,
+                              const std::vector<Vertex>& cameraPath, int t, PixelSampler& sampler,
+                              typename Mode::Path& path, PathStatistics& stats) const;
+
+  private:
+    S evalAt(const Vertex& v, const Vec3f& wPrev, const Vec3f& wNext, bool lightSubpath,
+             typename Mode::Path& path) const;
+    S emitted(const Vertex& v, const Vec3f& w, typename Mode::Path& path) const;
+    bool unoccluded(const Vertex& a, const Vertex& b, PathStatistics& stats) const;
+
+    SceneContext c_;
+    const Mode& mode_;
+    TransportAblations ablations_;
+    const BdptMisWeights<S>& mis_;
+};
+
+}  // namespace lamina::render

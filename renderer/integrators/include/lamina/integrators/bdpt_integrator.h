@@ -1,0 +1,50 @@
+// The `bdpt` integrator: Veach's bidirectional path tracer (Veach 1997, chapter 10; Veach and
+// Guibas 1995). Per camera sample it traces a camera subpath and a light subpath (vertices:
+// bdpt_vertex.h) and combines every (s, t) connection, s light vertices and t camera vertices
+// (bdpt_connection.h), each weighted by multiple importance sampling over all strategies that
+// could have produced the same path (bdpt_mis.h). The t >= 2 strategies give the camera
+// sample's value, the t = 1 strategies are splatted. Light subpaths use the adjoint BSDF with
+// the shading-normal correction (shading_normals.h), camera subpaths the BSDF.
+#pragma once
+
+#include <vector>
+
+#include "lamina/integrators/bdpt_connection.h"
+
+namespace lamina::render {
+
+template <SpectrumType S>
+class BdptIntegrator final : public Integrator<S> {
+  public:
+    using Mode = RenderMode<S>;
+    using Vertex = BdptVertex<S>;
+
+    explicit BdptIntegrator(const IntegratorSetup<S>& setup);
+
+    bool splats() const override { return true; }
+    std::optional<CameraEstimate<S>> sample(const PixelSample<S>& sample) const override;
+
+  private:
+    void generateCameraSubpath(const CameraSample& cs, PixelSampler& sampler,
+                               typename Mode::Path& path, std::vector<Vertex>& out,
+                               PathStatistics& stats) const;
+    void generateLightSubpath(PixelSampler& sampler, typename Mode::Path& path,
+                              std::vector<Vertex>& out, PathStatistics& stats) const;
+    void randomWalk(Vec3f o, Vec3f d, S beta, float pdfDir, int maxSurfaces, TransportMode mode,
+                    PixelSampler& sampler, typename Mode::Path& path, std::vector<Vertex>& out,
+                    PathStatistics& stats) const;
+    /// Records a contribution of strategy (s, t) in the strategy images, if they are kept.
+    void recordStrategy(int s, int t, const Rgb<double>& weighted, const Rgb<double>& unweighted,
+                        const Vec2f& splatAt, int px, int py, float filterWeight) const;
+
+    SceneContext c_;
+    const Mode& mode_;
+    RenderSettings settings_;
+    const PixelFilter& filter_;
+    TransportAblations ablations_;
+    StrategyImages* strategies_;
+    BdptMisWeights<S> mis_;
+    BdptConnector<S> connector_;
+};
+
+}  // namespace lamina::render

@@ -1,0 +1,47 @@
+// BDPT's multiple importance sampling: the weight of strategy (s, t) among every strategy that
+// could have produced the same path (power heuristic, beta = 2; balance as an option), from
+// the ratios of the forward and reverse area densities stored on the vertices, in O(s + t)
+// (Veach 1997, section 10.2.3, eq. 10.9), and the densities it needs: of a vertex sampling
+// the next, and of a light subpath starting where it does. Delta lobes and delta lights have
+// no density and are skipped as connection points.
+#pragma once
+
+#include <vector>
+
+#include "lamina/integrators/integrator.h"
+#include "lamina/integrators/bdpt_vertex.h"
+
+namespace lamina::render {
+
+template <SpectrumType S>
+class BdptMisWeights {
+  public:
+    using Mode = RenderMode<S>;
+    using Vertex = BdptVertex<S>;
+
+    BdptMisWeights(const SceneContext& context, const Mode& mode, MisHeuristic heuristic)
+        : c_(context), mode_(mode), heuristic_(heuristic) {}
+
+    /// The weight of strategy (s, t); `sampled` is the connection's fresh vertex (the light
+    /// point of s = 1, the lens point of t = 1).
+    float weight(const std::vector<Vertex>& lightPath, int s, const std::vector<Vertex>& cameraPath,
+                 int t, const Vertex& sampled, typename Mode::Path& path) const;
+
+    /// Density with which a light subpath starts at light vertex `v`.
+    float pdfLightOrigin(const Vertex& v) const;
+
+  private:
+    float pdfLight(const Vertex& v, const Vertex& next) const;
+    float infiniteLightDensity(const Vec3f& direction) const;
+    /// How much likelier next-event estimation at `receiver` chooses the light of
+    /// `lightVertex` than a particle starts from it.
+    float selectionRatio(const Vertex& lightVertex, const Vertex& receiver) const;
+    float pdf(const Vertex& v, const Vertex* prev, const Vertex& next,
+              typename Mode::Path& path) const;
+
+    SceneContext c_;
+    const Mode& mode_;
+    MisHeuristic heuristic_;
+};
+
+}  // namespace lamina::render

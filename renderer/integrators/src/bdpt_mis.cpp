@@ -1,0 +1,159 @@
+#include "lamina/integrators/bdpt_mis.h"
+
+namespace lamina::render {
+
+/// Density (area measure at `next`) with which a light subpath starting at light vertex `v`
+/// reaches `next`.
+template <SpectrumType S>
+float BdptMisWeights<S>::pdfLight(const Vertex& v, const Vertex& next) const {
+    if (v.infinite) {
+        // From the disk every infinite light shares: its density projected on the surface at
+        // `next`.
+        const Vec3f d = -v.p;
+        const Light& any = c_.lights.light(c_.lights.infiniteLights().front());
+        const EmissionPdf e = any.emissionPdf(Vec3f(0.0f), Vec3f(0.0f), d);
+        return e.position * (next.onSurface() ? std::abs(glm::dot(next.ng, d)) : 1.0f);
+    }
+    const Light& light = c_.lights.light(std::size_t(v.light));
+    const Vec3f d = directionTo(v, next);
+    const EmissionPdf e = light.emissionPdf(v.p, v.ng, d);
+    return toArea(e.direction, v, next);
+}
+
+template <SpectrumType S>
+float BdptMisWeights<S>::pdfLightOrigin(const Vertex& v) const {
+    if (v.infinite && v.deltaLight) return c_.lights.emitterProbability(std::size_t(v.light));
+    if (v.infinite) return infiniteLightDensity(-v.p);
+    const Light& light = c_.lights.light(std::size_t(v.light));
+    return c_.lights.emitterProbability(std::size_t(v.light)) *
+           light.emissionPdf(v.p, v.ng, Vec3f(0.0f, 0.0f, 1.0f)).position;
+}
+
+/// All environment lights start particles along `direction` (they cannot be told apart);
+/// directional lights are deltas, never hit.
+template <SpectrumType S>
+float BdptMisWeights<S>::infiniteLightDensity(const Vec3f& direction) const {
+    float pdf = 0.0f;
+    for (std::size_t i : c_.lights.infiniteLights())
+        if (!c_.lights.light(i).isDelta())
+            pdf += c_.lights.emitterProbability(i) *
+                   c_.lights.light(i).emissionPdf(Vec3f(0.0f), Vec3f(0.0f), direction).direction;
+    return pdf;
+}
+
+template <SpectrumType S>
+float BdptMisWeights<S>::selectionRatio(const Vertex& lightVertex, const Vertex& receiver) const {
+    // An environment vertex of a camera path does not say which light it is: the ratio is the
+    // same for all environments (LightSet), which are the lights at infinity that are not
+    // delta.
+    std::size_t i = lightVertex.light >= 0 ? std::size_t(lightVertex.light)
+                                           : c_.lights.infiniteLights().front();
+    if (lightVertex.light < 0)
+        for (std::size_t k : c_.lights.infiniteLights())
+            if (!c_.lights.light(k).isDelta()) {
+                i = k;
+                break;
+            }
+    return c_.lights.probability(i, receiver.p, receiver.ns) / c_.lights.emitterProbability(i);
+}
+
+/// Density (area at `next`) with which vertex `v`, reached from `prev`, samples `next`.
+template <SpectrumType S>
+float BdptMisWeights<S>::pdf(const Vertex& v, const Vertex* prev, const Vertex& next,
+                             typename Mode::Path& path) const {
+    if (v.type == BdptVertexType::Light) return pdfLight(v, next);
+    const Vec3f wn = directionTo(v, next);
+    if (v.type == BdptVertexType::Camera) return toArea(c_.camera.rayPdf(wn).direction, v, next);
+    const Frame<float> frame = Frame<float>::fromNormal(v.ns);
+    const Vec3f wp = directionTo(v, *prev);
+    const Bxdf<S>& bsdf = mode_.bsdf(v.material, v.uv, path);
+    return toArea(bsdf.pdf(frame.toLocal(wp), frame.toLocal(wn)), v, next);
+}
+
+namespace {
+
+struct Densities {
+    float pdfFwd, pdfRev;
+    bool delta;
+};
+
+}  // namespace
+
+/// 1 / (1 + sum over the other strategies of (p_other / p_this)^beta), the ratios accumulated
+/// vertex by vertex outwards from the connection.
+template <SpectrumType S>
+float BdptMisWeights<S>::weight(const std::vector<Vertex>& lightPath, int s,
+                                const std::vector<Vertex>& cameraPath, int t, const Vertex& sampled,
+                                typename Mode::Path& path) const {
+    if (s + t == 2) return 1.0f;
+    thread_local std::vector<Densities> lightD, cameraD;
+    lightD.resize(std::size_t(s));
+    cameraD.resize(std::size_t(t));
+    for (int i = 0; i < s; ++i)
+        lightD[std::size_t(i)] = {lightPath[std::size_t(i)].pdfFwd,
+                                  lightPath[std::size_t(i)].pdfRev,
+                                  lightPath[std::size_t(i)].delta};
+    for (int i = 0; i < t; ++i)
+        cameraD[std::size_t(i)] = {cameraPath[std::size_t(i)].pdfFwd,
+                                   cameraPath[std::size_t(i)].pdfRev,
+                                   cameraPath[std::size_t(i)].delta};
+    // The path's end vertices as this strategy sees them.
+    const bool freshLight = s == 1 && t > 1;  // next-event estimation's own light point
+    const Vertex& qs = freshLight || s == 0 ? sampled : lightPath[std::size_t(s - 1)];
+    const Vertex& pt = t == 1 ? sampled : cameraPath[std::size_t(t - 1)];
+    const Vertex* qsMinus = s > 1 ? &lightPath[std::size_t(s - 2)] : nullptr;
+    const Vertex* ptMinus = t > 1 ? &cameraPath[std::size_t(t - 2)] : nullptr;
+    if (freshLight) lightD[0] = {sampled.pdfFwd, lightD[0].pdfRev, false};
+    if (t == 1) cameraD[0] = {cameraD[0].pdfFwd, cameraD[0].pdfRev, false};
+    if (s > 0) lightD[std::size_t(s - 1)].delta = false;
+    cameraD[std::size_t(t - 1)].delta = false;
+
+    // Reverse densities at the connection.
+    if (s > 0) {
+        cameraD[std::size_t(t - 1)].pdfRev = pdf(qs, qsMinus, pt, path);
+    } else {
+        cameraD[std::size_t(t - 1)].pdfRev = pdfLightOrigin(pt);
+    }
+    if (ptMinus) {
+        cameraD[std::size_t(t - 2)].pdfRev =
+            s > 0 ? pdf(pt, &qs, *ptMinus, path) : pdfLight(pt, *ptMinus);
+    }
+    if (s > 0) lightD[std::size_t(s - 1)].pdfRev = pdf(pt, ptMinus, qs, path);
+    if (qsMinus) lightD[std::size_t(s - 2)].pdfRev = pdf(qs, &pt, *qsMinus, path);
+
+    const auto ratio = [this](float num, float den) {
+        const float r = (num != 0.0f ? num : 1.0f) / (den != 0.0f ? den : 1.0f);
+        return heuristic_ == MisHeuristic::Power ? r * r : r;
+    };
+    // The densities above choose the light vertex x0 as a particle does (emitterProbability);
+    // next-event estimation (s = 1) chooses it from the surface vertex x1 next to it
+    // (LightSet::probability). The term of strategy s = 1 is scaled by the ratio of the two.
+    const Vertex& x0 = s == 0 ? pt : s == 1 ? sampled : lightPath[0];
+    const Vertex* x1 = s == 0 ? ptMinus : s == 1 ? &pt : &lightPath[1];
+    float nextEvent = 1.0f;
+    if (x1 && x1->type == BdptVertexType::Surface) {
+        const float q = selectionRatio(x0, *x1);
+        nextEvent = heuristic_ == MisHeuristic::Power ? q * q : q;
+    }
+    float sum = 0.0f, r = 1.0f;
+    for (int i = t - 1; i > 0; --i) {
+        r *= ratio(cameraD[std::size_t(i)].pdfRev, cameraD[std::size_t(i)].pdfFwd);
+        if (!cameraD[std::size_t(i)].delta && !cameraD[std::size_t(i - 1)].delta)
+            sum += s == 0 && i == t - 1 ? r * nextEvent : r;
+    }
+    r = 1.0f;
+    for (int i = s - 1; i >= 0; --i) {
+        r *= ratio(lightD[std::size_t(i)].pdfRev, lightD[std::size_t(i)].pdfFwd);
+        const bool deltaBefore = i > 0 ? lightD[std::size_t(i - 1)].delta
+                                       : (freshLight ? sampled : lightPath[0]).deltaLight;
+        if (!lightD[std::size_t(i)].delta && !deltaBefore) sum += i == 1 ? r * nextEvent : r;
+    }
+    // Strategy s = 1 itself: every other strategy's ratio to it is over its own density.
+    if (s == 1 && nextEvent > 0.0f) sum /= nextEvent;
+    return 1.0f / (1.0f + sum);
+}
+
+template class BdptMisWeights<Rgb<float>>;
+template class BdptMisWeights<SampledSpectrum<float>>;
+
+}  // namespace lamina::render

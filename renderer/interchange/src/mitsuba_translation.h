@@ -1,0 +1,38 @@
+// A Mitsuba 3 scene (mitsuba_document.h) -> a lamina scene document: what each plugin
+// becomes (docs/interchange.md, "Mitsuba 3"). The scene-level part (sensor, film, sampler,
+// integrator, the walk over the scene) is mitsuba_translation.cpp; shapes and emitters are
+// mitsuba_shapes.cpp, BSDFs mitsuba_bsdfs.cpp.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include "lamina/interchange/scene_import.h"
+#include "mitsuba_plugin.h"
+
+namespace lamina::render::mitsuba {
+
+/// What translating one scene shares.
+struct Translation {
+    const MitsubaDocument& document;
+    Diagnostics& diagnostics;
+    std::filesystem::path pathsRelativeTo;
+    Json scene = Json::object();
+    /// Top-level BSDFs with an id, translated once: the lamina material name (the id) and
+    /// the alpha a `mask` gives the shapes that use it.
+    std::map<const Element*, std::optional<double>> namedBsdfs;
+};
+
+/// `<shape>` (also inside a shapegroup: `inGroup`) -> the lamina shape, appended to `out`.
+void translateShape(Translation& t, const Element& shape, Json& out, bool inGroup);
+/// `<shape type="shapegroup" id>` -> lamina `objects[id]`.
+void translateShapeGroup(Translation& t, const Element& group);
+/// A top-level `<emitter>` -> a lamina light.
+void translateEmitter(Translation& t, const Element& emitter);
+
+/// The importer's entry in scene_import.cpp's table.
+ImportedScene importMitsubaScene(const std::filesystem::path& file,
+                                 const std::filesystem::path& pathsRelativeTo);
+
+}  // namespace lamina::render::mitsuba

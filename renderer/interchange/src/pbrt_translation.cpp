@@ -1,0 +1,376 @@
+// The scene-wide part of the pbrt-v4 translation: camera, film, filter, sampler, integrator,
+// lights, objects and instances, and the importer's entry point (scene_import.cpp's table).
+#include "pbrt_translation.h"
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include "lamina/core/error.h"
+#include "lamina/core/input_file.h"
+#include "lamina/interchange/scene_import.h"
+#include "pbrt_importer.h"
+#include "pbrt_shapes.h"
+
+namespace lamina::render::pbrt {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+Json vec(const glm::dvec3& v) {
+    return Json::array({v.x, v.y, v.z});
+}
+
+glm::dvec3 apply(const glm::dmat4& m, const glm::dvec3& p) {
+    return glm::dvec3(m * glm::dvec4(p, 1.0));
+}
+
+glm::dvec3 readPoint(const ParamList& params, const std::string& name, const glm::dvec3& fallback) {
+    const auto v = params.numbers(name, {"point3"}, 3);
+    if (!v) return fallback;
+    if (v->size() != 3) params.fail(*params.find(name), "expected one point");
+    return {(*v)[0], (*v)[1], (*v)[2]};
+}
+
+Entity defaultEntity(const std::string& type) {
+    Entity e;
+    e.type = type;
+    return e;
+}
+
+// pbrt-v4's film (film.cpp, RGBFilm / PixelSensor): resolution 1280 x 720.
+Json translateFilm(TranslationContext& ctx, const Entity& e, int& width, int& height) {
+    const ParamList& p = e.params;
+    if (e.type != "rgb") {
+        if (e.type != "gbuffer" && e.type != "spectral")
+            ctx.fail(e.location, "Film \"" + e.type + "\" is not supported (rgb)");
+        ctx.warn(e.location, "Film \"" + e.type + "\" became lamina's RGB film (linear Rec.709)");
+    }
+    width = p.integer("xresolution", 1280);
+    height = p.integer("yresolution", 720);
+    if (p.has("filename")) {
+        p.string("filename", "");
+        ctx.warn(e.location, "the film's filename ignored: lamina writes the image named by -o");
+    }
+    if (p.has("savefp16")) {
+        p.boolean("savefp16", false);
+        ctx.warn(e.location, "savefp16 ignored: lamina writes float EXR");
+    }
+    // The default sensor ("cie1931", ISO 100, exposure 1) maps radiance to XYZ with the
+    // imaging ratio exposure x ISO / 100 = 1, which is what lamina's film does.
+    if (p.string("sensor", "cie1931") != "cie1931" || p.number("iso", 100) != 100 ||
+        p.number("exposuretime", 1) != 1 || p.number("whitebalance", 0) != 0)
+        ctx.fail(e.location,
+                 "a film sensor, ISO, exposure time or white balance other than "
+                 "pbrt-v4's defaults is not supported");
+    p.refuseUnused();
+    return {{"resolution", {width, height}}};
+}
+
+// pbrt-v4's filters (filters.cpp): gaussian is the default (radius 1.5, sigma 0.5), box has
+// radius 0.5, triangle 2.
+Json translateFilter(TranslationContext& ctx, const Entity& e) {
+    const ParamList& p = e.params;
+    double radius = 0;
+    if (e.type == "box")
+        radius = 0.5;
+    else if (e.type == "gaussian")
+        radius = 1.5;
+    else if (e.type == "triangle")
+        radius = 2;
+    else
+        ctx.fail(e.location, "PixelFilter \"" + e.type +
+                                 "\" is not supported (box, gaussian, "
+                                 "triangle)");
+    const double xr = p.number("xradius", radius), yr = p.number("yradius", radius);
+    if (xr != yr)
+        ctx.fail(e.location, "PixelFilter: different xradius and yradius are not supported");
+    Json filter{{"type", e.type}, {"radius", xr}};
+    if (e.type == "gaussian") {
+        // pbrt-v4's gaussian: exp(-x^2 / 2 sigma^2) minus its value at the radius, per axis:
+        // lamina's, whose sigma defaults to radius / 3.
+        const double sigma = p.number("sigma", 0.5);
+        if (std::abs(sigma - xr / 3) > 1e-12 * xr) filter["sigma"] = sigma;
+    }
+    p.refuseUnused();
+    return filter;
+}
+
+Json translateSampler(TranslationContext& ctx, const Entity& e) {
+    const ParamList& p = e.params;
+    int spp = p.integer("pixelsamples", 16);
+    std::string type = "sobol";
+    if (e.type == "independent") {
+        type = "independent";
+    } else if (e.type == "stratified") {
+        spp = p.integer("xsamples", 4) * p.integer("ysamples", 4);
+        p.boolean("jitter", true);
+        ctx.warn(e.location,
+                 "Sampler \"stratified\" became lamina's Owen-scrambled Sobol "
+                 "sampler with xsamples x ysamples = " +
+                     std::to_string(spp) + " samples per pixel");
+    } else if (e.type == "zsobol" || e.type == "sobol" || e.type == "paddedsobol" ||
+               e.type == "halton" || e.type == "pmj02bn") {
+        if (p.has("randomization")) p.string("randomization", "");
+        ctx.warn(e.location, "Sampler \"" + e.type +
+                                 "\" became lamina's Owen-scrambled Sobol "
+                                 "sampler (same sample count)");
+    } else {
+        ctx.fail(e.location, "Sampler \"" + e.type + "\" is not supported");
+    }
+    if (spp < 1) ctx.fail(e.location, "Sampler: the sample count must be at least 1");
+    Json sampler{{"type", type}, {"spp", spp}};
+    if (p.has("seed")) sampler["seed"] = p.integer("seed", 0);
+    p.refuseUnused();
+    return sampler;
+}
+
+// pbrt-v4's integrators (integrators.cpp): maxdepth 5, counted as lamina counts max_depth
+// (scattering events; PathIntegrator::Li stops when depth++ == maxDepth).
+Json translateIntegrator(TranslationContext& ctx, const Entity& e) {
+    const ParamList& p = e.params;
+    std::string type;
+    if (e.type == "path") {
+        type = "path";
+    } else if (e.type == "volpath") {
+        type = "path";
+        ctx.warn(e.location,
+                 "Integrator \"volpath\" became lamina's path tracer (the scene has "
+                 "no media)");
+    } else if (e.type == "bdpt") {
+        type = "bdpt";
+        if (p.boolean("visualizestrategies", false) || p.boolean("visualizeweights", false))
+            ctx.fail(e.location,
+                     "bdpt's visualizestrategies / visualizeweights are not "
+                     "supported (lamina render --strategies writes them)");
+    } else if (e.type == "lightpath") {
+        type = "light";
+    } else {
+        ctx.fail(e.location, "Integrator \"" + e.type +
+                                 "\" is not supported (path, volpath, "
+                                 "bdpt, lightpath)");
+    }
+    const int depth = p.integer("maxdepth", 5);
+    if (depth < 1 || depth > 1024)
+        ctx.fail(e.location, "maxdepth " + std::to_string(depth) +
+                                 " is not supported (lamina's max_depth is 1 to 1024)");
+    if (p.boolean("regularize", false)) ctx.fail(e.location, "regularize is not supported");
+    Json integrator{{"type", type}, {"max_depth", depth}};
+    if (p.has("lightsampler")) {
+        const std::string s = p.string("lightsampler", "bvh");
+        if (s != "bvh" && s != "power" && s != "uniform")
+            ctx.fail(e.location, "lightsampler \"" + s + "\" is not supported");
+        integrator["light_selection"] = s;
+    }
+    p.refuseUnused();
+    return integrator;
+}
+
+// pbrt-v4's perspective camera (cameras.cpp): camera space x = cross(up, dir) maps to raster
+// +x, and `fov` (90) spans the shorter image axis.
+Json translateCamera(TranslationContext& ctx, const Entity& e, int width, int height) {
+    const ParamList& p = e.params;
+    if (e.type != "perspective")
+        ctx.fail(e.location, "Camera \"" + e.type + "\" is not supported (perspective)");
+    const glm::dmat4 worldFromCamera = glm::inverse(e.transform);
+    const glm::dvec3 x(worldFromCamera[0]), y(worldFromCamera[1]), z(worldFromCamera[2]);
+    const glm::dvec3 position(worldFromCamera[3]);
+    const double s = glm::length(z);
+    if (!(s > 0) || std::abs(glm::dot(x, y)) > 1e-9 * s * s ||
+        std::abs(glm::dot(x, z)) > 1e-9 * s * s || std::abs(glm::dot(y, z)) > 1e-9 * s * s ||
+        std::abs(glm::length(x) - s) > 1e-9 * s || std::abs(glm::length(y) - s) > 1e-9 * s)
+        ctx.fail(e.location,
+                 "a camera transform with a shear or an uneven scale is not "
+                 "supported");
+    // camera x = cross(y, z) (det > 0) is pbrt's left-handed frame: image right = up x
+    // forward. A mirroring transform (Scale -1 1 1, common in exported files) makes it
+    // right-handed.
+    const bool left = glm::dot(x, glm::cross(y, z)) > 0;
+    const double fov = p.number("fov", 90.0);
+    if (!(fov > 0 && fov < 180)) ctx.fail(e.location, "fov must be in (0, 180) degrees");
+    double vertical = fov;
+    if (width < height) {
+        const double t = std::tan(0.5 * fov * kPi / 180) * double(height) / double(width);
+        vertical = 2 * std::atan(t) * 180 / kPi;
+    }
+    Json camera{{"position", vec(position)},
+                {"look_at", vec(position + glm::normalize(z))},
+                {"up", vec(glm::normalize(y))},
+                {"fov", vertical},
+                {"handedness", left ? "left" : "right"}};
+    const double lensRadius = p.number("lensradius", 0.0);
+    const double focus = p.number("focaldistance", 1e6);
+    if (lensRadius > 0) {
+        camera["type"] = "thin_lens";
+        camera["aperture_radius"] = lensRadius * s;
+        camera["focus_distance"] = focus * s;
+    }
+    for (const char* shutter : {"shutteropen", "shutterclose"})
+        if (p.has(shutter)) {
+            p.number(shutter, 0);
+            ctx.warn(e.location, std::string(shutter) + " ignored: lamina renders one instant");
+        }
+    p.refuseUnused();
+    return camera;
+}
+
+Json translateLight(TranslationContext& ctx, const Entity& e) {
+    const ParamList& p = e.params;
+    const glm::dmat4& m = e.transform;
+    double scale = p.number("scale", 1.0);
+    Json light;
+    if (e.type == "point") {
+        // PointLight::Create: power phi gives scale *= phi / 4 pi.
+        const double power = p.number("power", -1);
+        if (power > 0) scale *= power / (4 * kPi);
+        light = {{"type", "point"},
+                 {"position", vec(apply(m, readPoint(p, "from", glm::dvec3(0))))},
+                 {"intensity", emissionValue(ctx, p, "I", scale)}};
+    } else if (e.type == "spot") {
+        const double cone = p.number("coneangle", 30), delta = p.number("conedelta", 5);
+        const double start = std::max(0.0, cone - delta);
+        const double power = p.number("power", -1);
+        if (power > 0) {
+            // SpotLight::Create: k_e = 2 pi ((1 - cos start) + (cos start - cos end) / 2).
+            const double cs = std::cos(start * kPi / 180), ce = std::cos(cone * kPi / 180);
+            scale *= power / (2 * kPi * ((1 - cs) + (cs - ce) / 2));
+        }
+        light = {{"type", "spot"},
+                 {"position", vec(apply(m, readPoint(p, "from", glm::dvec3(0))))},
+                 {"look_at", vec(apply(m, readPoint(p, "to", glm::dvec3(0, 0, 1))))},
+                 {"intensity", emissionValue(ctx, p, "I", scale)},
+                 {"cone_angle", cone},
+                 {"falloff_start", start}};
+    } else if (e.type == "distant") {
+        const glm::dvec3 from = readPoint(p, "from", glm::dvec3(0));
+        const glm::dvec3 to = readPoint(p, "to", glm::dvec3(0, 0, 1));
+        const glm::dvec3 d = apply(m, to) - apply(m, from);
+        if (glm::length(d) == 0) ctx.fail(e.location, "distant: from and to coincide");
+        const double illuminance = p.number("illuminance", -1);
+        if (illuminance > 0) scale *= illuminance;  // DistantLight::Create
+        light = {{"type", "directional"},
+                 {"direction", vec(glm::normalize(d))},
+                 {"irradiance", emissionValue(ctx, p, "L", scale)}};
+    } else if (e.type == "infinite") {
+        if (p.has("portal")) ctx.fail(e.location, "infinite: portals are not supported");
+        const double illuminance = p.number("illuminance", -1);
+        if (const Param* file = p.find("filename")) {
+            p.expectType(*file, {"string"});
+            if (p.has("L")) ctx.fail(e.location, "infinite: give either L or filename");
+            if (illuminance > 0)
+                ctx.fail(e.location, "infinite: illuminance with an image is not supported");
+            // pbrt-v4's environment images are equal-area octahedral squares looked up with
+            // the direction in light space (ImageInfiniteLight::Le).
+            const glm::dmat3 r(m);
+            const glm::dmat3 rrT = r * glm::transpose(r);
+            double off = 0;
+            for (int i = 0; i < 3; ++i)
+                for (int j = 0; j < 3; ++j)
+                    off = std::max(off, std::abs(rrT[i][j] - (i == j ? 1.0 : 0.0)));
+            // A reflection (Scale -1 1 1, common in exported scenes) is a change of handedness
+            // lamina's environment transform takes as it is.
+            if (off > 1e-9)
+                ctx.fail(e.location,
+                         "infinite: only rotations and reflections may orient an environment "
+                         "image (a scale or shear was given)");
+            light = {{"type", "environment"},
+                     {"file", ctx.filePath(p, *file)},
+                     {"scale", scale},
+                     {"mapping", "equal_area_octahedral"}};
+            if (r != glm::dmat3(1.0)) light["transform"] = {{{"matrix", rowMajor(glm::dmat4(r))}}};
+        } else {
+            // UniformInfiniteLight: illuminance E gives scale *= E / pi.
+            if (illuminance > 0) scale *= illuminance / kPi;
+            light = {{"type", "environment"}, {"radiance", emissionValue(ctx, p, "L", scale)}};
+        }
+    } else {
+        ctx.fail(e.location, "LightSource \"" + e.type +
+                                 "\" is not supported (point, spot, "
+                                 "distant, infinite)");
+    }
+    p.refuseUnused();
+    return light;
+}
+
+}  // namespace
+
+void TranslationContext::fail(const Location& at, const std::string& message) const {
+    throw InputError(at.str() + ": " + message);
+}
+
+std::string TranslationContext::filePath(const ParamList& params, const Param& p) const {
+    if (p.strings.size() != 1) params.fail(p, "expected one file name");
+    std::filesystem::path file(p.strings[0]);
+    if (file.is_relative()) file = scene.directory / file;
+    const std::string why = notARegularFile(file);
+    if (!why.empty()) params.fail(p, "\"" + p.strings[0] + "\": " + why);
+    return documentPath(file, pathsRelativeTo);
+}
+
+Json translate(TranslationContext& ctx) {
+    const ParsedScene& scene = ctx.scene;
+    Json& doc = ctx.document;
+    int width = 1280, height = 720;
+    doc["film"] =
+        translateFilm(ctx, scene.film ? *scene.film : defaultEntity("rgb"), width, height);
+    doc["film"]["filter"] =
+        translateFilter(ctx, scene.filter ? *scene.filter : defaultEntity("gaussian"));
+    doc["camera"] = translateCamera(
+        ctx, scene.camera ? *scene.camera : defaultEntity("perspective"), width, height);
+    // pbrt-v4's default sampler is zsobol with 16 samples per pixel, its default integrator
+    // volpath with maxdepth 5 (scene.cpp): lamina's Sobol sampler and path tracer.
+    doc["sampler"] = scene.sampler ? translateSampler(ctx, *scene.sampler)
+                                   : Json{{"type", "sobol"}, {"spp", 16}};
+    doc["integrator"] =
+        translateIntegrator(ctx, scene.integrator ? *scene.integrator : defaultEntity("path"));
+    doc["shapes"] = Json::array();
+    for (const ShapeDef& s : scene.shapes)
+        if (auto shape = translateShape(ctx, s)) doc["shapes"].push_back(std::move(*shape));
+    // Objects: shared geometry, placed by instances (common-spec: "objects" and "instance").
+    std::set<std::string> instanced;
+    for (const InstanceDef& i : scene.instances) {
+        const ObjectDef* object = nullptr;
+        for (const ObjectDef& o : scene.objects)
+            if (o.name == i.object) object = &o;
+        if (!object) ctx.fail(i.location, "ObjectInstance \"" + i.object + "\": no such object");
+        if (!instanced.count(i.object)) {
+            Json shapes = Json::array();
+            for (const ShapeDef& s : object->shapes)
+                if (auto shape = translateShape(ctx, s)) shapes.push_back(std::move(*shape));
+            doc["objects"][i.object] = shapes;
+            instanced.insert(i.object);
+        }
+        doc["shapes"].push_back({{"type", "instance"},
+                                 {"object", i.object},
+                                 {"transform", {{{"matrix", rowMajor(i.transform)}}}}});
+    }
+    for (const ObjectDef& o : scene.objects)
+        if (!instanced.count(o.name))
+            ctx.warn(o.location, "object \"" + o.name + "\" is never instanced: not translated");
+    doc["lights"] = Json::array();
+    for (const Entity& l : scene.lights)
+        doc["lights"].push_back(translateLight(ctx, l));
+    for (const MaterialDef& m : scene.materials)
+        if (!ctx.writtenMaterials.count(m.name) && m.name.rfind("pbrt_material_", 0) != 0)
+            ctx.warn(m.entity.location, "material \"" + m.name +
+                                            "\" is used by no shape: not "
+                                            "translated");
+    return doc;
+}
+
+ImportedScene importPbrt(const std::filesystem::path& file,
+                         const std::filesystem::path& pathsRelativeTo) {
+    const ParsedScene scene = parseFile(file);
+    TranslationContext ctx{scene, pathsRelativeTo};
+    ImportedScene imported;
+    imported.format = SceneFormat::Pbrt;
+    imported.scene = translate(ctx);
+    imported.warnings = scene.warnings;
+    imported.warnings.insert(imported.warnings.end(), ctx.warnings.begin(), ctx.warnings.end());
+    imported.inputFiles = scene.files;
+    return imported;
+}
+
+}  // namespace lamina::render::pbrt

@@ -1,0 +1,126 @@
+// The film: per pixel, the weighted sum of sample values (linear Rec.709 in RGB mode, CIE XYZ
+// in spectral mode), the sum of weights, and the sums a per-pixel variance estimate needs
+// (of the luminance Y); optional first-hit AOVs; and a splat layer for estimators that land
+// anywhere on the image (light tracing, BDPT's t = 1 strategy). Splats arrive in iterations (one
+// light path per pixel each): an iteration's splat image is accumulated with atomic adds, then
+// folded into a running mean and sum of squares, so the splat layer has a per-pixel variance
+// estimate too (iterations are independent). A sample or splat with NaN, Inf or a negative
+// value is never added: it is counted and reported.
+// A film may hold a window of a larger image (a crop, `render --crop`): the add* functions take
+// coordinates on the whole image and ignore what falls outside the window, every reader takes
+// coordinates in the window (0 <= x < width()). Every pixel keeps its own sums and counts
+// (PixelSums), so films of disjoint sample ranges or windows add up exactly (`lamina merge`).
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "lamina/core/spectrum.h"
+#include "lamina/core/vector.h"
+#include "lamina/image/pixel_bounds.h"
+
+namespace lamina::render {
+
+enum class FilmSpace { Rec709, Xyz };
+
+struct PixelAovs {
+    Rgb<double> albedo{0.0};
+    Vec3<double> normal{0.0};
+    double depth = 0;
+};
+
+/// What a pixel accumulates: the camera samples' weighted sums (of the film-space value and of
+/// its luminance and squared luminance, for the variance), their weight sum and count, the AOV
+/// sums, and the splat layer's sums over its iterations with the number of iterations.
+struct PixelSums {
+    Rgb<double> sum{0.0};
+    double weightSum = 0;
+    double ySum = 0, ySqSum = 0, yMax = 0;
+    std::uint64_t count = 0;
+    PixelAovs aovSum;
+    Rgb<double> splatSum{0.0};
+    double splatYSum = 0, splatYSqSum = 0;
+    std::uint64_t splatCount = 0;
+    /// Per channel of linear Rec.709: the weighted sum of the camera samples' squares and the
+    /// splat iterations' sum of squares (Variance.R/G/B of merged shards).
+    Rgb<double> sqSum{0.0};
+    Rgb<double> splatSqSum{0.0};
+    /// Adds another film's sums of the same pixel (disjoint samples).
+    void add(const PixelSums& o);
+};
+
+class Film {
+  public:
+    Film(int width, int height, FilmSpace space);
+    /// The window `window` of a fullWidth x fullHeight image.
+    Film(int fullWidth, int fullHeight, const PixelBounds& window, FilmSpace space);
+    /// What the film allocates per pixel (render_memory.h estimates from it).
+    static constexpr std::size_t bytesPerPixel();
+
+    int width() const { return width_; }
+    int height() const { return height_; }
+    /// The whole image the window belongs to (width() x height() without a crop).
+    int fullWidth() const { return fullWidth_; }
+    int fullHeight() const { return fullHeight_; }
+    const PixelBounds& window() const { return window_; }
+    FilmSpace space() const { return space_; }
+
+    /// Adds a camera sample to pixel (x, y) of the whole image. Returns false if it is outside
+    /// the window, or if rejected (and counts it).
+    bool addSample(int x, int y, const Rgb<double>& value, double weight);
+    void addAovs(int x, int y, const PixelAovs& aovs);
+    /// Adds a value to pixel (x, y) of the whole image in the current splat iteration
+    /// (thread-safe). Returns false if it is outside the window, or if rejected (and counts it).
+    bool addSplat(int x, int y, const Rgb<double>& value);
+    /// Ends a splat iteration: its image times `scale` becomes one more sample of the splat
+    /// layer's per-pixel mean and variance. Not thread-safe (call between iterations).
+    void endSplatIteration(double scale);
+    int splatIterations() const { return splatIterations_; }
+
+    /// Linear Rec.709 value of a pixel: the camera samples' weighted mean plus the splat
+    /// layer's mean.
+    Rgb<double> pixel(int x, int y) const;
+    /// The variance of the pixel's mean luminance: sample variance / n of the camera samples
+    /// plus that of the splat iterations (the two are independent but for the one light path
+    /// BDPT traces for the pixel's own sample, whose covariance this neglects).
+    double varianceOfMean(int x, int y) const;
+    /// The same per channel of linear Rec.709 (Variance.R/G/B).
+    Rgb<double> varianceOfMeanRgb(int x, int y) const;
+    PixelAovs aovs(int x, int y) const;
+    std::uint64_t samples(int x, int y) const { return at(x, y).count; }
+    /// The pixel's raw sums (shard files).
+    const PixelSums& sums(int x, int y) const { return at(x, y); }
+    /// Adds another film's sums to pixel (x, y) of the whole image (`lamina merge`); ignored
+    /// outside the window.
+    void addSums(int x, int y, const PixelSums& sums) {
+        if (window_.contains(x, y)) at(x - window_.x0, y - window_.y0).add(sums);
+    }
+
+    std::uint64_t rejectedSamples() const { return rejected_.load(); }
+    /// The largest luminance (Y) of any camera sample added (fireflies).
+    double largestSampleLuminance() const;
+
+  private:
+    using Pixel = PixelSums;
+    const Pixel& at(int x, int y) const { return pixels_[std::size_t(y) * width_ + x]; }
+    Pixel& at(int x, int y) { return pixels_[std::size_t(y) * width_ + x]; }
+    Rgb<double> toRec709(const Rgb<double>& v) const;
+
+    int width_, height_;
+    int fullWidth_, fullHeight_;
+    PixelBounds window_;
+    FilmSpace space_;
+    Mat3<double> xyzToRec709_;  ///< looked up once: every sample's squares are taken in Rec.709
+    std::vector<Pixel> pixels_;
+    std::vector<Rgb<double>> splatIteration_;
+    int splatIterations_ = 0;
+    std::atomic<std::uint64_t> rejected_{0};
+};
+
+constexpr std::size_t Film::bytesPerPixel() {
+    return sizeof(Pixel) + sizeof(Rgb<double>);
+}
+
+}  // namespace lamina::render

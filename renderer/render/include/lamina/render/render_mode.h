@@ -1,0 +1,183 @@
+// What differs between the render modes, and nothing else (DESIGN.md, "Dual mode"): how a
+// path starts (spectral mode draws its wavelengths), how an RGB emission and a material become
+// the mode's spectrum, and what the film receives (Rec.709 in RGB mode, XYZ in spectral mode).
+// The integrators are templated on a RenderMode and contain no mode-specific code; they are
+// compiled for both (src/integrators/*.cpp instantiate them for Rgb<float> and
+// SampledSpectrum<float>). The mode's names are kRenderModeNames (renderer.h).
+//
+// Both modes build their materials with the render's seed as the seed of the `coated`
+// material's random walks, so renders with different seeds get independent walk estimates
+// (docs/bsdf.md, "Random numbers").
+//
+// bsdf(material, uv, path) returns a reference valid until the next call to bsdf() from the
+// same thread (at the path's next vertex, or for another path): a textured material's BSDF is
+// rebuilt at every call, and in spectral mode a call for another path resets the per-thread
+// cache of built BSDFs. Use the reference at one vertex, then ask again.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "lamina/bsdf/material_builder.h"
+#include "lamina/lights/emitter_color.h"
+#include "lamina/render/film.h"
+#include "lamina/render/sampler.h"
+#include "lamina/spectral/cie_xyz_table.h"
+
+namespace lamina::render {
+
+template <SpectrumType S>
+class RenderMode;
+
+/// RGB mode: three linear Rec.709 channels; BSDFs are built once per material.
+template <>
+class RenderMode<Rgb<float>> {
+  public:
+    using Spectrum = Rgb<float>;
+    struct Path {};
+
+    RenderMode(const SceneDesc& scene, std::uint64_t seed) : scene_(scene), seed_(seed) {
+        const SpectrumContext<Spectrum> context;
+        for (const MaterialDesc& m : scene.materials)
+            bsdfs_.push_back(buildBxdf(m, context, seed));
+    }
+
+    static constexpr FilmSpace kFilmSpace = FilmSpace::Rec709;
+
+    Path startPath(PixelSampler&) const { return {}; }
+    Spectrum emission(const Emission& e, Path&) const { return e.rgb(); }
+    /// Valid until the next call from this thread (see the top of this file).
+    const Bxdf<Spectrum>& bsdf(int material, const Vec2<float>& uv, Path&) const {
+        if (!scene_.materialTextures[std::size_t(material)].any())
+            return *bsdfs_[std::size_t(material)];
+        // A textured material is built at every hit, with its parameters looked up at uv.
+        thread_local std::unique_ptr<Bxdf<Spectrum>> textured;
+        textured =
+            buildBxdf(texturedMaterial(scene_, material, uv), SpectrumContext<Spectrum>{}, seed_);
+        return *textured;
+    }
+    Rgb<double> filmValue(const Spectrum& L, const Path&) const { return Rgb<double>(L); }
+
+  private:
+    const SceneDesc& scene_;
+    std::uint64_t seed_;
+    std::vector<std::unique_ptr<Bxdf<Spectrum>>> bsdfs_;
+};
+
+/// Spectral mode: four hero wavelengths per path (Wilkie et al. 2014), colours upsampled
+/// (reflectances) and emission upsampled as illuminants (so RGB (1, 1, 1) light is D65 and
+/// stays white), the film accumulating CIE XYZ:
+///   XYZ = 1/N sum_i L(lambda_i) xyz-bar(lambda_i) / (p(lambda_i) integral of y-bar),
+/// which gives Y = 1 for a constant spectrum 1, as RGB mode gives luminance 1 for white 1.
+/// What does not depend on the wavelengths is done once: each material's RGB colours are
+/// upsampled when the mode is made (UpsampledColors), the emitters' spectra and the colour
+/// matching functions are resampled at 1 nm (EmitterColor, CieXyzTable).
+template <>
+class RenderMode<SampledSpectrum<float>> {
+  public:
+    using Spectrum = SampledSpectrum<float>;
+    struct Path {
+        SampledWavelengths<float> lambda;
+        /// Where lambda falls in the 1 nm tables (emitters, colour matching); a dispersive
+        /// event changes only the densities, so it stays valid.
+        ResampledSpectrum::Positions<Spectrum::kSize> at;
+        std::uint64_t id = 0;  ///< distinguishes paths for the per-thread BSDF cache
+    };
+
+    // Every material is built once here, at arbitrary wavelengths, to collect the colours
+    // its builds upsample: the paths' builds then find their coefficients in colors_. A
+    // build that read no wavelength (grey colours, no spectra) is the BSDF of every path: it
+    // is kept and shared, as in RGB mode.
+    RenderMode(const SceneDesc& scene, std::uint64_t seed)
+        : scene_(scene),
+          seed_(seed),
+          colors_(scene.materials.size()),
+          shared_(scene.materials.size()) {
+        for (std::size_t m = 0; m < scene.materials.size(); ++m) {
+            SampledWavelengths<float> lambda = SampledWavelengths<float>::sample(0.5);
+            bool readsWavelengths = false;
+            auto bsdf = buildBxdf(
+                scene.materials[m],
+                SpectrumContext<Spectrum>{lambda, nullptr, &colors_[m], &readsWavelengths}, seed_);
+            if (!readsWavelengths) shared_[m] = std::move(bsdf);
+        }
+    }
+
+    static constexpr FilmSpace kFilmSpace = FilmSpace::Xyz;
+
+    Path startPath(PixelSampler& sampler) const {
+        const auto lambda = SampledWavelengths<float>::sample(double(sampler.get1D()));
+        return {lambda, ResampledSpectrum::locate(lambda), ++cache().nextPathId};
+    }
+
+    Spectrum emission(const Emission& e, Path& path) const {
+        if (!e.color) {  // a texel: upsample once for the four wavelengths
+            Spectrum out;
+            const RgbSpectrum s(Rgb<double>(e.texel), RgbSpectrumKind::Illuminant);
+            for (int i = 0; i < Spectrum::kSize; ++i)
+                out[i] = float(s(double(path.lambda[i]))) * e.scale;
+            return out;
+        }
+        return e.color->spectral(path.at) * e.scale;
+    }
+
+    // A material's BSDF that depends on the path's wavelengths is built at the first hit on
+    // that material along a path and reused at later hits of the same path (a per-thread
+    // cache, reset when the path changes); one that does not is the one built at load. Valid
+    // until the next call from this thread.
+    const Bxdf<Spectrum>& bsdf(int material, const Vec2<float>& uv, Path& path) const {
+        BsdfCache& c = cache();
+        const UpsampledColors* colors = &colors_[std::size_t(material)];
+        if (scene_.materialTextures[std::size_t(material)].any()) {
+            // Colours the textures do not replace are among those collected at load.
+            const SpectrumContext<Spectrum> context{path.lambda, colors};
+            c.textured = buildBxdf(texturedMaterial(scene_, material, uv), context, seed_);
+            return *c.textured;
+        }
+        if (const auto& shared = shared_[std::size_t(material)]) return *shared;
+        if (c.pathId != path.id) {
+            c.pathId = path.id;
+            c.bsdfs.resize(scene_.materials.size());
+            for (auto& b : c.bsdfs)
+                b.reset();
+        }
+        auto& slot = c.bsdfs[std::size_t(material)];
+        if (!slot) {
+            const SpectrumContext<Spectrum> context{path.lambda, colors};
+            slot = buildBxdf(scene_.materials[std::size_t(material)], context, seed_);
+        }
+        return *slot;
+    }
+
+    Rgb<double> filmValue(const Spectrum& L, const Path& path) const {
+        // A wavelength of density 0 (terminated by dispersion) contributes nothing.
+        using namespace simd;
+        Spectrum w;
+        const Spectrum pdf = path.lambda.pdf();
+        const Float4 p = load(&pdf[0]);
+        store(&w[0], select(p > splat(0.0f), load(&L[0]) / p, splat(0.0f)));
+        const std::array<float, 3> xyz = cmf_.weightedSum(w, path.at);
+        constexpr double kInverseN = 1.0 / Spectrum::kSize;
+        return {double(xyz[0]) * kInverseN, double(xyz[1]) * kInverseN, double(xyz[2]) * kInverseN};
+    }
+
+  private:
+    struct BsdfCache {
+        std::uint64_t pathId = 0, nextPathId = 0;
+        std::vector<std::unique_ptr<Bxdf<Spectrum>>> bsdfs;
+        std::unique_ptr<Bxdf<Spectrum>> textured;
+    };
+    static BsdfCache& cache() {
+        thread_local BsdfCache c;
+        return c;
+    }
+
+    const SceneDesc& scene_;
+    std::uint64_t seed_;
+    std::vector<UpsampledColors> colors_;  ///< per material
+    /// per material: its BSDF if it does not depend on the wavelengths, else null
+    std::vector<std::unique_ptr<Bxdf<Spectrum>>> shared_;
+    const CieXyzTable& cmf_ = CieXyzTable::normalized();
+};
+
+}  // namespace lamina::render

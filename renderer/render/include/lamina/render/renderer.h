@@ -1,0 +1,78 @@
+// A render: the scene's acceleration structure, lights and camera, passes of samples over
+// tiles in parallel (oneTBB), progress, and interruption (Ctrl-C finishes the pass in flight).
+#pragma once
+
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "lamina/render/film.h"
+#include "lamina/integrators/transport_ablations.h"
+#include "lamina/scene/scene_description.h"
+#include "lamina/integrators/strategy_images.h"
+
+namespace lamina::render {
+
+enum class RenderModeKind { Rgb, Spectral };
+inline constexpr NameTable kRenderModeNames{std::array{
+    NameEntry{RenderModeKind::Rgb, "rgb"}, NameEntry{RenderModeKind::Spectral, "spectral"}}};
+
+/// Sample indices [first, first + count) of every pixel (`render --samples FIRST:COUNT`).
+struct SampleRange {
+    int first = 0;
+    int count = 0;
+};
+
+struct RenderOptions {
+    RenderModeKind mode = RenderModeKind::Rgb;
+    std::optional<int> spp;         ///< overrides the scene's
+    std::optional<double> seconds;  ///< progressive passes until this much time has passed
+    std::optional<std::uint64_t> seed;
+    std::optional<int> maxDepth;
+    std::optional<std::pair<int, int>> resolution;
+    std::optional<SamplerKind> sampler;
+    std::optional<IntegratorKind> integrator;
+    std::optional<MisHeuristic> mis;
+    std::optional<LightSelection> lightSelection;
+    int threads = 0;    ///< 0: all cores
+    bool aovs = false;  ///< path integrator only
+    TransportAblations ablations;
+    bool strategies = false;  ///< bdpt: keep per-(s, t) images (RenderResult::strategies)
+    /// Renders only these sample indices (overrides spp; with `seconds`, at most `count`).
+    std::optional<SampleRange> samples;
+    /// Renders only these pixels of the film, with the numbers of the whole render: light
+    /// particles still start from every pixel, so a crop saves only the path integrator time.
+    std::optional<PixelBounds> crop;
+};
+
+struct RenderProgress {
+    double fraction = 0;  ///< of the planned work (of the time budget with --time)
+    double seconds = 0;   ///< rendering time, without the time spent in progress callbacks
+    int passesDone = 0;
+    int sppDone = 0;
+    const Film* film = nullptr;  ///< the image so far (valid during the call)
+};
+
+struct RenderResult {
+    std::unique_ptr<Film> film;
+    int spp = 0;          ///< samples per pixel rendered
+    int firstSample = 0;  ///< the index of the first (RenderOptions::samples)
+    double seconds = 0;
+    std::uint64_t rays = 0;
+    std::uint64_t paths = 0;
+    bool partial = false;                        ///< interrupted before the requested spp or time
+    std::string modeName;                        ///< kRenderModeNames
+    RenderSettings settings;                     ///< after command-line overrides
+    std::unique_ptr<StrategyImages> strategies;  ///< with RenderOptions::strategies (bdpt)
+};
+
+/// Set (from a signal handler) to stop after the pass in flight.
+std::atomic<bool>& renderInterruptFlag();
+
+/// Renders the scene. `progress` is called from the calling thread now and then.
+RenderResult renderScene(const SceneDesc& scene, const RenderOptions& options,
+                         const std::function<void(const RenderProgress&)>& progress = {});
+
+}  // namespace lamina::render

@@ -1,0 +1,48 @@
+// Textures in materials: reading a scene file's texture definitions and the material keys
+// that name a texture ({"texture": name} for base_color / reflectance / roughness), and the
+// material with its textured parameters looked up at a surface's uv.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <utility>
+
+#include "lamina/bsdf/material.h"
+#include "lamina/scene/texture.h"
+
+namespace lamina::render {
+
+struct SceneDesc;
+
+/// Which parameters of a material come from textures (indices into SceneDesc::textures).
+struct MaterialTextures {
+    int color = -1;      ///< base_color (standard) or reflectance (diffuse, phong)
+    int roughness = -1;  ///< perceptual roughness, from the texture's first channel
+    bool any() const { return color >= 0 || roughness >= 0; }
+};
+
+/// Finds a texture by name for the key of `at` that names it (failing there when unknown, or
+/// when the name refers back to a texture being read), loading it on first use; returns its
+/// index into SceneDesc::textures.
+using TextureLookup =
+    std::function<int(const JsonReader& at, const std::string& key, const std::string& name)>;
+
+/// A texture definition: {"type": "checkerboard", "a": colour, "b": colour, "scale": [u, v]},
+/// {"type": "image", "file": path, "scale": [u, v], "color_space": "srgb" | "linear",
+/// "invert": bool}, {"type": "scale", "texture": name, "scale": number} or {"type": "mix",
+/// "a": name | colour, "b": name | colour, "amount": name | number}. `textures` are the
+/// scene's textures so far, which `textureIndex` indexes.
+std::shared_ptr<const Texture> readTexture(
+    const JsonReader& t, const TextureLookup& textureIndex,
+    const std::vector<std::shared_ptr<const Texture>>& textures);
+
+/// A material whose texturable keys may name a texture: the material (read with a constant
+/// in their place) and which of its parameters the textures replace.
+std::pair<MaterialDesc, MaterialTextures> readTexturedMaterial(const JsonReader& r,
+                                                               const TextureLookup& textureIndex);
+
+/// The material with its textured parameters looked up at `uv`.
+MaterialDesc texturedMaterial(const SceneDesc& scene, int material, const Vec2<float>& uv);
+
+}  // namespace lamina::render

@@ -1,0 +1,122 @@
+#include <cmath>
+#include <string>
+
+#include "lamina/scene/scene_readers.h"
+
+namespace lamina::render {
+
+std::pair<Rgb<double>, std::shared_ptr<const EmissionSpectrum>> readEmissionValue(
+    const JsonReader& parent, const std::string& key) {
+    if (!parent.has(key))
+        parent.failAt(key, "missing; expected a number >= 0, [r, g, b] or a spectrum object");
+    const JsonReader v = parent.child(key);
+    if (!v.value().is_object()) {
+        const auto rgb = *parent.optionalTriple(key, Range::nonNegative());
+        return {Rgb<double>(rgb[0], rgb[1], rgb[2]), nullptr};
+    }
+    const double scale = v.number("scale", 1.0, Range::nonNegative());
+    std::shared_ptr<const EmissionSpectrum> spectrum;
+    const int forms = int(v.has("illuminant")) + int(v.has("blackbody")) + int(v.has("spectrum"));
+    if (forms != 1) v.fail("expected exactly one of illuminant, blackbody, spectrum");
+    try {
+        if (v.has("illuminant")) {
+            spectrum = std::make_shared<const EmissionSpectrum>(
+                EmissionSpectrum::illuminant(v.requiredString("illuminant"), scale));
+        } else if (v.has("blackbody")) {
+            spectrum = std::make_shared<const EmissionSpectrum>(
+                EmissionSpectrum::blackbody(v.requiredNumber("blackbody", {100.0, 1e6}), scale));
+        }
+    } catch (const InputError& e) {
+        v.fail(e.what());
+    }
+    if (v.has("spectrum")) {
+        const JsonReader list = v.child("spectrum");
+        const auto [nm, values] = list.wavelengthTable(Range::nonNegative());
+        spectrum = std::make_shared<const EmissionSpectrum>(EmissionSpectrum::tabulated(
+            nm, values, scale, list.source().name + ": " + list.path()));
+    }
+    v.finish();
+    // The scale times the spectrum is what is rendered, in float.
+    const Rgb<double> rgb = spectrum->rgb();
+    for (int c = 0; c < 3; ++c)
+        if (!std::isfinite(float(rgb[c])))
+            v.fail("the emission overflows float (scale " + formatNumber(scale) + ")");
+    return {rgb, spectrum};
+}
+
+std::optional<EmissionDesc> readEmission(const JsonReader& shape) {
+    const auto e = shape.optionalChild("emission");
+    if (!e) return std::nullopt;
+    e->expectObject();
+    EmissionDesc d;
+    std::tie(d.radiance, d.spectrum) = readEmissionValue(*e, "radiance");
+    d.twoSided = e->boolean("two_sided", false);
+    e->finish();
+    return d;
+}
+
+namespace {
+
+// An environment's "transform": directions only, so an orthogonal matrix (rotations, and
+// reflections such as pbrt's and Mitsuba's handedness flips); a translation would mean nothing
+// at infinity and a scale or shear would distort the map's solid angles, so both are refused.
+Mat3<double> readEnvironmentTransform(const JsonReader& r) {
+    const Mat4 m = readTransform(r);
+    if (Vec3d(m[3]) != Vec3d(0.0))
+        r.failAt("transform", "an environment takes rotations only; got a translation");
+    const Mat3<double> a(m);
+    const Mat3<double> gram = glm::transpose(a) * a;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            if (std::abs(gram[i][j] - (i == j ? 1.0 : 0.0)) > 1e-9)
+                r.failAt("transform",
+                         "an environment takes rotations only (and mirror reflections such as a "
+                         "scale of [-1, 1, 1]); got a scale or shear");
+    return a;
+}
+
+}  // namespace
+
+LightDesc readLight(const JsonReader& r) {
+    r.expectObject();
+    LightDesc l;
+    l.kind = r.choice("type", LightKind::Point, kLightKindNames);
+    const char* key = l.kind == LightKind::Point || l.kind == LightKind::Spot ? "intensity"
+                      : l.kind == LightKind::Directional                      ? "irradiance"
+                                                                              : "radiance";
+    if (l.kind == LightKind::Environment && r.has("file")) {
+        // An image: "scale" multiplies it, "mapping" lays it on the sphere, "rotate" turns it
+        // about +y, then "transform" turns it further.
+        if (r.has("radiance")) r.fail("give either radiance or file, not both");
+        l.file = r.filePath("file");
+        const double scale = r.number("scale", 1.0, Range::nonNegative());
+        l.intensity = Rgb<double>(scale);
+        l.mapping =
+            r.choice("mapping", EnvironmentMapping::Equirectangular, kEnvironmentMappingNames);
+        l.rotation = r.number("rotate", 0.0);
+        l.orientation = readEnvironmentTransform(r);
+    } else {
+        std::tie(l.intensity, l.spectrum) = readEmissionValue(r, key);
+    }
+    if (l.kind == LightKind::Point || l.kind == LightKind::Spot) {
+        l.position = requiredVec3(r, "position");
+        checkCoordinates(r, "position", l.position);
+    }
+    if (l.kind == LightKind::Spot) {
+        const Vec3d target = requiredVec3(r, "look_at");
+        checkCoordinates(r, "look_at", target);
+        if (glm::length(target - l.position) == 0) r.failAt("look_at", "equals position");
+        l.direction = glm::normalize(target - l.position);
+        l.coneAngle = r.number("cone_angle", 30.0, {0.0, 90.0, true});
+        l.falloffStart = r.number("falloff_start", l.coneAngle * 0.8, {0.0, l.coneAngle});
+    }
+    if (l.kind == LightKind::Directional) {
+        l.direction = requiredVec3(r, "direction");
+        if (glm::length(l.direction) == 0) r.failAt("direction", "expected a non-zero vector");
+        l.direction = glm::normalize(l.direction);
+    }
+    r.finish();
+    return l;
+}
+
+}  // namespace lamina::render

@@ -1,0 +1,175 @@
+#include "lamina/scene/material_textures.h"
+#include "lamina/core/json_reader.h"
+
+#include <algorithm>
+
+#include "lamina/bsdf/phong.h"
+#include "lamina/scene/scene_description.h"
+
+namespace lamina::render {
+
+namespace {
+
+// An operand of a texture operation: the name of a texture, or a constant (a number or
+// [r, g, b]; `colour` false: a number only).
+std::shared_ptr<const Texture> readOperand(
+    const JsonReader& t, const std::string& key, double fallback, bool colour, Range range,
+    const TextureLookup& textureIndex,
+    const std::vector<std::shared_ptr<const Texture>>& textures) {
+    if (t.has(key) && t.value()[key].is_string())
+        return textures[std::size_t(textureIndex(t, key, t.requiredString(key)))];
+    if (colour) {
+        const auto c = t.triple(key, {fallback, fallback, fallback}, range);
+        return std::make_shared<ConstantTexture>(Rgb<float>(float(c[0]), float(c[1]), float(c[2])));
+    }
+    return std::make_shared<ConstantTexture>(Rgb<float>(float(t.number(key, fallback, range))));
+}
+
+}  // namespace
+
+std::shared_ptr<const Texture> readTexture(
+    const JsonReader& t, const TextureLookup& textureIndex,
+    const std::vector<std::shared_ptr<const Texture>>& textures) {
+    t.expectObject();
+    t.noteNames("type", kTextureKindNames.names());
+    const std::string type = t.requiredString("type");
+    const auto kind = kTextureKindNames.find(type);
+    if (!kind)
+        t.failAt("type", "expected " + kTextureKindNames.list(" or ") + ", got \"" + type + "\"");
+    Vec2<float> scale(1.0f);
+    // [u, v] repeats of the patterns (has() marks the key as known: ask only where it is).
+    const bool pattern = *kind == TextureKind::Checkerboard || *kind == TextureKind::Image;
+    if (pattern && t.has("scale")) {
+        const auto sc = t.requiredArray<2>("scale", Range::positive());
+        scale = Vec2<float>(float(sc[0]), float(sc[1]));
+    }
+    std::shared_ptr<const Texture> texture;
+    switch (*kind) {
+        case TextureKind::Checkerboard: {
+            const auto a = t.triple("a", {0.8, 0.8, 0.8}, Range::nonNegative());
+            const auto b = t.triple("b", {0.2, 0.2, 0.2}, Range::nonNegative());
+            if (!t.has("scale")) scale = Vec2<float>(8.0f);
+            texture = std::make_shared<CheckerboardTexture>(
+                Rgb<float>(float(a[0]), float(a[1]), float(a[2])),
+                Rgb<float>(float(b[0]), float(b[1]), float(b[2])), scale);
+            break;
+        }
+        case TextureKind::Image: {
+            const std::filesystem::path file = t.filePath("file");
+            const bool srgb = t.choice("color_space", TextureColorSpace::Srgb,
+                                       kTextureColorSpaceNames) == TextureColorSpace::Srgb;
+            const bool invert = t.boolean("invert", false);
+            try {
+                texture = std::make_shared<ImageTexture>(file, scale, srgb, invert);
+            } catch (const InputError& e) {
+                t.failAt("file", e.what());
+            }
+            break;
+        }
+        case TextureKind::Scale: {
+            if (!t.has("texture") || !t.value()["texture"].is_string())
+                t.failAt("texture", "expected the name of a texture");
+            const auto source =
+                textures[std::size_t(textureIndex(t, "texture", t.requiredString("texture")))];
+            texture = std::make_shared<ScaleTexture>(source,
+                                                     float(t.requiredNumber("scale", {0.0, 1e6})));
+            break;
+        }
+        case TextureKind::Mix: {
+            // pbrt-v4's defaults: tex1 0, tex2 1, amount 0.5.
+            auto a = readOperand(t, "a", 0.0, true, Range::nonNegative(), textureIndex, textures);
+            auto b = readOperand(t, "b", 1.0, true, Range::nonNegative(), textureIndex, textures);
+            auto amount =
+                readOperand(t, "amount", 0.5, false, Range::unit(), textureIndex, textures);
+            texture = std::make_shared<MixTexture>(std::move(a), std::move(b), std::move(amount));
+            break;
+        }
+    }
+    t.finish();
+    return texture;
+}
+
+// Replaces {"texture": name} in the material's texturable keys by a constant the material
+// parser accepts, then checks that the material can take the textures it names. Any other
+// object ({"spectrum": [[nm, value], ...]}, a measured reflectance) is the material parser's.
+std::pair<MaterialDesc, MaterialTextures> readTexturedMaterial(const JsonReader& r,
+                                                               const TextureLookup& textureIndex) {
+    if (!r.value().is_object()) return {parseMaterial(r), {}};
+    Json copy = r.value();
+    MaterialTextures tex;
+    for (const char* key : {"base_color", "reflectance", "roughness"}) {
+        if (!copy.contains(key) || !copy[key].is_object() || !copy[key].contains("texture"))
+            continue;
+        const JsonReader t(r.value()[key], r.childPath(key), r.source());
+        const std::string name = t.requiredString("texture");
+        t.finish();
+        (std::string(key) == "roughness" ? tex.roughness : tex.color) =
+            textureIndex(t, "texture", name);
+        copy[key] = 0.5;
+    }
+    const JsonReader patched(copy, r.path(), r.source());
+    MaterialDesc desc = parseMaterial(patched);
+    if (tex.roughness >= 0) {
+        const bool energy = std::visit(
+            [](const auto& m) {
+                if constexpr (requires { m.microfacet; }) return m.microfacet.multiscatter;
+                return false;
+            },
+            desc.model);
+        const auto* st = std::get_if<StandardMaterial>(&desc.model);
+        if (energy || (st && st->coupling == LayerCoupling::Albedo))
+            r.failAt("roughness",
+                     "a textured roughness cannot use the albedo tables of "
+                     "multiscatter or the albedo coupling");
+        if (copy.contains("anisotropy")) r.failAt("roughness", "a textured roughness is isotropic");
+    }
+    if (tex.any() && (desc.type == "mix" || desc.type == "layered" || desc.type == "coated" ||
+                      (tex.color >= 0 && (desc.type == "conductor" || desc.type == "dielectric"))))
+        r.fail(
+            "textures apply to base_color / reflectance / roughness of standard, diffuse "
+            "and phong materials, to the reflectance of diffuse_transmission, and to the "
+            "roughness of conductors and dielectrics");
+    return {std::move(desc), tex};
+}
+
+MaterialDesc texturedMaterial(const SceneDesc& scene, int material, const Vec2<float>& uv) {
+    MaterialDesc desc = scene.materials[std::size_t(material)];
+    const MaterialTextures& t = scene.materialTextures[std::size_t(material)];
+    const auto colour = [&]() {
+        const Rgb<float> c = scene.textures[std::size_t(t.color)]->evaluate(uv);
+        return RgbInput(std::clamp(double(c[0]), 0.0, 1.0), std::clamp(double(c[1]), 0.0, 1.0),
+                        std::clamp(double(c[2]), 0.0, 1.0));
+    };
+    const double roughness =
+        t.roughness >= 0
+            ? std::clamp(double(scene.textures[std::size_t(t.roughness)]->evaluate(uv)[0]), 0.0,
+                         1.0)
+            : 0.0;
+    const auto setRoughness = [&](MicrofacetParams& m) {
+        m.alphaX = m.alphaY = roughness * roughness;
+    };
+    std::visit(
+        [&](auto& m) {
+            using M = std::decay_t<decltype(m)>;
+            if constexpr (std::is_same_v<M, StandardMaterial>) {
+                if (t.color >= 0) m.baseColor = colour();
+                if (t.roughness >= 0) setRoughness(m.microfacet);
+            } else if constexpr (std::is_same_v<M, DiffuseMaterial>) {
+                if (t.color >= 0) m.reflectance = colour();
+                if (t.roughness >= 0) m.roughness = roughness;
+            } else if constexpr (std::is_same_v<M, DiffuseTransmissionMaterial>) {
+                if (t.color >= 0) m.reflectance = colour();
+            } else if constexpr (std::is_same_v<M, PhongMaterial>) {
+                if (t.color >= 0) m.reflectance = colour();
+                if (t.roughness >= 0)
+                    m.shininess = PhongLobe<Rgb<double>>::shininessFromAlpha(roughness * roughness);
+            } else if constexpr (std::is_same_v<M, ConductorMaterial> ||
+                                 std::is_same_v<M, DielectricMaterial>) {
+                if (t.roughness >= 0) setRoughness(m.microfacet);
+            }
+        },
+        desc.model);
+    return desc;
+}
+
+}  // namespace lamina::render

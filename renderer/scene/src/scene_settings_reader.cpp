@@ -1,0 +1,114 @@
+#include <glm/trigonometric.hpp>
+
+#include "lamina/scene/scene_readers.h"
+
+namespace lamina::render {
+
+CameraDesc readCamera(const JsonReader& r) {
+    r.expectObject();
+    CameraDesc c;
+    r.noteNames("type", kCameraKindNames.names());
+    const std::string type = r.string("type", "perspective");
+    const auto kind = kCameraKindNames.find(type);
+    if (!kind)
+        r.failAt("type", "expected " + kCameraKindNames.list(" or ") + ", got \"" + type + "\"");
+    if (r.has("matrix")) {
+        // A camera-to-world matrix (row-major): the camera sits at its origin, looks
+        // along its +z and has its +y up.
+        if (r.has("position") || r.has("look_at") || r.has("up"))
+            r.fail("give either matrix or position / look_at / up, not both");
+        const Mat4 m = requiredMatrix(r, "matrix");
+        c.position = Vec3d(m * glm::dvec4(0, 0, 0, 1));
+        c.lookAt = c.position + Vec3d(m * glm::dvec4(0, 0, 1, 0));
+        c.up = Vec3d(m * glm::dvec4(0, 1, 0, 0));
+    } else {
+        c.position = readVec3(r, "position", c.position);
+        c.lookAt = readVec3(r, "look_at", c.lookAt);
+        c.up = readVec3(r, "up", c.up);
+    }
+    const bool matrix = r.has("matrix");
+    checkCoordinates(r, matrix ? "matrix" : "position", c.position, matrix ? "the position" : "");
+    checkCoordinates(r, matrix ? "matrix" : "look_at", c.lookAt, matrix ? "the look-at point" : "");
+    if (glm::length(c.lookAt - c.position) == 0) r.failAt("look_at", "equals position");
+    if (glm::length(glm::cross(c.lookAt - c.position, c.up)) == 0)
+        r.failAt("up", "is parallel to the viewing direction");
+    if (r.has("fov") && r.has("focal_length"))
+        r.fail("give either fov or focal_length (with sensor_height), not both");
+    // 180 degrees is an infinitely wide image plane (tan 90 degrees): every ray misses.
+    c.verticalFovDegrees = r.number("fov", 40.0, {0.0, 180.0, true, true});
+    if (r.has("focal_length")) {
+        // A full-frame sensor is 24 mm high.
+        const double f = r.requiredNumber("focal_length", Range::positive());
+        const double h = r.number("sensor_height", 24.0, Range::positive());
+        c.verticalFovDegrees = glm::degrees(2.0 * std::atan(0.5 * h / f));
+        if (!(c.verticalFovDegrees < 180.0))
+            r.failAt("focal_length",
+                     "is too short for the sensor: the field of view is 180 degrees");
+    }
+    // Lens points are ray origins.
+    c.apertureRadius = r.number("aperture_radius", 0.0, {0.0, kMaxSceneCoordinate});
+    c.focusDistance =
+        r.number("focus_distance", glm::length(c.lookAt - c.position),
+                 {0.0, 2 * kMaxSceneCoordinate, true});  // the focal point is a ray's target
+    c.handedness = r.choice("handedness", Handedness::Right, kHandednessNames);
+    if (*kind == CameraKind::ThinLens && c.apertureRadius == 0)
+        r.failAt("aperture_radius", "a thin_lens camera needs an aperture_radius > 0");
+    r.finish();
+    return c;
+}
+
+FilmDesc readFilm(const JsonReader& r) {
+    r.expectObject();
+    FilmDesc film;
+    if (r.has("resolution")) {
+        const auto res = r.requiredArray<2>("resolution", {1.0, 65536.0});
+        if (res[0] != std::floor(res[0]) || res[1] != std::floor(res[1]))
+            r.failAt("resolution", "expected two integers");
+        film.width = int(res[0]);
+        film.height = int(res[1]);
+    }
+    if (const auto f = r.optionalChild("filter")) {
+        f->expectObject();
+        film.filter = f->choice("type", FilterKind::Box, kFilterNames);
+        const double defaultRadius = film.filter == FilterKind::Box        ? 0.5
+                                     : film.filter == FilterKind::Triangle ? 2.0
+                                                                           : 1.5;
+        film.filterRadius = f->number("radius", defaultRadius, {0.0, 16.0, true});
+        if (f->has("sigma")) {
+            if (film.filter != FilterKind::Gaussian)
+                f->failAt("sigma", "only a gaussian filter takes sigma");
+            // Below radius / 8 the truncated Gaussian is a spike the 512-bin sampling table
+            // cannot resolve; above 4 radius, exp(-x^2 / (2 sigma^2)) minus its tail cancels
+            // to float rounding.
+            film.filterSigma = f->number("sigma", film.filterRadius / 3,
+                                         {film.filterRadius / 8, 4 * film.filterRadius});
+        }
+        f->finish();
+    }
+    r.finish();
+    return film;
+}
+
+void readIntegrator(const JsonReader& r, RenderSettings& settings) {
+    r.expectObject();
+    settings.integrator = r.choice("type", IntegratorKind::Path, kIntegratorNames);
+    settings.mis = r.choice("mis", MisHeuristic::Power, kMisHeuristicNames);
+    settings.maxDepth = r.integer("max_depth", 16, 1, 1024);
+    settings.russianRouletteDepth = r.integer("rr_depth", 5, 1, 1024);
+    settings.lightSelection =
+        r.choice("light_selection", LightSelection::Bvh, kLightSelectionNames);
+    if (r.has("next_event") && settings.integrator != IntegratorKind::Path)
+        r.failAt("next_event", "only the path integrator takes next_event");
+    settings.nextEvent = r.boolean("next_event", true);
+    r.finish();
+}
+
+void readSampler(const JsonReader& r, RenderSettings& settings) {
+    r.expectObject();
+    settings.sampler = r.choice("type", SamplerKind::Sobol, kSamplerNames);
+    settings.spp = r.integer("spp", 16, 1, 1 << 24);
+    settings.seed = std::uint64_t(r.integer("seed", 0, 0, 2147483647));
+    r.finish();
+}
+
+}  // namespace lamina::render

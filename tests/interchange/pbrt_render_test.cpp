@@ -1,0 +1,159 @@
+// pbrt-v4 scenes, imported, render the same images as the same scenes written by hand in
+// lamina's format (tests/data/interchange/pbrt/: a Cornell box; glass and copper spheres under
+// an environment; named metals and a coated diffuse under a blackbody light, with bdpt; an
+// instanced mesh, once lamina's reader has instances). Each is rendered as 32 independent
+// batches from different seeds and compared with the blockwise
+// Welch t-test of the estimator-agreement experiment (4x4-pixel blocks, alpha = 0.01): pass
+// when at most 3% of the blocks reject, the image means' t-test has p >= 0.0027 and the means
+// are within 0.5% of each other. And pbrt's handedness: an emitter on pbrt's image-left comes
+// out on the left (and mirrored by Scale -1 1 1, as pbrt does).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "cli_helpers.h"
+#include "lamina/experiments/estimator_agreement.h"
+#include "lamina/render/renderer.h"
+#include "lamina/interchange/scene_import.h"
+#include "scratch_directory.h"
+#include "source_files.h"
+
+namespace lamina::render {
+namespace {
+
+using namespace lamina::experiments;
+
+std::string dataPath(const std::string& name) {
+    return (testing::sourceFile("tests/data/interchange/pbrt") / name).string();
+}
+
+struct PbrtCase {
+    const char* name;
+    const char* scene;  ///< NAME.pbrt and NAME.json in tests/data/interchange/pbrt
+    int spp;            ///< in all, over the 32 batches
+};
+
+class PbrtSceneAgrees : public ::testing::TestWithParam<PbrtCase> {};
+
+TEST_P(PbrtSceneAgrees, ImportedAndHandWrittenScenesRenderTheSameImage) {
+    const PbrtCase& c = GetParam();
+    SceneDesc imported;
+    try {
+        imported = loadScene(dataPath(std::string(c.scene) + ".pbrt"));
+    } catch (const InputError& e) {
+        // The instanced scene translates to lamina's "objects" and "instance" shapes
+        // (common-spec.md), which the instances branch adds to the reader; until it is
+        // merged, the reader refuses them.
+        const std::string what = e.what();
+        if (what.find("\"instance\"") == std::string::npos &&
+            what.find("objects") == std::string::npos)
+            throw;
+        GTEST_SKIP() << "lamina's reader has no object instancing yet: " << e.what();
+    }
+    const SceneDesc handWritten = loadScene(dataPath(std::string(c.scene) + ".json"));
+    EXPECT_EQ(imported.format, SceneFormat::Pbrt);
+    RenderOptions o;
+    o.seed = 1;
+    const BatchImages a = renderBatches(imported, o, c.spp, 32);
+    o.seed = 7919;
+    const BatchImages b = renderBatches(handWritten, o, c.spp, 32);
+    AgreementTest test;
+    test.alpha = 0.01;
+    test.blockSize = 4;
+    const AgreementResult r = testAgreement(a, b, test);
+    std::printf("  %-14s blocks %.2f%% rejected; mean rel. diff %+.4f +- %.4f (p %.3f)\n", c.name,
+                100 * r.blockRejectionRate(), r.relativeDifference, r.standardError, r.meanPValue);
+    EXPECT_LE(r.blockRejectionRate(), 0.03);
+    EXPECT_GE(r.meanPValue, 0.0027);
+    EXPECT_LT(std::abs(r.relativeDifference), 0.005);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, PbrtSceneAgrees,
+                         ::testing::Values(PbrtCase{"cornell_box", "cornell-box", 2048},
+                                           PbrtCase{"glass_sphere", "glass-sphere", 2048},
+                                           PbrtCase{"conductor", "conductor", 1024},
+                                           PbrtCase{"instanced", "instanced", 1024}),
+                         [](const auto& p) { return std::string(p.param.name); });
+
+// The luminance of the image's four quadrants: top-left, top-right, bottom-left,
+// bottom-right.
+std::array<double, 4> quadrants(const Film& film) {
+    std::array<double, 4> q{};
+    for (int y = 0; y < film.height(); ++y)
+        for (int x = 0; x < film.width(); ++x) {
+            const int i = (y < film.height() / 2 ? 0 : 2) + (x < film.width() / 2 ? 0 : 1);
+            q[std::size_t(i)] += luminance(film.pixel(x, y));
+        }
+    return q;
+}
+
+using PbrtOrientation = lamina::testing::ScratchDirectoryTest;
+
+TEST_F(PbrtOrientation, AnEmitterOnPbrtsUpperLeftComesOutUpperLeft) {
+    // pbrt's camera space has +x = cross(up, dir): looking along +z with +y up, x < 0 is on
+    // the image's left. A mirroring Scale -1 1 1 before LookAt puts it on the right.
+    const std::string body =
+        "LookAt 0 0 0  0 0 1  0 1 0\nCamera \"perspective\" \"float fov\" 60\n"
+        "Film \"rgb\" \"integer xresolution\" 24 \"integer yresolution\" 16\n"
+        "Sampler \"independent\" \"integer pixelsamples\" 4\nWorldBegin\n"
+        "AttributeBegin\nAreaLightSource \"diffuse\" \"rgb L\" [1 1 1]\n"
+        "Translate -1.2 1.0 4\nShape \"sphere\" \"float radius\" 0.4\nAttributeEnd\n";
+    const SceneDesc plain = loadScene(write("plain.pbrt", body));
+    const SceneDesc mirrored = loadScene(write("mirrored.pbrt", "Scale -1 1 1\n" + body));
+    RenderOptions o;
+    const auto q = quadrants(*renderScene(plain, o).film);
+    EXPECT_GT(q[0], 0.0);
+    EXPECT_EQ(q[1] + q[2] + q[3], 0.0) << q[1] << " " << q[2] << " " << q[3];
+    const auto m = quadrants(*renderScene(mirrored, o).film);
+    EXPECT_GT(m[1], 0.0);
+    EXPECT_EQ(m[0] + m[2] + m[3], 0.0) << m[0] << " " << m[2] << " " << m[3];
+}
+
+using PbrtCommandLine = lamina::testing::ScratchDirectoryTest;
+
+TEST_F(PbrtCommandLine, ConvertWritesTheSceneThatRenders) {
+    write("m.ply",
+          "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float "
+          "y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+          "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+    const auto scene = write("s.pbrt",
+                             "LookAt 0 0 -3  0 0 0  0 1 0\nCamera \"perspective\"\n"
+                             "Film \"rgb\" \"integer xresolution\" 8 "
+                             "\"integer yresolution\" 8\nWorldBegin\n"
+                             "AreaLightSource \"diffuse\"\n"
+                             "Shape \"plymesh\" \"string filename\" \"m.ply\"\n");
+    std::filesystem::create_directories(dir_ / "out");
+    const auto out = dir_ / "out" / "s.json";
+    const CommandRun run = runLamina("convert " + scene.string() + " -o " + out.string());
+    EXPECT_EQ(run.exitCode, 0) << run.output;
+    // The mesh path is relative to the output's directory, and the written scene loads.
+    const Json written = readJsonFile(out);
+    EXPECT_EQ(written["shapes"][0]["file"], "../m.ply");
+    const SceneDesc fromJson = loadScene(out), fromPbrt = loadScene(scene);
+    ASSERT_EQ(fromJson.meshes.size(), 1u);
+    EXPECT_EQ(fromJson.meshes[0].positions, fromPbrt.meshes[0].positions);
+    EXPECT_EQ(fromJson.camera.handedness, Handedness::Left);
+    EXPECT_EQ(fromJson.film.width, 8);
+}
+
+TEST_F(PbrtCommandLine, ErrorsAndWarningsNameFileAndLine) {
+    const auto bad = write("bad.pbrt", "WorldBegin\n\nShape \"cylinder\"\n");
+    const CommandRun run =
+        runLaminaStderr("render " + bad.string() + " -o " + (dir_ / "x.exr").string());
+    EXPECT_EQ(run.exitCode, 1);
+    EXPECT_EQ(run.output, "lamina: error: " + bad.string() +
+                              ":3: Shape \"cylinder\" is not supported (lamina reads sphere, "
+                              "disk, trianglemesh, plymesh and bilinearmesh)\n");
+    const auto warned = write("warned.pbrt",
+                              "Integrator \"volpath\"\nWorldBegin\n"
+                              "LightSource \"point\"\n");
+    const CommandRun info = runLaminaStderr("info " + warned.string());
+    EXPECT_EQ(info.exitCode, 0) << info.output;
+    EXPECT_NE(info.output.find("lamina: warning: " + warned.string() +
+                               ":1: Integrator \"volpath\" became lamina's path tracer"),
+              std::string::npos)
+        << info.output;
+}
+
+}  // namespace
+}  // namespace lamina::render

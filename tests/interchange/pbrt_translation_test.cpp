@@ -1,0 +1,530 @@
+// What each pbrt-v4 construct becomes in lamina's scene document (docs/interchange.md,
+// "pbrt-v4"): the translated JSON compared exactly, the warnings of what was mapped, and the
+// errors, with file and line, of what is refused.
+#include <gtest/gtest.h>
+
+#include <zlib.h>
+
+#include <cmath>
+
+#include "lamina/render/camera.h"
+#include "lamina/scene/mesh_files.h"
+#include "lamina/interchange/scene_import.h"
+#include "lamina/spectral/cie.h"
+#include "lamina/spectral/emission_spectrum.h"
+#include "scratch_directory.h"
+
+namespace lamina::render {
+namespace {
+
+using lamina::testing::errorOf;
+
+// A minimal scene around the lines under test: a camera and a light, so that the translated
+// document also loads.
+constexpr const char* kPrelude =
+    "LookAt 0 0 0  0 0 1  0 1 0\nCamera \"perspective\"\nWorldBegin\n"
+    "LightSource \"point\" \"rgb I\" [1 1 1]\n";
+constexpr int kPreludeLines = 4;
+
+class PbrtTranslation : public lamina::testing::ScratchDirectoryTest {
+  protected:
+    ImportedScene import(const std::string& body, bool prelude = true) {
+        file_ = write("s.pbrt", (prelude ? kPrelude : "") + body);
+        return importScene(file_, dir_);
+    }
+    std::string importError(const std::string& body, bool prelude = true) {
+        return errorOf([&] { import(body, prelude); });
+    }
+    /// "FILE:LINE" of line `n` of the body (after the prelude).
+    std::string at(int n, bool prelude = true) const {
+        return (dir_ / "s.pbrt").string() + ":" + std::to_string(n + (prelude ? kPreludeLines : 0));
+    }
+    /// Whether the translated document loads as a lamina scene.
+    void expectLoads() {
+        EXPECT_NO_THROW(loadScene(file_)) << errorOf([&] { loadScene(file_); });
+    }
+    std::filesystem::path file_;
+};
+
+TEST_F(PbrtTranslation, DefaultsArePbrtV4s) {
+    const ImportedScene s = import("Shape \"sphere\"\n");
+    EXPECT_EQ(s.format, SceneFormat::Pbrt);
+    EXPECT_EQ(s.scene["film"], Json::parse(R"({"resolution": [1280, 720],
+        "filter": {"type": "gaussian", "radius": 1.5}})"));
+    EXPECT_EQ(s.scene["sampler"], Json::parse(R"({"type": "sobol", "spp": 16})"));
+    EXPECT_EQ(s.scene["integrator"], Json::parse(R"({"type": "path", "max_depth": 5})"));
+    EXPECT_EQ(s.scene["camera"], Json::parse(R"({"position": [0, 0, 0], "look_at": [0, 0, 1],
+        "up": [0, 1, 0], "fov": 90, "handedness": "left"})"));
+    EXPECT_EQ(s.scene["materials"]["pbrt_default"],
+              Json::parse(R"({"type": "lambert", "reflectance": 0.5})"));
+    EXPECT_EQ(s.scene["shapes"][0], Json::parse(R"({"type": "sphere", "center": [0, 0, 0],
+        "radius": 1, "material": "pbrt_default"})"));
+    EXPECT_EQ(s.scene["lights"][0], Json::parse(R"({"type": "point", "position": [0, 0, 0],
+        "intensity": [1, 1, 1]})"));
+    EXPECT_TRUE(s.warnings.empty());
+    expectLoads();
+}
+
+TEST_F(PbrtTranslation, OptionsBlock) {
+    const ImportedScene s = import(
+        "Film \"rgb\" \"integer xresolution\" 64 \"integer yresolution\" 32 \"string filename\" "
+        "\"a.exr\"\nSampler \"halton\" \"integer pixelsamples\" 8\nIntegrator \"bdpt\" "
+        "\"integer maxdepth\" 7 \"string lightsampler\" \"power\"\nPixelFilter \"triangle\"\n",
+        false);
+    EXPECT_EQ(s.scene["film"], Json::parse(R"({"resolution": [64, 32],
+        "filter": {"type": "triangle", "radius": 2}})"));
+    EXPECT_EQ(s.scene["sampler"], Json::parse(R"({"type": "sobol", "spp": 8})"));
+    EXPECT_EQ(s.scene["integrator"],
+              Json::parse(R"({"type": "bdpt", "max_depth": 7, "light_selection": "power"})"));
+    const std::string f = file_.string();
+    ASSERT_EQ(s.warnings.size(), 2u);
+    EXPECT_EQ(s.warnings[0],
+              f + ":1: the film's filename ignored: lamina writes the image named by -o");
+    EXPECT_EQ(s.warnings[1], f + ":2: Sampler \"halton\" became lamina's Owen-scrambled Sobol "
+                                 "sampler (same sample count)");
+    const ImportedScene b = import(
+        "PixelFilter \"box\"\nSampler \"stratified\" \"integer "
+        "xsamples\" 2 \"integer ysamples\" 3\nIntegrator \"volpath\"\n"
+        "PixelFilter \"gaussian\" \"float sigma\" 0.3\n",
+        false);
+    EXPECT_EQ(b.scene["film"]["filter"],
+              Json::parse(R"({"type": "gaussian", "radius": 1.5, "sigma": 0.3})"));
+    EXPECT_EQ(b.scene["sampler"]["spp"], 6);
+    EXPECT_EQ(b.scene["integrator"]["type"], "path");
+    EXPECT_EQ(b.warnings.back(), file_.string() +
+                                     ":3: Integrator \"volpath\" became lamina's "
+                                     "path tracer (the scene has no media)");
+    EXPECT_EQ(b.warnings[0], file_.string() +
+                                 ":4: PixelFilter given again: this one replaces "
+                                 "the one of line 1");
+    EXPECT_EQ(import("Integrator \"lightpath\" \"integer maxdepth\" 3\n", false)
+                  .scene["integrator"]["type"],
+              "light");
+}
+
+TEST_F(PbrtTranslation, FovSpansTheShorterAxis) {
+    const ImportedScene wide = import(
+        "Film \"rgb\" \"integer xresolution\" 40 \"integer yresolution\" 20\n"
+        "Camera \"perspective\" \"float fov\" 30\n",
+        false);
+    EXPECT_EQ(wide.scene["camera"]["fov"], 30.0);
+    const ImportedScene tall = import(
+        "Film \"rgb\" \"integer xresolution\" 20 \"integer yresolution\" 40\n"
+        "Camera \"perspective\" \"float fov\" 30\n",
+        false);
+    // Horizontal 30 degrees: tan(v / 2) = tan(15 degrees) x 40 / 20.
+    const double expected = 2 * std::atan(2 * std::tan(15.0 * M_PI / 180)) * 180 / M_PI;
+    EXPECT_NEAR(tall.scene["camera"]["fov"].get<double>(), expected, 1e-12);
+}
+
+TEST_F(PbrtTranslation, MirroredCameraIsRightHanded) {
+    // Exporters often write Scale -1 1 1 before LookAt to turn pbrt's left-handed camera
+    // into a right-handed one.
+    const ImportedScene s = import(
+        "Scale -1 1 1\nLookAt 0 0 0  0 0 1  0 1 0\nCamera "
+        "\"perspective\" \"float lensradius\" 0.1 "
+        "\"float focaldistance\" 3\n",
+        false);
+    EXPECT_EQ(s.scene["camera"], Json::parse(R"({"position": [0, 0, 0], "look_at": [0, 0, 1],
+        "up": [0, 1, 0], "fov": 90, "handedness": "right", "type": "thin_lens",
+        "aperture_radius": 0.1, "focus_distance": 3})"));
+    EXPECT_EQ(importError("Scale 1 2 1\nCamera \"perspective\"\n", false),
+              (dir_ / "s.pbrt").string() +
+                  ":2: a camera transform with a shear or an uneven scale is not "
+                  "supported");
+    EXPECT_EQ(importError("Camera \"orthographic\"\n", false),
+              at(1, false) + ": Camera \"orthographic\" is not supported (perspective)");
+}
+
+TEST(CameraHandedness, LeftHandedPutsUpCrossForwardOnTheRight) {
+    CameraDesc desc;  // at the origin, looking along +z, +y up
+    const Camera right(desc, 10, 10);
+    desc.handedness = Handedness::Left;
+    const Camera left(desc, 10, 10);
+    // A ray through the image's right edge: lamina's default goes towards forward x up = -x,
+    // the left-handed camera towards up x forward = +x; both keep +y at the top.
+    EXPECT_LT(right.generateRay(9.5f, 5.0f, {0.5f, 0.5f}).direction.x, 0.0f);
+    EXPECT_GT(left.generateRay(9.5f, 5.0f, {0.5f, 0.5f}).direction.x, 0.0f);
+    EXPECT_GT(left.generateRay(5.0f, 0.5f, {0.5f, 0.5f}).direction.y, 0.0f);
+    // The raster position of a direction is the inverse of generateRay.
+    const auto ray = left.generateRay(2.25f, 7.5f, {0.5f, 0.5f});
+    const auto raster = left.rasterPosition(ray.origin, ray.direction);
+    ASSERT_TRUE(raster);
+    EXPECT_NEAR(raster->x, 2.25f, 1e-4f);
+    EXPECT_NEAR(raster->y, 7.5f, 1e-4f);
+}
+
+TEST_F(PbrtTranslation, ShapesAndTheirTransforms) {
+    const ImportedScene s = import(
+        "AttributeBegin\nTranslate 1 2 3\nScale 2 2 2\nReverseOrientation\nShape \"sphere\" "
+        "\"float radius\" 0.5\nShape \"disk\" \"float radius\" 2 \"float height\" 1\nAttributeEnd\n"
+        "Translate 0 0 5\nShape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"normal N\" "
+        "[0 0 1 0 0 1 0 0 1] \"point2 uv\" [0 0 1 0 0 1]\n"
+        "Shape \"bilinearmesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0 1 1 0] \"integer indices\" "
+        "[0 1 2 3]\n");
+    const Json& shapes = s.scene["shapes"];
+    ASSERT_EQ(shapes.size(), 4u);
+    EXPECT_EQ(shapes[0], Json::parse(R"({"type": "sphere", "center": [1, 2, 3], "radius": 1,
+        "flip_normals": true, "material": "pbrt_default"})"));
+    EXPECT_EQ(shapes[1], Json::parse(R"({"type": "disk", "center": [1, 2, 5], "normal": [0, 0, -1],
+        "radius": 4, "material": "pbrt_default"})"));
+    EXPECT_EQ(shapes[2], Json::parse(R"({"type": "mesh", "positions": [[0, 0, 0], [1, 0, 0],
+        [0, 1, 0]], "faces": [[0, 1, 2]], "normals": [[0, 0, 1], [0, 0, 1], [0, 0, 1]],
+        "uvs": [[0, 0], [1, 0], [0, 1]], "material": "pbrt_default",
+        "transform": [{"matrix": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 5, 0, 0, 0, 1]}]})"));
+    EXPECT_EQ(shapes[3]["faces"], Json::parse("[[0, 1, 3, 2]]"));
+    expectLoads();
+}
+
+TEST_F(PbrtTranslation, MeshesAndPatches) {
+    write("m.ply",
+          "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float "
+          "y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+          "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+    const ImportedScene s = import(
+        "ReverseOrientation\nShape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] "
+        "\"normal N\" [0 0 1 0 0 1 0 0 1]\nShape \"plymesh\" \"string filename\" \"m.ply\"\n"
+        "Shape \"bilinearmesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0 1 1 0]\n"
+        "Shape \"bilinearmesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0 1 1 1]\n");
+    const Json& shapes = s.scene["shapes"];
+    // ReverseOrientation: the winding reversed and the normals negated.
+    EXPECT_EQ(shapes[0]["faces"], Json::parse("[[2, 1, 0]]"));
+    EXPECT_EQ(shapes[0]["normals"],
+              Json::parse("[[-0.0, -0.0, -1], [-0.0, -0.0, -1], [-0.0, -0.0, -1]]"));
+    EXPECT_EQ(shapes[1], Json::parse(R"({"type": "ply", "file": "m.ply",
+        "material": "pbrt_default"})"));
+    // p00, p10, p01, p11 -> the polygon p00 p10 p11 p01, reversed.
+    EXPECT_EQ(shapes[2]["faces"], Json::parse("[[2, 3, 1, 0]]"));
+    ASSERT_EQ(s.warnings.size(), 2u);
+    EXPECT_EQ(s.warnings[0], at(3) +
+                                 ": ReverseOrientation on an opaque plymesh ignored: it "
+                                 "changes nothing there");
+    EXPECT_EQ(s.warnings[1], at(5) + ": bilinearmesh: a non-planar patch became two triangles");
+    expectLoads();
+}
+
+TEST_F(PbrtTranslation, UnsupportedShapesAndParametersAreRefused) {
+    EXPECT_EQ(importError("\nShape \"cylinder\"\n"),
+              at(2) +
+                  ": Shape \"cylinder\" is not supported (lamina reads sphere, disk, "
+                  "trianglemesh, plymesh and bilinearmesh)");
+    EXPECT_EQ(importError("Shape \"sphere\" \"float zmax\" 0.5\n"),
+              at(1) + ": a partial sphere (zmin, zmax, phimax) is not supported");
+    EXPECT_EQ(importError("Shape \"sphere\" \"float wobble\" 0.5\n"),
+              at(1) + ": Shape \"sphere\": parameter \"float wobble\" is not supported");
+    EXPECT_EQ(importError("Shape \"sphere\" \"integer radius\" 2\n"),
+              at(1) +
+                  ": Shape \"sphere\": parameter \"integer radius\" has the wrong type: "
+                  "expected float");
+    EXPECT_EQ(importError("Scale 1 2 1\nShape \"sphere\"\n"),
+              at(2) +
+                  ": Shape \"sphere\" under a shear or an uneven scale is not supported "
+                  "(lamina's analytic shapes stay round)");
+    EXPECT_EQ(importError("Shape \"plymesh\" \"string filename\" \"absent.ply\"\n"),
+              at(1) +
+                  ": Shape \"plymesh\": parameter \"string filename\" \"absent.ply\": no "
+                  "such file");
+    EXPECT_EQ(importError("Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0 1 1 1]\n"),
+              at(1) + ": Shape \"trianglemesh\": no \"integer indices\"");
+    EXPECT_EQ(importError("Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] "
+                          "\"integer indices\" [0 1 3]\n"),
+              at(1) +
+                  ": Shape \"trianglemesh\": parameter \"integer indices\" has an index "
+                  "outside [0, 3)");
+    EXPECT_EQ(importError("NamedMaterial \"nothing\"\nShape \"sphere\"\n"),
+              at(1) + ": no material named \"nothing\"");
+}
+
+TEST_F(PbrtTranslation, AreaLights) {
+    const ImportedScene s = import(
+        "AttributeBegin\nAreaLightSource \"diffuse\" \"rgb L\" [1 2 3] \"float scale\" 2 "
+        "\"bool twosided\" true\nShape \"sphere\"\nAttributeEnd\n"
+        "AttributeBegin\nAreaLightSource \"diffuse\" \"float power\" 10\nShape \"disk\"\n"
+        "AttributeEnd\n"
+        "AttributeBegin\nAreaLightSource \"diffuse\" \"blackbody L\" 3000\nShape \"sphere\"\n"
+        "AttributeEnd\n"
+        "AttributeBegin\nAreaLightSource \"diffuse\" \"spectrum L\" \"stdillum-F11\"\n"
+        "Shape \"sphere\"\nAttributeEnd\n");
+    const Json& shapes = s.scene["shapes"];
+    EXPECT_EQ(shapes[0]["emission"], Json::parse(R"({"radiance": [2, 4, 6], "two_sided": true})"));
+    // pbrt-v4's power: radiance = power / (pi area) for a one-sided disk of radius 1.
+    EXPECT_NEAR(shapes[1]["emission"]["radiance"].get<double>(), 10 / (M_PI * M_PI), 1e-12);
+    EXPECT_EQ(shapes[2]["emission"],
+              Json::parse(R"({"radiance": {"blackbody": 3000, "scale": 1}})"));
+    EXPECT_EQ(shapes[3]["emission"],
+              Json::parse(R"({"radiance": {"illuminant": "F11", "scale": 1}})"));
+    expectLoads();
+    EXPECT_EQ(importError("AreaLightSource \"diffuse\" \"string filename\" \"e.exr\"\n"
+                          "Shape \"sphere\"\n"),
+              at(1) +
+                  ": AreaLightSource \"diffuse\": an emission image (filename) is not "
+                  "supported");
+    EXPECT_EQ(importError("AreaLightSource \"glow\"\nShape \"sphere\"\n"),
+              at(1) + ": AreaLightSource \"glow\" is not supported (lamina reads \"diffuse\")");
+}
+
+TEST_F(PbrtTranslation, TabulatedEmissionIsNormalisedToItsLuminance) {
+    // pbrt-v4 divides a light's spectrum by its luminance: "scale" nits whatever the values.
+    const ImportedScene s = import(
+        "AreaLightSource \"diffuse\" \"spectrum L\" [400 10 700 30] "
+        "\"float scale\" 2\nShape \"sphere\"\n");
+    const Json& radiance = s.scene["shapes"][0]["emission"]["radiance"];
+    // Closed with zeros outside 400-700 nm, where pbrt's spectrum is 0.
+    std::vector<double> nm, values;
+    for (const Json& pair : radiance["spectrum"]) {
+        nm.push_back(pair[0].get<double>());
+        values.push_back(pair[1].get<double>());
+    }
+    const std::vector<double> expectedNm = {360, 399.999, 400, 700, 700.001, 830};
+    const std::vector<double> expectedValues = {0, 0, 10, 30, 0, 0};
+    ASSERT_EQ(nm.size(), expectedNm.size());
+    for (std::size_t i = 0; i < nm.size(); ++i) {
+        EXPECT_NEAR(nm[i], expectedNm[i], 1e-9);
+        EXPECT_EQ(values[i], expectedValues[i]);
+    }
+    const EmissionSpectrum e =
+        EmissionSpectrum::tabulated(nm, values, radiance["scale"].get<double>(), "test");
+    const double y =
+        integrateAgainstCmf([&](double lambda) { return e(lambda); }).y / cieYIntegral();
+    EXPECT_NEAR(y, 2.0, 1e-9);
+}
+
+TEST_F(PbrtTranslation, Lights) {
+    const ImportedScene s = import(
+        "Translate 0 1 0\nLightSource \"spot\" \"point3 from\" [0 0 0] \"point3 to\" [0 0 1] "
+        "\"float coneangle\" 40 \"float conedelta\" 10 \"blackbody I\" 5000\n"
+        "LightSource \"distant\" \"point3 from\" [0 0 0] \"point3 to\" [0 -1 0] \"rgb L\" "
+        "[1 1 1] \"float illuminance\" 3\n"
+        "LightSource \"infinite\" \"rgb L\" [0.5 0.5 0.5]\n"
+        "LightSource \"point\" \"float power\" 100\n");
+    const Json& lights = s.scene["lights"];
+    EXPECT_EQ(lights[1], Json::parse(R"({"type": "spot", "position": [0, 1, 0],
+        "look_at": [0, 1, 1], "intensity": {"blackbody": 5000, "scale": 1}, "cone_angle": 40,
+        "falloff_start": 30})"));
+    EXPECT_EQ(lights[2], Json::parse(R"({"type": "directional", "direction": [0, -1, 0],
+        "irradiance": [3, 3, 3]})"));
+    EXPECT_EQ(lights[3], Json::parse(R"({"type": "environment", "radiance": [0.5, 0.5, 0.5]})"));
+    EXPECT_NEAR(lights[4]["intensity"].get<double>(), 100 / (4 * M_PI), 1e-12);
+    EXPECT_EQ(lights[4]["position"], Json::parse("[0, 1, 0]"));
+    expectLoads();
+    EXPECT_EQ(importError("LightSource \"goniometric\"\n"),
+              at(1) +
+                  ": LightSource \"goniometric\" is not supported (point, spot, distant, "
+                  "infinite)");
+}
+
+TEST_F(PbrtTranslation, EnvironmentImagesAreOctahedral) {
+    write("sky.exr", "not read by the importer");
+    const ImportedScene s = import(
+        "Rotate 90 1 0 0\nLightSource \"infinite\" \"string filename\" "
+        "\"sky.exr\" \"float scale\" 2\n");
+    EXPECT_EQ(s.scene["lights"][1],
+              Json::parse(R"({"type": "environment", "file": "sky.exr", "scale": 2,
+        "mapping": "equal_area_octahedral",
+        "transform": [{"matrix": [1, 0, 0, 0, 0, 6.123233995736766e-17, -1, 0,
+                                  0, 1, 6.123233995736766e-17, 0, 0, 0, 0, 1]}]})"));
+    const ImportedScene mirrored =
+        import("Scale -1 1 1\nLightSource \"infinite\" \"string filename\" \"sky.exr\"\n");
+    EXPECT_EQ(mirrored.scene["lights"][1]["transform"],
+              Json::parse(R"([{"matrix": [-1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]}])"));
+    EXPECT_EQ(
+        importError("Scale 2 2 2\nLightSource \"infinite\" \"string filename\" \"sky.exr\"\n"),
+        at(2) +
+            ": infinite: only rotations and reflections may orient an environment image (a scale "
+            "or shear was given)");
+}
+
+TEST_F(PbrtTranslation, Materials) {
+    std::string shapes;
+    for (const char* name : {"gold", "mirror", "glass", "thin", "paint", "car", "leaf", "both"})
+        shapes += std::string("NamedMaterial \"") + name + "\"\nShape \"sphere\"\n";
+    const ImportedScene t = import(
+        "MakeNamedMaterial \"gold\" \"string type\" \"conductor\" \"spectrum eta\" "
+        "\"metal-Au-eta\" \"spectrum k\" \"metal-Au-k\" \"float roughness\" 0.25\n"
+        "MakeNamedMaterial \"mirror\" \"string type\" \"conductor\" \"rgb reflectance\" "
+        "[0.64 0 0.25]\n"
+        "MakeNamedMaterial \"glass\" \"string type\" \"dielectric\" \"spectrum eta\" "
+        "\"glass-F11\" \"float uroughness\" 0.04 \"float vroughness\" 0.09\n"
+        "MakeNamedMaterial \"thin\" \"string type\" \"thindielectric\" \"float eta\" 1.33\n"
+        "MakeNamedMaterial \"paint\" \"string type\" \"coateddiffuse\" \"rgb reflectance\" "
+        "[0.5 0.2 0.1] \"float roughness\" 0.0\n"
+        "MakeNamedMaterial \"car\" \"string type\" \"coatedconductor\" \"float interface.eta\" 2 "
+        "\"float conductor.eta\" 0.4 \"float conductor.k\" 6 \"float thickness\" 0.1\n"
+        "MakeNamedMaterial \"leaf\" \"string type\" \"diffusetransmission\" \"float scale\" 2\n"
+        "MakeNamedMaterial \"both\" \"string type\" \"mix\" \"string materials\" [\"gold\" "
+        "\"paint\"] \"float amount\" 0.25\n"
+        "MakeNamedMaterial \"unused\" \"string type\" \"hair\"\n" +
+        shapes);
+    const Json& m = t.scene["materials"];
+    EXPECT_EQ(m["gold"], Json::parse(R"({"type": "conductor", "material": "Au", "alpha": 0.5})"));
+    // pbrt-v4's reflectance form: eta 1, k = 2 sqrt(r) / sqrt(1 - r).
+    EXPECT_EQ(m["mirror"]["eta"], 1.0);
+    EXPECT_NEAR(m["mirror"]["k"][0].get<double>(), 2 * 0.8 / 0.6, 1e-12);
+    EXPECT_EQ(m["mirror"]["k"][1], 0.0);
+    EXPECT_NEAR(m["mirror"]["k"][2].get<double>(), 2 * 0.5 / std::sqrt(0.75), 1e-12);
+    EXPECT_EQ(m["glass"]["ior"], Json::parse(R"({"sellmeier": {
+        "b": [1.73759695, 0.313747346, 1.89878101], "c": [0.013188707, 0.0623068142, 155.23629]}})"));
+    EXPECT_NEAR(m["glass"]["alpha_x"].get<double>(), 0.2, 1e-15);
+    EXPECT_NEAR(m["glass"]["alpha_y"].get<double>(), 0.3, 1e-15);
+    EXPECT_EQ(m["thin"], Json::parse(R"({"type": "thin_dielectric", "ior": 1.33})"));
+    EXPECT_EQ(m["paint"], Json::parse(R"({"type": "coated", "ior": 1.5, "thickness": 0.01,
+        "albedo": 0, "g": 0, "max_depth": 10, "samples": 1,
+        "base": {"type": "lambert", "reflectance": [0.5, 0.2, 0.1]}})"));
+    // The conductor's eta and k divided by the coat's index, as pbrt-v4 does.
+    EXPECT_EQ(m["car"], Json::parse(R"({"type": "coated", "ior": 2, "thickness": 0.1,
+        "albedo": 0, "g": 0, "max_depth": 10, "samples": 1,
+        "base": {"type": "conductor", "eta": 0.2, "k": 3}})"));
+    EXPECT_EQ(m["leaf"], Json::parse(R"({"type": "diffuse_transmission", "reflectance": 0.5,
+        "transmittance": 0.5})"));
+    EXPECT_EQ(m["both"]["type"], "mix");
+    EXPECT_EQ(m["both"]["weight"], 0.25);
+    EXPECT_EQ(m["both"]["a"], m["gold"]);
+    EXPECT_EQ(m["both"]["b"], m["paint"]);
+    EXPECT_FALSE(m.contains("unused"));
+    const std::vector<std::string> expected = {
+        at(1) +
+            ": metal-Au-eta/k became lamina's conductor \"Au\": Rakic et al. 1998 "
+            "Lorentz-Drude data, not pbrt-v4's measured table (colours differ slightly)",
+        at(3) + ": glass-F11 became the Sellmeier formula of SCHOTT SF11 (pbrt-v4 tabulates it)",
+        at(3) +
+            ": anisotropic roughness became alpha_x along the surface's u tangent and "
+            "alpha_y along v",
+        at(9) + ": material \"unused\" is used by no shape: not translated"};
+    EXPECT_EQ(t.warnings, expected);
+}
+
+TEST_F(PbrtTranslation, MaterialErrors) {
+    EXPECT_EQ(importError("Material \"hair\"\nShape \"sphere\"\n"),
+              at(1) +
+                  ": material \"hair\" is not supported (lamina reads diffuse, conductor, "
+                  "dielectric, thindielectric, coateddiffuse, coatedconductor, "
+                  "diffusetransmission, mix and interface)");
+    EXPECT_EQ(importError("Material \"conductor\" \"spectrum eta\" \"metal-CuZn-eta\" "
+                          "\"spectrum k\" \"metal-CuZn-k\"\nShape \"sphere\"\n"),
+              at(1) +
+                  ": Material \"conductor\": parameter \"spectrum eta\" \"metal-CuZn\" has "
+                  "no lamina equivalent (lamina knows metal-Ag, Al, Au and Cu)");
+    EXPECT_EQ(importError("Material \"conductor\" \"spectrum eta\" \"metal-Au-eta\"\n"
+                          "Shape \"sphere\"\n"),
+              at(1) +
+                  ": Material \"conductor\": parameter \"spectrum eta\" and the other of eta "
+                  "and k must name the same metal-* spectra (lamina has measured eta and k "
+                  "only together)");
+    EXPECT_EQ(importError("Material \"diffuse\" \"float sigma\" 3\nShape \"sphere\"\n"),
+              at(1) + ": Material \"diffuse\": parameter \"float sigma\" is not supported");
+    EXPECT_EQ(importError("Material \"dielectric\" \"spectrum eta\" [400 1.5 700 1.4]\n"
+                          "Shape \"sphere\"\n"),
+              at(1) +
+                  ": Material \"dielectric\": parameter \"spectrum eta\" a tabulated, "
+                  "wavelength-dependent eta is not supported (give a float or a named "
+                  "glass-* spectrum)");
+}
+
+TEST_F(PbrtTranslation, InterfaceShapesAreOmittedWithAWarning) {
+    const ImportedScene s = import("Material \"interface\"\nShape \"sphere\"\n");
+    EXPECT_TRUE(s.scene["shapes"].empty());
+    ASSERT_EQ(s.warnings.size(), 1u);
+    EXPECT_EQ(s.warnings[0], at(2) +
+                                 ": Shape \"sphere\" with the \"interface\" material (a media "
+                                 "boundary) omitted: lamina has no participating media");
+}
+
+TEST_F(PbrtTranslation, Textures) {
+    write("wood.png", "not read by the importer");
+    const ImportedScene s = import(
+        "Texture \"wood\" \"spectrum\" \"imagemap\" \"string filename\" \"wood.png\" "
+        "\"float uscale\" 2 \"float vscale\" 3 \"float scale\" 0.5\n"
+        "Texture \"mask\" \"float\" \"imagemap\" \"string filename\" \"wood.png\" "
+        "\"string encoding\" \"linear\" \"bool invert\" true\n"
+        "Texture \"checks\" \"spectrum\" \"checkerboard\" \"rgb tex1\" [1 0 0] \"float tex2\" 0.5\n"
+        "Texture \"both\" \"spectrum\" \"mix\" \"texture tex1\" \"wood\" \"texture tex2\" "
+        "\"checks\" \"texture amount\" \"mask\"\n"
+        "Texture \"half\" \"spectrum\" \"scale\" \"texture tex\" \"both\" \"float scale\" 0.5\n"
+        "Material \"diffuse\" \"texture reflectance\" \"half\"\n"
+        "Shape \"sphere\" \"texture alpha\" \"mask\"\nShape \"disk\" \"float alpha\" 0.5\n");
+    const Json& t = s.scene["textures"];
+    EXPECT_EQ(t["wood (image)"], Json::parse(R"j({"type": "image", "file": "wood.png",
+        "color_space": "srgb", "scale": [2, 3]})j"));
+    EXPECT_EQ(t["wood"],
+              Json::parse(R"j({"type": "scale", "texture": "wood (image)", "scale": 0.5})j"));
+    EXPECT_EQ(t["mask (float)"], Json::parse(R"j({"type": "image", "file": "wood.png",
+        "color_space": "linear", "scale": [1, 1], "invert": true})j"));
+    EXPECT_EQ(t["checks"], Json::parse(R"j({"type": "checkerboard", "a": [1, 0, 0], "b": 0.5,
+        "scale": [1, 1]})j"));
+    EXPECT_EQ(t["both"], Json::parse(R"j({"type": "mix", "a": "wood", "b": "checks",
+        "amount": "mask (float)"})j"));
+    EXPECT_EQ(t["half"], Json::parse(R"j({"type": "scale", "texture": "both", "scale": 0.5})j"));
+    EXPECT_EQ(s.scene["materials"]["pbrt_material_1"],
+              Json::parse(R"j({"type": "lambert", "reflectance": {"texture": "half"}})j"));
+    EXPECT_EQ(s.scene["shapes"][0]["alpha"], Json::parse(R"j({"texture": "mask (float)"})j"));
+    EXPECT_EQ(s.scene["shapes"][1]["alpha"], 0.5);
+    EXPECT_EQ(importError("Texture \"n\" \"spectrum\" \"marble\"\nMaterial \"diffuse\" "
+                          "\"texture reflectance\" \"n\"\nShape \"sphere\"\n"),
+              at(1) +
+                  ": texture \"marble\" is not supported (lamina reads imagemap, "
+                  "checkerboard, scale and mix)");
+    EXPECT_EQ(importError("Material \"diffuse\" \"texture reflectance\" \"none\"\n"
+                          "Shape \"sphere\"\n"),
+              at(1) + ": no spectrum texture named \"none\"");
+    EXPECT_EQ(importError("AreaLightSource \"diffuse\"\nShape \"sphere\" \"float alpha\" 0.5\n"),
+              at(2) + ": alpha on an emitting shape is not supported");
+}
+
+TEST_F(PbrtTranslation, ObjectsBecomeInstances) {
+    const ImportedScene s = import(
+        "ObjectBegin \"tri\"\nShape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0]\n"
+        "ObjectEnd\nObjectBegin \"never\"\nShape \"sphere\"\nObjectEnd\n"
+        "Translate 0 0 4\nObjectInstance \"tri\"\nTranslate 1 0 0\nObjectInstance \"tri\"\n");
+    EXPECT_EQ(s.scene["objects"], Json::parse(R"({"tri": [{"type": "mesh",
+        "positions": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "faces": [[0, 1, 2]],
+        "material": "pbrt_default"}]})"));
+    EXPECT_EQ(s.scene["shapes"], Json::parse(R"([
+        {"type": "instance", "object": "tri",
+         "transform": [{"matrix": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 4, 0, 0, 0, 1]}]},
+        {"type": "instance", "object": "tri",
+         "transform": [{"matrix": [1, 0, 0, 1, 0, 1, 0, 0, 0, 0, 1, 4, 0, 0, 0, 1]}]}])"));
+    ASSERT_EQ(s.warnings.size(), 1u);
+    EXPECT_EQ(s.warnings[0], at(4) + ": object \"never\" is never instanced: not translated");
+    EXPECT_EQ(importError("ObjectInstance \"ghost\"\n"),
+              at(1) + ": ObjectInstance \"ghost\": no such object");
+}
+
+TEST_F(PbrtTranslation, GzipCompressedPlyMeshesAreRead) {
+    const std::string ply =
+        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+        "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+        "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+    const auto file = dir_ / "m.ply.gz";
+    gzFile out = gzopen(file.string().c_str(), "wb");
+    ASSERT_TRUE(out);
+    gzwrite(out, ply.data(), unsigned(ply.size()));
+    gzclose(out);
+    MeshDesc mesh;
+    readPly(file, mesh);
+    ASSERT_EQ(mesh.triangles.size(), 1u);
+    EXPECT_EQ(mesh.positions[1], Vec3<float>(1, 0, 0));
+    const ImportedScene s = import("Shape \"plymesh\" \"string filename\" \"m.ply.gz\"\n");
+    EXPECT_EQ(s.scene["shapes"][0]["file"], "m.ply.gz");
+    expectLoads();
+    // A gzip header followed by garbage.
+    const auto broken = write("broken.ply.gz", std::string("\x1f\x8b\x08\x00\x00\x00\x00\x00"
+                                                           "\x00\x03garbage, not deflate",
+                                                           30));
+    EXPECT_NE(errorOf([&] { readPly(broken, mesh); }).find("not a valid gzip file"),
+              std::string::npos)
+        << errorOf([&] { readPly(broken, mesh); });
+}
+
+TEST_F(PbrtTranslation, ParserWarningsComeFirstAndInOrder) {
+    const ImportedScene s = import(
+        "Option \"bool wavefront\" true\nAccelerator \"bvh\"\n"
+        "Integrator \"volpath\"\nShape \"sphere\"\n");
+    const std::vector<std::string> expected = {
+        at(1) + ": Option ignored: pbrt's rendering options do not change lamina's scene",
+        at(2) + ": Accelerator ignored: lamina always uses Embree's BVH",
+        at(3) + ": Integrator \"volpath\" became lamina's path tracer (the scene has no media)"};
+    EXPECT_EQ(s.warnings, expected);
+}
+
+}  // namespace
+}  // namespace lamina::render
