@@ -3,8 +3,8 @@
 
 A benchmark, not a test (never run in CI): it needs Blender 3.4 from Debian
 (`apt-get install -y blender`). The lamina scene file is the one description: this script
-reads it and builds the same scene in Cycles with bpy (the settings of ../shared/PEERS.md
-that make Cycles unbiased and comparable), then for each scene
+reads it and builds the same scene in Cycles with bpy (with the settings that make Cycles
+unbiased and comparable: cycles_settings), then for each scene
 
   1. renders two calibration images with each renderer (16 and 64 spp) to learn its fixed
      time (BVH, scene sync) and its time per sample;
@@ -103,8 +103,10 @@ def rgb(value, what):
 
 
 def cycles_settings(scene, bpy_scene, spp, seed):
-    """The settings of ../shared/PEERS.md: CPU, 2 threads, no denoising, no adaptive sampling,
-    no clamping, no light threshold, no glossy blur, caustics on, a 1 px box filter."""
+    """The settings that make Cycles an unbiased reference comparable with lamina (its factory
+    defaults are biased; they clamp indirect light at 10, for one): CPU, 2 threads, no
+    denoising, no adaptive sampling, no clamping, no light threshold, no glossy blur, caustics
+    on, every bounce limit from max_depth, a 1 px box filter (lamina's box of radius 0.5)."""
     r = bpy_scene.render
     c = bpy_scene.cycles
     r.engine = "CYCLES"
@@ -179,7 +181,8 @@ def make_material(bpy, name, desc, emission):
             em.inputs["Strength"].default_value = scale
         else:
             # One-sided like lamina's: strength x (1 - Backfacing), so colour x strength is
-            # exactly the radiance on the front (PEERS.md).
+            # exactly the radiance on the front (Blender's area lamps are not radiometric,
+            # radiance = P / (4 A), hence a mesh with an Emission shader).
             geometry = nodes.new("ShaderNodeNewGeometry")
             front = nodes.new("ShaderNodeMath")
             front.operation = "SUBTRACT"
@@ -206,8 +209,9 @@ def make_material(bpy, name, desc, emission):
         if desc.get("fresnel") != "schlick" or "f82" in desc:
             raise Unsupported(f"{name}: a conductor is compared as f0 with \"fresnel\": \"schlick\"")
         # Principled metal: base colour = F0, its Fresnel blends towards white at grazing
-        # angles (not exactly Schlick in 3.4; PEERS.md). Roughness is Blender's: alpha = r^2,
-        # as lamina's.
+        # angles (not exactly Schlick in 3.4: it blends the base colour with the exact
+        # dielectric Fresnel of ior 1.5, so the two differ at grazing angles only). Roughness
+        # is Blender's: alpha = r^2, as lamina's.
         bsdf = nodes.new("ShaderNodeBsdfPrincipled")
         bsdf.distribution = "GGX"
         bsdf.inputs["Base Color"].default_value = rgb(desc["f0"], name) + (1.0,)
