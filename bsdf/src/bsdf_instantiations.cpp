@@ -1,4 +1,4 @@
-// Explicit instantiations of the BSDF templates for the four variants of DESIGN.md
+// Explicit instantiations of the BSDF templates for the four variants of the dual-mode design
 // (RGB/float, RGB/double, spectral/float, spectral/double): every model is compiled in all
 // of them, so a change that breaks one variant fails the build, not a later render.
 #include "lamina/bsdf/coated.h"

@@ -1,5 +1,5 @@
-// Every failure is exactly one line on stderr that starts "lamina: error:" (issue 14,
-// "Messages"): bad command lines, bad scene and material values whose echoed names hold
+// Every failure is exactly one line on stderr that starts "lamina: error:":
+// bad command lines, bad scene and material values whose echoed names hold
 // control characters, library errors (yaml-cpp, libpng through OpenImageIO, filesystem
 // errors) and usage errors, whose hint is on the same line.
 #include <gmock/gmock.h>

@@ -1,4 +1,4 @@
-// Figures that stand alone (issue 14): `bsdf plot`, the fresnel swatches and `spectrum --plot`
+// Figures that stand alone: `bsdf plot`, the fresnel swatches and `spectrum --plot`
 // are SVG figures whose title names what is drawn (material, mode), whose axes are named with
 // units and carry tick values, and whose series or rows are named.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Ctrl-C and SIGTERM lose no work (issue 14, "Lost work"): the first signal finishes the pass
+// Ctrl-C and SIGTERM lose no work: the first signal finishes the pass
 // in flight and writes the image, marked lamina:partial 1, and lamina exits with 128 + the
 // signal (130 for SIGINT); a signal that arrives while the EXR is being written lets the write
 // finish; no temporary file is ever left behind. The experiment commands stop before their

@@ -1,4 +1,4 @@
-// JSON Lines output is always valid JSON (issue 14, "Messages"): every line `lamina bsdf
+// JSON Lines output is always valid JSON: every line `lamina bsdf
 // eval|sample|albedo` and `lamina spectrum` print parses, and no number in it is missing
 // (a NaN would print as null), for extreme materials: smooth and rough along one axis,
 // grazing and opposite directions, index-matched glass, zero and huge k.

@@ -1,4 +1,4 @@
-// Every file a command will write is checked before the work starts (issue 14, "Lost work"):
+// Every file a command will write is checked before the work starts:
 // an output that is a directory, a preview or error log that cannot be created, a strategies
 // directory that is a file, an output that is the input scene under another name, an output
 // that is not .exr. Each is refused at once (the render is given 20 seconds: the old code ran

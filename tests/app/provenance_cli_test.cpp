@@ -1,4 +1,4 @@
-// Numbers a user can trust (issue 14): a render's EXR names everything that made it (every
+// Numbers a user can trust: a render's EXR names everything that made it (every
 // input file in the scene hash, every effective setting); `convergence` refuses a reference
 // correlated with its measured renders; `compare` matches channels by name and refuses a
 // display image against a linear one; `bsdf plot` draws the plane that contains wo.

@@ -1,4 +1,4 @@
-// Numerical stability on extreme inputs (issue: "Extremes"): every material over roughness
+// Numerical stability on extreme inputs: every material over roughness
 // alpha in {0, 1e-7, 1e-5, 1e-3, 0.01, 0.1, 0.5, 1}, conductor k in {0, 0.1, 3, 10, 20},
 // dielectric and thin_dielectric eta in {1, 1+1e-6, 1.0001, 1.33, 1.5, 2.42, 4} and their
 // reciprocals, diffuse_transmission with one or both albedos at 0, 1e-7 or 1, and

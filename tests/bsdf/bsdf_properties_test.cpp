@@ -121,7 +121,7 @@ INSTANTIATE_TEST_SUITE_P(AllBsdfs, BsdfProperties, ::testing::ValuesIn(testing::
                          caseName);
 
 TEST(DielectricTransportMode, RadianceScalesRefractionByInverseEtaSquared) {
-    // Mitsuba's check (PITFALLS.md): a smooth refraction weight w in importance mode is
+    // Mitsuba's check: a smooth refraction weight w in importance mode is
     // w / eta^2 in radiance mode.
     const DielectricBxdf<Spec> glass(1.5, MicrofacetDistribution<double>(NdfKind::Ggx, 0, 0));
     const Vec3d wo = testing::directionAt(40.0);

@@ -1,4 +1,4 @@
-// Hostile mesh and image files (issue 14): PLY counts that lie, faces longer than the vertex
+// Hostile mesh and image files: PLY counts that lie, faces longer than the vertex
 // array and indices beyond 2^31; OBJ faces with out-of-range indices; NaN, infinite and zero
 // values in meshes and images; image paths that are not regular files. Each is an
 // InputError naming the file and the first bad element, never a crash, a hang or a silent

@@ -197,7 +197,7 @@ TEST_F(BadIorFile, ErrorsNameTheFileAndTheProblem) {
     expectError(fs::path("/nonexistent/gold.yml"), "no such file");
 }
 
-// A negative n or k in a file is refused like an inline negative k (issue 14).
+// A negative n or k in a file is refused like an inline negative k.
 TEST_F(BadIorFile, NegativeNOrKIsRefused) {
     expectError(write("negative-k.csv", "400,1.5,0\n500,1.4,-0.1\n"), "row 2: k is negative");
     expectError(write("negative-n.csv", "400,-1.5,0\n500,1.4,0\n"), "row 1: n is negative");

@@ -1,7 +1,7 @@
 // The directional albedo of a BSDF by Monte Carlo (`lamina bsdf albedo`, lamina.Material.albedo):
 // the mean sample weight for wo at cos theta_o, split by the side wi leaves on (reflection
 // z > 0, transmission z < 0), with the standard error of the total per channel. The estimate
-// is unbiased because weight = eval / pdf (DESIGN.md, "The BSDF interface"); absorbed samples
+// is unbiased because weight = eval / pdf (docs/bsdf.md, "Interface"); absorbed samples
 // count as zero.
 #pragma once
 

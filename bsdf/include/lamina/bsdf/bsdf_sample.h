@@ -1,4 +1,4 @@
-// The types of the BSDF interface (DESIGN.md, "The BSDF interface").
+// The types of the BSDF interface (docs/bsdf.md, "Interface").
 #pragma once
 
 #include <cstdint>

@@ -1,5 +1,5 @@
 // MaterialDesc -> BSDF of a variant. Lobes with zero weight are dropped here, so a render
-// never evaluates them (DESIGN.md: a scene pays only for what it uses).
+// never evaluates them (a scene pays only for what it uses).
 #pragma once
 
 #include <memory>
@@ -145,7 +145,7 @@ class MaterialBuilder {
         if (c.fresnel == FresnelChoice::Auto && SpectrumContext<S>::kSpectral && exactPossible)
             return Fresnel<S>::conductor(ctx_.unbounded(o.eta), ctx_.unbounded(o.k));
         // Otherwise reduce to reflectances (never upsample eta and k as if they were albedos:
-        // PITFALLS.md, Mitsuba 3 #208).
+        // Mitsuba 3 issue 208).
         const auto [f0rgb, f82rgb] = conductorF0F82(o.eta, o.k);
         const S f0 = ctx_.reflectance(f0rgb);
         switch (c.fresnel) {

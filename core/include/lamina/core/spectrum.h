@@ -1,4 +1,4 @@
-// The two spectrum representations of the dual-mode design (DESIGN.md, "Dual mode"):
+// The two spectrum representations of the dual-mode design (docs/spectral.md):
 //   Rgb<T>                  three linear Rec.709 coefficients,
 //   SampledSpectrum<T, N>   values at the N wavelengths a path carries.
 // Both share one implementation (a fixed-size coefficient array with component-wise

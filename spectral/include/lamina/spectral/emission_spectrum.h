@@ -1,4 +1,4 @@
-// Emission given as a spectrum (DESIGN.md, "Dual mode": a named spectrum is reduced to RGB in
+// Emission given as a spectrum (docs/spectral.md: a named spectrum is reduced to RGB in
 // RGB mode): a CIE illuminant by name, a black body, or a list of (nm, value) pairs, times a
 // scale. Named illuminants and black bodies are normalised to luminance Y = 1 first, so
 // `scale` is their luminance; a list is taken as it is (W sr^-1 m^-2 nm^-1) times `scale`.

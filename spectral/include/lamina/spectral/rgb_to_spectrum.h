@@ -5,7 +5,7 @@
 //   unbounded    any rgb >= 0: m = max component, s = 2m * reflectance(rgb / 2m), so the
 //                scaled colour sits in the middle of the table (pbrt-v4's convention).
 //   illuminant   unbounded(rgb) * D65(lambda) / (Y of D65): RGB (1, 1, 1) is exactly the D65
-//                white and stays white (PITFALLS.md: pbrt-v4 #54, #82).
+//                white and stays white (pbrt-v4 issues 54 and 82).
 #pragma once
 
 #include <functional>

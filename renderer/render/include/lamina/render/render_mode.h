@@ -1,4 +1,4 @@
-// What differs between the render modes, and nothing else (DESIGN.md, "Dual mode"): how a
+// What differs between the render modes, and nothing else (docs/spectral.md): how a
 // path starts (spectral mode draws its wavelengths), how an RGB emission and a material become
 // the mode's spectrum, and what the film receives (Rec.709 in RGB mode, XYZ in spectral mode).
 // The integrators are templated on a RenderMode and contain no mode-specific code; they are
