@@ -4,26 +4,13 @@
 #include <cstdio>
 
 #include "lamina/bsdf/material_builder.h"
+#include "lamina/bsdf/material_kind.h"
 #include "lamina/render/render_memory.h"
 #include "lamina/scene/scene_description.h"
 
 namespace lamina::app {
 
 namespace {
-
-void collectSpectral(const MaterialDesc& m, std::vector<std::string>& out) {
-    if (const auto* c = std::get_if<ConductorMaterial>(&m.model))
-        if (c->optics.spectrum) out.push_back(c->optics.spectrum->name() + " (n, k)");
-    if (const auto* d = std::get_if<DielectricMaterial>(&m.model))
-        if (d->spectrum) out.push_back(d->spectrum->name() + " (dispersion)");
-    if (const auto* t = std::get_if<ThinDielectricMaterial>(&m.model))
-        if (t->spectrum) out.push_back(t->spectrum->name() + " (index per wavelength)");
-    if (const auto* x = std::get_if<MixMaterial>(&m.model)) {
-        collectSpectral(*x->a, out);
-        collectSpectral(*x->b, out);
-    }
-    if (const auto* c = std::get_if<CoatedMaterial>(&m.model)) collectSpectral(*c->base, out);
-}
 
 void run(const std::string& file) {
     const render::SceneDesc scene = render::loadScene(file);
@@ -120,7 +107,7 @@ void run(const std::string& file) {
         std::printf("  %s: %s; lobes: %s%s\n", scene.materialNames[i].c_str(),
                     scene.materials[i].type.c_str(), describeLobes(bsdf->flags()).c_str(),
                     used[i] ? "" : " (unused)");
-        if (used[i]) collectSpectral(scene.materials[i], spectral);
+        if (used[i]) collectSpectralData(scene.materials[i], spectral);
     }
     for (const auto& name : scene.unusedMaterialNames)
         std::printf("  %s: unused (never loaded)\n", name.c_str());

@@ -1,5 +1,6 @@
 // `coated`: a dielectric coat over a base material without transmission, with an optional
 // homogeneous medium between them (docs/bsdf.md, "coated").
+#include "lamina/bsdf/material_kind.h"
 #include "material_readers.h"
 
 namespace lamina {
@@ -61,5 +62,58 @@ MaterialModel readCoated(const JsonReader& r) {
     c.samples = r.integer("samples", 1, 1, 256);
     return c;
 }
+
+// The registrations of these types (material_kind.h; listed in material_kinds.cpp).
+
+namespace {
+
+std::vector<const MaterialDesc*> coatedNested(const MaterialModel& model) {
+    return {std::get<CoatedMaterial>(model).base.get()};
+}
+
+}  // namespace
+
+extern const MaterialKind kCoatedMaterial{"coated", readCoated,
+                                          R"json({
+  "type": "object",
+  "description": "A dielectric coat (smooth or rough) over a base without transmission, with an optional homogeneous Henyey-Greenstein medium between them, evaluated by a random walk (docs/bsdf.md, \"coated\").",
+  "required": ["type", "base"],
+  "additionalProperties": false,
+  "properties": {
+    "type": {"const": "coated"},
+    "ior": {"type": "number", "exclusiveMinimum": 0, "default": 1.5},
+    "distribution": {"enum": ["ggx", "beckmann"]},
+    "roughness": {"type": "number", "minimum": 0, "maximum": 1, "default": 0},
+    "alpha": {"type": "number", "minimum": 0, "maximum": 1},
+    "alpha_x": {"type": "number", "minimum": 0, "maximum": 1},
+    "alpha_y": {"type": "number", "minimum": 0, "maximum": 1},
+    "anisotropy": {"type": "number", "minimum": 0, "maximum": 0.99, "default": 0},
+    "g2": {"$ref": "#/$defs/g2"},
+    "base": {"$ref": "#/$defs/material"},
+    "thickness": {"type": "number", "minimum": 0, "maximum": 1000, "default": 0},
+    "albedo": {"$ref": "#/$defs/colour"},
+    "g": {"type": "number", "minimum": -0.99, "maximum": 0.99, "default": 0},
+    "max_depth": {"type": "integer", "minimum": 1, "maximum": 1000, "default": 10},
+    "samples": {"type": "integer", "minimum": 1, "maximum": 256, "default": 1}
+  },
+  "examples": [
+    {
+      "type": "coated",
+      "ior": 1.5,
+      "roughness": 0.1,
+      "base": {"type": "lambert", "reflectance": [0.6, 0.1, 0.1]}
+    },
+    {
+      "type": "coated",
+      "roughness": 0.2,
+      "thickness": 0.1,
+      "albedo": [0.8, 0.5, 0.2],
+      "g": 0.3,
+      "max_depth": 16,
+      "samples": 2,
+      "base": {"type": "conductor", "material": "Au", "roughness": 0.3}
+    }
+  ]
+})json", {},         nullptr, nullptr, coatedNested};
 
 }  // namespace lamina

@@ -1,5 +1,6 @@
 // `conductor`: a metal's optics in one of four forms, a microfacet NDF and a Fresnel model
 // (docs/bsdf.md, "Materials").
+#include "lamina/bsdf/material_kind.h"
 #include "material_readers.h"
 
 namespace lamina {
@@ -100,5 +101,77 @@ ConductorOptics ConductorOptics::fromSpectrum(std::shared_ptr<const IorSpectrum>
 bool ConductorOptics::etaKIsGrey() const {
     return eta[0] == eta[1] && eta[1] == eta[2] && k[0] == k[1] && k[1] == k[2];
 }
+
+// The registrations of these types (material_kind.h; listed in material_kinds.cpp).
+
+namespace {
+
+constexpr TexturableKey kConductorTextured[] = {{"roughness", TexturedParameter::Roughness}};
+
+void texturedConductor(MaterialModel& model, const TexturedValues& t) {
+    auto& c = std::get<ConductorMaterial>(model);
+    if (t.roughness) c.microfacet.alphaX = c.microfacet.alphaY = *t.roughness * *t.roughness;
+}
+
+void conductorSpectra(const MaterialModel& model, std::vector<std::string>& out) {
+    const auto& c = std::get<ConductorMaterial>(model);
+    if (c.optics.spectrum) out.push_back(c.optics.spectrum->name() + " (n, k)");
+}
+
+}  // namespace
+
+extern const MaterialKind kConductorMaterial{"conductor",       readConductor,
+                                             R"json({
+  "type": "object",
+  "description": "A metal: named, eta and k (numbers, [r, g, b] or spectra), an n/k file, or f0 and f82.",
+  "required": ["type"],
+  "additionalProperties": false,
+  "properties": {
+    "type": {"const": "conductor"},
+    "material": {"type": "string"},
+    "eta": {"$ref": "#/$defs/conductor_eta"},
+    "k": {"$ref": "#/$defs/conductor_k"},
+    "nk_file": {"type": "string"},
+    "f0": {"$ref": "#/$defs/unit_triple"},
+    "f82": {"$ref": "#/$defs/unit_triple"},
+    "distribution": {"enum": ["ggx", "beckmann", "blinn_phong"]},
+    "roughness": {"$ref": "#/$defs/textured_roughness"},
+    "alpha": {"type": "number", "minimum": 0, "maximum": 1},
+    "alpha_x": {"type": "number", "minimum": 0, "maximum": 1},
+    "alpha_y": {"type": "number", "minimum": 0, "maximum": 1},
+    "anisotropy": {"type": "number", "minimum": 0, "maximum": 0.99, "default": 0},
+    "g2": {"$ref": "#/$defs/g2"},
+    "sampling": {"$ref": "#/$defs/sampling"},
+    "fresnel": {"enum": ["schlick", "schlick_shadowed", "schlick_sg", "f82", "exact", "auto"]},
+    "multiscatter": {"type": "boolean", "default": false}
+  },
+  "examples": [
+    {"type": "conductor", "material": "Au", "roughness": 0.2, "multiscatter": true},
+    {
+      "type": "conductor",
+      "eta": [0.2, 0.9, 1.1],
+      "k": [3.9, 2.4, 2.2],
+      "alpha": 0.05,
+      "distribution": "beckmann",
+      "fresnel": "exact"
+    },
+    {
+      "type": "conductor",
+      "k": [[360, 2.0], [830, 4.0]],
+      "eta": 1.2,
+      "alpha_x": 0.1,
+      "alpha_y": 0.2
+    },
+    {
+      "type": "conductor",
+      "f0": [0.9, 0.6, 0.3],
+      "f82": 0.8,
+      "fresnel": "f82",
+      "g2": "separable",
+      "sampling": "vndf"
+    }
+  ]
+})json",          kConductorTextured,
+                                             texturedConductor, conductorSpectra};
 
 }  // namespace lamina

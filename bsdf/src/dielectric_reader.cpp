@@ -4,6 +4,7 @@
 #include <cmath>
 #include <tuple>
 
+#include "lamina/bsdf/material_kind.h"
 #include "lamina/spectral/cie.h"
 #include "material_readers.h"
 
@@ -115,5 +116,97 @@ MaterialModel readThinDielectric(const JsonReader& r) {
     std::tie(t.ior, t.spectrum) = readDielectricIor(r);
     return t;
 }
+
+// The registrations of these types (material_kind.h; listed in material_kinds.cpp).
+
+namespace {
+
+constexpr TexturableKey kDielectricTextured[] = {{"roughness", TexturedParameter::Roughness}};
+
+void texturedDielectric(MaterialModel& model, const TexturedValues& t) {
+    auto& d = std::get<DielectricMaterial>(model);
+    if (t.roughness) d.microfacet.alphaX = d.microfacet.alphaY = *t.roughness * *t.roughness;
+}
+
+void dielectricSpectra(const MaterialModel& model, std::vector<std::string>& out) {
+    const auto& d = std::get<DielectricMaterial>(model);
+    if (d.spectrum) out.push_back(d.spectrum->name() + " (dispersion)");
+}
+
+void thinDielectricSpectra(const MaterialModel& model, std::vector<std::string>& out) {
+    const auto& t = std::get<ThinDielectricMaterial>(model);
+    if (t.spectrum) out.push_back(t.spectrum->name() + " (index per wavelength)");
+}
+
+}  // namespace
+
+extern const MaterialKind kDielectricMaterial{"dielectric",       readDielectric,
+                                              R"json({
+  "type": "object",
+  "description": "Glass: ior as a number, a named glass or a dispersion formula, or an index file.",
+  "required": ["type"],
+  "additionalProperties": false,
+  "properties": {
+    "type": {"const": "dielectric"},
+    "ior": {
+      "oneOf": [
+        {"type": "number", "exclusiveMinimum": 0},
+        {"type": "string"},
+        {"$ref": "#/$defs/dispersion_formula"}
+      ]
+    },
+    "ior_file": {"type": "string"},
+    "distribution": {"enum": ["ggx", "beckmann"]},
+    "roughness": {"$ref": "#/$defs/textured_roughness"},
+    "alpha": {"type": "number", "minimum": 0, "maximum": 1},
+    "alpha_x": {"type": "number", "minimum": 0, "maximum": 1},
+    "alpha_y": {"type": "number", "minimum": 0, "maximum": 1},
+    "anisotropy": {"type": "number", "minimum": 0, "maximum": 0.99, "default": 0},
+    "g2": {"$ref": "#/$defs/g2"}
+  },
+  "examples": [
+    {"type": "dielectric", "ior": 1.5, "roughness": 0.1},
+    {"type": "dielectric", "ior": "bk7"},
+    {
+      "type": "dielectric",
+      "ior": {
+        "sellmeier": {
+          "b": [1.03961212, 0.231792344, 1.01046945],
+          "c": [0.00600069867, 0.0200179144, 103.560653]
+        }
+      },
+      "distribution": "beckmann",
+      "alpha": 0.05,
+      "g2": "separable"
+    },
+    {"type": "dielectric", "ior": {"cauchy": [1.5046, 0.0042]}}
+  ]
+})json",           kDielectricTextured,
+                                              texturedDielectric, dielectricSpectra};
+
+extern const MaterialKind kThinDielectricMaterial{"thin_dielectric", readThinDielectric,
+                                                  R"json({
+  "type": "object",
+  "description": "A thin slab of glass (pbrt-v4's ThinDielectricBxDF): mirror reflection and straight transmission with the slab's inter-reflections; ior as dielectric takes it.",
+  "required": ["type"],
+  "additionalProperties": false,
+  "properties": {
+    "type": {"const": "thin_dielectric"},
+    "ior": {
+      "oneOf": [
+        {"type": "number", "exclusiveMinimum": 0},
+        {"type": "string"},
+        {"$ref": "#/$defs/dispersion_formula"}
+      ]
+    },
+    "ior_file": {"type": "string"}
+  },
+  "examples": [
+    {"type": "thin_dielectric", "ior": 1.5},
+    {"type": "thin_dielectric", "ior": "bk7"},
+    {"type": "thin_dielectric", "ior": {"cauchy": [1.5046, 0.0042]}}
+  ]
+})json",          {},
+                                                  nullptr,           thinDielectricSpectra};
 
 }  // namespace lamina

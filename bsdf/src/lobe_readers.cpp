@@ -1,5 +1,6 @@
 // Materials of one lobe: the diffuse models (`lambert`, `oren_nayar`, `burley`, `frostbite`),
 // `diffuse_transmission` and the article's `phong` (docs/bsdf.md, "Materials").
+#include "lamina/bsdf/material_kind.h"
 #include "material_readers.h"
 
 namespace lamina {
@@ -39,5 +40,161 @@ MaterialModel readPhong(const JsonReader& r) {
     }
     return p;
 }
+
+// The registrations of these types (material_kind.h; listed in material_kinds.cpp).
+
+namespace {
+
+constexpr TexturableKey kLambertTextured[] = {{"reflectance", TexturedParameter::Color}};
+constexpr TexturableKey kRoughDiffuseTextured[] = {{"reflectance", TexturedParameter::Color},
+                                                   {"roughness", TexturedParameter::Roughness}};
+constexpr TexturableKey kPhongTextured[] = {{"reflectance", TexturedParameter::Color},
+                                            {"roughness", TexturedParameter::Roughness}};
+
+void texturedDiffuse(MaterialModel& model, const TexturedValues& t) {
+    auto& d = std::get<DiffuseMaterial>(model);
+    if (t.color) d.reflectance = *t.color;
+    if (t.roughness) d.roughness = *t.roughness;
+}
+
+void texturedDiffuseTransmission(MaterialModel& model, const TexturedValues& t) {
+    if (t.color) std::get<DiffuseTransmissionMaterial>(model).reflectance = *t.color;
+}
+
+void texturedPhong(MaterialModel& model, const TexturedValues& t) {
+    auto& p = std::get<PhongMaterial>(model);
+    if (t.color) p.reflectance = *t.color;
+    // The roughness as readPhong takes it: alpha = roughness^2, then Walter's shininess.
+    if (t.roughness)
+        p.shininess = PhongLobe<Rgb<double>>::shininessFromAlpha(*t.roughness * *t.roughness);
+}
+
+}  // namespace
+
+extern const MaterialKind kLambertMaterial{kDiffuseModelNames.name(DiffuseModel::Lambert),
+                                           readDiffuseModel<DiffuseModel::Lambert>,
+                                           R"json({
+  "type": "object",
+  "description": "A diffuse lobe alone: lambert.",
+  "required": ["type"],
+  "additionalProperties": false,
+  "properties": {
+    "type": {"const": "lambert"},
+    "reflectance": {"$ref": "#/$defs/textured_reflectance"}
+  },
+  "examples": [{"type": "lambert", "reflectance": [0.5, 0.5, 0.5]}]
+})json",
+                                           kLambertTextured, texturedDiffuse};
+
+extern const MaterialKind kOrenNayarMaterial{kDiffuseModelNames.name(DiffuseModel::OrenNayar),
+                                             readDiffuseModel<DiffuseModel::OrenNayar>,
+                                             R"json({
+  "type": "object",
+  "description": "A diffuse lobe alone: oren_nayar.",
+  "required": ["type"],
+  "additionalProperties": false,
+  "properties": {
+    "type": {"const": "oren_nayar"},
+    "reflectance": {"$ref": "#/$defs/textured_reflectance"},
+    "roughness": {"$ref": "#/$defs/textured_roughness"},
+    "alpha": {"type": "number", "minimum": 0, "maximum": 1},
+    "alpha_x": {"type": "number", "minimum": 0, "maximum": 1},
+    "alpha_y": {"type": "number", "minimum": 0, "maximum": 1},
+    "anisotropy": {"type": "number", "minimum": 0, "maximum": 0.99, "default": 0}
+  },
+  "examples": [{"type": "oren_nayar", "reflectance": 0.5, "roughness": 0.4}]
+})json",
+                                             kRoughDiffuseTextured, texturedDiffuse};
+
+extern const MaterialKind kBurleyMaterial{kDiffuseModelNames.name(DiffuseModel::Burley),
+                                          readDiffuseModel<DiffuseModel::Burley>,
+                                          R"json({
+  "type": "object",
+  "description": "A diffuse lobe alone: burley.",
+  "required": ["type"],
+  "additionalProperties": false,
+  "properties": {
+    "type": {"const": "burley"},
+    "reflectance": {"$ref": "#/$defs/textured_reflectance"},
+    "roughness": {"$ref": "#/$defs/textured_roughness"},
+    "alpha": {"type": "number", "minimum": 0, "maximum": 1},
+    "alpha_x": {"type": "number", "minimum": 0, "maximum": 1},
+    "alpha_y": {"type": "number", "minimum": 0, "maximum": 1},
+    "anisotropy": {"type": "number", "minimum": 0, "maximum": 0.99, "default": 0}
+  },
+  "examples": [{"type": "burley", "reflectance": 0.5, "roughness": 0.4}]
+})json",
+                                          kRoughDiffuseTextured, texturedDiffuse};
+
+extern const MaterialKind kFrostbiteMaterial{kDiffuseModelNames.name(DiffuseModel::Frostbite),
+                                             readDiffuseModel<DiffuseModel::Frostbite>,
+                                             R"json({
+  "type": "object",
+  "description": "A diffuse lobe alone: frostbite.",
+  "required": ["type"],
+  "additionalProperties": false,
+  "properties": {
+    "type": {"const": "frostbite"},
+    "reflectance": {"$ref": "#/$defs/textured_reflectance"},
+    "roughness": {"$ref": "#/$defs/textured_roughness"},
+    "alpha": {"type": "number", "minimum": 0, "maximum": 1},
+    "alpha_x": {"type": "number", "minimum": 0, "maximum": 1},
+    "alpha_y": {"type": "number", "minimum": 0, "maximum": 1},
+    "anisotropy": {"type": "number", "minimum": 0, "maximum": 0.99, "default": 0}
+  },
+  "examples": [{"type": "frostbite", "reflectance": 0.5, "roughness": 0.4}]
+})json",
+                                             kRoughDiffuseTextured, texturedDiffuse};
+
+namespace {
+constexpr TexturableKey kDiffuseTransmissionTextured[] = {
+    {"reflectance", TexturedParameter::Color}};
+}  // namespace
+
+extern const MaterialKind kDiffuseTransmissionMaterial{
+    "diffuse_transmission", readDiffuseTransmission,
+    R"json({
+  "type": "object",
+  "description": "Lambertian reflection on the side of the incoming direction plus Lambertian transmission to the other (pbrt-v4's DiffuseTransmissionBxDF); a texture applies to reflectance only.",
+  "required": ["type"],
+  "additionalProperties": false,
+  "properties": {
+    "type": {"const": "diffuse_transmission"},
+    "reflectance": {"$ref": "#/$defs/textured_reflectance"},
+    "transmittance": {"$ref": "#/$defs/reflectance"}
+  },
+  "examples": [
+    {"type": "diffuse_transmission", "reflectance": 0.25, "transmittance": 0.25},
+    {
+      "type": "diffuse_transmission",
+      "reflectance": [0.3, 0.5, 0.2],
+      "transmittance": {"spectrum": [[360, 0.1], [830, 0.6]]}
+    }
+  ]
+})json",
+    kDiffuseTransmissionTextured, texturedDiffuseTransmission};
+
+extern const MaterialKind kPhongMaterial{"phong", readPhong,
+                                         R"json({
+  "type": "object",
+  "description": "The article's Phong lobe: shininess, or a roughness converted to it.",
+  "required": ["type"],
+  "additionalProperties": false,
+  "properties": {
+    "type": {"const": "phong"},
+    "reflectance": {"$ref": "#/$defs/textured_reflectance"},
+    "shininess": {"type": "number", "minimum": 0, "maximum": 1000000.0},
+    "roughness": {"$ref": "#/$defs/textured_roughness"},
+    "alpha": {"type": "number", "minimum": 0, "maximum": 1},
+    "alpha_x": {"type": "number", "minimum": 0, "maximum": 1},
+    "alpha_y": {"type": "number", "minimum": 0, "maximum": 1},
+    "anisotropy": {"type": "number", "minimum": 0, "maximum": 0.99, "default": 0}
+  },
+  "examples": [
+    {"type": "phong", "reflectance": 0.5, "shininess": 50},
+    {"type": "phong", "reflectance": [0.4, 0.5, 0.6], "alpha": 0.2}
+  ]
+})json",
+                                         kPhongTextured, texturedPhong};
 
 }  // namespace lamina

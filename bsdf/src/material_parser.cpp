@@ -1,51 +1,17 @@
-// JSON -> MaterialDesc, with validation (docs/bsdf.md, "Materials"): the table of material
-// types, each with its reader (material_readers.h). A new material type is one entry here.
+// JSON -> MaterialDesc, with validation (docs/bsdf.md, "Materials"): the type's registration
+// (material_kind.h) reads its keys.
 #include <algorithm>
 #include <string_view>
 
+#include "lamina/bsdf/material_kind.h"
 #include "material_readers.h"
 
 namespace lamina {
 
-namespace {
-
-MaterialModel readMix(const JsonReader& r) {
-    MixMaterial m;
-    m.weight = r.number("weight", 0.5, Range::unit());
-    m.a = std::make_shared<MaterialDesc>(parseMaterial(r.child("a")));
-    m.b = std::make_shared<MaterialDesc>(parseMaterial(r.child("b")));
-    return m;
-}
-
-struct MaterialType {
-    std::string_view name;
-    MaterialModel (*read)(const JsonReader&);
-};
-
-// Every material type, in the order messages list them. The diffuse models are material types
-// of their own, under their model names.
-constexpr MaterialType kMaterialTypes[] = {
-    {"standard", readStandard},
-    {kDiffuseModelNames.name(DiffuseModel::Lambert), readDiffuseModel<DiffuseModel::Lambert>},
-    {kDiffuseModelNames.name(DiffuseModel::OrenNayar), readDiffuseModel<DiffuseModel::OrenNayar>},
-    {kDiffuseModelNames.name(DiffuseModel::Burley), readDiffuseModel<DiffuseModel::Burley>},
-    {kDiffuseModelNames.name(DiffuseModel::Frostbite), readDiffuseModel<DiffuseModel::Frostbite>},
-    {"conductor", readConductor},
-    {"diffuse_transmission", readDiffuseTransmission},
-    {"dielectric", readDielectric},
-    {"thin_dielectric", readThinDielectric},
-    {"phong", readPhong},
-    {"layered", readLayered},
-    {"mix", readMix},
-    {"coated", readCoated},
-};
-
-}  // namespace
-
 std::vector<std::string> materialTypeNames() {
     std::vector<std::string> names;
-    for (const auto& t : kMaterialTypes)
-        names.emplace_back(t.name);
+    for (const MaterialKind* kind : materialKinds())
+        names.emplace_back(kind->name);
     return names;
 }
 
@@ -54,9 +20,8 @@ MaterialDesc parseMaterial(const JsonReader& r) {
     MaterialDesc desc;
     r.noteNames("type", materialTypeNames());
     desc.type = r.requiredString("type");
-    const auto type = std::find_if(std::begin(kMaterialTypes), std::end(kMaterialTypes),
-                                   [&](const MaterialType& t) { return t.name == desc.type; });
-    if (type == std::end(kMaterialTypes))
+    const MaterialKind* type = findMaterialKind(desc.type);
+    if (!type)
         r.failAt("type", "unknown material type \"" + desc.type + "\"; expected one of " +
                              knownNames(materialTypeNames()));
     desc.model = type->read(r);

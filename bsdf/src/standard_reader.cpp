@@ -2,6 +2,7 @@
 // base with transmission, both read into StandardMaterial (docs/bsdf.md, "Materials").
 #include <cmath>
 
+#include "lamina/bsdf/material_kind.h"
 #include "material_readers.h"
 
 namespace lamina {
@@ -162,5 +163,192 @@ void prepareEnergyTables(StandardMaterial& s) {
             return r ? r->weight.average() : 0.0;
         }));
 }
+
+// The registrations of these types (material_kind.h; listed in material_kinds.cpp).
+
+namespace {
+
+constexpr TexturableKey kStandardTextured[] = {{"base_color", TexturedParameter::Color},
+                                               {"roughness", TexturedParameter::Roughness}};
+
+void texturedStandard(MaterialModel& model, const TexturedValues& t) {
+    auto& s = std::get<StandardMaterial>(model);
+    if (t.color) s.baseColor = *t.color;
+    if (t.roughness) s.microfacet.alphaX = s.microfacet.alphaY = *t.roughness * *t.roughness;
+}
+
+void standardSpectra(const MaterialModel& model, std::vector<std::string>& out) {
+    const auto& s = std::get<StandardMaterial>(model);
+    if (s.conductorBase && s.conductorBase->optics.spectrum)
+        out.push_back(s.conductorBase->optics.spectrum->name() + " (n, k)");
+}
+
+}  // namespace
+
+extern const MaterialKind kStandardMaterial{"standard",       readStandard,
+                                            R"json({
+  "type": "object",
+  "description": "A specular interface over a diffuse base with transmission (docs/bsdf.md).",
+  "required": ["type"],
+  "additionalProperties": false,
+  "properties": {
+    "type": {"const": "standard"},
+    "base_color": {"$ref": "#/$defs/textured_reflectance"},
+    "metalness": {"type": "number", "minimum": 0, "maximum": 1},
+    "transmission": {"type": "number", "minimum": 0, "maximum": 1},
+    "ior": {"type": "number", "exclusiveMinimum": 0},
+    "specular": {"type": "number", "minimum": 0, "maximum": 1},
+    "specular_color": {"$ref": "#/$defs/unit_triple"},
+    "diffuse_model": {"enum": ["lambert", "oren_nayar", "burley", "frostbite", "none"]},
+    "specular_model": {"enum": ["ggx", "beckmann", "phong", "none"]},
+    "roughness": {"$ref": "#/$defs/textured_roughness"},
+    "alpha": {"type": "number", "minimum": 0, "maximum": 1},
+    "alpha_x": {"type": "number", "minimum": 0, "maximum": 1},
+    "alpha_y": {"type": "number", "minimum": 0, "maximum": 1},
+    "anisotropy": {"type": "number", "minimum": 0, "maximum": 0.99, "default": 0},
+    "g2": {"$ref": "#/$defs/g2"},
+    "sampling": {"$ref": "#/$defs/sampling"},
+    "fresnel": {"$ref": "#/$defs/fresnel"},
+    "f82": {"$ref": "#/$defs/unit_triple"},
+    "f82_tint": {"$ref": "#/$defs/non_negative_triple"},
+    "multiscatter": {"type": "boolean", "default": false},
+    "coupling": {"$ref": "#/$defs/coupling"}
+  },
+  "examples": [
+    {"type": "standard", "base_color": [0.8, 0.2, 0.1], "roughness": 0.3, "metalness": 0.5},
+    {
+      "type": "standard",
+      "base_color": {"spectrum": [[360, 0.1], [830, 0.9]]},
+      "alpha": 0.1,
+      "anisotropy": 0.5,
+      "ior": 1.6,
+      "diffuse_model": "burley",
+      "coupling": "albedo"
+    },
+    {
+      "type": "standard",
+      "specular_color": [0.04, 0.04, 0.04],
+      "alpha_x": 0.1,
+      "alpha_y": 0.3,
+      "fresnel": "f82",
+      "f82_tint": [1, 0.9, 0.8],
+      "g2": "separable",
+      "sampling": "walter",
+      "multiscatter": true,
+      "specular": 0.5,
+      "specular_model": "beckmann",
+      "transmission": 0.2
+    }
+  ]
+})json",         kStandardTextured,
+                                            texturedStandard, standardSpectra};
+
+extern const MaterialKind kLayeredMaterial{"layered", readLayered,
+                                           R"json({
+  "type": "object",
+  "description": "The stack spelled out: an interface over a base, with transmission and a coupling.",
+  "required": ["type"],
+  "additionalProperties": false,
+  "properties": {
+    "type": {"const": "layered"},
+    "interface": {
+      "type": "object",
+      "additionalProperties": false,
+      "properties": {
+        "model": {"$ref": "#/$defs/specular_model"},
+        "roughness": {"type": "number", "minimum": 0, "maximum": 1},
+        "alpha": {"type": "number", "minimum": 0, "maximum": 1},
+        "alpha_x": {"type": "number", "minimum": 0, "maximum": 1},
+        "alpha_y": {"type": "number", "minimum": 0, "maximum": 1},
+        "anisotropy": {"type": "number", "minimum": 0, "maximum": 0.99, "default": 0},
+        "g2": {"$ref": "#/$defs/g2"},
+        "sampling": {"$ref": "#/$defs/sampling"},
+        "fresnel": {"$ref": "#/$defs/fresnel"},
+        "f82": {"$ref": "#/$defs/unit_triple"},
+        "f82_tint": {"$ref": "#/$defs/non_negative_triple"},
+        "multiscatter": {"type": "boolean", "default": false},
+        "ior": {"type": "number", "exclusiveMinimum": 0},
+        "f0": {"$ref": "#/$defs/unit_triple"}
+      }
+    },
+    "base": {
+      "type": "object",
+      "additionalProperties": false,
+      "properties": {
+        "type": {"$ref": "#/$defs/layered_base_type"},
+        "reflectance": {"$ref": "#/$defs/reflectance"},
+        "roughness": {"type": "number", "minimum": 0, "maximum": 1},
+        "alpha": {"type": "number", "minimum": 0, "maximum": 1},
+        "alpha_x": {"type": "number", "minimum": 0, "maximum": 1},
+        "alpha_y": {"type": "number", "minimum": 0, "maximum": 1},
+        "anisotropy": {"type": "number", "minimum": 0, "maximum": 0.99, "default": 0},
+        "material": {"type": "string"},
+        "eta": {"$ref": "#/$defs/conductor_eta"},
+        "k": {"$ref": "#/$defs/conductor_k"},
+        "nk_file": {"type": "string"},
+        "f0": {"$ref": "#/$defs/unit_triple"},
+        "f82": {"$ref": "#/$defs/unit_triple"},
+        "distribution": {"enum": ["ggx", "beckmann", "blinn_phong"]},
+        "g2": {"$ref": "#/$defs/g2"},
+        "sampling": {"$ref": "#/$defs/sampling"},
+        "fresnel": {"enum": ["schlick", "schlick_shadowed", "schlick_sg", "f82", "exact", "auto"]},
+        "multiscatter": {"type": "boolean", "default": false}
+      }
+    },
+    "transmission": {"type": "number", "minimum": 0, "maximum": 1},
+    "coupling": {"$ref": "#/$defs/coupling"}
+  },
+  "examples": [
+    {
+      "type": "layered",
+      "interface": {"model": "ggx", "roughness": 0.2, "ior": 1.5},
+      "base": {"type": "lambert", "reflectance": [0.7, 0.2, 0.2]},
+      "coupling": "albedo"
+    },
+    {
+      "type": "layered",
+      "interface": {
+        "model": "beckmann",
+        "alpha": 0.1,
+        "f0": 0.04,
+        "fresnel": "f82",
+        "f82": 0.9,
+        "g2": "separable",
+        "sampling": "vndf",
+        "multiscatter": true
+      },
+      "base": {"type": "oren_nayar", "reflectance": 0.5, "roughness": 0.5},
+      "transmission": 0.1
+    },
+    {
+      "type": "layered",
+      "interface": {"alpha_x": 0.1, "alpha_y": 0.2, "fresnel": "f82", "f82_tint": [1, 1, 1]}
+    },
+    {"type": "layered", "interface": {"anisotropy": 0.5}, "base": {"type": "burley", "alpha": 0.3}},
+    {"type": "layered", "base": {"type": "frostbite", "alpha_x": 0.2, "alpha_y": 0.2}},
+    {
+      "type": "layered",
+      "interface": {"roughness": 0.15, "ior": 1.5, "fresnel": "exact"},
+      "base": {"type": "conductor", "material": "Au", "roughness": 0.3},
+      "coupling": "albedo"
+    },
+    {
+      "type": "layered",
+      "interface": {"alpha": 0.02, "ior": 1.4},
+      "base": {
+        "type": "conductor",
+        "eta": [0.2, 0.9, 1.1],
+        "k": [3.9, 2.4, 2.2],
+        "alpha_x": 0.1,
+        "alpha_y": 0.3,
+        "distribution": "beckmann",
+        "g2": "separable",
+        "sampling": "walter",
+        "fresnel": "exact",
+        "multiscatter": true
+      }
+    }
+  ]
+})json",  {},          nullptr, standardSpectra};
 
 }  // namespace lamina

@@ -19,6 +19,7 @@ from ._lamina import (  # noqa: F401
     illuminants,
     ior,
     layering,
+    material_kinds,
     metals,
     random_numbers,
     read_image,

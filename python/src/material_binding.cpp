@@ -13,6 +13,7 @@
 #include "bindings.h"
 #include "lamina/bsdf/albedo_estimate.h"
 #include "lamina/bsdf/material_builder.h"
+#include "lamina/bsdf/material_kind.h"
 #include "lamina/core/error.h"
 #include "lamina/core/json_reader.h"
 #include "lamina/render/renderer.h"
@@ -357,6 +358,26 @@ void bindMaterial(py::module_& m) {
         py::arg("count"), py::arg("dims") = 3, py::arg("seed") = 0,
         "Uniform numbers in [0, 1), (count, dims), row by row from PCG32(seed): the sequence "
         "`lamina bsdf sample --seed` draws (u_lobe, then u_dir) for each sample");
+    m.def(
+        "material_kinds",
+        []() {
+            const py::object loads = py::module_::import("json").attr("loads");
+            py::list kinds;
+            for (const MaterialKind* kind : materialKinds()) {
+                py::dict d, texturable;
+                d["name"] = std::string(kind->name);
+                for (const TexturableKey& t : kind->texturable)
+                    texturable[py::str(std::string(t.key))] =
+                        std::string(kTexturedParameterNames.name(t.parameter));
+                d["texturable"] = texturable;
+                d["schema"] = loads(std::string(kind->schema));
+                kinds.append(d);
+            }
+            return kinds;
+        },
+        "Every material type, as the scene reader knows it: a list of dicts of name, "
+        "texturable (the keys a scene may take from a texture: 'color' or 'roughness') and "
+        "schema (its branch of docs/scene.schema.json)");
     py::class_<Material>(m, "Material",
                          "A material of the JSON material reader (docs/bsdf.md) in RGB or "
                          "spectral mode; directions in the local frame (z = normal)")

@@ -3,6 +3,7 @@ identity weight = eval / pdf, a chi-square test of sample() against pdf(), and t
 
 import json
 import math
+import pathlib
 
 import numpy as np
 import pytest
@@ -184,3 +185,19 @@ def test_lobes_and_info():
     assert m.lobes == ["specular_reflection", "specular_transmission"]
     info = m.info()
     assert info["type"] == "dielectric" and info["delta"]
+
+
+def test_material_kinds_are_the_readers_types_with_their_schema():
+    """lamina.material_kinds() is the registrations: every type builds a Material from the
+    examples of its schema branch, and the schema file holds exactly these branches."""
+    kinds = lamina.material_kinds()
+    names = [k["name"] for k in kinds]
+    assert names[0] == "standard" and "coated" in names and len(set(names)) == len(names)
+    with open(pathlib.Path(__file__).resolve().parents[2] / "docs" / "scene.schema.json") as f:
+        schema = json.load(f)
+    assert schema["$defs"]["material"]["oneOf"] == [k["schema"] for k in kinds]
+    for kind in kinds:
+        assert kind["schema"]["properties"]["type"] == {"const": kind["name"]}
+        assert set(kind["texturable"].values()) <= {"color", "roughness"}
+        for example in kind["schema"]["examples"]:
+            assert lamina.Material(example).info()["type"] == kind["name"]

@@ -4,7 +4,8 @@
 //   - every key a reader asks for is named by the schema where it is asked,
 //   - every key the schema names is asked for by a reader (on some scene or example),
 //   - a key read as a name has the reader's table of names as its enum, exactly,
-//   - the material types are the loader's table of types, each with examples it accepts.
+//   - the material types are the loader's table of types, each with examples it accepts, and
+//     each type's branch is the one its registration carries (material_kind.h).
 // That the shipped scenes and the examples are valid by the schema's own rules (ranges,
 // required keys) is checked with a JSON Schema validator (tests/app/validate_scene_schema.py).
 #include <gtest/gtest.h>
@@ -18,6 +19,7 @@
 
 #include "json_schema_map.h"
 #include "lamina/bsdf/material.h"
+#include "lamina/bsdf/material_kind.h"
 #include "lamina/core/input_file.h"
 #include "lamina/output/image_output.h"
 #include "lamina/scene/scene_description.h"
@@ -201,6 +203,45 @@ TEST_F(SceneSchema, TheMaterialTypesAreTheLoadersWithExamplesItAccepts) {
     EXPECT_EQ(asSet(schema_["$defs"]["material"]["properties"]["type"]["enum"]
                         .get<std::vector<std::string>>()),
               asSet(materialTypeNames()));
+}
+
+// The material part of the schema is written from the registrations
+// (scripts/update-material-schema.py): in their order, each branch the one its type carries.
+TEST_F(SceneSchema, EachMaterialBranchIsItsRegistrations) {
+    const Json& material = schema_["$defs"]["material"];
+    const auto kinds = materialKinds();
+    ASSERT_EQ(material["oneOf"].size(), kinds.size())
+        << "run scripts/update-material-schema.py after changing a material type";
+    for (std::size_t i = 0; i < kinds.size(); ++i) {
+        EXPECT_EQ(material["oneOf"][i], Json::parse(kinds[i]->schema))
+            << kinds[i]->name << ": docs/scene.schema.json differs from its registration; run "
+            << "scripts/update-material-schema.py";
+        EXPECT_EQ(material["properties"]["type"]["enum"][i], std::string(kinds[i]->name));
+    }
+}
+
+// A type's texturable keys are exactly the keys its branch of the schema lets name a texture.
+TEST_F(SceneSchema, TexturableKeysTakeATextureInTheSchema) {
+    int checked = 0;
+    for (const MaterialKind* kind : materialKinds()) {
+        const Json branch = Json::parse(kind->schema);
+        for (const TexturableKey& t : kind->texturable) {
+            const std::string key(t.key);
+            ASSERT_TRUE(branch["properties"].contains(key)) << kind->name << "." << key;
+            const std::string ref = branch["properties"][key].value("$ref", "");
+            EXPECT_TRUE(ref == "#/$defs/textured_reflectance" ||
+                        ref == "#/$defs/textured_roughness")
+                << kind->name << "." << key << " is texturable but its schema says " << ref;
+            ++checked;
+        }
+        for (const auto& [key, property] : branch["properties"].items()) {
+            if (property.value("$ref", "").starts_with("#/$defs/textured_")) {
+                EXPECT_TRUE(kind->texturedParameter(key))
+                    << kind->name << "." << key << " takes a texture in the schema, not in lamina";
+            }
+        }
+    }
+    EXPECT_GT(checked, 10);
 }
 
 }  // namespace

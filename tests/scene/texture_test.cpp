@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "lamina/bsdf/material_kind.h"
 #include "lamina/output/image_output.h"
 #include "lamina/scene/texture.h"
 #include "render_helpers.h"
@@ -125,6 +126,42 @@ TEST(Textures, ErrorsNameTheTexture) {
     } catch (const InputError& e) {
         EXPECT_THAT(e.what(), ::testing::HasSubstr("textures.img.file"));
     }
+}
+
+// Which keys take a texture is each material type's registration (material_kind.h): another key
+// naming a texture is refused there, with what the type and the others can take.
+TEST(Textures, OnlyATypesTexturableKeysTakeATexture) {
+    const auto errorOf = [](const std::string& material) {
+        try {
+            testing::sceneFromText(R"({"textures": {"r": {"type": "checkerboard"}},
+              "materials": {"m": )" +
+                                   material + R"(},
+              "shapes": [{"type": "sphere", "material": "m", "emission": {"radiance": 1}}]})");
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_THAT(errorOf(R"({"type": "conductor", "f0": {"texture": "r"}})"),
+                ::testing::HasSubstr("materials.m.f0: a conductor material cannot take \"f0\" "
+                                     "from a texture (it can: roughness)"));
+    EXPECT_THAT(errorOf(R"({"type": "lambert", "roughness": {"texture": "r"}})"),
+                ::testing::HasSubstr("a lambert material cannot take \"roughness\" from a "
+                                     "texture (it can: reflectance)"));
+    EXPECT_THAT(errorOf(R"({"type": "mix", "weight": {"texture": "r"},
+                             "a": {"type": "lambert"}, "b": {"type": "lambert"}})"),
+                ::testing::HasSubstr("a mix material cannot take \"weight\" from a texture; "
+                                     "textured parameters: standard (base_color / roughness)"));
+    for (const MaterialKind* kind : materialKinds())
+        for (const TexturableKey& t : kind->texturable) {
+            // Every registered key does take one (a conductor needs its optics, every other
+            // type's defaults are a material).
+            const std::string extra = kind->name == "conductor" ? R"(, "f0": 0.9)" : "";
+            const std::string material = std::string(R"({"type": ")") + std::string(kind->name) +
+                                         R"(", ")" + std::string(t.key) + R"(": {"texture": "r"})" +
+                                         extra + "}";
+            EXPECT_EQ(errorOf(material), "no error") << material;
+        }
 }
 
 TEST(Textures, UnusedTexturesAndMaterialsAreNeverLoaded) {

@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-#include "lamina/bsdf/phong.h"
+#include "lamina/bsdf/material_kind.h"
 #include "lamina/scene/scene_description.h"
 
 namespace lamina::render {
@@ -23,6 +23,23 @@ std::shared_ptr<const Texture> readOperand(
         return std::make_shared<ConstantTexture>(Rgb<float>(float(c[0]), float(c[1]), float(c[2])));
     }
     return std::make_shared<ConstantTexture>(Rgb<float>(float(t.number(key, fallback, range))));
+}
+
+// Why `key` of a material of type `kind` cannot name a texture, and what can.
+std::string texturableKeysMessage(const MaterialKind& kind, const std::string& key) {
+    std::string own;
+    for (const TexturableKey& t : kind.texturable)
+        own += (own.empty() ? "" : ", ") + std::string(t.key);
+    std::string all;
+    for (const MaterialKind* k : materialKinds()) {
+        if (k->texturable.empty()) continue;
+        std::string keys;
+        for (const TexturableKey& t : k->texturable)
+            keys += (keys.empty() ? "" : " / ") + std::string(t.key);
+        all += (all.empty() ? "" : ", ") + std::string(k->name) + " (" + keys + ")";
+    }
+    return "a " + std::string(kind.name) + " material cannot take \"" + key + "\" from a texture" +
+           (own.empty() ? "" : " (it can: " + own + ")") + "; textured parameters: " + all;
 }
 
 }  // namespace
@@ -89,21 +106,27 @@ std::shared_ptr<const Texture> readTexture(
     return texture;
 }
 
-// Replaces {"texture": name} in the material's texturable keys by a constant the material
-// parser accepts, then checks that the material can take the textures it names. Any other
-// object ({"spectrum": [[nm, value], ...]}, a measured reflectance) is the material parser's.
+// Replaces {"texture": name} in the keys the material's type may texture (its registration,
+// material_kind.h) by a constant the material parser accepts, then checks that the material
+// can take the textures it names. Any other object ({"spectrum": [[nm, value], ...]}, a
+// measured reflectance) is the material parser's.
 std::pair<MaterialDesc, MaterialTextures> readTexturedMaterial(const JsonReader& r,
                                                                const TextureLookup& textureIndex) {
     if (!r.value().is_object()) return {parseMaterial(r), {}};
+    const Json& type = r.value().value("type", Json());
+    const MaterialKind* kind =
+        type.is_string() ? findMaterialKind(type.get<std::string>()) : nullptr;
+    if (!kind) return {parseMaterial(r), {}};  // the parser names what is wrong with the type
     Json copy = r.value();
     MaterialTextures tex;
-    for (const char* key : {"base_color", "reflectance", "roughness"}) {
-        if (!copy.contains(key) || !copy[key].is_object() || !copy[key].contains("texture"))
-            continue;
-        const JsonReader t(r.value()[key], r.childPath(key), r.source());
+    for (const auto& [key, value] : r.value().items()) {
+        if (!value.is_object() || !value.contains("texture")) continue;
+        const auto parameter = kind->texturedParameter(key);
+        if (!parameter) r.failAt(key, texturableKeysMessage(*kind, key));
+        const JsonReader t(value, r.childPath(key), r.source());
         const std::string name = t.requiredString("texture");
         t.finish();
-        (std::string(key) == "roughness" ? tex.roughness : tex.color) =
+        (*parameter == TexturedParameter::Roughness ? tex.roughness : tex.color) =
             textureIndex(t, "texture", name);
         copy[key] = 0.5;
     }
@@ -123,52 +146,24 @@ std::pair<MaterialDesc, MaterialTextures> readTexturedMaterial(const JsonReader&
                      "multiscatter or the albedo coupling");
         if (copy.contains("anisotropy")) r.failAt("roughness", "a textured roughness is isotropic");
     }
-    if (tex.any() && (desc.type == "mix" || desc.type == "layered" || desc.type == "coated" ||
-                      (tex.color >= 0 && (desc.type == "conductor" || desc.type == "dielectric"))))
-        r.fail(
-            "textures apply to base_color / reflectance / roughness of standard, diffuse "
-            "and phong materials, to the reflectance of diffuse_transmission, and to the "
-            "roughness of conductors and dielectrics");
     return {std::move(desc), tex};
 }
 
 MaterialDesc texturedMaterial(const SceneDesc& scene, int material, const Vec2<float>& uv) {
     MaterialDesc desc = scene.materials[std::size_t(material)];
     const MaterialTextures& t = scene.materialTextures[std::size_t(material)];
-    const auto colour = [&]() {
+    TexturedValues values;
+    if (t.color >= 0) {
         const Rgb<float> c = scene.textures[std::size_t(t.color)]->evaluate(uv);
-        return RgbInput(std::clamp(double(c[0]), 0.0, 1.0), std::clamp(double(c[1]), 0.0, 1.0),
-                        std::clamp(double(c[2]), 0.0, 1.0));
-    };
-    const double roughness =
-        t.roughness >= 0
-            ? std::clamp(double(scene.textures[std::size_t(t.roughness)]->evaluate(uv)[0]), 0.0,
-                         1.0)
-            : 0.0;
-    const auto setRoughness = [&](MicrofacetParams& m) {
-        m.alphaX = m.alphaY = roughness * roughness;
-    };
-    std::visit(
-        [&](auto& m) {
-            using M = std::decay_t<decltype(m)>;
-            if constexpr (std::is_same_v<M, StandardMaterial>) {
-                if (t.color >= 0) m.baseColor = colour();
-                if (t.roughness >= 0) setRoughness(m.microfacet);
-            } else if constexpr (std::is_same_v<M, DiffuseMaterial>) {
-                if (t.color >= 0) m.reflectance = colour();
-                if (t.roughness >= 0) m.roughness = roughness;
-            } else if constexpr (std::is_same_v<M, DiffuseTransmissionMaterial>) {
-                if (t.color >= 0) m.reflectance = colour();
-            } else if constexpr (std::is_same_v<M, PhongMaterial>) {
-                if (t.color >= 0) m.reflectance = colour();
-                if (t.roughness >= 0)
-                    m.shininess = PhongLobe<Rgb<double>>::shininessFromAlpha(roughness * roughness);
-            } else if constexpr (std::is_same_v<M, ConductorMaterial> ||
-                                 std::is_same_v<M, DielectricMaterial>) {
-                if (t.roughness >= 0) setRoughness(m.microfacet);
-            }
-        },
-        desc.model);
+        values.color =
+            RgbInput(std::clamp(double(c[0]), 0.0, 1.0), std::clamp(double(c[1]), 0.0, 1.0),
+                     std::clamp(double(c[2]), 0.0, 1.0));
+    }
+    if (t.roughness >= 0)
+        values.roughness =
+            std::clamp(double(scene.textures[std::size_t(t.roughness)]->evaluate(uv)[0]), 0.0, 1.0);
+    // Only a type with texturable keys has textures (readTexturedMaterial).
+    findMaterialKind(desc.type)->applyTextures(desc.model, values);
     return desc;
 }
 

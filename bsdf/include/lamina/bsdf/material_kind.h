@@ -1,0 +1,69 @@
+// One registration per material type: everything the rest of lamina needs to know about a kind
+// of material, kept in the reader file of that type (bsdf/src/*_reader.cpp): its name (the JSON
+// "type"), its reader, its branch of the scene schema, the parameters a scene may take from a
+// texture and how a texture's value sets them, the spectral data `lamina info` reports and the
+// materials nested in it. The scene reader, the textures, `lamina info`, the schema test and the
+// Python module take what they need from materialKinds(), never from a type's name.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "lamina/bsdf/material.h"
+
+namespace lamina {
+
+/// What a textured parameter of a material is.
+enum class TexturedParameter {
+    Color,     ///< a reflectance colour: the texture's RGB, each channel clamped to [0, 1]
+    Roughness  ///< a perceptual roughness: the texture's first channel, clamped to [0, 1]
+};
+inline constexpr NameTable kTexturedParameterNames{
+    std::array{NameEntry{TexturedParameter::Color, "color"},
+               NameEntry{TexturedParameter::Roughness, "roughness"}}};
+
+/// A key of a material's JSON object that may name a texture ({"texture": name}).
+struct TexturableKey {
+    std::string_view key;
+    TexturedParameter parameter;
+};
+
+/// The textured parameters' values where a ray hit the surface (those the material has).
+struct TexturedValues {
+    std::optional<RgbInput> color;
+    std::optional<double> roughness;
+};
+
+struct MaterialKind {
+    std::string_view name;  ///< the JSON "type"
+    /// Reads the keys of one material object of this type (validated; InputError otherwise).
+    MaterialModel (*read)(const JsonReader&);
+    /// This type's branch of $defs.material in docs/scene.schema.json (JSON text); the schema
+    /// test holds the file to it and scripts/update-material-schema.py writes it there.
+    std::string_view schema;
+    /// The keys a scene may texture; empty: none.
+    std::span<const TexturableKey> texturable = {};
+    /// Sets the textured parameters of a model this type read (null when `texturable` is
+    /// empty).
+    void (*applyTextures)(MaterialModel&, const TexturedValues&) = nullptr;
+    /// Appends what `lamina info` names as the spectral data of a model of this type ("gold
+    /// (n, k)"); null: none.
+    void (*spectralData)(const MaterialModel&, std::vector<std::string>&) = nullptr;
+    /// The materials inside a model of this type (mix: a and b; coated: its base); null: none.
+    std::vector<const MaterialDesc*> (*nested)(const MaterialModel&) = nullptr;
+
+    /// The parameter `key` takes from a texture, if it may be textured.
+    std::optional<TexturedParameter> texturedParameter(std::string_view key) const;
+};
+
+/// Every material type, in the order messages and the schema list them (material_kinds.cpp).
+std::span<const MaterialKind* const> materialKinds();
+/// The type called `name`; nullptr if there is none.
+const MaterialKind* findMaterialKind(std::string_view name);
+/// The spectral data of `m` and of every material nested in it, for `lamina info`.
+void collectSpectralData(const MaterialDesc& m, std::vector<std::string>& out);
+
+}  // namespace lamina

@@ -1,0 +1,47 @@
+// `mix`: a stochastic blend of two materials (docs/bsdf.md, "Materials").
+#include "lamina/bsdf/material_kind.h"
+#include "material_readers.h"
+
+namespace lamina {
+
+namespace {
+
+MaterialModel readMix(const JsonReader& r) {
+    MixMaterial m;
+    m.weight = r.number("weight", 0.5, Range::unit());
+    m.a = std::make_shared<MaterialDesc>(parseMaterial(r.child("a")));
+    m.b = std::make_shared<MaterialDesc>(parseMaterial(r.child("b")));
+    return m;
+}
+
+std::vector<const MaterialDesc*> mixNested(const MaterialModel& model) {
+    const auto& m = std::get<MixMaterial>(model);
+    return {m.a.get(), m.b.get()};
+}
+
+}  // namespace
+
+// The registration of `mix` (material_kind.h; listed in material_kinds.cpp).
+extern const MaterialKind kMixMaterial{"mix",    readMix,
+                                       R"json({
+  "type": "object",
+  "description": "A stochastic blend of two materials: a with probability 1 - weight, b with weight.",
+  "required": ["type"],
+  "additionalProperties": false,
+  "properties": {
+    "type": {"const": "mix"},
+    "weight": {"type": "number", "minimum": 0, "maximum": 1, "default": 0.5},
+    "a": {"$ref": "#/$defs/material"},
+    "b": {"$ref": "#/$defs/material"}
+  },
+  "examples": [
+    {
+      "type": "mix",
+      "weight": 0.3,
+      "a": {"type": "lambert", "reflectance": 0.8},
+      "b": {"type": "conductor", "material": "Cu"}
+    }
+  ]
+})json", {},      nullptr, nullptr, mixNested};
+
+}  // namespace lamina
