@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <iostream>
@@ -16,6 +17,7 @@
 #include "lamina/spectral/cie.h"
 #include "lamina/spectral/color_space.h"
 #include "lamina/spectral/rgb_to_spectrum.h"
+#include "measured_metals.h"
 
 namespace lamina {
 
@@ -235,13 +237,52 @@ IorSpectrum sellmeierIor(const std::vector<double>& b, const std::vector<double>
     return IorSpectrum("Sellmeier", formulaCurve(2, std::move(coefficients)), noAbsorption, true);
 }
 
+namespace {
+
+// "JohnsonChristy1972" -> "Johnson and Christy 1972", "Rakic1995" -> "Rakic 1995".
+std::string citation(const std::string& source) {
+    std::string out;
+    for (std::size_t i = 0; i < source.size(); ++i) {
+        const char c = source[i];
+        if (i > 0 && std::isupper(static_cast<unsigned char>(c))) out += " and ";
+        if (i > 0 && std::isdigit(static_cast<unsigned char>(c)) &&
+            !std::isdigit(static_cast<unsigned char>(source[i - 1])))
+            out += ' ';
+        out += c;
+    }
+    return out;
+}
+
+IorSpectrum lorentzDrudeSpectrum(const std::string& metal) {
+    return IorSpectrum(
+        metal + " (Rakic 1998 Lorentz-Drude)",
+        [metal](double nm) { return lorentzDrudeIndex(metal, nm).real(); },
+        [metal](double nm) { return lorentzDrudeIndex(metal, nm).imag(); }, true);
+}
+
+}  // namespace
+
 std::optional<IorSpectrum> namedIor(const std::string& name) {
-    if (const LdMetal* m = findLdMetal(name)) {
-        const std::string metal = m->name;
-        return IorSpectrum(
-            metal + " (Rakic 1998 Lorentz-Drude)",
-            [metal](double nm) { return lorentzDrudeIndex(metal, nm).real(); },
-            [metal](double nm) { return lorentzDrudeIndex(metal, nm).imag(); }, true);
+    for (const MeasuredMetal& m : measuredMetals()) {
+        if (name != m.metal) continue;
+        std::vector<double> nm, n, k;
+        for (const MeasuredNk& s : m.samples) {
+            nm.push_back(s.nm);
+            n.push_back(s.n);
+            k.push_back(s.k);
+        }
+        const std::string what = name + " (" + citation(m.source) + ")";
+        return IorSpectrum(what, tabulatedCurve(nm, n, what),
+                           tabulatedCurve(nm, std::move(k), what), true);
+    }
+    // The fits: under their own names ("Cu_LD"), and under the plain name for the metals
+    // without measured data (Be, Pd).
+    const std::string ldSuffix = "_LD";
+    if (name.size() > ldSuffix.size() && name.ends_with(ldSuffix)) {
+        const std::string metal = name.substr(0, name.size() - ldSuffix.size());
+        if (findLdMetal(metal)) return lorentzDrudeSpectrum(metal);
+    } else if (findLdMetal(name)) {
+        return lorentzDrudeSpectrum(name);
     }
     for (const auto& g : kGlasses)
         if (name == g.name)
@@ -251,8 +292,13 @@ std::optional<IorSpectrum> namedIor(const std::string& name) {
 
 std::vector<std::string> namedMetalNames() {
     std::vector<std::string> names;
+    for (const MeasuredMetal& m : measuredMetals())
+        names.emplace_back(m.metal);
     for (const auto& m : kLdMetals)
-        names.emplace_back(m.name);
+        if (std::find(names.begin(), names.end(), m.name) == names.end())
+            names.emplace_back(m.name);
+    for (const auto& m : kLdMetals)
+        names.emplace_back(std::string(m.name) + "_LD");
     return names;
 }
 

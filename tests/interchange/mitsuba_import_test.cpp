@@ -7,8 +7,8 @@
 #include <cmath>
 #include <fstream>
 
-#include "lamina/lights/environment_map.h"
 #include "lamina/interchange/scene_import.h"
+#include "lamina/lights/environment_map.h"
 #include "lamina/scene/scene_readers.h"
 #include "scratch_directory.h"
 #include "source_files.h"
@@ -515,7 +515,9 @@ TEST_F(MitsubaBsdf, ConductorPresets) {
                std::string(kLight));
     EXPECT_EQ(au.scene["materials"]["m"],
               Json::parse(R"({"type": "conductor", "material": "Au"})"));
-    EXPECT_EQ(warningsWith(au, "material \"Au\" became lamina's \"Au\" (Rakic 1998").size(), 1u);
+    EXPECT_EQ(
+        warningsWith(au, "material \"Au\" became lamina's \"Au\" (lamina's measured table").size(),
+        1u);
     EXPECT_EQ(
         material("<bsdf type=\"conductor\"><string name=\"material\" value=\"Ni_palik\"/></bsdf>")
             ["material"],

@@ -95,6 +95,18 @@ TEST(PbrtParser, TransformDirectivesComposeAsPbrtDoes) {
                  glm::scale(glm::translate(glm::dmat4(1.0), {4, 5, 6}), {2, 3, 4}));
 }
 
+// Identity resets the current transform (pbrt-v4 scene.cpp), as published scenes use it
+// between a camera and the world.
+TEST(PbrtParser, IdentityResetsTheTransform) {
+    const ParsedScene s = parse(
+        "Translate 1 2 3\nScale 2 2 2\nIdentity\nShape \"sphere\"\nIdentity\n"
+        "Rotate 90 0 0 1\nShape \"sphere\"\n");
+    ASSERT_EQ(s.shapes.size(), 2u);
+    expectMatrix(s.shapes[0].entity.transform, glm::dmat4(1.0));
+    expectMatrix(s.shapes[1].entity.transform,
+                 glm::rotate(glm::dmat4(1.0), glm::radians(90.0), glm::dvec3(0, 0, 1)));
+}
+
 TEST(PbrtParser, LookAtIsCameraFromWorld) {
     const ParsedScene s = parse("LookAt 1 2 3  1 2 4  0 1 0\nCamera \"perspective\"\n");
     ASSERT_TRUE(s.camera);
@@ -152,6 +164,15 @@ TEST(PbrtParser, ParametersAreTyped) {
     EXPECT_EQ(errorOf([&] { p.integer("indices", 0); }),
               "s.pbrt:1: Shape \"trianglemesh\": parameter \"integer indices\" expected one "
               "value, got 3");
+}
+
+// White space around a declaration's type and name is allowed, as pbrt-v4 allows it: published
+// hair scenes write " float beta_n".
+TEST(PbrtParser, ParameterDeclarationsMayHaveWhiteSpaceAround) {
+    const ParsedScene s = parse("Shape \"sphere\" \" float radius\" 2 \"float zmin \" -1\n");
+    const ParamList& p = s.shapes[0].entity.params;
+    EXPECT_EQ(p.number("radius", 0), 2);
+    EXPECT_EQ(p.number("zmin", 0), -1);
 }
 
 TEST(PbrtParser, ParameterErrorsNameFileAndLine) {

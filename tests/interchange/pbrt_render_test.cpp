@@ -13,8 +13,8 @@
 
 #include "cli_helpers.h"
 #include "lamina/experiments/estimator_agreement.h"
-#include "lamina/render/renderer.h"
 #include "lamina/interchange/scene_import.h"
+#include "lamina/render/renderer.h"
 #include "scratch_directory.h"
 #include "source_files.h"
 

@@ -7,9 +7,9 @@
 
 #include <cmath>
 
+#include "lamina/interchange/scene_import.h"
 #include "lamina/render/camera.h"
 #include "lamina/scene/mesh_files.h"
-#include "lamina/interchange/scene_import.h"
 #include "lamina/spectral/cie.h"
 #include "lamina/spectral/emission_spectrum.h"
 #include "scratch_directory.h"
@@ -292,7 +292,7 @@ TEST_F(PbrtTranslation, TabulatedEmissionIsNormalisedToItsLuminance) {
 TEST_F(PbrtTranslation, Lights) {
     const ImportedScene s = import(
         "Translate 0 1 0\nLightSource \"spot\" \"point3 from\" [0 0 0] \"point3 to\" [0 0 1] "
-        "\"float coneangle\" 40 \"float conedelta\" 10 \"blackbody I\" 5000\n"
+        "\"float coneangle\" 40 \"float conedeltaangle\" 10 \"blackbody I\" 5000\n"
         "LightSource \"distant\" \"point3 from\" [0 0 0] \"point3 to\" [0 -1 0] \"rgb L\" "
         "[1 1 1] \"float illuminance\" 3\n"
         "LightSource \"infinite\" \"rgb L\" [0.5 0.5 0.5]\n"
@@ -383,8 +383,8 @@ TEST_F(PbrtTranslation, Materials) {
     EXPECT_FALSE(m.contains("unused"));
     const std::vector<std::string> expected = {
         at(1) +
-            ": metal-Au-eta/k became lamina's conductor \"Au\": Rakic et al. 1998 "
-            "Lorentz-Drude data, not pbrt-v4's measured table (colours differ slightly)",
+            ": metal-Au-eta/k became lamina's conductor \"Au\": lamina's measured table, not "
+            "pbrt-v4's (colours may differ slightly)",
         at(3) + ": glass-F11 became the Sellmeier formula of SCHOTT SF11 (pbrt-v4 tabulates it)",
         at(3) +
             ": anisotropic roughness became alpha_x along the surface's u tangent and "

@@ -12,6 +12,7 @@
 
 #include "lamina/core/error.h"
 #include "lamina/core/fresnel_equations.h"
+#include "lamina/spectral/color_difference.h"
 #include "lamina/spectral/ior_spectrum.h"
 
 namespace lamina {
@@ -236,6 +237,56 @@ TEST_F(BadIorFile, YamlExceptionsBecomeInputErrors) {
     ASSERT_FALSE(bytes.empty());
     // The fuzz target's first byte chooses the format (odd: YAML); the rest is the file.
     expectError(write("fuzz-regression.yml", bytes.substr(1)), "malformed YAML");
+}
+
+}  // namespace
+}  // namespace lamina
+
+namespace lamina {
+namespace {
+
+// The named metals are measured data: a named copper is Johnson and Christy's copper, not the
+// Lorentz-Drude fit, whose F0 (0.95, 0.75, 0.48) is 13 CIEDE2000 from the measurement and
+// about 5 from gold: a copper that rendered gold. The colours compared are the RGB-mode F0
+// (conductorF0F82: the exact spectral Fresnel reflectance at normal incidence under D65).
+TEST(NamedMetals, CopperIsMeasuredCopperNotGold) {
+    REQUIRE_SHARED_DATA();
+    const auto f0 = [](const IorSpectrum& ior) { return conductorF0F82(ior).first; };
+    const Rgb<double> measured = f0(loadIorFile(nkDir() / "Cu_JohnsonChristy1972.yml"));
+    const Rgb<double> named = f0(*namedIor("Cu"));
+    EXPECT_LT(ciede2000Rec709(named, measured), 2.0);
+    EXPECT_GT(ciede2000Rec709(named, f0(*namedIor("Au"))), 10.0);
+    // The fit stays available under its own name, and is the colour the measurement refutes.
+    EXPECT_GT(ciede2000Rec709(f0(*namedIor("Cu_LD")), measured), 10.0);
+}
+
+// Every measured named metal is its file in ../shared/data/nk (the refractiveindex.info tables
+// the repository's spectral/data/nk copies), at every sample and between them.
+TEST(NamedMetals, MeasuredMetalsAreTheirTables) {
+    REQUIRE_SHARED_DATA();
+    for (const auto& [metal, file] :
+         std::vector<std::pair<std::string, std::string>>{{"Ag", "Ag_JohnsonChristy1972"},
+                                                          {"Au", "Au_JohnsonChristy1972"},
+                                                          {"Cu", "Cu_JohnsonChristy1972"},
+                                                          {"Al", "Al_Rakic1995"},
+                                                          {"Cr", "Cr_JohnsonChristy1974"},
+                                                          {"Fe", "Fe_JohnsonChristy1974"},
+                                                          {"Ni", "Ni_JohnsonChristy1974"},
+                                                          {"Ti", "Ti_JohnsonChristy1974"},
+                                                          {"Pt", "Pt_Tselin2024"},
+                                                          {"W", "W_Weaver1975"},
+                                                          {"Zn", "Zn_Werner2009"}}) {
+        const IorSpectrum table = loadIorFile(nkDir() / (file + ".csv"));
+        const IorSpectrum named = *namedIor(metal);
+        for (double nm = 360; nm <= 830; nm += 2.5) {
+            EXPECT_NEAR(named.n(nm), table.n(nm), 1e-12) << metal << " at " << nm;
+            EXPECT_NEAR(named.k(nm), table.k(nm), 1e-12) << metal << " at " << nm;
+        }
+        EXPECT_NE(named.name().find("("), std::string::npos) << named.name();
+    }
+    EXPECT_EQ(namedIor("Cu")->name(), "Cu (Johnson and Christy 1972)");
+    // Be and Pd have no measured table here: their plain names are the fits.
+    EXPECT_EQ(namedIor("Pd")->name(), "Pd (Rakic 1998 Lorentz-Drude)");
 }
 
 }  // namespace

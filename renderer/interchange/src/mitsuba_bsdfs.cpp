@@ -24,7 +24,7 @@ constexpr std::array<std::pair<const char*, double>, 23> kNamedIors{{
 }};
 
 // Mitsuba's conductor presets (mitsuba3 src/bsdfs/conductor.cpp, data/ior/*.spd) that lamina
-// has as Rakic 1998 Lorentz-Drude fits, by Mitsuba name -> lamina name.
+// has as named metals (measured tables, spectral/data/nk), by Mitsuba name -> lamina name.
 constexpr std::array<std::pair<const char*, const char*>, 8> kConductorPresets{{
     {"Ag", "Ag"},
     {"Al", "Al"},
@@ -118,7 +118,7 @@ Json conductor(Plugin& p, bool rough) {
                 "W; give eta and k instead)");
         m["material"] = lamina;
         p.warn("material \"" + material + "\" became lamina's \"" + lamina +
-               "\" (Rakic 1998 Lorentz-Drude fit; Mitsuba's tabulated data differ slightly)");
+               "\" (lamina's measured table; Mitsuba's tabulated data may differ slightly)");
     }
     refuseScale(p, "specular_reflectance");
     if (rough) roughness(p, m, true);

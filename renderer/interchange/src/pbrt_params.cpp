@@ -112,14 +112,20 @@ ParamList readParamList(Tokenizer& tokens, const std::string& owner) {
         const Token decl = *tokens.next();
         Param p;
         p.location = {tokens.fileName(), decl.line};
-        const auto space = decl.text.find_first_of(" \t");
-        const auto nameStart = decl.text.find_first_not_of(" \t", space);
+        // White space around the type and the name is allowed, as pbrt-v4 allows it
+        // (" float beta_n" in published scenes).
+        const auto first = decl.text.find_first_not_of(" \t");
+        const auto last = decl.text.find_last_not_of(" \t");
+        const std::string text =
+            first == std::string::npos ? std::string() : decl.text.substr(first, last - first + 1);
+        const auto space = text.find_first_of(" \t");
+        const auto nameStart = text.find_first_not_of(" \t", space);
         if (space == std::string::npos || nameStart == std::string::npos ||
-            decl.text.find_first_of(" \t", nameStart) != std::string::npos)
+            text.find_first_of(" \t", nameStart) != std::string::npos)
             tokens.fail(decl.line,
                         owner + ": expected a parameter \"type name\", got \"" + decl.text + "\"");
-        p.type = decl.text.substr(0, space);
-        p.name = decl.text.substr(nameStart);
+        p.type = text.substr(0, space);
+        p.name = text.substr(nameStart);
         const std::string type = canonicalParamType(p.type);
         const bool numeric =
             std::find(kNumericTypes.begin(), kNumericTypes.end(), type) != kNumericTypes.end();

@@ -150,7 +150,9 @@ class Parser {
         const std::string& name = d.text;
         const Location at = where(tokens, d.line);
         glm::dmat4& ctm = state_.transform;
-        if (name == "Translate") {
+        if (name == "Identity") {
+            ctm = glm::dmat4(1.0);
+        } else if (name == "Translate") {
             const auto v = numbers(tokens, d, 3, false);
             ctm = glm::translate(ctm, glm::dvec3(v[0], v[1], v[2]));
         } else if (name == "Scale") {

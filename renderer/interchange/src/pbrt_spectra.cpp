@@ -15,7 +15,7 @@ namespace lamina::render::pbrt {
 
 namespace {
 
-// pbrt-v4's metals that lamina has as Rakic et al. 1998 Lorentz-Drude fits.
+// pbrt-v4's metals that lamina has as named metals (measured tables, spectral/data/nk).
 const std::set<std::string> kLaminaMetals = {"Ag", "Al", "Au", "Cu"};
 
 // pbrt-v4's standard illuminants that lamina reads from colord-data by the same name.
@@ -261,8 +261,8 @@ void conductorOptics(TranslationContext& ctx, const Entity& e, const std::string
         }
         material["material"] = etaMetal;
         ctx.warn(e.location, "metal-" + etaMetal + "-eta/k became lamina's conductor \"" +
-                                 etaMetal + "\": Rakic et al. 1998 Lorentz-Drude data, not " +
-                                 "pbrt-v4's measured table (colours differ slightly)");
+                                 etaMetal + "\": lamina's measured table, not pbrt-v4's " +
+                                 "(colours may differ slightly)");
         if (outsideIor != 1)
             ctx.warn(e.location, "metal-" + etaMetal + " under a coat of index " +
                                      std::to_string(outsideIor) +

@@ -229,7 +229,7 @@ Json translateLight(TranslationContext& ctx, const Entity& e) {
                  {"position", vec(apply(m, readPoint(p, "from", glm::dvec3(0))))},
                  {"intensity", emissionValue(ctx, p, "I", scale)}};
     } else if (e.type == "spot") {
-        const double cone = p.number("coneangle", 30), delta = p.number("conedelta", 5);
+        const double cone = p.number("coneangle", 30), delta = p.number("conedeltaangle", 5);
         const double start = std::max(0.0, cone - delta);
         const double power = p.number("power", -1);
         if (power > 0) {

@@ -1,8 +1,8 @@
 // Complex index of refraction as a function of wavelength: n(lambda) + i k(lambda), from
 // constants, measured tables (linear interpolation in wavelength; outside the data's range
 // the end values are used and a warning is printed once), dispersion formulas, or the
-// Lorentz-Drude model of Rakic et al. 1998. Named presets cover the metals of that paper and
-// common glasses; refractiveindex.info YAML files and plain CSV files load from disk.
+// Lorentz-Drude model of Rakic et al. 1998. Named presets cover measured metals, the metals of
+// that paper and common glasses; refractiveindex.info YAML files and plain CSV files load from disk.
 #pragma once
 
 #include <atomic>
@@ -52,8 +52,12 @@ IorSpectrum::Curve tabulatedCurve(std::vector<double> nm, std::vector<double> va
 IorSpectrum cauchyIor(double a, double b, double c);
 IorSpectrum sellmeierIor(const std::vector<double>& b, const std::vector<double>& c);
 
-/// A named metal (Lorentz-Drude, Rakic et al. 1998: Ag, Au, Cu, Al, Be, Cr, Ni, Pd, Pt, Ti,
-/// W) or glass (bk7, fused_silica, water, diamond); nullopt for an unknown name.
+/// A named metal or glass; nullopt for an unknown name. Metals by symbol are measured data
+/// (spectral/data/nk: Johnson and Christy 1972 for Ag, Au, Cu and 1974 for Cr, Fe, Ni, Ti;
+/// Rakic 1995 for Al; Tselin et al. 2024 for Pt; Weaver et al. 1975 for W; Werner et al. 2009
+/// for Zn), linearly interpolated; the Lorentz-Drude fits of Rakic et al. 1998 are "SYMBOL_LD"
+/// (Ag, Au, Cu, Al, Be, Cr, Ni, Pd, Pt, Ti, W) and, for Be and Pd, which have no measured
+/// table here, also the plain symbol. Glasses: bk7, fused_silica, water, diamond.
 std::optional<IorSpectrum> namedIor(const std::string& name);
 std::vector<std::string> namedMetalNames();
 std::vector<std::string> namedGlassNames();
