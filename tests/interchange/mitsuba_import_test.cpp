@@ -448,6 +448,13 @@ TEST_F(MitsubaImport, EnvironmentMap) {
               where(2) +
                   ": <emitter type=\"envmap\">: to_world of an envmap must be a rotation "
                   "(lamina refuses a scale or shear)");
+    // A rotation written with 6 digits, as exporters write one: its nearest rotation, warned.
+    const ImportedScene rounded =
+        import(R"(<emitter type="envmap"><string name="filename" value="sky.exr"/>
+<transform name="to_world"><matrix value="0.866025 0 0.5 0  0 1 0 0  -0.5 0 0.866025 0  0 0 0 1"/>
+</transform></emitter>)");
+    EXPECT_EQ(warningsWith(rounded, "is a rotation to within").size(), 1u);
+    EXPECT_TRUE(rounded.scene["lights"][0]["transform"][1].contains("matrix"));
 }
 
 // The translated transform makes lamina look every direction up in the pixel Mitsuba 3 does

@@ -1,11 +1,13 @@
 // What each pbrt-v4 construct becomes in lamina's scene document (docs/interchange.md,
 // "pbrt-v4"): the translated JSON compared exactly, the warnings of what was mapped, and the
 // errors, with file and line, of what is refused.
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <zlib.h>
 
 #include <cmath>
+#include <glm/matrix.hpp>
 
 #include "lamina/interchange/scene_import.h"
 #include "lamina/render/camera.h"
@@ -130,10 +132,38 @@ TEST_F(PbrtTranslation, MirroredCameraIsRightHanded) {
         "aperture_radius": 0.1, "focus_distance": 3})"));
     EXPECT_EQ(importError("Scale 1 2 1\nCamera \"perspective\"\n", false),
               (dir_ / "s.pbrt").string() +
-                  ":2: a camera transform with a shear or an uneven scale is not "
-                  "supported");
+                  ":2: the camera transform shears the view or scales its x and y axes "
+                  "differently (pixels would not be square); lamina's camera takes rotations, "
+                  "mirrors, uniform scales and a scale along the viewing axis");
+    EXPECT_EQ(
+        importError("Scale 1 1 0\nCamera \"perspective\"\n", false),
+        (dir_ / "s.pbrt").string() + ":2: the camera transform is singular (it flattens the view)");
     EXPECT_EQ(importError("Camera \"orthographic\"\n", false),
               at(1, false) + ": Camera \"orthographic\" is not supported (perspective)");
+}
+
+// Exported camera matrices are rotations rounded to 6-8 digits: they load, with one warning,
+// as the rotation they round.
+TEST_F(PbrtTranslation, RoundedCameraRotationsLoad) {
+    const ImportedScene s = import(
+        "Transform [0.707107 0 -0.707107 0  0 1 0 0  0.707107 0 0.707107 0  0 0 -5 1]\n"
+        "Camera \"perspective\" \"float fov\" 40\n",
+        false);
+    ASSERT_EQ(s.warnings.size(), 1u);
+    EXPECT_THAT(s.warnings[0],
+                ::testing::HasSubstr(":2: the camera transform is a rotation to within 3.1e-07"));
+    EXPECT_THAT(s.warnings[0], ::testing::HasSubstr("(rounded digits): its nearest rotation"));
+    EXPECT_NEAR(s.scene["camera"]["fov"].get<double>(), 40, 1e-4);
+}
+
+// A scale along the viewing axis alone: pbrt-v4 maps the camera-space direction (x, y, 1) by
+// the transform and normalises it, so camera z stretched by 2 halves the image plane's tangent.
+TEST_F(PbrtTranslation, AStretchOfTheViewingAxisNarrowsTheView) {
+    const ImportedScene s =
+        import("Scale 1 1 0.5\nCamera \"perspective\" \"float fov\" 60\n", false);
+    const double expected = 2 * std::atan(std::tan(30.0 * M_PI / 180) / 2) * 180 / M_PI;
+    EXPECT_NEAR(s.scene["camera"]["fov"].get<double>(), expected, 1e-12);
+    EXPECT_TRUE(s.warnings.empty());
 }
 
 TEST(CameraHandedness, LeftHandedPutsUpCrossForwardOnTheRight) {
@@ -327,11 +357,33 @@ TEST_F(PbrtTranslation, EnvironmentImagesAreOctahedral) {
         import("Scale -1 1 1\nLightSource \"infinite\" \"string filename\" \"sky.exr\"\n");
     EXPECT_EQ(mirrored.scene["lights"][1]["transform"],
               Json::parse(R"([{"matrix": [-1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]}])"));
+    // pbrt-v4 normalises the light-space direction: a uniform scale changes nothing.
+    const ImportedScene scaled =
+        import("Scale 2 2 2\nLightSource \"infinite\" \"string filename\" \"sky.exr\"\n");
+    EXPECT_FALSE(scaled.scene["lights"][1].contains("transform"));
     EXPECT_EQ(
-        importError("Scale 2 2 2\nLightSource \"infinite\" \"string filename\" \"sky.exr\"\n"),
+        importError("Scale 1 2 1\nLightSource \"infinite\" \"string filename\" \"sky.exr\"\n"),
         at(2) +
-            ": infinite: only rotations and reflections may orient an environment image (a scale "
-            "or shear was given)");
+            ": infinite: only rotations, reflections and uniform scales may orient an environment "
+            "image (a shear or an uneven scale was given)");
+    // A rotation written with 6 digits, as exporters write one: its nearest rotation, with a
+    // warning.
+    const ImportedScene rounded = import(
+        "Transform [0.866025 0.5 0 0  -0.5 0.866025 0 0  0 0 1 0  0 0 0 1]\n"
+        "LightSource \"infinite\" \"string filename\" \"sky.exr\"\n");
+    ASSERT_EQ(rounded.warnings.size(), 1u);
+    EXPECT_THAT(rounded.warnings[0],
+                ::testing::HasSubstr("infinite: the light's transform is a rotation to within"));
+    const Json& rows = rounded.scene["lights"][1]["transform"][0]["matrix"];
+    glm::dmat3 r;
+    for (int row = 0; row < 3; ++row)
+        for (int col = 0; col < 3; ++col)
+            r[col][row] = rows[std::size_t(row * 4 + col)].get<double>();
+    const glm::dmat3 rtr = glm::transpose(r) * r;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            EXPECT_NEAR(rtr[i][j], i == j ? 1.0 : 0.0, 1e-14);
+    EXPECT_NEAR(r[0][0], std::cos(M_PI / 6), 1e-6);
 }
 
 TEST_F(PbrtTranslation, Materials) {

@@ -24,14 +24,10 @@ bool isPropertyTag(const std::string& tag) {
     return false;
 }
 
-
 std::string attributeOr(const Element& e, const std::string& name, const std::string& fallback) {
     const std::string* v = e.attribute(name);
     return v ? *v : fallback;
 }
-
-
-
 
 double srgbToLinear(double c) {
     // IEC 61966-2-1 transfer function.
@@ -142,7 +138,6 @@ std::vector<double> parseNumbers(const std::string& text, const Element& at,
     }
     return out;
 }
-
 
 Plugin::Plugin(const Element& element, const MitsubaDocument& document, Diagnostics& diagnostics)
     : element_(element),

@@ -9,6 +9,7 @@
 #include "lamina/core/error.h"
 #include "mitsuba_bsdfs.h"
 #include "mitsuba_translation.h"
+#include "rounded_rotation.h"
 
 namespace lamina::render::mitsuba {
 
@@ -91,13 +92,17 @@ Json triple(const glm::dvec3& v) {
 Json environmentTransform(Plugin& p, const std::optional<Transform>& transform) {
     Json operations = Json::array({Json{{"scale", Json::array({-1, 1, 1})}}});
     if (!transform) return operations;
-    const glm::dmat3 r(transform->matrix);
-    const glm::dmat3 product = glm::transpose(r) * r;
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-            if (std::abs(product[i][j] - (i == j ? 1.0 : 0.0)) > 1e-6)
-                p.fail(
-                    "to_world of an envmap must be a rotation (lamina refuses a scale or shear)");
+    glm::dmat3 r(transform->matrix);
+    // Rounded as exported files write a rotation (rounded_rotation.h).
+    const double skew = columnSkew(r), scale = columnScaleError(r);
+    if (skew > kRoundedRotationTolerance || scale > kRoundedRotationTolerance)
+        p.fail("to_world of an envmap must be a rotation (lamina refuses a scale or shear)");
+    if (skew > 1e-9 || scale > 1e-9) {
+        p.warn("to_world of the envmap is a rotation to within " +
+               deviationText(std::max(skew, scale)) +
+               " (rounded digits): its nearest rotation is used");
+        r = orthonormalised(r);
+    }
     bool rotationsOnly = true;
     for (const Json& op : transform->operations)
         rotationsOnly &= op.contains("rotate");

@@ -12,6 +12,7 @@
 #include "lamina/interchange/scene_import.h"
 #include "pbrt_importer.h"
 #include "pbrt_shapes.h"
+#include "rounded_rotation.h"
 
 namespace lamina::render::pbrt {
 
@@ -174,25 +175,41 @@ Json translateCamera(TranslationContext& ctx, const Entity& e, int width, int he
     const ParamList& p = e.params;
     if (e.type != "perspective")
         ctx.fail(e.location, "Camera \"" + e.type + "\" is not supported (perspective)");
+    if (!(std::abs(glm::determinant(e.transform)) > 0))
+        ctx.fail(e.location, "the camera transform is singular (it flattens the view)");
     const glm::dmat4 worldFromCamera = glm::inverse(e.transform);
     const glm::dvec3 x(worldFromCamera[0]), y(worldFromCamera[1]), z(worldFromCamera[2]);
     const glm::dvec3 position(worldFromCamera[3]);
-    const double s = glm::length(z);
-    if (!(s > 0) || std::abs(glm::dot(x, y)) > 1e-9 * s * s ||
-        std::abs(glm::dot(x, z)) > 1e-9 * s * s || std::abs(glm::dot(y, z)) > 1e-9 * s * s ||
-        std::abs(glm::length(x) - s) > 1e-9 * s || std::abs(glm::length(y) - s) > 1e-9 * s)
+    const glm::dmat3 axes(worldFromCamera);
+    // A rotation with a uniform scale, rounded as exporters write it (rounded_rotation.h), and a
+    // scale of the viewing axis alone, which pbrt-v4 turns into a narrower or wider view (its
+    // rays are camera-space directions mapped by the transform and normalised). Camera x and y
+    // of different lengths would make pixels that are not square.
+    const double skew = columnSkew(axes);
+    const double lx = glm::length(x), ly = glm::length(y), lz = glm::length(z);
+    if (skew > kRoundedRotationTolerance || std::abs(lx - ly) > kRoundedRotationTolerance * ly)
         ctx.fail(e.location,
-                 "a camera transform with a shear or an uneven scale is not "
-                 "supported");
+                 "the camera transform shears the view or scales its x and y axes differently "
+                 "(pixels would not be square); lamina's camera takes rotations, mirrors, "
+                 "uniform scales and a scale along the viewing axis");
+    if (skew > 1e-9 || std::abs(lx - ly) > 1e-9 * ly)
+        ctx.warn(e.location, "the camera transform is a rotation to within " +
+                                 deviationText(std::max(skew, std::abs(lx - ly) / ly)) +
+                                 " (rounded digits): its nearest rotation is used");
+    const double s = ly;
     // camera x = cross(y, z) (det > 0) is pbrt's left-handed frame: image right = up x
     // forward. A mirroring transform (Scale -1 1 1, common in exported files) makes it
     // right-handed.
     const bool left = glm::dot(x, glm::cross(y, z)) > 0;
     const double fov = p.number("fov", 90.0);
     if (!(fov > 0 && fov < 180)) ctx.fail(e.location, "fov must be in (0, 180) degrees");
+    // The image plane's half-height at unit distance, scaled by a stretch of the viewing axis
+    // (y / z lengths: a longer z narrows the view).
+    const double stretch = ly / lz;
     double vertical = fov;
-    if (width < height) {
-        const double t = std::tan(0.5 * fov * kPi / 180) * double(height) / double(width);
+    if (width < height || std::abs(stretch - 1) > 1e-9) {
+        double t = std::tan(0.5 * fov * kPi / 180) * stretch;
+        if (width < height) t *= double(height) / double(width);
         vertical = 2 * std::atan(t) * 180 / kPi;
     }
     Json camera{{"position", vec(position)},
@@ -205,7 +222,7 @@ Json translateCamera(TranslationContext& ctx, const Entity& e, int width, int he
     if (lensRadius > 0) {
         camera["type"] = "thin_lens";
         camera["aperture_radius"] = lensRadius * s;
-        camera["focus_distance"] = focus * s;
+        camera["focus_distance"] = focus * lz;
     }
     for (const char* shutter : {"shutteropen", "shutterclose"})
         if (p.has(shutter)) {
@@ -263,18 +280,25 @@ Json translateLight(TranslationContext& ctx, const Entity& e) {
                 ctx.fail(e.location, "infinite: illuminance with an image is not supported");
             // pbrt-v4's environment images are equal-area octahedral squares looked up with
             // the direction in light space (ImageInfiniteLight::Le).
-            const glm::dmat3 r(m);
-            const glm::dmat3 rrT = r * glm::transpose(r);
-            double off = 0;
-            for (int i = 0; i < 3; ++i)
-                for (int j = 0; j < 3; ++j)
-                    off = std::max(off, std::abs(rrT[i][j] - (i == j ? 1.0 : 0.0)));
-            // A reflection (Scale -1 1 1, common in exported scenes) is a change of handedness
-            // lamina's environment transform takes as it is.
-            if (off > 1e-9)
+            // A rotation or a reflection (Scale -1 1 1, common in exported scenes: a change of
+            // handedness lamina's environment transform takes as it is), rounded as exporters
+            // write it, with any uniform scale (pbrt-v4 normalises the light-space direction).
+            glm::dmat3 r(m);
+            const double scaleOf = std::cbrt(std::abs(glm::determinant(r)));
+            if (!(scaleOf > 0)) ctx.fail(e.location, "infinite: the light's transform is singular");
+            const double skew = columnSkew(r), uneven = columnScaleError(r / scaleOf);
+            if (skew > kRoundedRotationTolerance || uneven > kRoundedRotationTolerance)
                 ctx.fail(e.location,
-                         "infinite: only rotations and reflections may orient an environment "
-                         "image (a scale or shear was given)");
+                         "infinite: only rotations, reflections and uniform scales may orient an "
+                         "environment image (a shear or an uneven scale was given)");
+            if (skew > 1e-9 || uneven > 1e-9) {
+                ctx.warn(e.location, "infinite: the light's transform is a rotation to within " +
+                                         deviationText(std::max(skew, uneven)) +
+                                         " (rounded digits): its nearest rotation is used");
+                r = orthonormalised(r);
+            } else {
+                r /= scaleOf;
+            }
             light = {{"type", "environment"},
                      {"file", ctx.filePath(p, *file)},
                      {"scale", scale},
