@@ -15,6 +15,13 @@ lamina_require(glm libglm-dev)
 lamina_require(nlohmann_json nlohmann-json3-dev)
 lamina_require(yaml-cpp libyaml-cpp-dev)
 
+# zlib ships CMake's FindZLIB module, not a config package: gzip-compressed input files
+# (lamina_core's gzip_file.h: .ply.gz meshes, .pbrt.gz scene files).
+find_package(ZLIB QUIET)
+if(NOT ZLIB_FOUND)
+  message(FATAL_ERROR "lamina: zlib not found. It comes with the Debian package "
+    "'zlib1g-dev': ${LAMINA_SETUP_HINT}.")
+endif()
 if(LAMINA_BUILD_APP)
   lamina_require(embree libembree-dev 3)
   lamina_require(TBB libtbb-dev)
@@ -40,12 +47,6 @@ if(LAMINA_BUILD_APP)
   lamina_require(CLI11 libcli11-dev)
   lamina_require(tinyobjloader libtinyobjloader-dev)
   lamina_require(pugixml libpugixml-dev)
-  # zlib ships CMake's FindZLIB module, not a config package: .ply.gz meshes.
-  find_package(ZLIB QUIET)
-  if(NOT ZLIB_FOUND)
-    message(FATAL_ERROR "lamina: zlib not found. It comes with the Debian package "
-      "'zlib1g-dev': ${LAMINA_SETUP_HINT}.")
-  endif()
   if(LAMINA_BUILD_PYTHON AND NOT LAMINA_SANITIZE AND NOT LAMINA_FUZZ)
     # The system interpreter, whatever python3 comes first on PATH (pyenv, a venv): Debian's
     # pybind11, NumPy and pytest are installed for it.

@@ -567,6 +567,23 @@ TEST_F(PbrtTranslation, GzipCompressedPlyMeshesAreRead) {
         << errorOf([&] { readPly(broken, mesh); });
 }
 
+// pbrt-v4 scenes ship compressed geometry files: Include "geometry.pbrt.gz" is read like its
+// plain twin; a broken one is refused naming the directive and the file.
+TEST_F(PbrtTranslation, GzipCompressedIncludesAreRead) {
+    const std::string geometry = "Shape \"sphere\" \"float radius\" 2\n";
+    const auto file = dir_ / "geometry.pbrt.gz";
+    gzFile out = gzopen(file.string().c_str(), "wb");
+    ASSERT_TRUE(out);
+    gzwrite(out, geometry.data(), unsigned(geometry.size()));
+    gzclose(out);
+    const ImportedScene s = import("Include \"geometry.pbrt.gz\"\n");
+    ASSERT_EQ(s.scene["shapes"].size(), 1u);
+    EXPECT_EQ(s.scene["shapes"][0]["radius"], 2.0);
+    write("broken.pbrt.gz", std::string("\x1f\x8b\x08\x00\x00\x00\x00\x00\x00\x03garbage", 17));
+    EXPECT_NE(importError("Include \"broken.pbrt.gz\"\n").find("not a valid gzip file"),
+              std::string::npos);
+}
+
 TEST_F(PbrtTranslation, ParserWarningsComeFirstAndInOrder) {
     const ImportedScene s = import(
         "Option \"bool wavefront\" true\nAccelerator \"bvh\"\n"

@@ -7,6 +7,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "lamina/core/error.h"
+#include "lamina/core/gzip_file.h"
 #include "lamina/core/input_file.h"
 #include "pbrt_tokenizer.h"
 
@@ -138,11 +139,19 @@ class Parser {
         if (path.is_relative()) path = scene_.directory / path;
         const std::string why = notARegularFile(path);
         if (!why.empty()) tokens.fail(directive.line, directive.text + " \"" + name + "\": " + why);
-        if (path.extension() == ".gz")
-            tokens.fail(directive.line, directive.text + " \"" + name +
-                                            "\": gzip-compressed scene files are not supported");
         scene_.files.push_back(path);
-        Tokenizer inner(readInputFile(path, kMaxTextFileBytes), path.string());
+        // pbrt-v4 reads gzip-compressed scene files (.pbrt.gz) as they are.
+        std::string text;
+        if (isGzipPath(path)) {
+            try {
+                text = readGzipFile(path, kMaxTextFileBytes, kMaxTextFileBytes, "scene");
+            } catch (const InputError& e) {
+                tokens.fail(directive.line, directive.text + " \"" + name + "\": " + e.what());
+            }
+        } else {
+            text = readInputFile(path, kMaxTextFileBytes);
+        }
+        Tokenizer inner(std::move(text), path.string());
         parse(inner, depth + 1);
     }
 

@@ -13,6 +13,7 @@
 #include <zlib.h>
 
 #include "lamina/core/error.h"
+#include "lamina/core/gzip_file.h"
 #include "lamina/core/input_file.h"
 
 namespace lamina::render {
@@ -20,43 +21,12 @@ namespace lamina::render {
 namespace {
 
 // A gzip-compressed PLY (.ply.gz, as pbrt-v4 scenes ship them) is decompressed into memory,
-// at most this many bytes: a small file that inflates without end (a zip bomb) is refused
-// when it passes the bound, not when memory runs out.
+// at most this many bytes (gzip_file.h).
 constexpr std::uintmax_t kMaxDecompressedPlyBytes = 1024 * kMiB;
 
-bool isGzip(const std::filesystem::path& file) {
-    return file.extension() == ".gz";
-}
-
-std::string gunzip(const std::filesystem::path& file) {
-    checkInputFile(file, kMaxMeshFileBytes);
-    gzFile in = gzopen(file.string().c_str(), "rb");
-    if (!in) throw InputError(file.string() + ": cannot open the PLY file");
-    std::string data;
-    char buffer[1 << 16];
-    while (true) {
-        const int n = gzread(in, buffer, sizeof buffer);
-        if (n < 0) {
-            int code = 0;
-            const std::string why = gzerror(in, &code);
-            gzclose(in);
-            throw InputError(file.string() + ": not a valid gzip file (" + why + ")");
-        }
-        if (n == 0) break;
-        if (data.size() + std::size_t(n) > kMaxDecompressedPlyBytes) {
-            gzclose(in);
-            throw InputError(file.string() + ": decompresses to more than " +
-                             std::to_string(kMaxDecompressedPlyBytes / kMiB) + " MiB");
-        }
-        data.append(buffer, std::size_t(n));
-    }
-    gzclose(in);
-    return data;
-}
-
 std::unique_ptr<std::istream> openPly(const std::filesystem::path& file, std::uintmax_t& size) {
-    if (isGzip(file)) {
-        std::string data = gunzip(file);
+    if (isGzipPath(file)) {
+        std::string data = readGzipFile(file, kMaxMeshFileBytes, kMaxDecompressedPlyBytes, "PLY");
         size = data.size();
         return std::make_unique<std::istringstream>(std::move(data), std::ios::binary);
     }
