@@ -8,7 +8,6 @@
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
-#include <glm/trigonometric.hpp>
 #include <iostream>
 #include <sstream>
 
@@ -19,8 +18,7 @@
 #include "lamina/core/error.h"
 #include "lamina/core/json_reader.h"
 #include "lamina/core/output_files.h"
-#include "lamina/experiments/svg_heat_map.h"
-#include "lamina/experiments/svg_plot.h"
+#include "lamina/experiments/bsdf_plot.h"
 #include "option_parsing.h"
 
 namespace lamina::app {
@@ -62,10 +60,6 @@ Vec3d parseDirection(const std::string& text, const std::string& what) {
     return glm::normalize(d);
 }
 
-double round3(double v) {
-    return std::round(v * 1000) / 1000;
-}
-
 // The material as a figure names it: the @file, or the JSON literal cut short, and the mode.
 std::string materialLabel(const BsdfArgs& a) {
     constexpr std::size_t kMaxChars = 48;
@@ -78,19 +72,11 @@ std::string materialLabel(const BsdfArgs& a) {
            ")";
 }
 
-// `bsdf plot -o NAME.svg` writes NAME.svg (the plane of incidence) and NAME-hemisphere.svg
-// with the map's pixels in NAME-hemisphere.png.
-struct PlotFiles {
-    std::filesystem::path plane, hemisphere, hemispherePng;
-};
-
-PlotFiles plotFiles(const std::string& output) {
-    const std::filesystem::path plane = output;
-    if (plane.extension() != ".svg")
+// `bsdf plot -o NAME.svg`: the figures' files, checked before anything is computed.
+experiments::BsdfPlotFiles plotFiles(const std::string& output) {
+    if (std::filesystem::path(output).extension() != ".svg")
         throw CLI::ValidationError("--output", "expected a .svg file name, got \"" + output + "\"");
-    std::filesystem::path hemisphere = plane;
-    hemisphere.replace_filename(plane.stem().string() + "-hemisphere.svg");
-    PlotFiles files{plane, hemisphere, std::filesystem::path(hemisphere).replace_extension(".png")};
+    const experiments::BsdfPlotFiles files = experiments::bsdfPlotFiles(output);
     for (const auto& f : {files.plane, files.hemisphere, files.hemispherePng})
         checkOutputFile(f);
     return files;
@@ -199,70 +185,21 @@ class BsdfTool {
         if (!r.passed) std::printf("%s\n", r.message.c_str());
     }
 
-    // Two figures that stand alone: f cos theta_i along the plane of incidence (the normal and
-    // wo's tangential direction u, x when wo is the normal), and a false-colour map of it over
-    // the upper hemisphere with its colour bar.
+    // The figures of experiments/bsdf_plot.h, of the channels' average (clamped at 0).
     void plot() const {
         const Vec3d wo = parseDirection(a_.wo, "--wo");
-        const auto value = [&](const Vec3d& wi) {
-            return std::max(0.0, double(bxdf_->eval(wo, wi, mode_).average()));
-        };
-        const std::string what = materialLabel(a_) + ", wo = (" + formatNumber(round3(wo.x)) +
-                                 ", " + formatNumber(round3(wo.y)) + ", " +
-                                 formatNumber(round3(wo.z)) + ")";
-        // theta_i in [-180, 180] degrees from the normal, positive towards u: wo lies at
-        // +theta_o and its mirror direction at -theta_o.
-        const double tangential = std::hypot(wo.x, wo.y);
-        const Vec3d u = tangential > 0 ? Vec3d(wo.x / tangential, wo.y / tangential, 0.0)
-                                       : Vec3d(1.0, 0.0, 0.0);
-        experiments::SvgPlot::Series lobe{"f cos theta_i", {}, {}};
-        double peak = 0;
-        for (int k = 0; k <= 720; ++k) {
-            const double degrees = -180.0 + 0.5 * k, t = glm::radians(degrees);
-            lobe.x.push_back(degrees);
-            lobe.y.push_back(value(std::sin(t) * u + Vec3d(0.0, 0.0, std::cos(t))));
-            peak = std::max(peak, lobe.y.back());
-        }
-        const double thetaO = glm::degrees(std::atan2(tangential, wo.z));
-        experiments::SvgPlot plane("Plane of incidence: " + what,
-                                   "theta_i from the normal, towards (" +
-                                       formatNumber(round3(u.x)) + ", " +
-                                       formatNumber(round3(u.y)) + ", 0) (degrees)",
-                                   "f cos theta_i (1/sr)");
-        plane.add(std::move(lobe));
-        plane.add({"wo (theta_o = " + formatNumber(round3(thetaO)) + " deg)",
-                   {thetaO, thetaO},
-                   {0.0, peak},
-                   true});
-        plane.add({"mirror direction", {-thetaO, -thetaO}, {0.0, peak}, true});
-        // The hemisphere, seen from above: wi = (x, y, sqrt(1 - x^2 - y^2)), +y at the top;
-        // cells outside the unit disk are NaN (grey).
-        constexpr int kCells = 200;
-        std::vector<float> heat(std::size_t(kCells) * kCells, std::nanf(""));
-        double peak2 = 0;
-        for (int y = 0; y < kCells; ++y)
-            for (int x = 0; x < kCells; ++x) {
-                const double px = (x + 0.5) / kCells * 2 - 1, py = 1 - (y + 0.5) / kCells * 2;
-                const double r2 = px * px + py * py;
-                if (r2 >= 1) continue;
-                const double v = value(Vec3d(px, py, std::sqrt(1 - r2)));
-                heat[std::size_t(y) * kCells + std::size_t(x)] = float(v);
-                peak2 = std::max(peak2, v);
-            }
-        const double edge = 1.0 - 1.0 / kCells;  // the centres of the outermost cells
-        experiments::SvgHeatMap hemisphere("Upper hemisphere: " + what, kCells, kCells,
-                                           std::move(heat));
-        hemisphere.setAxes({"wi.x (direction cosine)", -edge, edge},
-                           {"wi.y (direction cosine)", edge, -edge});
-        hemisphere.setScale(experiments::Palette::Sequential, 0, peak2 > 0 ? peak2 : 1,
-                            "f cos theta_i (1/sr)");
-        const PlotFiles files = plotFiles(a_.output);
-        plane.write(files.plane);
-        hemisphere.write(files.hemisphere, files.hemispherePng);
+        const experiments::BsdfPlotFiles files = plotFiles(a_.output);
+        const experiments::BsdfPlot plot = experiments::plotBsdf(
+            [&](const Vec3d& wi) {
+                return std::max(0.0, double(bxdf_->eval(wo, wi, mode_).average()));
+            },
+            wo, materialLabel(a_));
+        experiments::writeBsdfPlot(plot, files);
         std::fprintf(stderr,
                      "%s: f cos theta_i in the plane of incidence (the normal and (%.3g, %.3g, "
                      "0); peak %.4g); %s: over the upper hemisphere (peak %.4g)\n",
-                     files.plane.c_str(), u.x, u.y, peak, files.hemisphere.c_str(), peak2);
+                     files.plane.c_str(), plot.tangent.x, plot.tangent.y, plot.planePeak,
+                     files.hemisphere.c_str(), plot.hemispherePeak);
     }
 
   private:

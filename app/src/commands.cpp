@@ -40,11 +40,7 @@ void registerInfoCommand(CLI::App& app);
 void registerConvertCommand(CLI::App& app);
 void registerBenchCommand(CLI::App& app);
 void registerCompareCommand(CLI::App& app);
-void registerReciprocityCommand(CLI::App& app);
-void registerConvergenceCommand(CLI::App& app);
-void registerFresnelCommand(CLI::App& app);
-void registerStabilityCommand(CLI::App& app);
-void registerLayeringCommand(CLI::App& app);
+void registerExperimentCommands(CLI::App& app);  // every experiment of experiments/
 
 // Every subcommand is registered here, in the order `lamina --help` lists them.
 void registerCommands(CLI::App& app) {
@@ -56,11 +52,7 @@ void registerCommands(CLI::App& app) {
     registerConvertCommand(app);
     registerBenchCommand(app);
     registerCompareCommand(app);
-    registerReciprocityCommand(app);
-    registerConvergenceCommand(app);
-    registerFresnelCommand(app);
-    registerStabilityCommand(app);
-    registerLayeringCommand(app);
+    registerExperimentCommands(app);
     registerSpectrumCommand(app);
     requireFiniteFloats(app);
 }

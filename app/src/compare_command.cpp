@@ -2,12 +2,11 @@
 // and, optionally, a false-colour picture of |A - B|.
 #include <CLI/CLI.hpp>
 #include <cstdio>
-#include <sstream>
 
+#include "declared_options.h"
 #include "interruption.h"
 #include "lamina/core/error.h"
 #include "lamina/experiments/image_metrics.h"
-#include "option_parsing.h"
 
 namespace lamina::app {
 
@@ -15,9 +14,16 @@ namespace {
 
 struct CompareArgs {
     std::string a, b;
-    std::string metrics = experiments::kMetricNames.list(",");
+    std::vector<experiments::Metric> metrics;
     std::string diff;
     double diffScale = 0;  ///< 0: the largest difference
+
+    explicit CompareArgs(const experiments::OptionValues& v)
+        : a(*v.text("image")),
+          b(*v.text("reference")),
+          metrics(v.choices(experiments::kMetricNames, "metric")),
+          diff(v.text("diff").value_or("")),
+          diffScale(v.number("diff-scale").value_or(0)) {}
 };
 
 void run(const CompareArgs& args) {
@@ -38,11 +44,9 @@ void run(const CompareArgs& args) {
                          std::to_string(a.height) + " but " + args.b + " is " +
                          std::to_string(b.width) + "x" + std::to_string(b.height));
     const experiments::ImageMetrics m = experiments::compareImages(a, b);
-    std::stringstream list(args.metrics);
-    for (std::string name; std::getline(list, name, ',');) {
-        const auto metric = parseName(experiments::kMetricNames, name, "metric", "--metric");
-        std::printf("%s %.9g\n", name.c_str(), experiments::metricValue(m, metric));
-    }
+    for (const experiments::Metric metric : args.metrics)
+        std::printf("%s %.9g\n", std::string(experiments::kMetricNames.name(metric)).c_str(),
+                    experiments::metricValue(m, metric));
     if (!args.diff.empty()) {
         const double scale = args.diffScale > 0 ? args.diffScale : m.max;
         experiments::writeDifferenceImage(args.diff, a, b, scale);
@@ -54,22 +58,13 @@ void run(const CompareArgs& args) {
 }  // namespace
 
 void registerCompareCommand(CLI::App& app) {
-    auto a = std::make_shared<CompareArgs>();
-    CLI::App* cmd = app.add_subcommand(
-        "compare", "Error metrics of an image against a reference (relMSE epsilon 1e-2)");
-    cmd->add_option("image", a->a, "Image to measure (EXR or any OpenImageIO format)")
-        ->required()
-        ->check(CLI::ExistingFile);
-    cmd->add_option("reference", a->b, "Reference image")->required()->check(CLI::ExistingFile);
-    cmd->add_option("--metric", a->metrics, "Comma-separated: " + experiments::kMetricNames.list())
-        ->capture_default_str();
-    cmd->add_option("--diff", a->diff,
-                    "Write a false-colour PNG of |image - reference| and beside it an SVG "
-                    "figure with its colour bar");
-    cmd->add_option("--diff-scale", a->diffScale,
-                    "The difference shown white in --diff (default: the largest)")
-        ->check(CLI::PositiveNumber);
-    cmd->callback([a] { runInterruptible("compare", [&] { run(*a); }); });
+    const experiments::CommandDecl& command = experiments::commandDeclaration("compare");
+    CLI::App* cmd = app.add_subcommand(command.name, command.help);
+    auto options = std::make_shared<DeclaredOptions>(*cmd, command);
+    cmd->callback([options] {
+        const CompareArgs args(options->values());
+        runInterruptible("compare", [&] { run(args); });
+    });
 }
 
 }  // namespace lamina::app

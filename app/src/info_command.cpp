@@ -1,11 +1,11 @@
-// `lamina info SCENE`: what a scene needs before it is rendered: geometry counts, materials
-// with their active lobes, lights, spectral data, and the memory the geometry takes.
+// `lamina info SCENE`: what a scene needs before it is rendered (render/scene_statistics.h
+// counts it): geometry counts, materials with their active lobes, lights, spectral data, and
+// the memory the geometry and the film take.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 
-#include "lamina/bsdf/material_builder.h"
-#include "lamina/bsdf/material_kind.h"
 #include "lamina/render/render_memory.h"
+#include "lamina/render/scene_statistics.h"
 #include "lamina/scene/scene_description.h"
 
 namespace lamina::app {
@@ -14,47 +14,7 @@ namespace {
 
 void run(const std::string& file) {
     const render::SceneDesc scene = render::loadScene(file);
-    std::size_t triangles = 0, vertices = 0, bytes = 0, emitters = 0;
-    std::vector<bool> used(scene.materials.size(), false);
-    for (const auto& m : scene.meshes) {
-        triangles += m.triangles.size();
-        vertices += m.positions.size();
-        bytes += m.positions.size() * sizeof(m.positions[0]) + m.normals.size() * 12 +
-                 m.uvs.size() * 8 + m.triangles.size() * 12;
-        if (m.emission) emitters += m.triangles.size();
-        used[std::size_t(m.material)] = true;
-    }
-    for (const auto& s : scene.spheres) {
-        if (s.emission) ++emitters;
-        used[std::size_t(s.material)] = true;
-    }
-    for (const auto& d : scene.disks) {
-        if (d.emission) ++emitters;
-        used[std::size_t(d.material)] = true;
-    }
-    // An object's shapes are stored once; its instances reference them (no copies).
-    std::size_t objectTriangles = 0, objectPrimitives = 0, instancedTriangles = 0;
-    std::vector<std::size_t> trianglesOf(scene.objects.size(), 0);
-    for (std::size_t o = 0; o < scene.objects.size(); ++o) {
-        const render::ObjectDesc& object = scene.objects[o];
-        for (const auto& m : object.meshes) {
-            trianglesOf[o] += m.triangles.size();
-            bytes += m.positions.size() * sizeof(m.positions[0]) + m.normals.size() * 12 +
-                     m.uvs.size() * 8 + m.triangles.size() * 12;
-            used[std::size_t(m.material)] = true;
-        }
-        for (const auto& s : object.spheres)
-            used[std::size_t(s.material)] = true;
-        for (const auto& d : object.disks)
-            used[std::size_t(d.material)] = true;
-        objectTriangles += trianglesOf[o];
-        objectPrimitives += trianglesOf[o] + object.spheres.size() + object.disks.size();
-    }
-    for (const auto& inst : scene.instances)
-        instancedTriangles += trianglesOf[std::size_t(inst.object)];
-    // Embree's BVH over triangles takes roughly 64 bytes per primitive (a rough guide), and
-    // an instance about as much as one primitive.
-    bytes += (triangles + scene.spheres.size() + objectPrimitives + scene.instances.size()) * 64;
+    const render::SceneStatistics s = render::sceneStatistics(scene);
     std::printf("scene: %s\n", file.c_str());
     // The loader has printed each warning on stderr already ("lamina: warning: ..."); the
     // listing counts them rather than repeating them.
@@ -74,50 +34,35 @@ void run(const std::string& file) {
     std::printf(
         "geometry: %zu meshes (%zu triangles, %zu vertices), %zu spheres, %zu disks, "
         "~%.1f MiB\n",
-        scene.meshes.size(), triangles, vertices, scene.spheres.size(), scene.disks.size(),
-        double(bytes) / (1 << 20));
+        s.meshes, s.triangles, s.vertices, s.spheres, s.disks, double(s.geometryBytes) / (1 << 20));
     if (!scene.objects.empty() || !scene.unusedObjectNames.empty()) {
         std::printf(
             "instances: %zu of %zu objects, referencing %zu triangles (%zu stored once in the "
             "objects)",
-            scene.instances.size(), scene.objects.size(), instancedTriangles, objectTriangles);
+            s.instances, s.objects, s.instancedTriangles, s.objectTriangles);
         for (const auto& name : scene.unusedObjectNames)
             std::printf(", %s unused (never loaded)", name.c_str());
         std::printf("\n");
     }
-    const auto film =
-        render::estimateRenderMemory(scene.film.width, scene.film.height, false, false);
     std::printf(
         "render memory: ~%s (film %s, image %s); with --aovs ~%s, bdpt --strategies ~%s\n",
-        render::formatBytes(film.total()).c_str(), render::formatBytes(film.film).c_str(),
-        render::formatBytes(film.output).c_str(),
-        render::formatBytes(
-            render::estimateRenderMemory(scene.film.width, scene.film.height, true, false).total())
-            .c_str(),
-        render::formatBytes(
-            render::estimateRenderMemory(scene.film.width, scene.film.height, false, true).total())
-            .c_str());
-    std::printf("lights: %zu emitting primitives, %zu other lights\n", emitters,
-                scene.lights.size());
+        render::formatBytes(s.film.total()).c_str(), render::formatBytes(s.film.film).c_str(),
+        render::formatBytes(s.film.output).c_str(), render::formatBytes(s.filmWithAovs).c_str(),
+        render::formatBytes(s.filmWithStrategies).c_str());
+    std::printf("lights: %zu emitting primitives, %zu other lights\n", s.emitters, s.lights);
     std::printf("materials:\n");
-    std::vector<std::string> spectral;
-    const SpectrumContext<Rgb<float>> context;
-    for (std::size_t i = 0; i < scene.materials.size(); ++i) {
-        const auto bsdf = buildBxdf(scene.materials[i], context);
-        std::printf("  %s: %s; lobes: %s%s\n", scene.materialNames[i].c_str(),
-                    scene.materials[i].type.c_str(), describeLobes(bsdf->flags()).c_str(),
-                    used[i] ? "" : " (unused)");
-        if (used[i]) collectSpectralData(scene.materials[i], spectral);
-    }
+    for (const auto& m : s.materials)
+        std::printf("  %s: %s; lobes: %s%s\n", m.name.c_str(), m.type.c_str(), m.lobes.c_str(),
+                    m.used ? "" : " (unused)");
     for (const auto& name : scene.unusedMaterialNames)
         std::printf("  %s: unused (never loaded)\n", name.c_str());
     std::printf("textures: %zu loaded", scene.textures.size());
     for (const auto& name : scene.unusedTextureNames)
         std::printf(", %s unused (never loaded)", name.c_str());
     std::printf("\n");
-    std::printf("spectral data: %s\n", spectral.empty() ? "none" : "");
-    for (const auto& s : spectral)
-        std::printf("  %s\n", s.c_str());
+    std::printf("spectral data: %s\n", s.spectralData.empty() ? "none" : "");
+    for (const auto& data : s.spectralData)
+        std::printf("  %s\n", data.c_str());
 }
 
 }  // namespace

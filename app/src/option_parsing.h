@@ -1,7 +1,7 @@
-// Option values and options the commands share: comma-separated lists, names looked up in an
-// enumeration's table, image sizes, and the render overrides (--resolution, --max-depth,
-// --threads) with one help text each. Errors are CLI::ValidationError naming the option (exit
-// status 2).
+// Option values of the commands that are not declared in experiments/ (command_declaration.h)
+// or that the command line alone has: comma-separated lists, names looked up in an
+// enumeration's table, positive numbers, image sizes, sample ranges and crops. Errors are
+// CLI::ValidationError naming the option (exit status 2).
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -37,25 +37,16 @@ E parseName(const NameTable<E, N>& table, const std::string& name, const std::st
                                            "\"; expected " + table.list());
 }
 
-/// A comma-separated list of names of `table`.
-template <typename E, std::size_t N>
-std::vector<E> parseNameList(const NameTable<E, N>& table, const std::string& list,
-                             const std::string& what, const std::string& option) {
-    std::vector<E> out;
-    for (const std::string& name : splitList(list))
-        out.push_back(parseName(table, name, what, option));
-    return out;
-}
-
 /// A finite number above zero, with a message that says so (CLI::PositiveNumber's names
-/// the largest double, 309 digits). `what` names the quantity: "seconds".
+/// the largest double, 309 digits). `what` names the quantity: "seconds" (or nothing).
 inline CLI::Validator positiveNumber(const std::string& what) {
     return CLI::Validator(
         [what](std::string& text) -> std::string {
             char* end = nullptr;
             const double v = std::strtod(text.c_str(), &end);
             if (text.empty() || *end != '\0' || !std::isfinite(v) || !(v > 0))
-                return "expected a positive number of " + what + ", got \"" + text + "\"";
+                return "expected a positive number" + (what.empty() ? "" : " of " + what) +
+                       ", got \"" + text + "\"";
             return {};
         },
         "POSITIVE");
@@ -101,37 +92,6 @@ inline render::PixelBounds parsePixelBounds(const std::string& text) {
                                    "(half-open pixel bounds), e.g. 0,32,0,32, got \"" +
                                        text + "\"");
     return b;
-}
-
-/// The options that override a scene's render settings, shared by the commands that render.
-struct RenderOverrides {
-    std::string resolution;
-    int maxDepth = 0;
-    int threads = 0;
-
-    void applyTo(render::RenderOptions& o) const {
-        o.threads = threads;
-        if (maxDepth > 0) o.maxDepth = maxDepth;
-        if (!resolution.empty()) o.resolution = parseResolution(resolution);
-    }
-};
-
-inline void addResolutionOption(CLI::App* cmd, RenderOverrides& o) {
-    cmd->add_option("--resolution", o.resolution, "Image size WIDTHxHEIGHT (overrides)");
-}
-inline void addMaxDepthOption(CLI::App* cmd, RenderOverrides& o) {
-    cmd->add_option("--max-depth", o.maxDepth, "Maximum scattering events per path")
-        ->check(CLI::Range(1, render::kMaxDepthOverride));
-}
-inline void addThreadsOption(CLI::App* cmd, RenderOverrides& o) {
-    cmd->add_option("--threads", o.threads, "Worker threads (default: all cores)")
-        ->check(CLI::Range(1, render::kMaxThreadsOverride));
-}
-
-/// An experiment's output directory (-o, --output), where its report goes.
-inline void addOutputDirectoryOption(CLI::App* cmd, std::string& directory,
-                                     const std::string& help = "Output directory") {
-    cmd->add_option("-o,--output", directory, help)->required();
 }
 
 }  // namespace lamina::app

@@ -7,15 +7,18 @@
 #include <iostream>
 #include <sstream>
 
+#include "declared_options.h"
 #include "interruption.h"
 #include "lamina/core/error.h"
 #include "lamina/core/output_files.h"
 #include "lamina/core/printable.h"
+#include "lamina/experiments/command_options.h"
 #include "lamina/experiments/image_metrics.h"
 #include "lamina/output/image_output.h"
 #include "lamina/output/render_metadata.h"
-#include "lamina/render/renderer.h"
 #include "lamina/output/shard_file.h"
+#include "lamina/output/strategy_files.h"
+#include "lamina/render/renderer.h"
 #include "lamina/version.h"
 #include "option_parsing.h"
 
@@ -23,27 +26,26 @@ namespace lamina::app {
 
 namespace {
 
-struct RenderArgs {
+// What the command line alone reads: the files it writes beside the image and how it reports.
+struct RenderFiles {
     std::string scene;
     std::string output;
-    std::string mode{render::kRenderModeNames.name(render::RenderModeKind::Rgb)};
-    std::string integrator;
-    std::string mis;
-    std::string strategies;
     std::string reference;
     std::string errorLog;
-    std::string sampler;
-    std::string lightSelection;
-    std::string samples;
-    std::string crop;
-    int spp = 0;
-    double seconds = 0;
-    long long seed = -1;
-    RenderOverrides overrides;
+    std::string strategies;
     bool preview = false;
     double exposure = 0;
-    bool aovs = false;
     bool quiet = false;
+
+    explicit RenderFiles(const experiments::OptionValues& v)
+        : scene(*v.text("scene")),
+          output(v.text("output").value_or("")),
+          reference(v.text("reference").value_or("")),
+          errorLog(v.text("error-log").value_or("")),
+          strategies(v.text("strategies").value_or("")),
+          preview(v.flag("preview")),
+          exposure(*v.number("exposure")),
+          quiet(v.flag("quiet")) {}
 };
 
 class ProgressPrinter {
@@ -79,34 +81,9 @@ class ProgressPrinter {
     int lastDecile_ = -1;
 };
 
-// One EXR per strategy: s<S>_t<T>_weighted.exr (its share of the image) and
-// s<S>_t<T>_unweighted.exr (what the strategy alone estimates).
-void writeStrategyImages(const std::string& directory, const render::StrategyImages& images,
-                         const render::Film& like, int spp, const render::ImageMetadata& meta) {
-    std::filesystem::create_directories(directory);
-    const double particles = double(images.width()) * images.height() * spp;
-    for (std::size_t i = 0; i < images.strategies().size(); ++i) {
-        const auto [s, t] = images.strategies()[i];
-        for (const bool weighted : {true, false}) {
-            render::Film film(images.width(), images.height(), like.space());
-            const auto pixels = images.image(int(i), weighted, particles);
-            for (int y = 0; y < film.height(); ++y)
-                for (int x = 0; x < film.width(); ++x)
-                    film.addSample(x, y, pixels[std::size_t(y) * film.width() + x], 1.0);
-            render::ImageMetadata m = meta;
-            m.ints["s"] = s;
-            m.ints["t"] = t;
-            m.ints["mis_weighted"] = weighted ? 1 : 0;
-            const std::string name = "s" + std::to_string(s) + "_t" + std::to_string(t) +
-                                     (weighted ? "_weighted.exr" : "_unweighted.exr");
-            render::writeExr(std::filesystem::path(directory) / name, film, false, m);
-        }
-    }
-}
-
 // Every file the render will write, checked before it starts (the scene and the reference
 // are inputs none of them may replace).
-void checkOutputs(const RenderArgs& a, const std::filesystem::path& output,
+void checkOutputs(const RenderFiles& a, const std::filesystem::path& output,
                   const std::filesystem::path& preview) {
     if (output.extension() != ".exr")
         throw CLI::ValidationError(
@@ -119,36 +96,21 @@ void checkOutputs(const RenderArgs& a, const std::filesystem::path& output,
     if (!a.strategies.empty()) checkOutputDirectory(a.strategies);
 }
 
-void runRender(const RenderArgs& a) {
+void runRender(const experiments::OptionValues& values) {
+    const RenderFiles a(values);
     const render::SceneDesc scene = render::loadScene(a.scene);
     std::filesystem::path output = a.output;
     if (output.empty()) output = std::filesystem::path(a.scene).stem().string() + ".exr";
     const std::filesystem::path preview = std::filesystem::path(output).replace_extension(".png");
     checkOutputs(a, output, preview);
 
-    render::RenderOptions o;
-    o.mode = parseName(render::kRenderModeNames, a.mode, "mode", "--mode");
-    if (a.spp > 0) o.spp = a.spp;
-    if (a.seconds > 0) o.seconds = a.seconds;
-    if (a.seed >= 0) o.seed = std::uint64_t(a.seed);
-    if (!a.sampler.empty())
-        o.sampler = parseName(render::kSamplerNames, a.sampler, "sampler", "--sampler");
-    if (!a.lightSelection.empty())
-        o.lightSelection = parseName(render::kLightSelectionNames, a.lightSelection,
-                                     "light selection", "--light-selection");
-    if (!a.integrator.empty())
-        o.integrator =
-            parseName(render::kIntegratorNames, a.integrator, "integrator", "--integrator");
-    if (!a.mis.empty())
-        o.mis = parseName(render::kMisHeuristicNames, a.mis, "MIS heuristic", "--mis");
+    render::RenderOptions o = experiments::renderOptionsFrom(values);
     o.strategies = !a.strategies.empty();
     if (o.strategies &&
         o.integrator.value_or(scene.settings.integrator) != render::IntegratorKind::Bdpt)
         throw CLI::ValidationError("--strategies", "needs the bdpt integrator");
-    a.overrides.applyTo(o);
-    o.aovs = a.aovs;
-    if (!a.samples.empty()) o.samples = parseSampleRange(a.samples);
-    if (!a.crop.empty()) o.crop = parsePixelBounds(a.crop);
+    if (const auto samples = values.text("samples")) o.samples = parseSampleRange(*samples);
+    if (const auto crop = values.text("crop")) o.crop = parsePixelBounds(*crop);
     const bool shard = o.samples || o.crop;
     if (shard && !a.reference.empty())
         throw CLI::ValidationError("--error-log",
@@ -181,7 +143,7 @@ void runRender(const RenderArgs& a) {
         render::addShardMetadata(meta, scene, o, r);
         render::writeShardExr(output, *r.film, meta);
     } else {
-        render::writeExr(output, *r.film, a.aovs, meta);
+        render::writeExr(output, *r.film, o.aovs, meta);
     }
     if (errors) {
         TemporaryFile tmp(a.errorLog);
@@ -192,7 +154,8 @@ void runRender(const RenderArgs& a) {
         }
         tmp.commit();
     }
-    if (r.strategies) writeStrategyImages(a.strategies, *r.strategies, *r.film, r.spp, meta);
+    if (r.strategies)
+        render::writeStrategyImages(a.strategies, *r.strategies, *r.film, r.spp, meta);
     if (a.preview) render::writePngPreview(preview, *r.film, a.exposure);
 
     if (!a.quiet) {
@@ -215,60 +178,10 @@ void runRender(const RenderArgs& a) {
 }  // namespace
 
 void registerRenderCommand(CLI::App& app) {
-    auto args = std::make_shared<RenderArgs>();
-    CLI::App* cmd = app.add_subcommand("render", "Render a scene file to OpenEXR");
-    cmd->add_option("scene", args->scene, "Scene file (JSON, see docs/scene-format.md)")
-        ->required()
-        ->check(CLI::ExistingFile);
-    cmd->add_option("-o,--output", args->output,
-                    "Output EXR (default: the scene's name in the current directory)");
-    cmd->add_option("--mode", args->mode, "Render mode")
-        ->check(CLI::IsMember(render::kRenderModeNames.names()))
-        ->capture_default_str();
-    cmd->add_option("--integrator", args->integrator,
-                    "Light transport algorithm: path, light or bdpt (overrides the scene's)")
-        ->check(CLI::IsMember(render::kIntegratorNames.names()));
-    cmd->add_option("--mis", args->mis, "BDPT's MIS heuristic (overrides the scene's)")
-        ->check(CLI::IsMember(render::kMisHeuristicNames.names()));
-    auto* reference =
-        cmd->add_option("--reference", args->reference, "Reference image for --error-log")
-            ->check(CLI::ExistingFile);
-    cmd->add_option("--error-log", args->errorLog,
-                    "CSV of seconds, spp, MSE, relMSE, MAE against --reference after every pass")
-        ->needs(reference);
-    reference->needs(cmd->get_option("--error-log"));
-    cmd->add_option("--strategies", args->strategies,
-                    "bdpt: also write one EXR per (s, t) strategy, MIS-weighted and "
-                    "unweighted, path depth <= 4, into this directory");
-    auto* spp = cmd->add_option("--spp", args->spp, "Samples per pixel (overrides the scene's)")
-                    ->check(CLI::Range(1, render::kMaxSppOverride));
-    cmd->add_option("--time", args->seconds, "Render progressive passes for this many seconds")
-        ->check(positiveNumber("seconds"))
-        ->excludes(spp);
-    cmd->add_option("--samples", args->samples,
-                    "FIRST:COUNT: render sample indices [FIRST, FIRST+COUNT) of every pixel "
-                    "into a shard EXR for `lamina merge` (with --time: at most COUNT)")
-        ->excludes(spp);
-    cmd->add_option("--crop", args->crop,
-                    "X0,X1,Y0,Y1: render pixels [X0,X1) x [Y0,Y1) of the film into a shard EXR "
-                    "for `lamina merge`");
-    cmd->add_option("--seed", args->seed, "Random seed (overrides the scene's)")
-        ->check(CLI::Range(0LL, render::kMaxSeedOverride));
-    addThreadsOption(cmd, args->overrides);
-    addResolutionOption(cmd, args->overrides);
-    addMaxDepthOption(cmd, args->overrides);
-    cmd->add_option("--sampler", args->sampler, "Sample generator")
-        ->check(CLI::IsMember(render::kSamplerNames.names()));
-    cmd->add_option("--light-selection", args->lightSelection,
-                    "How next-event estimation picks a light (overrides the scene's)")
-        ->check(CLI::IsMember(render::kLightSelectionNames.names()));
-    cmd->add_flag("--preview", args->preview, "Also write a PNG preview beside the EXR");
-    cmd->add_option("--exposure", args->exposure, "Exposure of the preview in stops")
-        ->capture_default_str();
-    cmd->add_flag("--aovs", args->aovs,
-                  "Add AOV layers: Albedo.RGB, N.XYZ (shading normal), Z (depth), Variance.Y");
-    cmd->add_flag("-q,--quiet", args->quiet, "No progress or summary on stderr");
-    cmd->callback([args] { runRender(*args); });
+    const experiments::CommandDecl& command = experiments::commandDeclaration("render");
+    CLI::App* cmd = app.add_subcommand(command.name, command.help);
+    auto options = std::make_shared<DeclaredOptions>(*cmd, command);
+    cmd->callback([options] { runRender(options->values()); });
 }
 
 }  // namespace lamina::app

@@ -5,31 +5,59 @@ NumPy arrays in and out; the same materials, scenes, validation and one-line err
 docs/python.md.
 """
 
+import inspect as _inspect
+
 from ._lamina import (  # noqa: F401
     Image,
     Material,
     blackbody,
     cie_cmf,
+    command_options,
+    commands,
     compare,
     conductor_f0_f82,
-    convergence,
-    fresnel,
     glasses,
     illuminant,
     illuminants,
     ior,
-    layering,
     material_kinds,
     metals,
     random_numbers,
     read_image,
-    reciprocity,
     rgb_to_spectrum,
     rgb_to_xyz,
-    stability,
     xyz_to_rgb,
 )
 from . import _lamina
+
+
+def _experiment(command):
+    """The function of a declared experiment (experiments/command_declaration.h): its
+    parameters are the declaration's Python options, in order, with their defaults; it returns
+    the experiment's result. A new experiment declared in experiments/ appears here."""
+    name = command["name"]
+    options = [o for o in _lamina.command_options(name) if o["python"] is not None]
+    signature = _inspect.Signature([
+        _inspect.Parameter(o["python"], _inspect.Parameter.POSITIONAL_OR_KEYWORD,
+                           default=_inspect.Parameter.empty if o["required"] else o["default"])
+        for o in options])
+
+    def run(*args, **kwargs):
+        # Only what the caller gave: the declaration's defaults apply to the rest.
+        return _lamina._run_experiment(name, dict(signature.bind(*args, **kwargs).arguments))
+
+    run.__name__ = run.__qualname__ = name
+    run.__signature__ = signature
+    run.__doc__ = "\n".join(
+        [command["help"] + ".", "", "Returns " + command["returns"] + ".", ""]
+        + [f"{o['python']}: {o['help']}" for o in options])
+    return run
+
+
+for _command in _lamina.commands():
+    if _command["experiment"]:
+        globals()[_command["name"]] = _experiment(_command)
+del _command
 
 
 class RenderInterrupted(KeyboardInterrupt):
@@ -45,13 +73,14 @@ def render(scene, **overrides):
     """Renders ``scene`` (a dict in the scene format, or a path to a scene file) and returns
     an Image (``.rgb``, ``.aovs``, ``.metadata``, ``.save(path)``).
 
-    The overrides are the command line's: spp, time, mode, integrator, mis, sampler, seed,
-    threads, max_depth, resolution ((w, h) or "WxH"), aovs; ``progress=callable`` is called
-    after every pass with a dict of fraction, seconds, passes and spp. The GIL is released
-    while rendering. Ctrl-C stops the render after the pass in flight and raises
-    RenderInterrupted (a KeyboardInterrupt) carrying the partial image; an exception raised by
-    the progress callback stops it the same way and is re-raised with the image as its
-    ``image`` attribute.
+    The overrides are the command line's, as its declaration gives them to Python
+    (``command_options("render")``): spp, time, mode, integrator, mis, sampler,
+    light_selection, seed, threads, max_depth, resolution ((w, h) or "WxH"), aovs;
+    ``progress=callable`` is called after every pass with a dict of fraction, seconds, passes
+    and spp. The GIL is released while rendering. Ctrl-C stops the render after the pass in
+    flight and raises RenderInterrupted (a KeyboardInterrupt) carrying the partial image; an
+    exception raised by the progress callback stops it the same way and is re-raised with the
+    image as its ``image`` attribute.
     """
     image, stopped_by = _lamina._render(scene, **overrides)
     if stopped_by is None:

@@ -7,15 +7,16 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
-#include <cmath>
 #include <filesystem>
+#include <map>
 
 #include "arrays.h"
 #include "bindings.h"
+#include "declared_keywords.h"
 #include "lamina/core/error.h"
 #include "lamina/core/json_reader.h"
+#include "lamina/experiments/command_options.h"
 #include "lamina/output/image_output.h"
-#include "lamina/render/render_limits.h"
 #include "lamina/output/render_metadata.h"
 #include "lamina/render/renderer.h"
 #include "lamina/version.h"
@@ -122,81 +123,15 @@ class RenderedImage {
     bool aovs_;
 };
 
-template <typename E, std::size_t N>
-E nameOf(const NameTable<E, N>& table, const py::handle& value, const char* key) {
-    const std::string name = py::str(value);
-    if (const auto e = table.find(name)) return *e;
-    throw py::value_error(std::string(key) + ": expected one of " + table.list() + ", got \"" +
-                          name + "\"");
-}
-
-long long integerIn(const py::handle& value, const char* key, long long min, long long max) {
-    if (!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value))
-        throw py::value_error(std::string(key) + ": expected an integer");
-    const long long v = value.cast<long long>();
-    if (v < min || v > max)
-        throw py::value_error(std::string(key) + ": expected an integer in [" +
-                              std::to_string(min) + ", " + std::to_string(max) + "], got " +
-                              std::to_string(v));
-    return v;
-}
-
-std::pair<int, int> resolutionOf(const py::handle& value) {
-    if (py::isinstance<py::str>(value)) {
-        if (const auto r = render::parseResolutionText(value.cast<std::string>())) return *r;
-    } else if (py::isinstance<py::sequence>(value) && py::len(value) == 2) {
-        const auto s = value.cast<py::sequence>();
-        const int max = render::kMaxResolutionOverride;
-        return {int(integerIn(s[0], "resolution", 1, max)),
-                int(integerIn(s[1], "resolution", 1, max))};
-    }
-    throw py::value_error(
-        "resolution: expected (width, height) or \"WIDTHxHEIGHT\", each in [1, 65536]");
-}
-
-/// The command line's overrides (`lamina render --spp --time --mode ...`) from keywords.
+/// The command line's overrides (`lamina render --spp --time --mode ...`) as keywords: those
+/// the declaration of `render` gives Python (experiments/src/render_declaration.cpp), read as
+/// the command line reads them; `progress`, a callable, is Python's own.
 RenderOptions optionsOf(const py::kwargs& kwargs, py::object& progress) {
-    RenderOptions o;
-    for (const auto& [k, value] : kwargs) {
-        const std::string key = py::str(k);
-        if (value.is_none()) continue;
-        if (key == "spp") {
-            o.spp = int(integerIn(value, "spp", 1, render::kMaxSppOverride));
-        } else if (key == "time") {
-            const double t = value.cast<double>();
-            if (!(t > 0) || !std::isfinite(t))
-                throw py::value_error("time: expected a positive number of seconds");
-            o.seconds = t;
-        } else if (key == "mode") {
-            o.mode = nameOf(render::kRenderModeNames, value, "mode");
-        } else if (key == "integrator") {
-            o.integrator = nameOf(render::kIntegratorNames, value, "integrator");
-        } else if (key == "mis") {
-            o.mis = nameOf(render::kMisHeuristicNames, value, "mis");
-        } else if (key == "sampler") {
-            o.sampler = nameOf(render::kSamplerNames, value, "sampler");
-        } else if (key == "seed") {
-            o.seed = std::uint64_t(integerIn(value, "seed", 0, render::kMaxSeedOverride));
-        } else if (key == "threads") {
-            o.threads = int(integerIn(value, "threads", 1, render::kMaxThreadsOverride));
-        } else if (key == "max_depth") {
-            o.maxDepth = int(integerIn(value, "max_depth", 1, render::kMaxDepthOverride));
-        } else if (key == "resolution") {
-            o.resolution = resolutionOf(value);
-        } else if (key == "aovs") {
-            o.aovs = value.cast<bool>();
-        } else if (key == "progress") {
-            if (!PyCallable_Check(value.ptr()))
-                throw py::value_error("progress: expected a callable");
-            progress = py::reinterpret_borrow<py::object>(value);
-        } else {
-            throw py::type_error("render() got an unexpected keyword argument '" + key +
-                                 "'; expected spp, time, mode, integrator, mis, sampler, seed, "
-                                 "threads, max_depth, resolution, aovs, progress");
-        }
-    }
-    if (o.spp && o.seconds) throw py::value_error("time: excludes spp (as --time excludes --spp)");
-    return o;
+    std::map<std::string, py::object> callbacks;
+    const experiments::OptionValues values =
+        keywordValues(experiments::commandDeclaration("render"), kwargs, "render", &callbacks);
+    if (const auto it = callbacks.find("progress"); it != callbacks.end()) progress = it->second;
+    return experiments::renderOptionsFrom(values);
 }
 
 render::SceneDesc sceneOf(const py::object& scene) {

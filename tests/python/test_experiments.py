@@ -90,3 +90,23 @@ def test_layering():
         ['{"type":"coated","ior":1.5,"base":{"type":"conductor","material":"Au","roughness":0}}'],
         estimates=2, albedo_samples=64)
     assert mirror["twins"] == [] and "smooth conductor" in mirror["note"]
+
+
+def test_convergence_takes_the_command_lines_options(scene):
+    r = lamina.convergence(scene, integrators=["light"], seconds=0.3, reference_seconds=0.6,
+                           resolution=(12, 12), levels=[0.5, "1e-1"], reference_integrator="bdpt",
+                           sampler="independent")
+    (curve,) = r["curves"]
+    assert curve["integrator"] == "light"
+    assert list(curve["time_to_relmse"]) == ["0.5", "1e-1"]
+    with pytest.raises(ValueError, match="reference_integrator: expected one of path, light, bdpt"):
+        lamina.convergence(scene, reference_integrator="photon")
+    with pytest.raises(ValueError, match="levels: expected numbers"):
+        lamina.convergence(scene, levels=["small"])
+    with pytest.raises(TypeError, match="merged"):
+        lamina.convergence(scene, merged="a.exr")
+
+
+def test_reciprocity_takes_the_ablations(scene):
+    with pytest.raises(ValueError, match='ablate: unknown "drop"; expected adjoint-correction'):
+        lamina.reciprocity(scene, ablate=["drop"])

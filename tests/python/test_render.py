@@ -141,3 +141,16 @@ def test_errors(cornell, lamina_exe, tmp_path):
     with pytest.raises(ValueError) as e:
         lamina.render(str(bad))
     assert status == 1 and err.strip() == "lamina: error: " + str(e.value)
+
+
+def test_light_selection_and_every_override_the_command_line_has(cornell, lamina_exe, tmp_path):
+    img = lamina.render(cornell, spp=1, resolution=(8, 8), seed=3, light_selection="uniform")
+    assert img.metadata["light_selection"] == "uniform"
+    out = tmp_path / "cli.exr"
+    status, _, err = run_cli(lamina_exe, "render", cornell, "--spp", "1", "--resolution", "8x8",
+                             "--seed", "3", "--light-selection", "uniform", "-q", "-o", str(out))
+    assert status == 0, err
+    cli, meta = lamina.read_image(str(out))
+    assert np.array_equal(img.rgb, cli)
+    with pytest.raises(ValueError, match="light_selection: expected one of bvh, power, uniform"):
+        lamina.render(cornell, light_selection="random")

@@ -52,6 +52,13 @@ class NameTable {
             out.emplace_back(e.name);
         return out;
     }
+    /// Every value in table order (e.g. every integrator, as an experiment's default).
+    std::vector<E> values() const {
+        std::vector<E> out;
+        for (const auto& e : entries_)
+            out.push_back(e.value);
+        return out;
+    }
     /// The names joined for a message: "path, light, bdpt".
     std::string list(std::string_view separator = ", ") const {
         std::string out;

@@ -26,8 +26,8 @@ struct ErrorLevel {
 
 struct ConvergenceInputs {
     std::string scene;  ///< scene file
-    std::vector<render::IntegratorKind> integrators = {
-        render::IntegratorKind::Path, render::IntegratorKind::Light, render::IntegratorKind::Bdpt};
+    /// Every integrator of kIntegratorNames unless chosen.
+    std::vector<render::IntegratorKind> integrators = render::kIntegratorNames.values();
     std::vector<render::RenderModeKind> modes = {render::RenderModeKind::Rgb};
     double seconds = 10;  ///< render time of each combination
     std::vector<ErrorLevel> levels = {{1e-2, "1e-2"}, {1e-3, "1e-3"}};

@@ -32,8 +32,8 @@ inline constexpr NameTable kAblationNames{
 
 struct ReciprocityInputs {
     std::string scene;  ///< scene file
-    std::vector<render::IntegratorKind> integrators = {
-        render::IntegratorKind::Path, render::IntegratorKind::Light, render::IntegratorKind::Bdpt};
+    /// Every integrator of kIntegratorNames unless chosen.
+    std::vector<render::IntegratorKind> integrators = render::kIntegratorNames.values();
     render::RenderModeKind mode = render::RenderModeKind::Rgb;
     int spp = 256;           ///< per integrator, over all batches
     int batches = 16;        ///< independent batches per integrator

@@ -1,6 +1,6 @@
-// The ranges of the render settings a user overrides: the command line's options
-// (app/src/option_parsing.h, `lamina render`) and the Python module's keywords
-// (lamina.render) check the same numbers.
+// The ranges of the render settings a user overrides: the commands' declarations
+// (experiments/src/render_declaration.cpp and the experiments') take them from here, and so
+// the command line's options and the Python module's keywords check the same numbers.
 #pragma once
 
 #include <optional>

@@ -1,0 +1,38 @@
+// `lamina compare` and lamina.compare: the command line measures image files, Python arrays
+// (or Images) it already holds.
+#include "declarations.h"
+#include "lamina/experiments/image_metrics.h"
+
+namespace lamina::experiments {
+
+CommandDecl compareDeclaration() {
+    CommandDecl c;
+    c.name = "compare";
+    c.help = "Error metrics of an image against a reference (relMSE epsilon 1e-2)";
+    c.returns = "a dict of mse, rmse, relmse, mae and max, or the one metric named";
+    c.options = {
+        fileOption("image", "Image to measure (EXR or any OpenImageIO format)")
+            .asPositional()
+            .asRequired()
+            .existing()
+            .spelledInPython("a", "Python measures an (H, W, 3) array or an Image, not a file"),
+        fileOption("reference", "Reference image")
+            .asPositional()
+            .asRequired()
+            .existing()
+            .differsInPython("an (H, W, 3) array or an Image, not a file"),
+        nameListOption("metric", "Comma-separated: " + kMetricNames.list(), kMetricNames, "metric")
+            .byDefault(kMetricNames.names())
+            .differsInPython("one name, whose value is returned; None (the default) returns a "
+                             "dict of every metric"),
+        textOption("diff",
+                   "Write a false-colour PNG of |image - reference| and beside it an SVG "
+                   "figure with its colour bar")
+            .commandLineOnly("a picture file; in Python |a - b| is one NumPy expression"),
+        positiveOption("diff-scale", "The difference shown white in --diff (default: the largest)")
+            .commandLineOnly("the scale of --diff's picture"),
+    };
+    return c;
+}
+
+}  // namespace lamina::experiments

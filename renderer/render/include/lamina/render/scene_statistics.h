@@ -1,0 +1,40 @@
+// What a scene needs before it is rendered (`lamina info`): geometry counts and the memory the
+// geometry takes, instancing, the film's memory, lights, the materials with their active lobes,
+// and the spectral data the used materials read. Counted here; the command prints it.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "lamina/render/render_memory.h"
+#include "lamina/scene/scene_description.h"
+
+namespace lamina::render {
+
+struct SceneStatistics {
+    std::size_t meshes = 0, triangles = 0, vertices = 0, spheres = 0, disks = 0;
+    /// The meshes' arrays (the scene's and the objects') and Embree's BVH, roughly.
+    std::size_t geometryBytes = 0;
+    /// Instancing: an object's shapes are stored once and its instances reference them.
+    std::size_t instances = 0, objects = 0;
+    std::size_t instancedTriangles = 0;                      ///< referenced by the instances
+    std::size_t objectTriangles = 0;                         ///< stored in the objects
+    RenderMemory film;                                       ///< the film at the scene's resolution
+    std::uint64_t filmWithAovs = 0, filmWithStrategies = 0;  ///< totals
+    std::size_t emitters = 0;  ///< emitting primitives (triangles, spheres, disks)
+    std::size_t lights = 0;    ///< the other lights
+    struct Material {
+        std::string name;
+        std::string type;
+        std::string lobes;  ///< describeLobes of its BSDF built in RGB mode
+        bool used = false;
+    };
+    std::vector<Material> materials;
+    /// The spectral data of the used materials: "Au (n, k)", "bk7 (dispersion)", ...
+    std::vector<std::string> spectralData;
+};
+
+SceneStatistics sceneStatistics(const SceneDesc& scene);
+
+}  // namespace lamina::render

@@ -1,0 +1,78 @@
+#include "lamina/bsdf/material_kind.h"
+#include "lamina/render/scene_statistics.h"
+
+#include "lamina/bsdf/material_builder.h"
+
+namespace lamina::render {
+
+namespace {
+
+template <typename Mesh>
+std::size_t meshBytes(const Mesh& m) {
+    return m.positions.size() * sizeof(m.positions[0]) + m.normals.size() * 12 + m.uvs.size() * 8 +
+           m.triangles.size() * 12;
+}
+
+}  // namespace
+
+SceneStatistics sceneStatistics(const SceneDesc& scene) {
+    SceneStatistics s;
+    s.meshes = scene.meshes.size();
+    s.spheres = scene.spheres.size();
+    s.disks = scene.disks.size();
+    std::vector<bool> used(scene.materials.size(), false);
+    for (const auto& m : scene.meshes) {
+        s.triangles += m.triangles.size();
+        s.vertices += m.positions.size();
+        s.geometryBytes += meshBytes(m);
+        if (m.emission) s.emitters += m.triangles.size();
+        used[std::size_t(m.material)] = true;
+    }
+    for (const auto& sphere : scene.spheres) {
+        if (sphere.emission) ++s.emitters;
+        used[std::size_t(sphere.material)] = true;
+    }
+    for (const auto& d : scene.disks) {
+        if (d.emission) ++s.emitters;
+        used[std::size_t(d.material)] = true;
+    }
+    std::size_t objectPrimitives = 0;
+    std::vector<std::size_t> trianglesOf(scene.objects.size(), 0);
+    for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+        const ObjectDesc& object = scene.objects[o];
+        for (const auto& m : object.meshes) {
+            trianglesOf[o] += m.triangles.size();
+            s.geometryBytes += meshBytes(m);
+            used[std::size_t(m.material)] = true;
+        }
+        for (const auto& sphere : object.spheres)
+            used[std::size_t(sphere.material)] = true;
+        for (const auto& d : object.disks)
+            used[std::size_t(d.material)] = true;
+        s.objectTriangles += trianglesOf[o];
+        objectPrimitives += trianglesOf[o] + object.spheres.size() + object.disks.size();
+    }
+    s.objects = scene.objects.size();
+    s.instances = scene.instances.size();
+    for (const auto& inst : scene.instances)
+        s.instancedTriangles += trianglesOf[std::size_t(inst.object)];
+    // Embree's BVH over triangles takes roughly 64 bytes per primitive (a rough guide), and
+    // an instance about as much as one primitive.
+    s.geometryBytes +=
+        (s.triangles + scene.spheres.size() + objectPrimitives + scene.instances.size()) * 64;
+    const int w = scene.film.width, h = scene.film.height;
+    s.film = estimateRenderMemory(w, h, false, false);
+    s.filmWithAovs = estimateRenderMemory(w, h, true, false).total();
+    s.filmWithStrategies = estimateRenderMemory(w, h, false, true).total();
+    s.lights = scene.lights.size();
+    const SpectrumContext<Rgb<float>> context;
+    for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+        const auto bsdf = buildBxdf(scene.materials[i], context);
+        s.materials.push_back({scene.materialNames[i], scene.materials[i].type,
+                               describeLobes(bsdf->flags()), used[i]});
+        if (used[i]) collectSpectralData(scene.materials[i], s.spectralData);
+    }
+    return s;
+}
+
+}  // namespace lamina::render

@@ -1,0 +1,48 @@
+// What `lamina info` counts (scene_statistics.h): shapes, emitting primitives, materials with
+// their lobes and whether a shape uses them, the spectral data of the used ones, and the film's
+// memory at the scene's resolution.
+#include <gtest/gtest.h>
+
+#include "lamina/core/json_reader.h"
+#include "lamina/render/scene_statistics.h"
+
+namespace lamina::render {
+namespace {
+
+TEST(SceneStatistics, CountsWhatTheSceneHolds) {
+    const SceneDesc scene = parseScene(R"({
+      "camera": {"position": [0, 0, -4], "look_at": [0, 0, 0]},
+      "film": {"resolution": [16, 8]},
+      "materials": {"gold": {"type": "conductor", "material": "Au"},
+                    "matte": {"type": "lambert"},
+                    "spare": {"type": "conductor", "material": "Cu"}},
+      "shapes": [
+        {"type": "sphere", "radius": 1, "material": "gold"},
+        {"type": "rectangle", "material": "matte", "transform": [{"translate": [0, 3, 0]}],
+         "emission": {"radiance": 1}}
+      ]
+    })",
+                                       JsonSource{"<test>", "."});
+    const SceneStatistics s = sceneStatistics(scene);
+    EXPECT_EQ(s.spheres, 1u);
+    // The rectangle is a mesh of two triangles, both emitting.
+    EXPECT_EQ(s.meshes, 1u);
+    EXPECT_EQ(s.triangles, 2u);
+    EXPECT_EQ(s.vertices, 4u);
+    EXPECT_EQ(s.emitters, 2u);
+    EXPECT_EQ(s.lights, 0u);
+    EXPECT_GT(s.geometryBytes, 0u);
+    EXPECT_EQ(s.film.total(), estimateRenderMemory(16, 8, false, false).total());
+    EXPECT_EQ(s.filmWithAovs, estimateRenderMemory(16, 8, true, false).total());
+    ASSERT_EQ(s.materials.size(), scene.materials.size());
+    for (const auto& m : s.materials) {
+        EXPECT_FALSE(m.lobes.empty()) << m.name;
+        EXPECT_EQ(m.used, m.name != "spare") << m.name;
+    }
+    // The used conductor's n, k; the unused one's not.
+    ASSERT_EQ(s.spectralData.size(), 1u);
+    EXPECT_NE(s.spectralData[0].find("(n, k)"), std::string::npos) << s.spectralData[0];
+}
+
+}  // namespace
+}  // namespace lamina::render
