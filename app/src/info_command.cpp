@@ -29,45 +29,45 @@ void run(const std::string& file) {
     const render::SceneDesc scene = render::loadScene(file);
     std::size_t triangles = 0, vertices = 0, bytes = 0, emitters = 0;
     std::vector<bool> used(scene.materials.size(), false);
-    for (const auto& m : scene.meshes) {
-        triangles += m.triangles.size();
-        vertices += m.positions.size();
-        bytes += m.positions.size() * sizeof(m.positions[0]) + m.normals.size() * 12 +
-                 m.uvs.size() * 8 + m.triangles.size() * 12;
-        if (m.emission) emitters += m.triangles.size();
-        used[std::size_t(m.material)] = true;
+    for (const auto& shape : scene.shapes) {
+        const render::SurfaceDesc& surface = render::surface(shape);
+        used[std::size_t(surface.material)] = true;
+        if (const auto* m = std::get_if<render::MeshDesc>(&shape)) {
+            triangles += m->triangles.size();
+            vertices += m->positions.size();
+            bytes += m->positions.size() * sizeof(m->positions[0]) + m->normals.size() * 12 +
+                     m->uvs.size() * 8 + m->triangles.size() * 12;
+            if (m->emission) emitters += m->triangles.size();
+        } else if (surface.emission) {
+            ++emitters;
+        }
     }
-    for (const auto& s : scene.spheres) {
-        if (s.emission) ++emitters;
-        used[std::size_t(s.material)] = true;
-    }
-    for (const auto& d : scene.disks) {
-        if (d.emission) ++emitters;
-        used[std::size_t(d.material)] = true;
-    }
+    const std::size_t meshes = render::countShapes<render::MeshDesc>(scene.shapes),
+                      spheres = render::countShapes<render::SphereDesc>(scene.shapes),
+                      disks = render::countShapes<render::DiskDesc>(scene.shapes);
     // An object's shapes are stored once; its instances reference them (no copies).
     std::size_t objectTriangles = 0, objectPrimitives = 0, instancedTriangles = 0;
     std::vector<std::size_t> trianglesOf(scene.objects.size(), 0);
     for (std::size_t o = 0; o < scene.objects.size(); ++o) {
         const render::ObjectDesc& object = scene.objects[o];
-        for (const auto& m : object.meshes) {
-            trianglesOf[o] += m.triangles.size();
-            bytes += m.positions.size() * sizeof(m.positions[0]) + m.normals.size() * 12 +
-                     m.uvs.size() * 8 + m.triangles.size() * 12;
-            used[std::size_t(m.material)] = true;
+        for (const auto& shape : object.shapes) {
+            used[std::size_t(render::surface(shape).material)] = true;
+            if (const auto* m = std::get_if<render::MeshDesc>(&shape)) {
+                trianglesOf[o] += m->triangles.size();
+                bytes += m->positions.size() * sizeof(m->positions[0]) + m->normals.size() * 12 +
+                         m->uvs.size() * 8 + m->triangles.size() * 12;
+            }
         }
-        for (const auto& s : object.spheres)
-            used[std::size_t(s.material)] = true;
-        for (const auto& d : object.disks)
-            used[std::size_t(d.material)] = true;
         objectTriangles += trianglesOf[o];
-        objectPrimitives += trianglesOf[o] + object.spheres.size() + object.disks.size();
+        objectPrimitives += trianglesOf[o] +
+                            render::countShapes<render::SphereDesc>(object.shapes) +
+                            render::countShapes<render::DiskDesc>(object.shapes);
     }
     for (const auto& inst : scene.instances)
         instancedTriangles += trianglesOf[std::size_t(inst.object)];
     // Embree's BVH over triangles takes roughly 64 bytes per primitive (a rough guide), and
     // an instance about as much as one primitive.
-    bytes += (triangles + scene.spheres.size() + objectPrimitives + scene.instances.size()) * 64;
+    bytes += (triangles + spheres + objectPrimitives + scene.instances.size()) * 64;
     std::printf("scene: %s\n", file.c_str());
     // The loader has printed each warning on stderr already ("lamina: warning: ..."); the
     // listing counts them rather than repeating them.
@@ -87,8 +87,7 @@ void run(const std::string& file) {
     std::printf(
         "geometry: %zu meshes (%zu triangles, %zu vertices), %zu spheres, %zu disks, "
         "~%.1f MiB\n",
-        scene.meshes.size(), triangles, vertices, scene.spheres.size(), scene.disks.size(),
-        double(bytes) / (1 << 20));
+        meshes, triangles, vertices, spheres, disks, double(bytes) / (1 << 20));
     if (!scene.objects.empty() || !scene.unusedObjectNames.empty()) {
         std::printf(
             "instances: %zu of %zu objects, referencing %zu triangles (%zu stored once in the "
