@@ -130,8 +130,9 @@ TEST_F(PbrtCommandLine, ConvertWritesTheSceneThatRenders) {
     const Json written = readJsonFile(out);
     EXPECT_EQ(written["shapes"][0]["file"], "../m.ply");
     const SceneDesc fromJson = loadScene(out), fromPbrt = loadScene(scene);
-    ASSERT_EQ(fromJson.meshes.size(), 1u);
-    EXPECT_EQ(fromJson.meshes[0].positions, fromPbrt.meshes[0].positions);
+    ASSERT_EQ(countShapes<MeshDesc>(fromJson.shapes), 1u);
+    EXPECT_EQ(std::get<MeshDesc>(fromJson.shapes[0]).positions,
+              std::get<MeshDesc>(fromPbrt.shapes[0]).positions);
     EXPECT_EQ(fromJson.camera.handedness, Handedness::Left);
     EXPECT_EQ(fromJson.film.width, 8);
 }

@@ -190,8 +190,9 @@ TEST(DiskLight, IrradianceBelowTheCentreIsAnalytic) {
     for (double rho : {1.49, 1.51}) {
         const auto hit = g.intersect(Vec3f(float(rho), 3, 0), Vec3f(0, -1, 0));
         ASSERT_TRUE(hit);
-        EXPECT_EQ(g.shapes()[std::size_t(hit->shape)].kind == render::ShapeInfo::Kind::Disk,
-                  rho < 1.5);
+        EXPECT_EQ(
+            std::holds_alternative<render::DiskDesc>(*g.shapes()[std::size_t(hit->shape)].desc),
+            rho < 1.5);
     }
 }
 

@@ -242,9 +242,10 @@ TEST_F(EnvironmentFiles, ANonSquareOctahedralMapIsRefused) {
 
 // The orientation a scene's environment `transform` reads to.
 Mat3<double> orientationOf(const std::string& file, const std::string& transform) {
-    return testing::sceneFromText(R"({"lights": [{"type": "environment", "file": ")" + file +
-                                  R"(", "transform": )" + transform + "}]}")
-        .lights.at(0)
+    return std::get<render::EnvironmentLightDesc>(
+               testing::sceneFromText(R"({"lights": [{"type": "environment", "file": ")" + file +
+                                      R"(", "transform": )" + transform + "}]}")
+                   .lights.at(0))
         .orientation;
 }
 

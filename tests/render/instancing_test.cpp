@@ -74,7 +74,7 @@ TEST(Instancing, HitsEqualTheCopiesWrittenOutAsShapes) {
     const auto instanced = testing::sceneFromText(sceneText(true));
     const auto copies = testing::sceneFromText(sceneText(false));
     ASSERT_EQ(instanced.instances.size(), 3u);
-    ASSERT_EQ(copies.meshes.size(), 4u);
+    ASSERT_EQ(render::countShapes<render::MeshDesc>(copies.shapes), 4u);
     const render::Geometry gi(instanced), gc(copies);
     Pcg32 rng(5);
     int hits = 0;
@@ -91,20 +91,22 @@ TEST(Instancing, HitsEqualTheCopiesWrittenOutAsShapes) {
         ++hits;
         EXPECT_EQ(gi.shapes()[std::size_t(a->shape)].material,
                   gc.shapes()[std::size_t(b->shape)].material);
-        EXPECT_EQ(gi.shapes()[std::size_t(a->shape)].kind, gc.shapes()[std::size_t(b->shape)].kind);
+        EXPECT_EQ(gi.shapes()[std::size_t(a->shape)].desc->index(),
+                  gc.shapes()[std::size_t(b->shape)].desc->index());
         EXPECT_LT(glm::length(a->p - b->p), 1e-5f) << i;
         EXPECT_GT(glm::dot(a->ng, b->ng), 0.99999f) << i;
         EXPECT_GT(glm::dot(a->ns, b->ns), 0.99999f) << i;
         // A sphere's or disk's uv is in its own frame: an instance's turns with the instance, a
         // transformed shape's stays in world axes (the reader keeps only centre and normal).
-        if (gc.shapes()[std::size_t(b->shape)].kind == render::ShapeInfo::Kind::Mesh) {
+        if (std::holds_alternative<render::MeshDesc>(*gc.shapes()[std::size_t(b->shape)].desc)) {
             EXPECT_NEAR(a->uv.x, b->uv.x, 1e-4f) << i;
             EXPECT_NEAR(a->uv.y, b->uv.y, 1e-4f) << i;
         }
-        // The lamp is the copies' fourth mesh (three copied ones before it), a shape in both.
+        // The lamp is the copies' fourth mesh (three copied ones before it), a shape in both;
+        // the meshes come first among the shapes, so its index there is 3 too.
         const bool lamp =
-            gc.shapes()[std::size_t(b->shape)].kind == render::ShapeInfo::Kind::Mesh &&
-            gc.shapes()[std::size_t(b->shape)].index == 3;
+            std::holds_alternative<render::MeshDesc>(*gc.shapes()[std::size_t(b->shape)].desc) &&
+            b->shape == 3;
         EXPECT_EQ(a->instance >= 0, !lamp) << i;
     }
     EXPECT_GT(hits, 3000);
@@ -129,7 +131,7 @@ TEST(Instancing, StoresOneCopyOfAnObjectPlacedOneThousandTimes) {
     m.material = 0;
     const std::size_t triangles = m.triangles.size();
     ASSERT_GE(triangles, 100000u);
-    grid.meshes.push_back(std::move(m));
+    grid.shapes.push_back(std::move(m));
     scene.objects.push_back(std::move(grid));
     for (int i = 0; i < 1000; ++i) {
         render::InstanceDesc inst;

@@ -18,8 +18,8 @@
 
 #include "chi2_helpers.h"
 #include "lamina/core/pcg32.h"
-#include "lamina/output/image_output.h"
 #include "lamina/lights/lights.h"
+#include "lamina/output/image_output.h"
 #include "render_helpers.h"
 #include "source_files.h"
 
@@ -358,11 +358,11 @@ TEST(LightBvh, TwoLightTreeChoosesByTheShareOfTheDefinition) {
     SceneDesc box = loadScene(testing::sourceFile("scenes/cornell-box.json"));
     // The lamp's two triangles with vertices of their own, so that they are two lights (two
     // triangles on four vertices that make a rectangle are one, RectangleLight::isRectangle).
-    for (MeshDesc& m : box.meshes)
-        if (m.name == "light") {
-            const auto p = m.positions;
-            m.positions = {p[0], p[1], p[2], p[2], p[3], p[0]};
-            m.triangles = {{0, 1, 2}, {3, 4, 5}};
+    for (ShapeDesc& shape : box.shapes)
+        if (auto* m = std::get_if<MeshDesc>(&shape); m && m->name == "light") {
+            const auto p = m->positions;
+            m->positions = {p[0], p[1], p[2], p[2], p[3], p[0]};
+            m->triangles = {{0, 1, 2}, {3, 4, 5}};
         }
     const Geometry geometry(box);
     const LightSet lights(box, geometry, LightSelection::Bvh);
@@ -444,8 +444,10 @@ TEST(LightSet, ChoiceReadsNoNumberExactlyWhenThereIsOneLightToChoose) {
     // The triangle and its neighbour across the edge (1, 2), both facing +y.
     SceneDesc twoTriangles = scene(", " + triangle, "");
     // The second triangle's far corner off the square, so the two are not one rectangle light.
-    twoTriangles.meshes[0].positions.push_back({2, 0, 1});
-    twoTriangles.meshes[0].triangles.push_back({1, 2, 3});
+    // (The meshes come first among the shapes: the triangle is the first shape.)
+    MeshDesc& pair = std::get<MeshDesc>(twoTriangles.shapes[0]);
+    pair.positions.push_back({2, 0, 1});
+    pair.triangles.push_back({1, 2, 3});
     const Case cases[] = {
         {"one triangle", scene(", " + triangle, ""), false, false},
         {"rectangle and constant sky",

@@ -21,7 +21,7 @@ struct ScaleCase {
 
 class RayOffset : public ::testing::TestWithParam<ScaleCase> {};
 
-// Geometry numbers meshes first, then spheres.
+// Geometry numbers meshes first, then spheres (SceneDesc::shapes is ordered by kind).
 constexpr int kTriangle = 0, kSphere = 1;
 
 TEST_P(RayOffset, NoSelfIntersectionOnSpheresAndTriangles) {
@@ -66,7 +66,7 @@ TEST_P(RayOffset, NoSelfIntersectionOnSpheresAndTriangles) {
     }
     for (int i = 0; i < 5000; ++i) {
         const Vec2f b = squareToUniformTriangle(Vec2f(rng.nextFloat(), rng.nextFloat()));
-        const auto& m = scene.meshes[0];
+        const auto& m = std::get<render::MeshDesc>(scene.shapes[0]);
         const Vec3f p =
             b.x * m.positions[0] + b.y * m.positions[1] + (1 - b.x - b.y) * m.positions[2];
         const Vec3f n = glm::normalize(

@@ -73,7 +73,7 @@ TEST(RectangleLight, NearerThanItsDiagonalItIsSampledBySolidAngle) {
     render::Geometry geometry(scene);
     const render::LightSet lights(scene, geometry, render::LightSelection::Power);
     const render::Light& light = lights.light(0);
-    const auto& m = scene.meshes[0];
+    const auto& m = std::get<render::MeshDesc>(scene.shapes[0]);
     const Vec3d p0(m.positions[0]), ex = Vec3d(m.positions[1]) - p0,
                                     ey = Vec3d(m.positions[3]) - p0;
     const Vec3d n = glm::normalize(glm::cross(ex, ey)), centre = p0 + 0.5 * (ex + ey);
@@ -161,7 +161,7 @@ TEST(RectangleLight, FarAwayTheAreaFallbackIsUnbiased) {
         ASSERT_TRUE(s);
         sum += 1.0 / s->pdf;
     }
-    const auto& m = scene.meshes[0];
+    const auto& m = std::get<render::MeshDesc>(scene.shapes[0]);
     const Vec3<double> ex(m.positions[1] - m.positions[0]), ey(m.positions[3] - m.positions[0]);
     const Vec3<double> n0 = glm::normalize(glm::cross(ex, ey));
     const Vec3<double> centre = Vec3<double>(m.positions[0]) + 0.5 * (ex + ey);

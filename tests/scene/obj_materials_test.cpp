@@ -9,6 +9,7 @@
 
 #include "lamina/core/json_reader.h"
 #include "lamina/scene/scene_description.h"
+#include "scene_shapes.h"
 #include "scratch_directory.h"
 
 namespace lamina {
@@ -48,7 +49,8 @@ class ObjMaterials : public testing::ScratchDirectoryTest {
     render::SceneDesc loadObj() { return load(R"({"type": "obj", "file": "quads.obj"})"); }
 
     const MaterialDesc& materialOf(const render::SceneDesc& s, std::size_t mesh) {
-        return s.materials.at(std::size_t(s.meshes.at(mesh).material));
+        return s.materials.at(
+            std::size_t(testing::shapesOf<render::MeshDesc>(s.shapes).at(mesh).material));
     }
     std::string mtl() const { return (dir_ / "quads.mtl").lexically_normal().string(); }
 };
@@ -57,12 +59,13 @@ TEST_F(ObjMaterials, EachUsemtlGroupIsAMeshWithItsMaterial) {
     write("quads.mtl", "newmtl red\nKd 0.8 0.1 0.1\n\nnewmtl green\nKd 0.1 0.8 0.1\n");
     writeObj({"red", "green"});
     const render::SceneDesc s = loadObj();
-    ASSERT_EQ(s.meshes.size(), 2u);
-    EXPECT_EQ(s.meshes[0].name, "shapes[0]:red");
-    EXPECT_EQ(s.meshes[1].name, "shapes[0]:green");
-    EXPECT_EQ(s.meshes[0].triangles.size(), 2u);
-    EXPECT_EQ(s.materialNames.at(std::size_t(s.meshes[0].material)), mtl() + ":red");
-    EXPECT_EQ(s.materialNames.at(std::size_t(s.meshes[1].material)), mtl() + ":green");
+    const auto meshes = testing::shapesOf<render::MeshDesc>(s.shapes);
+    ASSERT_EQ(meshes.size(), 2u);
+    EXPECT_EQ(meshes[0].name, "shapes[0]:red");
+    EXPECT_EQ(meshes[1].name, "shapes[0]:green");
+    EXPECT_EQ(meshes[0].triangles.size(), 2u);
+    EXPECT_EQ(s.materialNames.at(std::size_t(meshes[0].material)), mtl() + ":red");
+    EXPECT_EQ(s.materialNames.at(std::size_t(meshes[1].material)), mtl() + ":green");
     EXPECT_EQ(materialOf(s, 0).type, "lambert");
     EXPECT_EQ(std::get<DiffuseMaterial>(materialOf(s, 0).model).reflectance.rgb,
               RgbInput(0.8, 0.1, 0.1));
@@ -83,7 +86,8 @@ TEST_F(ObjMaterials, TheMappingOfEachKey) {
     write("photo.ppm", "P3\n2 1\n255\n255 0 0 0 255 0\n");
     writeObj({"shiny", "glass", "dissolved", "lamp", "photo"});
     const render::SceneDesc s = loadObj();
-    ASSERT_EQ(s.meshes.size(), 5u);
+    const auto meshes = testing::shapesOf<render::MeshDesc>(s.shapes);
+    ASSERT_EQ(meshes.size(), 5u);
 
     // Ks, Ns: the specular workflow, alpha = sqrt(2 / (Ns + 2)) (Walter et al. 2007).
     const auto& shiny = std::get<StandardMaterial>(materialOf(s, 0).model);
@@ -105,13 +109,13 @@ TEST_F(ObjMaterials, TheMappingOfEachKey) {
                 ::testing::Contains(HasSubstr(mtl() + ":11: partial dissolve d 0.5")));
 
     // Ke: the group emits.
-    ASSERT_TRUE(s.meshes[3].emission);
-    EXPECT_EQ(s.meshes[3].emission->radiance, Rgb<double>(2, 3, 4));
-    EXPECT_FALSE(s.meshes[0].emission);
+    ASSERT_TRUE(meshes[3].emission);
+    EXPECT_EQ(meshes[3].emission->radiance, Rgb<double>(2, 3, 4));
+    EXPECT_FALSE(meshes[0].emission);
 
     // map_Kd: an image texture, relative to the MTL file, as the reflectance.
     EXPECT_EQ(materialOf(s, 4).type, "lambert");
-    const auto& tex = s.materialTextures.at(std::size_t(s.meshes[4].material));
+    const auto& tex = s.materialTextures.at(std::size_t(meshes[4].material));
     ASSERT_GE(tex.color, 0);
     EXPECT_EQ(s.textureNames.at(std::size_t(tex.color)), mtl() + ":photo:map_Kd");
     const Rgb<float> left = s.textures[std::size_t(tex.color)]->evaluate({0.25f, 0.5f});
@@ -136,11 +140,12 @@ TEST_F(ObjMaterials, FacesWithoutAKnownMaterialGetTheDefaultLambert) {
     write("quads.mtl", "newmtl red\nKd 0.8 0.1 0.1\n");
     writeObj({"", "red", "nosuch"});
     const render::SceneDesc s = loadObj();
-    ASSERT_EQ(s.meshes.size(), 2u);  // the default group holds the first and the last quad
-    EXPECT_EQ(s.meshes[0].name, "shapes[0]:default");
-    EXPECT_EQ(s.meshes[0].triangles.size(), 4u);
+    const auto meshes = testing::shapesOf<render::MeshDesc>(s.shapes);
+    ASSERT_EQ(meshes.size(), 2u);  // the default group holds the first and the last quad
+    EXPECT_EQ(meshes[0].name, "shapes[0]:default");
+    EXPECT_EQ(meshes[0].triangles.size(), 4u);
     const std::string obj = (dir_ / "quads.obj").string();
-    EXPECT_EQ(s.materialNames.at(std::size_t(s.meshes[0].material)), obj + ":default");
+    EXPECT_EQ(s.materialNames.at(std::size_t(meshes[0].material)), obj + ":default");
     EXPECT_EQ(std::get<DiffuseMaterial>(materialOf(s, 0).model).reflectance.rgb, RgbInput(0.5));
     EXPECT_THAT(
         s.importWarnings,
@@ -153,9 +158,10 @@ TEST_F(ObjMaterials, AShapeMaterialOverridesTheMtl) {
     // With a material the MTL is not read at all: here it does not even exist.
     writeObj({"red", "green"}, "missing.mtl");
     const render::SceneDesc s = load(R"({"type": "obj", "file": "quads.obj", "material": "m"})");
-    ASSERT_EQ(s.meshes.size(), 1u);
-    EXPECT_EQ(s.meshes[0].triangles.size(), 4u);
-    EXPECT_EQ(s.materialNames.at(std::size_t(s.meshes[0].material)), "m");
+    const auto meshes = testing::shapesOf<render::MeshDesc>(s.shapes);
+    ASSERT_EQ(meshes.size(), 1u);
+    EXPECT_EQ(meshes[0].triangles.size(), 4u);
+    EXPECT_EQ(s.materialNames.at(std::size_t(meshes[0].material)), "m");
     EXPECT_TRUE(s.importWarnings.empty());
 }
 

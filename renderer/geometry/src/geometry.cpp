@@ -28,10 +28,10 @@ Geometry::Geometry(const SceneDesc& scene) : scene_(scene) {
     device_ = rtcNewDevice(nullptr);
     if (!device_) throw std::runtime_error("cannot create an Embree device");
     scene3_ = newScene(device_);
-    addShapes(scene3_, scene.meshes, scene.spheres, scene.disks, -1);
+    addShapes(scene3_, scene.shapes, -1);
     sceneShapes_ = unsigned(shapes_.size());
     Vec3<double> lo, hi;
-    boundingBox(scene, lo, hi);
+    boundingBox(scene.shapes, lo, hi);
     addInstances(lo, hi);
     commitScene(device_, scene3_);
     if (!shapes_.empty()) {
@@ -48,69 +48,65 @@ Geometry::Geometry(const SceneDesc& scene) : scene_(scene) {
     }
 }
 
-void Geometry::addShapes(RTCScene target, const std::vector<MeshDesc>& meshes,
-                         const std::vector<SphereDesc>& spheres, const std::vector<DiskDesc>& disks,
-                         int object) {
-    // Geometry ids within `target` count from 0 in this order; shapes_ follows it.
+void Geometry::addShapes(RTCScene target, const std::vector<ShapeDesc>& shapes, int object) {
+    // Geometry ids within `target` count from 0 in the order of `shapes`; shapes_ follows it.
     unsigned id = 0;
-    const auto attach = [&](RTCGeometry g) {
+    for (const ShapeDesc& shape : shapes) {
+        RTCGeometry g = std::visit([&](const auto& s) { return newGeometry(s, object); }, shape);
         rtcCommitGeometry(g);
         rtcAttachGeometryByID(target, g, id++);
         rtcReleaseGeometry(g);
-    };
-    for (std::size_t i = 0; i < meshes.size(); ++i) {
-        const MeshDesc& m = meshes[i];
-        RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
-        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
-                                                              RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-                                                              m.positions.size()));
-        for (std::size_t k = 0; k < m.positions.size(); ++k)
-            for (int c = 0; c < 3; ++c)
-                v[3 * k + std::size_t(c)] = m.positions[k][c];
-        auto* idx = static_cast<std::uint32_t*>(
-            rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                    3 * sizeof(std::uint32_t), m.triangles.size()));
-        for (std::size_t k = 0; k < m.triangles.size(); ++k)
-            for (int c = 0; c < 3; ++c)
-                idx[3 * k + std::size_t(c)] = m.triangles[k][std::size_t(c)];
-        addAlphaFilter(g, m.alpha, &m);
-        attach(g);
-        shapes_.push_back({ShapeInfo::Kind::Mesh, int(i), m.material, object});
-        counts_.trianglesStored += m.triangles.size();
-        if (object < 0) counts_.trianglesReferenced += m.triangles.size();
+        shapes_.push_back({&shape, surface(shape).material, object});
     }
-    for (std::size_t i = 0; i < spheres.size(); ++i) {
-        const SphereDesc& s = spheres[i];
-        RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_SPHERE_POINT);
-        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
-            g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1));
-        v[0] = float(s.center.x);
-        v[1] = float(s.center.y);
-        v[2] = float(s.center.z);
-        v[3] = float(s.radius);
-        addAlphaFilter(g, s.alpha, nullptr);
-        attach(g);
-        shapes_.push_back({ShapeInfo::Kind::Sphere, int(i), s.material, object});
-    }
-    for (std::size_t i = 0; i < disks.size(); ++i) {
-        // Embree's normal-oriented disc points are exact disks.
-        const DiskDesc& d = disks[i];
-        RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_ORIENTED_DISC_POINT);
-        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
-            g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1));
-        v[0] = float(d.center.x);
-        v[1] = float(d.center.y);
-        v[2] = float(d.center.z);
-        v[3] = float(d.radius);
-        auto* n = static_cast<float*>(rtcSetNewGeometryBuffer(
-            g, RTC_BUFFER_TYPE_NORMAL, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 1));
-        n[0] = float(d.normal.x);
-        n[1] = float(d.normal.y);
-        n[2] = float(d.normal.z);
-        addAlphaFilter(g, d.alpha, nullptr);
-        attach(g);
-        shapes_.push_back({ShapeInfo::Kind::Disk, int(i), d.material, object});
-    }
+}
+
+RTCGeometry Geometry::newGeometry(const MeshDesc& m, int object) {
+    RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
+        g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), m.positions.size()));
+    for (std::size_t k = 0; k < m.positions.size(); ++k)
+        for (int c = 0; c < 3; ++c)
+            v[3 * k + std::size_t(c)] = m.positions[k][c];
+    auto* idx = static_cast<std::uint32_t*>(
+        rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                3 * sizeof(std::uint32_t), m.triangles.size()));
+    for (std::size_t k = 0; k < m.triangles.size(); ++k)
+        for (int c = 0; c < 3; ++c)
+            idx[3 * k + std::size_t(c)] = m.triangles[k][std::size_t(c)];
+    addAlphaFilter(g, m.alpha, &m);
+    counts_.trianglesStored += m.triangles.size();
+    if (object < 0) counts_.trianglesReferenced += m.triangles.size();
+    return g;
+}
+
+RTCGeometry Geometry::newGeometry(const SphereDesc& s, int) {
+    RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_SPHERE_POINT);
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                          RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1));
+    v[0] = float(s.center.x);
+    v[1] = float(s.center.y);
+    v[2] = float(s.center.z);
+    v[3] = float(s.radius);
+    addAlphaFilter(g, s.alpha, nullptr);
+    return g;
+}
+
+RTCGeometry Geometry::newGeometry(const DiskDesc& d, int) {
+    // Embree's normal-oriented disc points are exact disks.
+    RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_ORIENTED_DISC_POINT);
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                          RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1));
+    v[0] = float(d.center.x);
+    v[1] = float(d.center.y);
+    v[2] = float(d.center.z);
+    v[3] = float(d.radius);
+    auto* n = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_NORMAL, 0,
+                                                          RTC_FORMAT_FLOAT3, 3 * sizeof(float), 1));
+    n[0] = float(d.normal.x);
+    n[1] = float(d.normal.y);
+    n[2] = float(d.normal.z);
+    addAlphaFilter(g, d.alpha, nullptr);
+    return g;
 }
 
 void Geometry::addAlphaFilter(RTCGeometry g, const AlphaDesc& alpha, const MeshDesc* mesh) {
@@ -135,14 +131,15 @@ void Geometry::addInstances(Vec3<double>& lo, Vec3<double>& hi) {
         const ObjectDesc& object = scene_.objects[o];
         objectFirstShape_[o] = int(shapes_.size());
         objectScenes_[o] = newScene(device_);
-        addShapes(objectScenes_[o], object.meshes, object.spheres, object.disks, int(o));
+        addShapes(objectScenes_[o], object.shapes, int(o));
         commitScene(device_, objectScenes_[o]);
         ++counts_.objectsBuilt;
     }
     std::vector<std::size_t> objectTriangles(scene_.objects.size(), 0);
     for (std::size_t o = 0; o < scene_.objects.size(); ++o)
-        for (const MeshDesc& m : scene_.objects[o].meshes)
-            objectTriangles[o] += m.triangles.size();
+        for (const ShapeDesc& shape : scene_.objects[o].shapes)
+            if (const auto* m = std::get_if<MeshDesc>(&shape))
+                objectTriangles[o] += m->triangles.size();
     unsigned id = sceneShapes_;
     for (const InstanceDesc& inst : scene_.instances) {
         const auto o = std::size_t(inst.object);
@@ -168,7 +165,7 @@ void Geometry::addInstances(Vec3<double>& lo, Vec3<double>& hi) {
         instanceTransforms_.push_back(t);
 
         Vec3<double> olo, ohi;
-        boundingBox(scene_.objects[o], olo, ohi);
+        boundingBox(scene_.objects[o].shapes, olo, ohi);
         for (int corner = 0; corner < 8; ++corner) {
             const Vec3<double> p((corner & 1) ? ohi.x : olo.x, (corner & 2) ? ohi.y : olo.y,
                                  (corner & 4) ? ohi.z : olo.z);
@@ -188,58 +185,66 @@ Geometry::~Geometry() {
     if (device_) rtcReleaseDevice(device_);
 }
 
-void Geometry::surfaceAt(const ShapeInfo& info, const Vec3<double>& origin,
-                         const Vec3<double>& direction, const RTCHit& h, SurfaceHit& hit) const {
-    const ObjectDesc* object =
-        info.object >= 0 ? &scene_.objects[std::size_t(info.object)] : nullptr;
-    if (info.kind == ShapeInfo::Kind::Mesh) {
-        const MeshDesc& m = object ? object->meshes[std::size_t(info.index)]
-                                   : scene_.meshes[std::size_t(info.index)];
-        const auto& tri = m.triangles[h.primID];
-        const float b1 = h.u, b2 = h.v, b0 = 1.0f - b1 - b2;
-        const Vec3f& p0 = m.positions[tri[0]];
-        const Vec3f& p1 = m.positions[tri[1]];
-        const Vec3f& p2 = m.positions[tri[2]];
-        // Barycentric interpolation is accurate to a few ULPs of the vertices, unlike o + t d.
-        hit.p = b0 * p0 + b1 * p1 + b2 * p2;
-        hit.ng = normalizeAnyScale(glm::cross(p1 - p0, p2 - p0));
-        hit.ns = hit.ng;
-        if (!m.normals.empty()) {
-            const Vec3f n = safeNormalize(b0 * m.normals[tri[0]] + b1 * m.normals[tri[1]] +
-                                          b2 * m.normals[tri[2]]);
-            if (n != Vec3f(0.0f)) hit.ns = glm::dot(n, hit.ng) < 0 ? -n : n;
-        }
-        if (!m.uvs.empty())
-            hit.uv = b0 * m.uvs[tri[0]] + b1 * m.uvs[tri[1]] + b2 * m.uvs[tri[2]];
-        else
-            hit.uv = Vec2f(b1, b2);
-    } else if (info.kind == ShapeInfo::Kind::Disk) {
-        const DiskDesc& dk =
-            object ? object->disks[std::size_t(info.index)] : scene_.disks[std::size_t(info.index)];
-        // Project o + t d onto the disk's plane (removes the error along the normal).
-        const Vec3<double> n = dk.normal;
-        Vec3<double> p = origin + double(hit.t) * direction;
-        p -= glm::dot(p - dk.center, n) * n;
-        hit.p = Vec3f(p);
-        hit.ng = hit.ns = Vec3f(n);
-        const Frame<double> frame = Frame<double>::fromNormal(n);
-        const Vec3<double> local = frame.toLocal(p - dk.center);
-        hit.uv = Vec2f(float(glm::length(Vec2<double>(local.x, local.y)) / dk.radius),
-                       float(std::atan2(local.y, local.x) / (2 * kPi<double>)+0.5));
-    } else {
-        const SphereDesc& s = object ? object->spheres[std::size_t(info.index)]
-                                     : scene_.spheres[std::size_t(info.index)];
-        const Vec3<double> c = s.center;
-        const Vec3<double> p = origin + double(hit.t) * direction;
-        Vec3<double> n = glm::normalize(p - c);
-        // Reproject onto the sphere (pbrt-v4's refinement): the error is then ~1 ULP.
-        hit.p = Vec3f(c + s.radius * n);
-        hit.uv = Vec2f(float(std::atan2(n.y, n.x) / (2 * kPi<double>)+0.5),
-                       float(std::acos(std::clamp(n.z, -1.0, 1.0)) / kPi<double>));
-        if (s.flipNormals) n = -n;
-        hit.ng = hit.ns = Vec3f(n);
+namespace {
+
+// The surface at a hit of a shape, in the shape's own space (the world, or its object's): one
+// function per kind of ShapeDesc.
+
+void surfaceAt(const MeshDesc& m, const Vec3<double>&, const Vec3<double>&, const RTCHit& h,
+               SurfaceHit& hit) {
+    const auto& tri = m.triangles[h.primID];
+    const float b1 = h.u, b2 = h.v, b0 = 1.0f - b1 - b2;
+    const Vec3f& p0 = m.positions[tri[0]];
+    const Vec3f& p1 = m.positions[tri[1]];
+    const Vec3f& p2 = m.positions[tri[2]];
+    // Barycentric interpolation is accurate to a few ULPs of the vertices, unlike o + t d.
+    hit.p = b0 * p0 + b1 * p1 + b2 * p2;
+    hit.ng = normalizeAnyScale(glm::cross(p1 - p0, p2 - p0));
+    hit.ns = hit.ng;
+    if (!m.normals.empty()) {
+        const Vec3f n =
+            safeNormalize(b0 * m.normals[tri[0]] + b1 * m.normals[tri[1]] + b2 * m.normals[tri[2]]);
+        if (n != Vec3f(0.0f)) hit.ns = glm::dot(n, hit.ng) < 0 ? -n : n;
     }
+    if (!m.uvs.empty())
+        hit.uv = b0 * m.uvs[tri[0]] + b1 * m.uvs[tri[1]] + b2 * m.uvs[tri[2]];
+    else
+        hit.uv = Vec2f(b1, b2);
 }
+
+void surfaceAt(const DiskDesc& dk, const Vec3<double>& origin, const Vec3<double>& direction,
+               const RTCHit&, SurfaceHit& hit) {
+    // Project o + t d onto the disk's plane (removes the error along the normal).
+    const Vec3<double> n = dk.normal;
+    Vec3<double> p = origin + double(hit.t) * direction;
+    p -= glm::dot(p - dk.center, n) * n;
+    hit.p = Vec3f(p);
+    hit.ng = hit.ns = Vec3f(n);
+    const Frame<double> frame = Frame<double>::fromNormal(n);
+    const Vec3<double> local = frame.toLocal(p - dk.center);
+    hit.uv = Vec2f(float(glm::length(Vec2<double>(local.x, local.y)) / dk.radius),
+                   float(std::atan2(local.y, local.x) / (2 * kPi<double>)+0.5));
+}
+
+void surfaceAt(const SphereDesc& s, const Vec3<double>& origin, const Vec3<double>& direction,
+               const RTCHit&, SurfaceHit& hit) {
+    const Vec3<double> c = s.center;
+    const Vec3<double> p = origin + double(hit.t) * direction;
+    Vec3<double> n = glm::normalize(p - c);
+    // Reproject onto the sphere (pbrt-v4's refinement): the error is then ~1 ULP.
+    hit.p = Vec3f(c + s.radius * n);
+    hit.uv = Vec2f(float(std::atan2(n.y, n.x) / (2 * kPi<double>)+0.5),
+                   float(std::acos(std::clamp(n.z, -1.0, 1.0)) / kPi<double>));
+    if (s.flipNormals) n = -n;
+    hit.ng = hit.ns = Vec3f(n);
+}
+
+void surfaceAt(const ShapeInfo& info, const Vec3<double>& origin, const Vec3<double>& direction,
+               const RTCHit& h, SurfaceHit& hit) {
+    std::visit([&](const auto& shape) { surfaceAt(shape, origin, direction, h, hit); }, *info.desc);
+}
+
+}  // namespace
 
 std::optional<SurfaceHit> Geometry::intersect(const Vec3f& origin, const Vec3f& direction,
                                               float tMax) const {
@@ -282,7 +287,7 @@ std::optional<SurfaceHit> Geometry::intersect(const Vec3f& origin, const Vec3f& 
     const Vec3<double> d(glm::dmat3(xf.toObject) * Vec3<double>(direction));
     surfaceAt(info, o, d, rh.hit, hit);
     hit.p = Vec3f(xf.toWorld * glm::dvec4(Vec3<double>(hit.p), 1.0));
-    const double flip = info.kind == ShapeInfo::Kind::Disk && xf.mirrors ? -1.0 : 1.0;
+    const double flip = std::holds_alternative<DiskDesc>(*info.desc) && xf.mirrors ? -1.0 : 1.0;
     const Vec3<double> ng = flip * glm::normalize(xf.normalMatrix * Vec3<double>(hit.ng));
     Vec3<double> ns = glm::normalize(xf.normalMatrix * Vec3<double>(hit.ns)) * flip;
     if (glm::dot(ns, ng) < 0) ns = -ns;

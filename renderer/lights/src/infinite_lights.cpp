@@ -10,7 +10,7 @@ Vec3f SceneDisk::pointFacing(const Vec3f& direction, const Vec2f& u) const {
            Frame<float>::fromNormal(direction).toWorld(Vec3f(d.x, d.y, 0.0f));
 }
 
-DirectionalLight::DirectionalLight(const LightDesc& d, const Geometry& g)
+DirectionalLight::DirectionalLight(const DirectionalLightDesc& d, const Geometry& g)
     : InfiniteLight(g), direction_(Vec3f(d.direction)), color_(d.intensity, d.spectrum) {}
 
 std::optional<LightSample> DirectionalLight::sample(const Vec3f&, const Vec2f&) const {
@@ -74,7 +74,7 @@ double EnvironmentLight::fluxPerRadiance() const {
     return 4.0 * kPi<double> * kPi<double> * sqr(double(disk_.radius));
 }
 
-ConstantEnvironment::ConstantEnvironment(const LightDesc& d, const Geometry& g)
+ConstantEnvironment::ConstantEnvironment(const EnvironmentLightDesc& d, const Geometry& g)
     : EnvironmentLight(g), color_(d.intensity, d.spectrum) {}
 
 double ConstantEnvironment::power() const {
@@ -90,7 +90,7 @@ Vec3f ConstantEnvironment::sampleDirection(const Vec2f& u, float& pdf) const {
     return squareToUniformSphere(u);
 }
 
-ImageEnvironment::ImageEnvironment(const LightDesc& d, const Geometry& g)
+ImageEnvironment::ImageEnvironment(const EnvironmentLightDesc& d, const Geometry& g)
     : EnvironmentLight(g),
       map_(d.file, {d.mapping, d.rotation, d.orientation}),
       scale_(float(d.intensity[0])) {}

@@ -14,61 +14,79 @@ bool emits(const std::optional<EmissionDesc>& e) {
     return e && !(e->radiance.maxValue() <= 0.0 && !e->spectrum);
 }
 
+// The area lights of an emitting shape, one function per kind of ShapeDesc: one light per
+// triangle of a mesh (perPrimitive), one for a whole rectangle, sphere or disk.
+struct AreaLights {
+    std::vector<std::unique_ptr<Light>> lights;
+    bool perPrimitive = false;
+};
+
+AreaLights makeAreaLights(const MeshDesc& m) {
+    AreaLights a;
+    if (RectangleLight::isRectangle(m)) {
+        a.lights.push_back(std::make_unique<RectangleLight>(m));
+        return a;
+    }
+    a.perPrimitive = true;
+    for (std::size_t t = 0; t < m.triangles.size(); ++t)
+        a.lights.push_back(std::make_unique<TriangleLight>(m, t));
+    return a;
+}
+
+AreaLights makeAreaLights(const SphereDesc& s) {
+    AreaLights a;
+    a.lights.push_back(std::make_unique<SphereLight>(s));
+    return a;
+}
+
+AreaLights makeAreaLights(const DiskDesc& d) {
+    AreaLights a;
+    a.lights.push_back(std::make_unique<DiskLight>(d));
+    return a;
+}
+
+// The light of an entry of "lights", one function per kind of LightDesc.
+std::unique_ptr<Light> makeLight(const PointLightDesc& d, const Geometry&) {
+    return std::make_unique<PointLight>(d);
+}
+
+std::unique_ptr<Light> makeLight(const SpotLightDesc& d, const Geometry&) {
+    return std::make_unique<SpotLight>(d);
+}
+
+std::unique_ptr<Light> makeLight(const DirectionalLightDesc& d, const Geometry& g) {
+    return std::make_unique<DirectionalLight>(d, g);
+}
+
+std::unique_ptr<Light> makeLight(const EnvironmentLightDesc& d, const Geometry& g) {
+    if (d.file.empty()) return std::make_unique<ConstantEnvironment>(d, g);
+    return std::make_unique<ImageEnvironment>(d, g);
+}
+
 }  // namespace
 
 LightSet::LightSet(const SceneDesc& scene, const Geometry& geometry, LightSelection selection) {
-    // The area lights, shape by shape: one per triangle of a mesh, one for a whole rectangle,
-    // disk or sphere.
+    // The area lights, shape by shape, in the order of the geometry's shapes.
     const auto& shapes = geometry.shapes();
     shapeLights_.resize(shapes.size());
     for (std::size_t s = 0; s < shapes.size(); ++s) {
         const ShapeInfo& info = shapes[s];
         if (info.object >= 0) continue;  // objects hold no emitters (shape_reader.cpp)
-        const int first = int(lights_.size());
-        if (info.kind == ShapeInfo::Kind::Mesh) {
-            const MeshDesc& m = scene.meshes[std::size_t(info.index)];
-            if (!emits(m.emission)) continue;
-            if (RectangleLight::isRectangle(m)) {
-                shapeLights_[s] = {first, false};
-                lights_.push_back(std::make_unique<RectangleLight>(m));
-                continue;
-            }
-            shapeLights_[s] = {first, true};
-            for (std::size_t t = 0; t < m.triangles.size(); ++t)
-                lights_.push_back(std::make_unique<TriangleLight>(m, t));
-        } else if (info.kind == ShapeInfo::Kind::Disk) {
-            const DiskDesc& dk = scene.disks[std::size_t(info.index)];
-            if (!emits(dk.emission)) continue;
-            shapeLights_[s] = {first, false};
-            lights_.push_back(std::make_unique<DiskLight>(dk));
-        } else {
-            const SphereDesc& sp = scene.spheres[std::size_t(info.index)];
-            if (!emits(sp.emission)) continue;
-            shapeLights_[s] = {first, false};
-            lights_.push_back(std::make_unique<SphereLight>(sp));
-        }
+        if (!emits(surface(*info.desc).emission)) continue;
+        AreaLights area =
+            std::visit([](const auto& shape) { return makeAreaLights(shape); }, *info.desc);
+        shapeLights_[s] = {int(lights_.size()), area.perPrimitive};
+        for (auto& light : area.lights)
+            lights_.push_back(std::move(light));
     }
+    // The lights that are not shapes; a light at infinity is also listed in infinite_.
     for (const LightDesc& d : scene.lights) {
-        if (d.intensity.maxValue() <= 0.0 && !d.spectrum) continue;
-        switch (d.kind) {
-            case LightKind::Point:
-                lights_.push_back(std::make_unique<PointLight>(d));
-                break;
-            case LightKind::Spot:
-                lights_.push_back(std::make_unique<SpotLight>(d));
-                break;
-            case LightKind::Directional:
-                infinite_.push_back(lights_.size());
-                lights_.push_back(std::make_unique<DirectionalLight>(d, geometry));
-                break;
-            case LightKind::Environment:
-                infinite_.push_back(lights_.size());
-                if (d.file.empty())
-                    lights_.push_back(std::make_unique<ConstantEnvironment>(d, geometry));
-                else
-                    lights_.push_back(std::make_unique<ImageEnvironment>(d, geometry));
-                break;
-        }
+        const LightIntensityDesc& strength = lightIntensity(d);
+        if (strength.intensity.maxValue() <= 0.0 && !strength.spectrum) continue;
+        std::unique_ptr<Light> light =
+            std::visit([&](const auto& desc) { return makeLight(desc, geometry); }, d);
+        if (light->isInfinite()) infinite_.push_back(lights_.size());
+        lights_.push_back(std::move(light));
     }
     // The point-independent distribution: proportional to power (or uniform); a light of
     // zero luminance but non-zero colour (pure blue, say) still gets a share so it is never

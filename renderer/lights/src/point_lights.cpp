@@ -4,7 +4,7 @@
 
 namespace lamina::render {
 
-PointLight::PointLight(const LightDesc& d)
+PointLight::PointLight(const PointLightDesc& d)
     : position_(Vec3f(d.position)), color_(d.intensity, d.spectrum) {}
 
 std::optional<LightSample> PointLight::sample(const Vec3f& ref, const Vec2f&) const {
@@ -42,7 +42,7 @@ EmissionPdf PointLight::emissionPdf(const Vec3f&, const Vec3f&, const Vec3f&) co
     return {1.0f, uniformSpherePdf<float>()};
 }
 
-SpotLight::SpotLight(const LightDesc& d)
+SpotLight::SpotLight(const SpotLightDesc& d)
     : position_(Vec3f(d.position)),
       axis_(Vec3f(d.direction)),
       color_(d.intensity, d.spectrum),

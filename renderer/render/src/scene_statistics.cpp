@@ -1,7 +1,7 @@
-#include "lamina/bsdf/material_kind.h"
 #include "lamina/render/scene_statistics.h"
 
 #include "lamina/bsdf/material_builder.h"
+#include "lamina/bsdf/material_kind.h"
 
 namespace lamina::render {
 
@@ -17,40 +17,36 @@ std::size_t meshBytes(const Mesh& m) {
 
 SceneStatistics sceneStatistics(const SceneDesc& scene) {
     SceneStatistics s;
-    s.meshes = scene.meshes.size();
-    s.spheres = scene.spheres.size();
-    s.disks = scene.disks.size();
+    s.meshes = countShapes<MeshDesc>(scene.shapes);
+    s.spheres = countShapes<SphereDesc>(scene.shapes);
+    s.disks = countShapes<DiskDesc>(scene.shapes);
     std::vector<bool> used(scene.materials.size(), false);
-    for (const auto& m : scene.meshes) {
-        s.triangles += m.triangles.size();
-        s.vertices += m.positions.size();
-        s.geometryBytes += meshBytes(m);
-        if (m.emission) s.emitters += m.triangles.size();
-        used[std::size_t(m.material)] = true;
-    }
-    for (const auto& sphere : scene.spheres) {
-        if (sphere.emission) ++s.emitters;
-        used[std::size_t(sphere.material)] = true;
-    }
-    for (const auto& d : scene.disks) {
-        if (d.emission) ++s.emitters;
-        used[std::size_t(d.material)] = true;
+    for (const auto& shape : scene.shapes) {
+        const SurfaceDesc& surface = render::surface(shape);
+        used[std::size_t(surface.material)] = true;
+        if (const auto* m = std::get_if<MeshDesc>(&shape)) {
+            s.triangles += m->triangles.size();
+            s.vertices += m->positions.size();
+            s.geometryBytes += meshBytes(*m);
+            if (m->emission) s.emitters += m->triangles.size();
+        } else if (surface.emission) {
+            ++s.emitters;
+        }
     }
     std::size_t objectPrimitives = 0;
     std::vector<std::size_t> trianglesOf(scene.objects.size(), 0);
     for (std::size_t o = 0; o < scene.objects.size(); ++o) {
         const ObjectDesc& object = scene.objects[o];
-        for (const auto& m : object.meshes) {
-            trianglesOf[o] += m.triangles.size();
-            s.geometryBytes += meshBytes(m);
-            used[std::size_t(m.material)] = true;
+        for (const auto& shape : object.shapes) {
+            used[std::size_t(render::surface(shape).material)] = true;
+            if (const auto* m = std::get_if<MeshDesc>(&shape)) {
+                trianglesOf[o] += m->triangles.size();
+                s.geometryBytes += meshBytes(*m);
+            }
         }
-        for (const auto& sphere : object.spheres)
-            used[std::size_t(sphere.material)] = true;
-        for (const auto& d : object.disks)
-            used[std::size_t(d.material)] = true;
         s.objectTriangles += trianglesOf[o];
-        objectPrimitives += trianglesOf[o] + object.spheres.size() + object.disks.size();
+        objectPrimitives += trianglesOf[o] + countShapes<SphereDesc>(object.shapes) +
+                            countShapes<DiskDesc>(object.shapes);
     }
     s.objects = scene.objects.size();
     s.instances = scene.instances.size();
@@ -59,7 +55,7 @@ SceneStatistics sceneStatistics(const SceneDesc& scene) {
     // Embree's BVH over triangles takes roughly 64 bytes per primitive (a rough guide), and
     // an instance about as much as one primitive.
     s.geometryBytes +=
-        (s.triangles + scene.spheres.size() + objectPrimitives + scene.instances.size()) * 64;
+        (s.triangles + s.spheres + objectPrimitives + scene.instances.size()) * 64;
     const int w = scene.film.width, h = scene.film.height;
     s.film = estimateRenderMemory(w, h, false, false);
     s.filmWithAovs = estimateRenderMemory(w, h, true, false).total();

@@ -75,45 +75,76 @@ Mat3<double> readEnvironmentTransform(const JsonReader& r) {
     return a;
 }
 
+// Each kind's reader runs between the type and the check for unknown keys, and reads the
+// intensity before the kind's own keys.
+
+PointLightDesc readPointLight(const JsonReader& r) {
+    PointLightDesc l;
+    std::tie(l.intensity, l.spectrum) = readEmissionValue(r, "intensity");
+    l.position = requiredVec3(r, "position");
+    checkCoordinates(r, "position", l.position);
+    return l;
+}
+
+SpotLightDesc readSpotLight(const JsonReader& r) {
+    SpotLightDesc l;
+    std::tie(l.intensity, l.spectrum) = readEmissionValue(r, "intensity");
+    l.position = requiredVec3(r, "position");
+    checkCoordinates(r, "position", l.position);
+    const Vec3d target = requiredVec3(r, "look_at");
+    checkCoordinates(r, "look_at", target);
+    if (glm::length(target - l.position) == 0) r.failAt("look_at", "equals position");
+    l.direction = glm::normalize(target - l.position);
+    l.coneAngle = r.number("cone_angle", 30.0, {0.0, 90.0, true});
+    l.falloffStart = r.number("falloff_start", l.coneAngle * 0.8, {0.0, l.coneAngle});
+    return l;
+}
+
+DirectionalLightDesc readDirectionalLight(const JsonReader& r) {
+    DirectionalLightDesc l;
+    std::tie(l.intensity, l.spectrum) = readEmissionValue(r, "irradiance");
+    l.direction = requiredVec3(r, "direction");
+    if (glm::length(l.direction) == 0) r.failAt("direction", "expected a non-zero vector");
+    l.direction = glm::normalize(l.direction);
+    return l;
+}
+
+EnvironmentLightDesc readEnvironmentLight(const JsonReader& r) {
+    EnvironmentLightDesc l;
+    if (!r.has("file")) {
+        std::tie(l.intensity, l.spectrum) = readEmissionValue(r, "radiance");
+        return l;
+    }
+    // An image: "scale" multiplies it, "mapping" lays it on the sphere, "rotate" turns it
+    // about +y, then "transform" turns it further.
+    if (r.has("radiance")) r.fail("give either radiance or file, not both");
+    l.file = r.filePath("file");
+    const double scale = r.number("scale", 1.0, Range::nonNegative());
+    l.intensity = Rgb<double>(scale);
+    l.mapping = r.choice("mapping", EnvironmentMapping::Equirectangular, kEnvironmentMappingNames);
+    l.rotation = r.number("rotate", 0.0);
+    l.orientation = readEnvironmentTransform(r);
+    return l;
+}
+
 }  // namespace
 
 LightDesc readLight(const JsonReader& r) {
     r.expectObject();
     LightDesc l;
-    l.kind = r.choice("type", LightKind::Point, kLightKindNames);
-    const char* key = l.kind == LightKind::Point || l.kind == LightKind::Spot ? "intensity"
-                      : l.kind == LightKind::Directional                      ? "irradiance"
-                                                                              : "radiance";
-    if (l.kind == LightKind::Environment && r.has("file")) {
-        // An image: "scale" multiplies it, "mapping" lays it on the sphere, "rotate" turns it
-        // about +y, then "transform" turns it further.
-        if (r.has("radiance")) r.fail("give either radiance or file, not both");
-        l.file = r.filePath("file");
-        const double scale = r.number("scale", 1.0, Range::nonNegative());
-        l.intensity = Rgb<double>(scale);
-        l.mapping =
-            r.choice("mapping", EnvironmentMapping::Equirectangular, kEnvironmentMappingNames);
-        l.rotation = r.number("rotate", 0.0);
-        l.orientation = readEnvironmentTransform(r);
-    } else {
-        std::tie(l.intensity, l.spectrum) = readEmissionValue(r, key);
-    }
-    if (l.kind == LightKind::Point || l.kind == LightKind::Spot) {
-        l.position = requiredVec3(r, "position");
-        checkCoordinates(r, "position", l.position);
-    }
-    if (l.kind == LightKind::Spot) {
-        const Vec3d target = requiredVec3(r, "look_at");
-        checkCoordinates(r, "look_at", target);
-        if (glm::length(target - l.position) == 0) r.failAt("look_at", "equals position");
-        l.direction = glm::normalize(target - l.position);
-        l.coneAngle = r.number("cone_angle", 30.0, {0.0, 90.0, true});
-        l.falloffStart = r.number("falloff_start", l.coneAngle * 0.8, {0.0, l.coneAngle});
-    }
-    if (l.kind == LightKind::Directional) {
-        l.direction = requiredVec3(r, "direction");
-        if (glm::length(l.direction) == 0) r.failAt("direction", "expected a non-zero vector");
-        l.direction = glm::normalize(l.direction);
+    switch (r.choice("type", LightKind::Point, kLightKindNames)) {
+        case LightKind::Point:
+            l = readPointLight(r);
+            break;
+        case LightKind::Spot:
+            l = readSpotLight(r);
+            break;
+        case LightKind::Directional:
+            l = readDirectionalLight(r);
+            break;
+        case LightKind::Environment:
+            l = readEnvironmentLight(r);
+            break;
     }
     r.finish();
     return l;

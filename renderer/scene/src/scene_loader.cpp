@@ -29,6 +29,7 @@ SceneDesc readScene(const Json& json, const JsonSource& source) {
         for (std::size_t i = 0; i < s->value().size(); ++i)
             readShape(JsonReader(s->value()[i], s->indexPath(i), source), materials, objects,
                       scene);
+        orderShapesByKind(scene.shapes);
     }
     if (const auto l = root.optionalChild("lights")) {
         if (!l->value().is_array()) l->fail("expected an array of lights");
@@ -39,12 +40,8 @@ SceneDesc readScene(const Json& json, const JsonSource& source) {
     materials.recordUnused();
     objects.recordUnused();
     bool emitter = !scene.lights.empty();
-    for (const auto& m : scene.meshes)
-        emitter |= m.emission.has_value();
-    for (const auto& s : scene.spheres)
-        emitter |= s.emission.has_value();
-    for (const auto& d : scene.disks)
-        emitter |= d.emission.has_value();
+    for (const ShapeDesc& shape : scene.shapes)
+        emitter |= surface(shape).emission.has_value();
     if (!emitter) root.fail("the scene has no light: add an emitting shape or a light");
     return scene;
 }

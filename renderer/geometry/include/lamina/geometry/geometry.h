@@ -36,10 +36,9 @@ struct SurfaceHit {
 
 /// What the geometry knows about each shape.
 struct ShapeInfo {
-    enum class Kind { Mesh, Sphere, Disk } kind = Kind::Mesh;
-    int index = -1;  ///< into the meshes, spheres or disks of the scene or of `object`
+    const ShapeDesc* desc = nullptr;  ///< in SceneDesc::shapes or in its object's shapes
     int material = -1;
-    int object = -1;  ///< into SceneDesc::objects; -1: a shape of the scene's own lists
+    int object = -1;  ///< into SceneDesc::objects; -1: a shape of the scene's own list
 };
 
 /// What the Embree scenes hold: triangles stored once, and those instances make visible.
@@ -91,14 +90,15 @@ class Geometry {
         bool mirrors = false;
     };
 
-    void addShapes(RTCScene target, const std::vector<MeshDesc>& meshes,
-                   const std::vector<SphereDesc>& spheres, const std::vector<DiskDesc>& disks,
-                   int object);
+    /// Every shape of `shapes` into `target`, geometry id = index (the scene's shapes, or
+    /// those of the object `object`).
+    void addShapes(RTCScene target, const std::vector<ShapeDesc>& shapes, int object);
+    /// One shape's Embree geometry, one function per kind of ShapeDesc.
+    RTCGeometry newGeometry(const MeshDesc& m, int object);
+    RTCGeometry newGeometry(const SphereDesc& s, int object);
+    RTCGeometry newGeometry(const DiskDesc& d, int object);
     void addAlphaFilter(RTCGeometry g, const AlphaDesc& alpha, const MeshDesc* mesh);
     void addInstances(Vec3<double>& lo, Vec3<double>& hi);
-    // The surface at a hit of the shape, in the shape's own space (the world, or its object's).
-    void surfaceAt(const ShapeInfo& info, const Vec3<double>& origin, const Vec3<double>& direction,
-                   const RTCHit& h, SurfaceHit& hit) const;
 
     const SceneDesc& scene_;
     RTCDevice device_ = nullptr;
@@ -108,7 +108,7 @@ class Geometry {
     std::vector<InstanceTransform> instanceTransforms_;
     std::vector<std::unique_ptr<AlphaTest>> alphaTests_;  ///< the filters' user data
     std::vector<ShapeInfo> shapes_;
-    unsigned sceneShapes_ = 0;  ///< shapes of the scene's own lists: the instances' ids follow
+    unsigned sceneShapes_ = 0;  ///< shapes of the scene's own list: the instances' ids follow
     GeometryCounts counts_;
     Vec3f boundsLo_{0.0f}, boundsHi_{0.0f};
     Vec3f boundsCenter_{0.0f};

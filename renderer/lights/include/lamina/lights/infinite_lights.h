@@ -36,7 +36,7 @@ class InfiniteLight : public Light {
 /// Parallel light of a given irradiance travelling along one direction.
 class DirectionalLight final : public InfiniteLight {
   public:
-    DirectionalLight(const LightDesc& d, const Geometry& g);
+    DirectionalLight(const DirectionalLightDesc& d, const Geometry& g);
 
     std::optional<LightSample> sample(const Vec3f& ref, const Vec2f& u) const override;
     double power() const override;
@@ -78,7 +78,7 @@ class EnvironmentLight : public InfiniteLight {
 /// A constant environment: radiance L from every direction, sampled uniformly on the sphere.
 class ConstantEnvironment final : public EnvironmentLight {
   public:
-    ConstantEnvironment(const LightDesc& d, const Geometry& g);
+    ConstantEnvironment(const EnvironmentLightDesc& d, const Geometry& g);
 
     double power() const override;
     Emission environment(const Vec3f&) const override { return {&color_, 1.0f}; }
@@ -93,7 +93,7 @@ class ConstantEnvironment final : public EnvironmentLight {
 /// An image around the scene (environment_map.h), importance-sampled.
 class ImageEnvironment final : public EnvironmentLight {
   public:
-    ImageEnvironment(const LightDesc& d, const Geometry& g);
+    ImageEnvironment(const EnvironmentLightDesc& d, const Geometry& g);
 
     double power() const override;
     Emission environment(const Vec3f& w) const override;

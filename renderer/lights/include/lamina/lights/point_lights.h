@@ -18,7 +18,7 @@ class DeltaPositionLight : public Light {
 
 class PointLight final : public DeltaPositionLight {
   public:
-    explicit PointLight(const LightDesc& d);
+    explicit PointLight(const PointLightDesc& d);
 
     std::optional<LightSample> sample(const Vec3f& ref, const Vec2f& u) const override;
     double power() const override;
@@ -39,7 +39,7 @@ class PointLight final : public DeltaPositionLight {
 /// in cos(theta) between the falloff start and the cone's edge.
 class SpotLight final : public DeltaPositionLight {
   public:
-    explicit SpotLight(const LightDesc& d);
+    explicit SpotLight(const SpotLightDesc& d);
 
     std::optional<LightSample> sample(const Vec3f& ref, const Vec2f& u) const override;
     double power() const override;

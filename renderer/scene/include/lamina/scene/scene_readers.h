@@ -2,7 +2,8 @@
 // reads a file top down with them:
 //   scene_settings_reader.cpp  "camera", "film", "integrator", "sampler"
 //   scene_materials.cpp        "materials" and "textures", read when a shape first names one
-//   shape_reader.cpp           "shapes": spheres, disks, rectangles, meshes inline or in files
+//   shape_reader.cpp           "shapes" and "objects": spheres, disks, instances, and through
+//   mesh_shape_reader.cpp      rectangles and meshes inline or in files
 //   light_reader.cpp           "lights", and the emission of shapes
 // Every error names the file and the JSON path.
 #pragma once

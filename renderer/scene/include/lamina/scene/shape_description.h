@@ -1,0 +1,113 @@
+// The shapes of a scene (docs/scene-format.md, "shapes"), as the readers leave them: one
+// std::variant of kinds, each kind a struct with its own fields on top of what every surface
+// has (SurfaceDesc: name, material, emission, alpha). A new kind of shape is a struct here and
+// an alternative of ShapeDesc; the compiler then names every place that treats each kind on
+// its own (the readers, boundingBox, the geometry, the light set, `lamina info`).
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "lamina/core/name_table.h"
+#include "lamina/core/vector.h"
+#include "lamina/spectral/emission_spectrum.h"
+
+namespace lamina::render {
+
+using Vec3d = Vec3<double>;
+
+/// Emission of an area light: RGB radiance (linear Rec.709) or a spectrum, one- or two-sided.
+struct EmissionDesc {
+    Rgb<double> radiance{0.0};
+    std::shared_ptr<const EmissionSpectrum> spectrum;  ///< set: the radiance is this spectrum
+    bool twoSided = false;
+};
+
+/// The `type` of a scene file's shape: analytic spheres and disks become SphereDesc and
+/// DiskDesc, an instance an InstanceDesc, the others triangle meshes.
+enum class ShapeKind { Sphere, Disk, Rectangle, Mesh, Obj, Ply, Instance };
+inline constexpr NameTable kShapeKindNames{
+    std::array{NameEntry{ShapeKind::Sphere, "sphere"}, NameEntry{ShapeKind::Disk, "disk"},
+               NameEntry{ShapeKind::Rectangle, "rectangle"}, NameEntry{ShapeKind::Mesh, "mesh"},
+               NameEntry{ShapeKind::Obj, "obj"}, NameEntry{ShapeKind::Ply, "ply"},
+               NameEntry{ShapeKind::Instance, "instance"}}};
+
+/// A shape's `alpha` cut-out: a constant in [0, 1] or a texture's first channel at the hit's
+/// uv. A hit where alpha < 1 is kept only when alpha reaches a hash of the ray and the hit
+/// (pbrt-v4's stochastic alpha test, GeometricPrimitive::Intersect); alpha 0 is invisible.
+struct AlphaDesc {
+    float value = 1;
+    int texture = -1;  ///< into SceneDesc::textures; -1: `value`
+    bool cutsOut() const { return texture >= 0 || value < 1; }
+};
+
+/// What every kind of shape has.
+struct SurfaceDesc {
+    std::string name;  ///< for messages and `lamina info`
+    int material = -1;
+    std::optional<EmissionDesc> emission;
+    AlphaDesc alpha;
+};
+
+/// A triangle mesh in world space (or in its object's space, ObjectDesc). Quads and polygons
+/// from files are already split.
+struct MeshDesc : SurfaceDesc {
+    std::vector<Vec3<float>> positions;
+    std::vector<Vec3<float>> normals;  ///< per vertex, optional (shading normals)
+    std::vector<Vec2<float>> uvs;      ///< per vertex, optional
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+};
+
+struct SphereDesc : SurfaceDesc {
+    Vec3d center{0.0};
+    double radius = 1;
+    bool flipNormals = false;  ///< emits / faces inwards (a closed emitting room)
+};
+
+/// An analytic disk: centre, unit normal (its front side), radius.
+struct DiskDesc : SurfaceDesc {
+    Vec3d center{0.0};
+    Vec3d normal{0, 0, 1};
+    double radius = 1;
+};
+
+/// One shape. The order of the alternatives is the order of the kinds in a list of shapes
+/// (orderShapesByKind), and so of their Embree geometry ids and of the emitters' lights.
+using ShapeDesc = std::variant<MeshDesc, SphereDesc, DiskDesc>;
+
+/// The fields every kind has.
+inline const SurfaceDesc& surface(const ShapeDesc& shape) {
+    return std::visit([](const SurfaceDesc& s) -> const SurfaceDesc& { return s; }, shape);
+}
+inline SurfaceDesc& surface(ShapeDesc& shape) {
+    return std::visit([](SurfaceDesc& s) -> SurfaceDesc& { return s; }, shape);
+}
+
+/// How many of `shapes` are of the kind `Kind` (MeshDesc, SphereDesc, DiskDesc).
+template <class Kind>
+std::size_t countShapes(const std::vector<ShapeDesc>& shapes) {
+    return std::size_t(std::count_if(shapes.begin(), shapes.end(), [](const ShapeDesc& s) {
+        return std::holds_alternative<Kind>(s);
+    }));
+}
+
+/// Orders a list of shapes by kind, in the order of ShapeDesc's alternatives (every mesh,
+/// then every sphere, then every disk), keeping the order of each kind's shapes. The scene
+/// loader leaves SceneDesc::shapes and every ObjectDesc::shapes so: a shape's index is then
+/// its Embree geometry id (geometry.h), and the light set makes the emitters' lights in this
+/// order, as they were made when each kind had a list of its own.
+inline void orderShapesByKind(std::vector<ShapeDesc>& shapes) {
+    std::stable_sort(shapes.begin(), shapes.end(),
+                     [](const ShapeDesc& a, const ShapeDesc& b) { return a.index() < b.index(); });
+}
+
+/// The axis-aligned box [lo, hi] of a list of shapes, in their own space.
+void boundingBox(const std::vector<ShapeDesc>& shapes, Vec3d& lo, Vec3d& hi);
+
+}  // namespace lamina::render
