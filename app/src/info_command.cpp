@@ -12,6 +12,24 @@ namespace lamina::app {
 
 namespace {
 
+// The sensor and the crop, where they differ from the defaults (film_response.h).
+void printFilm(const render::FilmDesc& f) {
+    if (f.crop)
+        std::printf("crop: pixels [%d, %d) x [%d, %d) of the image (%dx%d written)\n", f.crop->x0,
+                    f.crop->x1, f.crop->y0, f.crop->y1, f.crop->width(), f.crop->height());
+    if (f.imagingRatio() != 1)
+        std::printf("sensor: imaging ratio %g (exposure_time %g x iso %g / 100 x scale %g)\n",
+                    f.imagingRatio(), f.exposureTime, f.iso, f.scale);
+    if (f.whiteBalance > 0)
+        std::printf("sensor: white balance %g K (daylight white -> Rec.709 white, Bradford)\n",
+                    f.whiteBalance);
+    if (f.maxComponentValue)
+        std::printf(
+            "sensor: clamp on (biased): every sample's CIE XYZ scaled to a largest "
+            "component of at most %g\n",
+            *f.maxComponentValue);
+}
+
 void run(const std::string& file) {
     const render::SceneDesc scene = render::loadScene(file);
     const render::SceneStatistics s = render::sceneStatistics(scene);
@@ -31,6 +49,7 @@ void run(const std::string& file) {
                 scene.film.height, scene.settings.spp, scene.settings.maxDepth,
                 std::string(render::kSamplerNames.name(scene.settings.sampler)).c_str(),
                 static_cast<unsigned long long>(scene.settings.seed));
+    printFilm(scene.film);
     std::printf(
         "geometry: %zu meshes (%zu triangles, %zu vertices), %zu spheres, %zu disks, "
         "~%.1f MiB\n",

@@ -117,6 +117,10 @@ void runRender(const experiments::OptionValues& values) {
                                    "measures whole renders: not with --samples "
                                    "or --crop (merge the shards, then compare)");
 
+    if (!a.reference.empty() && scene.film.crop && !o.crop && !o.resolution)
+        throw InputError(a.scene +
+                         ": film.crop: --error-log measures whole renders (remove the "
+                         "crop)");
     std::optional<experiments::ErrorLog> errors;
     if (!a.reference.empty()) errors.emplace(render::readLinearRgbImage(a.reference));
     if (errors) {
@@ -136,6 +140,8 @@ void runRender(const experiments::OptionValues& values) {
             printer(p);
         });
     printer.finish();
+    for (const std::string& w : r.warnings)
+        std::fprintf(stderr, "lamina: warning: %s\n", w.c_str());
 
     render::ImageMetadata meta =
         render::renderMetadata(scene, o, r, {LAMINA_VERSION_STRING, LAMINA_GIT_COMMIT});

@@ -212,6 +212,21 @@ TEST_F(MitsubaImport, MirroredCameraIsLeftHanded) {
     EXPECT_EQ(s["camera"]["handedness"], "left");
 }
 
+TEST_F(MitsubaImport, OrthographicSensorSpansItsScaledFrame) {
+    // x in [-1, 1] and y in [-1 / aspect, 1 / aspect] of to_world's frame, scaled by it.
+    const Json s = translated(R"(<sensor type="orthographic"><transform name="to_world">
+<scale x="3" y="3"/><lookat origin="0, 0, -5" target="0, 0, 0" up="0, 1, 0"/></transform>
+<film type="hdrfilm"><integer name="width" value="40"/><integer name="height" value="20"/>
+</film></sensor>)" + std::string(kLight));
+    EXPECT_EQ(s["camera"]["type"], "orthographic");
+    EXPECT_EQ(s["camera"]["screen_window"], Json::parse("[-3, 3, -1.5, 1.5]"));
+    EXPECT_FALSE(s["camera"].contains("fov"));
+    EXPECT_NE(error(R"(<sensor type="orthographic"><float name="fov" value="30"/>
+</sensor>)" + std::string(kLight))
+                  .find("fov"),
+              std::string::npos);
+}
+
 // ---- sensor, film, sampler, integrator ---------------------------------------------------------
 
 TEST_F(MitsubaImport, FieldOfViewAxes) {

@@ -10,7 +10,7 @@
 #include <glm/matrix.hpp>
 
 #include "lamina/interchange/scene_import.h"
-#include "lamina/render/camera.h"
+#include "lamina/render/perspective_camera.h"
 #include "lamina/scene/mesh_files.h"
 #include "lamina/spectral/cie.h"
 #include "lamina/spectral/emission_spectrum.h"
@@ -138,8 +138,10 @@ TEST_F(PbrtTranslation, MirroredCameraIsRightHanded) {
     EXPECT_EQ(
         importError("Scale 1 1 0\nCamera \"perspective\"\n", false),
         (dir_ / "s.pbrt").string() + ":2: the camera transform is singular (it flattens the view)");
-    EXPECT_EQ(importError("Camera \"orthographic\"\n", false),
-              at(1, false) + ": Camera \"orthographic\" is not supported (perspective)");
+    EXPECT_EQ(importError("Camera \"spherical\"\n", false),
+              at(1, false) + ": Camera \"spherical\" is not supported (perspective, "
+                             "orthographic); the realistic and spherical cameras have no lamina "
+                             "equivalent");
 }
 
 // Exported camera matrices are rotations rounded to 6-8 digits: they load, with one warning,
@@ -168,9 +170,9 @@ TEST_F(PbrtTranslation, AStretchOfTheViewingAxisNarrowsTheView) {
 
 TEST(CameraHandedness, LeftHandedPutsUpCrossForwardOnTheRight) {
     CameraDesc desc;  // at the origin, looking along +z, +y up
-    const Camera right(desc, 10, 10);
+    const PerspectiveCamera right(desc, 10, 10);
     desc.handedness = Handedness::Left;
-    const Camera left(desc, 10, 10);
+    const PerspectiveCamera left(desc, 10, 10);
     // A ray through the image's right edge: lamina's default goes towards forward x up = -x,
     // the left-handed camera towards up x forward = +x; both keep +y at the top.
     EXPECT_LT(right.generateRay(9.5f, 5.0f, {0.5f, 0.5f}).direction.x, 0.0f);

@@ -6,8 +6,9 @@
 #include <gtest/gtest.h>
 
 #include "lamina/core/pcg32.h"
-#include "lamina/render/camera.h"
 #include "lamina/lights/lights.h"
+#include "lamina/render/camera.h"
+#include "lamina/render/perspective_camera.h"
 #include "lamina/spectral/color_space.h"
 #include "render_helpers.h"
 
@@ -63,7 +64,7 @@ CameraDesc cameraDesc(double aperture) {
 class CameraImportance : public ::testing::TestWithParam<double> {};
 
 TEST_P(CameraImportance, RasterPositionInvertsGenerateRay) {
-    const Camera camera(cameraDesc(GetParam()), 64, 48);
+    const PerspectiveCamera camera(cameraDesc(GetParam()), 64, 48);
     Pcg32 rng(3);
     for (int k = 0; k < 1000; ++k) {
         const float x = 64 * rng.nextFloat(), y = 48 * rng.nextFloat();
@@ -78,7 +79,7 @@ TEST_P(CameraImportance, RasterPositionInvertsGenerateRay) {
 TEST_P(CameraImportance, ImportanceIntegratesToTheFilmAreaAndRayDensityToOne) {
     // Over the directions leaving one lens point: integral of We cos A_lens = W x H pixels,
     // integral of the ray direction density = 1 (uniform directions, 2M samples).
-    const Camera camera(cameraDesc(GetParam()), 64, 48);
+    const PerspectiveCamera camera(cameraDesc(GetParam()), 64, 48);
     const double lensArea = GetParam() > 0 ? kPi<double> * sqr(GetParam()) : 1.0;
     const Vec3f lens = camera.generateRay(32, 24, Vec2f(0.3f, 0.8f)).origin;
     Pcg32 rng(5);
@@ -96,7 +97,7 @@ TEST_P(CameraImportance, ImportanceIntegratesToTheFilmAreaAndRayDensityToOne) {
 }
 
 TEST_P(CameraImportance, ConnectionsLandWhereTheRayThroughThemStarts) {
-    const Camera camera(cameraDesc(GetParam()), 64, 48);
+    const PerspectiveCamera camera(cameraDesc(GetParam()), 64, 48);
     Pcg32 rng(9);
     for (int k = 0; k < 200; ++k) {
         const auto ray = camera.generateRay(64 * rng.nextFloat(), 48 * rng.nextFloat(),

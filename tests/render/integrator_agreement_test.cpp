@@ -99,6 +99,8 @@ INSTANTIATE_TEST_SUITE_P(
         AgreementCase{"EnvironmentAndSun", "scenes/reciprocity/environment.json",
                       RenderModeKind::Rgb},
         AgreementCase{"InstancesAndCutOuts", "scenes/reciprocity/cutouts.json",
+                      RenderModeKind::Rgb},
+        AgreementCase{"OrthographicCamera", "scenes/reciprocity/orthographic.json",
                       RenderModeKind::Rgb}),
     [](const ::testing::TestParamInfo<AgreementCase>& p) { return std::string(p.param.name); });
 

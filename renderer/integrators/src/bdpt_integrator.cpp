@@ -80,6 +80,9 @@ void BdptIntegrator<S>::generateCameraSubpath(const CameraSample& cs, PixelSampl
     const float pdfDir = c_.camera.rayPdf(ray.direction).direction;
     randomWalk(ray.origin, ray.direction, S(1.0f), pdfDir, settings_.maxDepth + 1,
                TransportMode::Radiance, sampler, path, out, stats);
+    // Parallel rays (orthographic): the first vertex's density is the film's, projected.
+    if (c_.camera.parallel() && out.size() > 1 && !out[1].infinite)
+        out[1].pdfFwd = c_.camera.parallelPdf(out[1].ng, out[1].onSurface());
 }
 
 template <SpectrumType S>

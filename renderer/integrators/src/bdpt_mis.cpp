@@ -63,7 +63,9 @@ float BdptMisWeights<S>::pdf(const Vertex& v, const Vertex* prev, const Vertex& 
                              typename Mode::Path& path) const {
     if (v.type == BdptVertexType::Light) return pdfLight(v, next);
     const Vec3f wn = directionTo(v, next);
-    if (v.type == BdptVertexType::Camera) return toArea(c_.camera.rayPdf(wn).direction, v, next);
+    if (v.type == BdptVertexType::Camera)
+        return c_.camera.parallel() ? c_.camera.parallelPdf(next.ng, next.onSurface())
+                                    : toArea(c_.camera.rayPdf(wn).direction, v, next);
     const Frame<float> frame = Frame<float>::fromNormal(v.ns);
     const Vec3f wp = directionTo(v, *prev);
     const Bxdf<S>& bsdf = mode_.bsdf(v.material, v.uv, path);

@@ -150,8 +150,11 @@ void translateSensor(Translation& t, const Element& sensor) {
         camera["aperture_radius"] = radius;
         if (const auto focus = p.optionalNumber("focus_distance"))
             camera["focus_distance"] = *focus;
+    } else if (p.type() == "orthographic") {
+        camera["type"] = "orthographic";
     } else if (p.type() != "perspective") {
-        p.fail("the sensor \"" + p.type() + "\" is not supported (perspective, thinlens)");
+        p.fail("the sensor \"" + p.type() +
+               "\" is not supported (perspective, thinlens, orthographic)");
     }
     const auto films = p.objects("film");
     const auto samplers = p.objects("sampler");
@@ -159,8 +162,17 @@ void translateSensor(Translation& t, const Element& sensor) {
     double aspect = 1;
     translateFilm(t, films.empty() ? nullptr : films[0], aspect);
     translateSampler(t, samplers.empty() ? nullptr : samplers[0]);
-    camera["fov"] = verticalFov(p, aspect);
-    if (const auto transform = p.transform("to_world")) {
+    const auto transform = p.transform("to_world");
+    if (camera.value("type", "") == "orthographic") {
+        // Mitsuba's orthographic film spans x in [-1, 1] and y in [-1 / aspect, 1 / aspect] of
+        // to_world's frame (orthographic_projection, src/render/sensor.cpp), scaled by it.
+        const glm::dmat4 m = transform ? transform->matrix : glm::dmat4(1.0);
+        const double sx = glm::length(glm::dvec3(m[0])), sy = glm::length(glm::dvec3(m[1]));
+        camera["screen_window"] = {-sx, sx, -sy / aspect, sy / aspect};
+    } else {
+        camera["fov"] = verticalFov(p, aspect);
+    }
+    if (transform) {
         // Mitsuba's camera looks along +z of to_world with +y up and +x to the image's left,
         // lamina's `matrix` convention; a mirroring to_world flips the image (handedness left).
         Json rows = Json::array();

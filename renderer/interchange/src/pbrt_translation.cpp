@@ -1,5 +1,6 @@
-// The scene-wide part of the pbrt-v4 translation: camera, film, filter, sampler, integrator,
-// lights, objects and instances, and the importer's entry point (scene_import.cpp's table).
+// The scene-wide part of the pbrt-v4 translation: filter, sampler, integrator, lights, objects
+// and instances (the camera and film: pbrt_camera.cpp), and the importer's entry point
+// (scene_import.cpp's table).
 #include "pbrt_translation.h"
 
 #include <cmath>
@@ -39,35 +40,6 @@ Entity defaultEntity(const std::string& type) {
     Entity e;
     e.type = type;
     return e;
-}
-
-// pbrt-v4's film (film.cpp, RGBFilm / PixelSensor): resolution 1280 x 720.
-Json translateFilm(TranslationContext& ctx, const Entity& e, int& width, int& height) {
-    const ParamList& p = e.params;
-    if (e.type != "rgb") {
-        if (e.type != "gbuffer" && e.type != "spectral")
-            ctx.fail(e.location, "Film \"" + e.type + "\" is not supported (rgb)");
-        ctx.warn(e.location, "Film \"" + e.type + "\" became lamina's RGB film (linear Rec.709)");
-    }
-    width = p.integer("xresolution", 1280);
-    height = p.integer("yresolution", 720);
-    if (p.has("filename")) {
-        p.string("filename", "");
-        ctx.warn(e.location, "the film's filename ignored: lamina writes the image named by -o");
-    }
-    if (p.has("savefp16")) {
-        p.boolean("savefp16", false);
-        ctx.warn(e.location, "savefp16 ignored: lamina writes float EXR");
-    }
-    // The default sensor ("cie1931", ISO 100, exposure 1) maps radiance to XYZ with the
-    // imaging ratio exposure x ISO / 100 = 1, which is what lamina's film does.
-    if (p.string("sensor", "cie1931") != "cie1931" || p.number("iso", 100) != 100 ||
-        p.number("exposuretime", 1) != 1 || p.number("whitebalance", 0) != 0)
-        ctx.fail(e.location,
-                 "a film sensor, ISO, exposure time or white balance other than "
-                 "pbrt-v4's defaults is not supported");
-    p.refuseUnused();
-    return {{"resolution", {width, height}}};
 }
 
 // pbrt-v4's filters (filters.cpp): gaussian is the default (radius 1.5, sigma 0.5), box has
@@ -167,70 +139,6 @@ Json translateIntegrator(TranslationContext& ctx, const Entity& e) {
     }
     p.refuseUnused();
     return integrator;
-}
-
-// pbrt-v4's perspective camera (cameras.cpp): camera space x = cross(up, dir) maps to raster
-// +x, and `fov` (90) spans the shorter image axis.
-Json translateCamera(TranslationContext& ctx, const Entity& e, int width, int height) {
-    const ParamList& p = e.params;
-    if (e.type != "perspective")
-        ctx.fail(e.location, "Camera \"" + e.type + "\" is not supported (perspective)");
-    if (!(std::abs(glm::determinant(e.transform)) > 0))
-        ctx.fail(e.location, "the camera transform is singular (it flattens the view)");
-    const glm::dmat4 worldFromCamera = glm::inverse(e.transform);
-    const glm::dvec3 x(worldFromCamera[0]), y(worldFromCamera[1]), z(worldFromCamera[2]);
-    const glm::dvec3 position(worldFromCamera[3]);
-    const glm::dmat3 axes(worldFromCamera);
-    // A rotation with a uniform scale, rounded as exporters write it (rounded_rotation.h), and a
-    // scale of the viewing axis alone, which pbrt-v4 turns into a narrower or wider view (its
-    // rays are camera-space directions mapped by the transform and normalised). Camera x and y
-    // of different lengths would make pixels that are not square.
-    const double skew = columnSkew(axes);
-    const double lx = glm::length(x), ly = glm::length(y), lz = glm::length(z);
-    if (skew > kRoundedRotationTolerance || std::abs(lx - ly) > kRoundedRotationTolerance * ly)
-        ctx.fail(e.location,
-                 "the camera transform shears the view or scales its x and y axes differently "
-                 "(pixels would not be square); lamina's camera takes rotations, mirrors, "
-                 "uniform scales and a scale along the viewing axis");
-    if (skew > 1e-9 || std::abs(lx - ly) > 1e-9 * ly)
-        ctx.warn(e.location, "the camera transform is a rotation to within " +
-                                 deviationText(std::max(skew, std::abs(lx - ly) / ly)) +
-                                 " (rounded digits): its nearest rotation is used");
-    const double s = ly;
-    // camera x = cross(y, z) (det > 0) is pbrt's left-handed frame: image right = up x
-    // forward. A mirroring transform (Scale -1 1 1, common in exported files) makes it
-    // right-handed.
-    const bool left = glm::dot(x, glm::cross(y, z)) > 0;
-    const double fov = p.number("fov", 90.0);
-    if (!(fov > 0 && fov < 180)) ctx.fail(e.location, "fov must be in (0, 180) degrees");
-    // The image plane's half-height at unit distance, scaled by a stretch of the viewing axis
-    // (y / z lengths: a longer z narrows the view).
-    const double stretch = ly / lz;
-    double vertical = fov;
-    if (width < height || std::abs(stretch - 1) > 1e-9) {
-        double t = std::tan(0.5 * fov * kPi / 180) * stretch;
-        if (width < height) t *= double(height) / double(width);
-        vertical = 2 * std::atan(t) * 180 / kPi;
-    }
-    Json camera{{"position", vec(position)},
-                {"look_at", vec(position + glm::normalize(z))},
-                {"up", vec(glm::normalize(y))},
-                {"fov", vertical},
-                {"handedness", left ? "left" : "right"}};
-    const double lensRadius = p.number("lensradius", 0.0);
-    const double focus = p.number("focaldistance", 1e6);
-    if (lensRadius > 0) {
-        camera["type"] = "thin_lens";
-        camera["aperture_radius"] = lensRadius * s;
-        camera["focus_distance"] = focus * lz;
-    }
-    for (const char* shutter : {"shutteropen", "shutterclose"})
-        if (p.has(shutter)) {
-            p.number(shutter, 0);
-            ctx.warn(e.location, std::string(shutter) + " ignored: lamina renders one instant");
-        }
-    p.refuseUnused();
-    return camera;
 }
 
 Json translateLight(TranslationContext& ctx, const Entity& e) {
@@ -337,12 +245,12 @@ Json translate(TranslationContext& ctx) {
     const ParsedScene& scene = ctx.scene;
     Json& doc = ctx.document;
     int width = 1280, height = 720;
+    const Entity camera = scene.camera ? *scene.camera : defaultEntity("perspective");
     doc["film"] =
-        translateFilm(ctx, scene.film ? *scene.film : defaultEntity("rgb"), width, height);
+        translateFilm(ctx, scene.film ? *scene.film : defaultEntity("rgb"), camera, width, height);
     doc["film"]["filter"] =
         translateFilter(ctx, scene.filter ? *scene.filter : defaultEntity("gaussian"));
-    doc["camera"] = translateCamera(
-        ctx, scene.camera ? *scene.camera : defaultEntity("perspective"), width, height);
+    doc["camera"] = translateCamera(ctx, camera, width, height);
     // pbrt-v4's default sampler is zsobol with 16 samples per pixel, its default integrator
     // volpath with maxdepth 5 (scene.cpp): lamina's Sobol sampler and path tracer.
     doc["sampler"] = scene.sampler ? translateSampler(ctx, *scene.sampler)

@@ -41,6 +41,15 @@ struct TranslationContext {
 /// The whole translation (pbrt_translation.cpp).
 Json translate(TranslationContext& context);
 
+// The camera and its film (pbrt_camera.cpp).
+
+/// The film, with the sensor's settings (the exposure time is `camera`'s shutter interval);
+/// sets the image's `width` and `height`.
+Json translateFilm(TranslationContext& context, const Entity& film, const Entity& camera,
+                   int& width, int& height);
+/// The camera for an image of `width` x `height`.
+Json translateCamera(TranslationContext& context, const Entity& camera, int width, int height);
+
 // Materials and textures (pbrt_materials.cpp).
 
 /// The lamina material name for a shape's material (`name` empty: pbrt's default diffuse),

@@ -82,7 +82,16 @@ ImageMetadata renderMetadata(const SceneDesc& scene, const RenderOptions& option
     meta.floats["seconds"] = float(r.seconds);
     // 0: no time budget (a fixed sample count).
     meta.floats["time_budget"] = float(options.seconds.value_or(0.0));
-    const Camera camera(scene.camera, r.film->width(), r.film->height());
+    // The sensor, where it is not the identity (film_response.h).
+    const FilmDesc& film = scene.film;
+    if (film.imagingRatio() != 1) meta.floats["imaging_ratio"] = float(film.imagingRatio());
+    if (film.whiteBalance > 0) meta.floats["white_balance"] = float(film.whiteBalance);
+    if (film.maxComponentValue) {
+        meta.floats["max_component_value"] = float(*film.maxComponentValue);
+        meta.strings["clamp"] = "on: every sample's largest CIE XYZ component clamped (biased)";
+    }
+    // The camera of the whole image, also for a crop.
+    const Camera camera(scene.camera, r.film->fullWidth(), r.film->fullHeight());
     meta.matrices["camera_to_world"] = camera.cameraToWorld();
     meta.matrices["world_to_ndc"] = camera.worldToNdc();
     return meta;

@@ -4,9 +4,9 @@
 #include <functional>
 #include <sstream>
 
-#include "lamina/image/image_files.h"
 #include "lamina/core/error.h"
 #include "lamina/core/input_file.h"
+#include "lamina/image/image_files.h"
 #include "lamina/output/render_metadata.h"
 
 namespace lamina::render {
@@ -78,6 +78,10 @@ std::string shardSettings(const SceneDesc& scene, const RenderOptions& options,
         << options.ablations.radianceOnLightPaths << options.ablations.swappedConnections;
     // Only when given, so that the settings of shards rendered before the key existed match.
     if (scene.film.filterSigma) out << " filter_sigma=" << *scene.film.filterSigma;
+    if (scene.film.imagingRatio() != 1) out << " imaging_ratio=" << scene.film.imagingRatio();
+    if (scene.film.whiteBalance > 0) out << " white_balance=" << scene.film.whiteBalance;
+    if (scene.film.maxComponentValue)
+        out << " max_component_value=" << *scene.film.maxComponentValue;
     return out.str();
 }
 

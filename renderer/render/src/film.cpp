@@ -46,6 +46,17 @@ bool Film::addSample(int x, int y, const Rgb<double>& value, double weight) {
         rejected_.fetch_add(1, std::memory_order_relaxed);
         return false;
     }
+    if (response_.isIdentity()) return accumulate(x, y, value, weight);
+    // After the check: a white balance may turn a valid saturated colour slightly negative.
+    const Rgb<double> v = response_.apply(value);
+    if (!v.isFinite()) {
+        rejected_.fetch_add(1, std::memory_order_relaxed);
+        return false;
+    }
+    return accumulate(x, y, v, weight);
+}
+
+bool Film::accumulate(int x, int y, const Rgb<double>& value, double weight) {
     Pixel& p = at(x - window_.x0, y - window_.y0);
     p.sum += value * weight;
     p.weightSum += weight;
@@ -74,16 +85,21 @@ void Film::addAovs(int x, int y, const PixelAovs& a) {
     p.aovSum.depth += a.depth;
 }
 
-bool Film::addSplat(int x, int y, const Rgb<double>& value) {
+bool Film::addSplat(int x, int y, const Rgb<double>& value, double weight) {
     if (!window_.contains(x, y)) return false;
     if (!value.isFinite() || value.hasNegative()) {
+        rejected_.fetch_add(1, std::memory_order_relaxed);
+        return false;
+    }
+    const Rgb<double> v = response_.isIdentity() ? value * weight : response_.apply(value) * weight;
+    if (!v.isFinite()) {
         rejected_.fetch_add(1, std::memory_order_relaxed);
         return false;
     }
     Rgb<double>& target =
         splatIteration_[std::size_t(y - window_.y0) * width_ + std::size_t(x - window_.x0)];
     for (int c = 0; c < 3; ++c)
-        std::atomic_ref<double>(target[c]).fetch_add(value[c], std::memory_order_relaxed);
+        std::atomic_ref<double>(target[c]).fetch_add(v[c], std::memory_order_relaxed);
     return true;
 }
 

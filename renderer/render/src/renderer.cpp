@@ -37,6 +37,12 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
     const PixelBounds window = options.crop.value_or(PixelBounds{0, width, 0, height});
     result.film = std::make_unique<Film>(width, height, window, RenderMode<S>::kFilmSpace);
     Film& film = *result.film;
+    film.setResponse(FilmResponse(scene.film, RenderMode<S>::kFilmSpace));
+    if (options.mode == RenderModeKind::Rgb && scene.film.whiteBalance > 0)
+        result.warnings.push_back(
+            "RGB mode white-balances the Rec.709 colours its paths carry (CIE 1931 XYZ of "
+            "each sample); spectral mode integrates the spectra against the sensor's curves "
+            "(--mode spectral)");
 
     Geometry geometry(scene);
     const LightSet lights(scene, geometry, settings.lightSelection);
@@ -151,6 +157,12 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
     return result;
 }
 
+RenderOptions withCrop(const RenderOptions& options, const PixelBounds& crop) {
+    RenderOptions o = options;
+    o.crop = crop;
+    return o;
+}
+
 }  // namespace
 
 RenderResult renderScene(const SceneDesc& scene, const RenderOptions& options,
@@ -173,6 +185,14 @@ RenderResult renderScene(const SceneDesc& scene, const RenderOptions& options,
     }
     int width = scene.film.width, height = scene.film.height;
     if (options.resolution) std::tie(width, height) = *options.resolution;
+    // The scene's crop, unless the command line gives one (a shard of a render: the whole
+    // image's pixels).
+    if (!options.crop && scene.film.crop && !options.resolution) {
+        if (options.strategies)
+            throw InputError(scene.file.string() +
+                             ": film.crop: --strategies renders the whole film (remove the crop)");
+        return renderScene(scene, withCrop(options, *scene.film.crop), progress);
+    }
     if (options.crop) {
         const PixelBounds& c = *options.crop;
         if (c.x0 < 0 || c.y0 < 0 || c.x1 > width || c.y1 > height || c.x0 >= c.x1 || c.y0 >= c.y1)

@@ -54,9 +54,10 @@ SceneStatistics sceneStatistics(const SceneDesc& scene) {
         s.instancedTriangles += trianglesOf[std::size_t(inst.object)];
     // Embree's BVH over triangles takes roughly 64 bytes per primitive (a rough guide), and
     // an instance about as much as one primitive.
-    s.geometryBytes +=
-        (s.triangles + s.spheres + objectPrimitives + scene.instances.size()) * 64;
-    const int w = scene.film.width, h = scene.film.height;
+    s.geometryBytes += (s.triangles + s.spheres + objectPrimitives + scene.instances.size()) * 64;
+    // A crop is the film that is allocated and written.
+    const int w = scene.film.crop ? scene.film.crop->width() : scene.film.width;
+    const int h = scene.film.crop ? scene.film.crop->height() : scene.film.height;
     s.film = estimateRenderMemory(w, h, false, false);
     s.filmWithAovs = estimateRenderMemory(w, h, true, false).total();
     s.filmWithStrategies = estimateRenderMemory(w, h, false, true).total();

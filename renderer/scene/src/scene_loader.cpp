@@ -63,7 +63,7 @@ SceneDesc parseScene(const std::string& text, const JsonSource& source) {
     return scene;
 }
 
-SceneDesc loadScene(const std::filesystem::path& file) {
+SceneDesc loadScene(const std::filesystem::path& file, bool print) {
     if (detectSceneFormat(file) != SceneFormat::Lamina) {
         // A scene named without a directory ("scene.pbrt") is relative to the working one.
         const std::filesystem::path directory =
@@ -80,7 +80,7 @@ SceneDesc loadScene(const std::filesystem::path& file) {
         // The translation's warnings first, then the loader's own (an OBJ's MTL library).
         scene.importWarnings.insert(scene.importWarnings.begin(), imported.warnings.begin(),
                                     imported.warnings.end());
-        printWarnings(scene);
+        if (print) printWarnings(scene);
         return scene;
     }
     const Json root = readJsonFile(file);
@@ -88,7 +88,7 @@ SceneDesc loadScene(const std::filesystem::path& file) {
     const JsonSource source{file.string(), file.parent_path(), &read};
     SceneDesc scene = readScene(root, source);
     scene.inputFiles = std::move(read);
-    printWarnings(scene);
+    if (print) printWarnings(scene);
     return scene;
 }
 

@@ -4,6 +4,26 @@
 
 namespace lamina::render {
 
+namespace {
+
+// An orthographic camera's own keys; a lens or a field of view is refused.
+void readOrthographic(const JsonReader& r, CameraDesc& c) {
+    c.orthographic = true;
+    for (const char* key :
+         {"fov", "focal_length", "sensor_height", "aperture_radius", "focus_distance"})
+        if (r.has(key)) r.failAt(key, "an orthographic camera has no lens and no field of view");
+    if (r.has("screen_window")) {
+        const auto w =
+            r.requiredArray<4>("screen_window", {-kMaxSceneCoordinate, kMaxSceneCoordinate});
+        if (!(w[0] < w[1] && w[2] < w[3]))
+            r.failAt("screen_window", "expected X0 < X1 and Y0 < Y1");
+        c.screenWindow = w;
+    }
+    c.handedness = r.choice("handedness", Handedness::Right, kHandednessNames);
+}
+
+}  // namespace
+
 CameraDesc readCamera(const JsonReader& r) {
     r.expectObject();
     CameraDesc c;
@@ -32,6 +52,11 @@ CameraDesc readCamera(const JsonReader& r) {
     if (glm::length(c.lookAt - c.position) == 0) r.failAt("look_at", "equals position");
     if (glm::length(glm::cross(c.lookAt - c.position, c.up)) == 0)
         r.failAt("up", "is parallel to the viewing direction");
+    if (*kind == CameraKind::Orthographic) {
+        readOrthographic(r, c);
+        r.finish();
+        return c;
+    }
     if (r.has("fov") && r.has("focal_length"))
         r.fail("give either fov or focal_length (with sensor_height), not both");
     // 180 degrees is an infinitely wide image plane (tan 90 degrees): every ray misses.
@@ -56,6 +81,26 @@ CameraDesc readCamera(const JsonReader& r) {
     r.finish();
     return c;
 }
+
+namespace {
+
+// The sensor's keys (film_response.h). The white balance is the CIE daylight locus, which CIE
+// 15:2004 defines from 4000 K to 25000 K.
+void readSensor(const JsonReader& r, FilmDesc& film) {
+    film.iso = r.number("iso", 100.0, Range::positive());
+    film.exposureTime = r.number("exposure_time", 1.0, Range::positive());
+    film.scale = r.number("scale", 1.0, Range::positive());
+    if (!(film.imagingRatio() > 0 && film.imagingRatio() < 1e30))
+        r.fail("exposure_time x iso / 100 x scale must be a positive number below 1e30");
+    film.maxComponentValue = r.optionalNumber("max_component_value", Range::positive());
+    film.whiteBalance = r.number("white_balance", 0.0, Range::nonNegative());
+    if (film.whiteBalance != 0 && !(film.whiteBalance >= 4000 && film.whiteBalance <= 25000))
+        r.failAt("white_balance",
+                 "expected 0 (none) or a colour temperature in [4000, 25000] kelvin (the CIE "
+                 "daylight locus)");
+}
+
+}  // namespace
 
 FilmDesc readFilm(const JsonReader& r) {
     r.expectObject();
@@ -84,6 +129,19 @@ FilmDesc readFilm(const JsonReader& r) {
                                          {film.filterRadius / 8, 4 * film.filterRadius});
         }
         f->finish();
+    }
+    readSensor(r, film);
+    if (r.has("crop")) {
+        // Half-open pixel bounds [x0, x1) x [y0, y1) inside the resolution.
+        const auto c = r.requiredArray<4>("crop", {0.0, 65536.0});
+        for (double v : c)
+            if (v != std::floor(v)) r.failAt("crop", "expected four integers X0, X1, Y0, Y1");
+        const PixelBounds b{int(c[0]), int(c[1]), int(c[2]), int(c[3])};
+        if (!(b.x0 < b.x1 && b.x1 <= film.width && b.y0 < b.y1 && b.y1 <= film.height))
+            r.failAt("crop", "expected 0 <= X0 < X1 <= " + std::to_string(film.width) +
+                                 " and 0 <= Y0 < Y1 <= " + std::to_string(film.height) +
+                                 " (the resolution)");
+        film.crop = b;
     }
     r.finish();
     return film;

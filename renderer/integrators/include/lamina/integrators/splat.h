@@ -31,7 +31,7 @@ void forEachFilteredPixel(const PixelFilter& filter, const Vec2<float>& raster, 
 inline void splatFiltered(Film& film, const PixelFilter& filter, const Vec2<float>& raster,
                           const Rgb<double>& value) {
     forEachFilteredPixel(filter, raster, film.fullWidth(), film.fullHeight(),
-                         [&](int x, int y, double w) { film.addSplat(x, y, value * w); });
+                         [&](int x, int y, double w) { film.addSplat(x, y, value, w); });
 }
 
 }  // namespace lamina::render

@@ -20,10 +20,9 @@
 #include "lamina/core/spectrum.h"
 #include "lamina/core/vector.h"
 #include "lamina/image/pixel_bounds.h"
+#include "lamina/render/film_response.h"
 
 namespace lamina::render {
-
-enum class FilmSpace { Rec709, Xyz };
 
 struct PixelAovs {
     Rgb<double> albedo{0.0};
@@ -67,13 +66,18 @@ class Film {
     const PixelBounds& window() const { return window_; }
     FilmSpace space() const { return space_; }
 
-    /// Adds a camera sample to pixel (x, y) of the whole image. Returns false if it is outside
-    /// the window, or if rejected (and counts it).
+    /// The sensor every sample and splat goes through (a film starts with the identity).
+    void setResponse(const FilmResponse& response) { response_ = response; }
+    const FilmResponse& response() const { return response_; }
+
+    /// Adds a camera sample to pixel (x, y) of the whole image, through the response. Returns
+    /// false if it is outside the window, or if rejected (and counts it).
     bool addSample(int x, int y, const Rgb<double>& value, double weight);
     void addAovs(int x, int y, const PixelAovs& aovs);
-    /// Adds a value to pixel (x, y) of the whole image in the current splat iteration
-    /// (thread-safe). Returns false if it is outside the window, or if rejected (and counts it).
-    bool addSplat(int x, int y, const Rgb<double>& value);
+    /// Adds a value times `weight` (its filter weight: the response sees the value before it)
+    /// to pixel (x, y) of the whole image in the current splat iteration (thread-safe).
+    /// Returns false if it is outside the window, or if rejected (and counts it).
+    bool addSplat(int x, int y, const Rgb<double>& value, double weight = 1.0);
     /// Ends a splat iteration: its image times `scale` becomes one more sample of the splat
     /// layer's per-pixel mean and variance. Not thread-safe (call between iterations).
     void endSplatIteration(double scale);
@@ -107,11 +111,13 @@ class Film {
     const Pixel& at(int x, int y) const { return pixels_[std::size_t(y) * width_ + x]; }
     Pixel& at(int x, int y) { return pixels_[std::size_t(y) * width_ + x]; }
     Rgb<double> toRec709(const Rgb<double>& v) const;
+    bool accumulate(int x, int y, const Rgb<double>& value, double weight);
 
     int width_, height_;
     int fullWidth_, fullHeight_;
     PixelBounds window_;
     FilmSpace space_;
+    FilmResponse response_;
     Mat3<double> xyzToRec709_;  ///< looked up once: every sample's squares are taken in Rec.709
     std::vector<Pixel> pixels_;
     std::vector<Rgb<double>> splatIteration_;

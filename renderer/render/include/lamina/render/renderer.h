@@ -7,11 +7,12 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
-#include "lamina/render/film.h"
-#include "lamina/integrators/transport_ablations.h"
-#include "lamina/scene/scene_description.h"
 #include "lamina/integrators/strategy_images.h"
+#include "lamina/integrators/transport_ablations.h"
+#include "lamina/render/film.h"
+#include "lamina/scene/scene_description.h"
 
 namespace lamina::render {
 
@@ -66,6 +67,8 @@ struct RenderResult {
     std::string modeName;                        ///< kRenderModeNames
     RenderSettings settings;                     ///< after command-line overrides
     std::unique_ptr<StrategyImages> strategies;  ///< with RenderOptions::strategies (bdpt)
+    /// What the render approximated, one line each (the front ends print them).
+    std::vector<std::string> warnings;
 };
 
 /// Set (from a signal handler) to stop after the pass in flight.

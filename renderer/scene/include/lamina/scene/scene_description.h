@@ -13,6 +13,7 @@
 #include "lamina/bsdf/material.h"
 #include "lamina/core/name_table.h"
 #include "lamina/core/vector.h"
+#include "lamina/image/pixel_bounds.h"
 #include "lamina/interchange/scene_format.h"
 #include "lamina/scene/light_description.h"
 #include "lamina/scene/material_textures.h"
@@ -24,11 +25,12 @@ struct JsonSource;  // core/json_reader.h
 
 namespace lamina::render {
 
-/// The `type` of a scene file's camera: a pinhole or a thin lens (a pinhole with an aperture).
-enum class CameraKind { Perspective, ThinLens };
-inline constexpr NameTable kCameraKindNames{
-    std::array{NameEntry{CameraKind::Perspective, "perspective"},
-               NameEntry{CameraKind::ThinLens, "thin_lens"}}};
+/// The `type` of a scene file's camera: a pinhole, a thin lens (a pinhole with an aperture),
+/// or an orthographic projection (parallel rays along the view from a screen window).
+enum class CameraKind { Perspective, ThinLens, Orthographic };
+inline constexpr NameTable kCameraKindNames{std::array{
+    NameEntry{CameraKind::Perspective, "perspective"}, NameEntry{CameraKind::ThinLens, "thin_lens"},
+    NameEntry{CameraKind::Orthographic, "orthographic"}}};
 
 /// Which way the image's right points: `Right`: forward x up (lamina's default); `Left`:
 /// up x forward (pbrt's left-handed camera space, whose +x is the image's right).
@@ -44,6 +46,11 @@ struct CameraDesc {
     double apertureRadius = 0;  ///< 0: pinhole
     double focusDistance = 1;
     Handedness handedness = Handedness::Right;
+    bool orthographic = false;
+    /// orthographic: the film's extent in scene units on the plane through `position` facing
+    /// the view, [x0, x1, y0, y1] with x to the image's right and y up; unset: the shorter
+    /// image axis spans [-1, 1] (pbrt-v4's default)
+    std::optional<std::array<double, 4>> screenWindow;
 };
 
 enum class FilterKind { Box, Gaussian, BlackmanHarris, Triangle };
@@ -59,6 +66,16 @@ struct FilmDesc {
     /// gaussian: the standard deviation in pixels; unset: radius / 3 (computed in float, as
     /// before the key existed, so that such images keep their bits)
     std::optional<double> filterSigma;
+    /// The sensor (film_response.h): every sample times the imaging ratio exposure_time x iso /
+    /// 100 (pbrt-v4's PixelSensor) times `scale`, its CIE XYZ scaled down to at most
+    /// `maxComponentValue` in its largest component (a clamp: biased), then adapted from the
+    /// white of daylight at `whiteBalance` kelvin (0: none) to the image's white (Bradford).
+    double iso = 100, exposureTime = 1, scale = 1;
+    std::optional<double> maxComponentValue;
+    double whiteBalance = 0;
+    /// Only these pixels of the image are rendered and written (the EXR's data window).
+    std::optional<PixelBounds> crop;
+    double imagingRatio() const { return exposureTime * iso / 100 * scale; }
 };
 
 enum class SamplerKind { Sobol, Independent };
@@ -146,7 +163,8 @@ struct SceneDesc {
 /// Errors name the file and the JSON path. A pbrt-v4 or Mitsuba file is translated first
 /// (scene_import.h). Its warnings, and the loader's own, are kept in `importWarnings` and
 /// printed to stderr, one "lamina: warning: ..." line each.
-SceneDesc loadScene(const std::filesystem::path& file);
+/// `printWarnings` false keeps them in `importWarnings` only (`lamina convert --check`).
+SceneDesc loadScene(const std::filesystem::path& file, bool printWarnings = true);
 /// The same from text already in memory (tests); relative paths resolve against `directory`.
 SceneDesc parseScene(const std::string& text, const JsonSource& source);
 
