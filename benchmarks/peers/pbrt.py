@@ -5,7 +5,7 @@ A benchmark, not a test (never run in CI). pbrt-v4 is not packaged, so the scrip
 it: it takes pbrt-v4's image, the samples per pixel and the seconds it took, and a converged
 reference of the scene (for Veach's MIS scene all three are in ../shared/data/peers/veach-mis/,
 see its README). It renders the scene with lamina (read through lamina's pbrt-v4 importer) for
-each time budget of --times, and prints per renderer:
+each time budget of --times (or each sample count of --spp), and prints per renderer:
 
   - the MSE against the reference, net of the reference's own noise (peer_efficiency.py: from
     two independent halves given as --reference H1 H2, or, for one reference rendered by lamina
@@ -115,8 +115,12 @@ def main():
     parser.add_argument("--python", default="build/python", help="lamina's Python module")
     parser.add_argument("--mode", choices=["rgb", "spectral"], default="spectral",
                         help="pbrt-v4 renders spectrally")
-    parser.add_argument("--times", type=float, nargs="+", default=[20.0],
-                        help="lamina's wall-time budgets in seconds")
+    budget = parser.add_mutually_exclusive_group()
+    budget.add_argument("--times", type=float, nargs="+",
+                        help="lamina's wall-time budgets in seconds (default: 20)")
+    budget.add_argument("--spp", type=int, nargs="+",
+                        help="lamina's sample counts instead: a Sobol sampler stratifies best at "
+                             "powers of two, where a time budget seldom ends")
     parser.add_argument("--seed", type=int, default=5, help="lamina's first seed (one per budget)")
     parser.add_argument("--lamina-args", nargs=argparse.REMAINDER, default=[],
                         help="further `lamina render` options (last on the line)")
@@ -131,10 +135,12 @@ def main():
         references = [pe.read_rgb(r, args.python) for r in args.reference]
         pbrt_image = pe.read_rgb(args.pbrt_image, args.python)
         images = []
-        for i, budget in enumerate(args.times):
+        budgets = [("spp", n) for n in args.spp] if args.spp else [
+            ("seconds", t) for t in (args.times or [20.0])]
+        for i, (kind, budget) in enumerate(budgets):
             out, spp, seconds = pe.run_lamina(
-                args.lamina, args.scene, os.path.join(work, f"lamina-{budget:g}s.exr"),
-                seconds=budget, seed=args.seed + i, mode=args.mode, extra=args.lamina_args)
+                args.lamina, args.scene, os.path.join(work, f"lamina-{budget:g}{kind}.exr"),
+                seed=args.seed + i, mode=args.mode, extra=args.lamina_args, **{kind: budget})
             images.append((pe.read_rgb(out, args.python), spp, seconds))
         own = args.reference_spp if len(args.reference) == 1 else None
         print_rows(measure(images, pbrt_image, args.pbrt_spp, args.pbrt_seconds, references, own))
