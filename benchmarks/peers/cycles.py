@@ -39,11 +39,13 @@ import json
 import math
 import os
 import re
-import resource
 import subprocess
 import sys
 import tempfile
 import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import peer_efficiency  # noqa: E402  (running lamina, image errors, efficiency arithmetic)
 
 # Two calibration renders per renderer: the time of a render is about fixed + spp x per_spp
 # (the fixed part is lamina's BVH build, Cycles' scene sync and BVH), and a single short
@@ -340,27 +342,13 @@ class Runner:
         self.args, self.work = args, work
 
     def lamina(self, scene, spp, seed, name):
-        out = os.path.join(self.work, name + ".exr")
-        cmd = [self.args.lamina, "render", scene, "-o", out, "--spp", str(spp), "--seed", str(seed),
-               "--mode", "rgb", "--threads", "2"]
-        before = resource.getrusage(resource.RUSAGE_CHILDREN)
-        p = subprocess.run(cmd, capture_output=True, text=True)
-        after = resource.getrusage(resource.RUSAGE_CHILDREN)
-        if p.returncode != 0:
-            sys.exit(f"cycles.py: lamina failed: {' '.join(cmd)}\n{p.stderr}")
-        if self.args.clock == "cpu":
-            # The whole process (start-up and scene loading included: counted against lamina).
-            return out, (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-        # The summary line "OUT: WxH, N spp, MODE mode, INTEGRATOR integrator, T s, R paths/s,
-        # ...", not a progress line "progress: P% (N spp, T s, ETA E s)" before it: fields
-        # never run across lines, and the line must name the samples asked for.
-        m = re.search(r"^.*, (\d+) spp, [^,\n]+, [^,\n]+, ([0-9.]+) s, [^,\n]+ paths/s", p.stderr,
-                      re.MULTILINE)
-        if not m:
-            sys.exit(f"cycles.py: no render time in lamina's output:\n{p.stderr}")
-        if int(m.group(1)) != spp:
-            sys.exit(f"cycles.py: lamina rendered {m.group(1)} spp where {spp} were asked:\n{p.stderr}")
-        return out, float(m.group(2))
+        try:
+            out, _, seconds = peer_efficiency.run_lamina(
+                self.args.lamina, scene, os.path.join(self.work, name + ".exr"), spp=spp,
+                seed=seed, mode="rgb", clock=self.args.clock)
+        except peer_efficiency.PeerError as e:
+            sys.exit(f"cycles.py: {e}")
+        return out, seconds
 
     def cycles(self, scene, spp, seed, name):
         out = os.path.join(self.work, name + ".exr")
@@ -374,12 +362,10 @@ class Runner:
         return out, float(m.group(1))
 
     def mse(self, image, reference):
-        p = subprocess.run([self.args.lamina, "compare", image, reference, "--metric", "mse,relmse"],
-                           capture_output=True, text=True)
-        if p.returncode != 0:
-            sys.exit(f"cycles.py: lamina compare failed:\n{p.stderr}")
-        values = dict(line.split() for line in p.stdout.splitlines() if line.strip())
-        return float(values["mse"]), float(values["relmse"])
+        try:
+            return peer_efficiency.compare_mse(self.args.lamina, image, reference)
+        except peer_efficiency.PeerError as e:
+            sys.exit(f"cycles.py: {e}")
 
 
 def measure_scene(runner, scene, args):
@@ -434,7 +420,7 @@ def measure_scene(runner, scene, args):
     if not ratios:
         print("efficiency ratio lamina / Cycles: no budget measured (references too short)")
         return None
-    geometric_mean = math.exp(sum(math.log(r) for r in ratios) / len(ratios))
+    geometric_mean = peer_efficiency.geometric_mean(ratios)
     print(f"efficiency ratio lamina / Cycles, geometric mean over the {len(ratios)} measured "
           f"budgets: {geometric_mean:.2f}x")
     return geometric_mean
@@ -462,9 +448,7 @@ def main():
                              "wall time measures the scheduler's share more than the renderer")
     parser.add_argument("--keep", help="directory to keep the images in (default: a temporary one)")
     args = parser.parse_args()
-    load = os.getloadavg()[0]
-    print(f"load average at the start: {load:.2f} on {os.cpu_count()} cores"
-          + (" (the machine is busy: compare the ratios, not the times)" if load > 0.5 else ""))
+    print(f"at the start, {peer_efficiency.load_note()}")
     if args.keep:
         os.makedirs(args.keep, exist_ok=True)
         for scene in args.scenes:

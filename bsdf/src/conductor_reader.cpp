@@ -98,10 +98,6 @@ ConductorOptics ConductorOptics::fromSpectrum(std::shared_ptr<const IorSpectrum>
     return o;
 }
 
-bool ConductorOptics::etaKIsGrey() const {
-    return eta[0] == eta[1] && eta[1] == eta[2] && k[0] == k[1] && k[1] == k[2];
-}
-
 // The registrations of these types (material_kind.h; listed in material_kinds.cpp).
 
 namespace {

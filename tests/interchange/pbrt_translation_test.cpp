@@ -14,6 +14,7 @@
 #include "lamina/scene/mesh_files.h"
 #include "lamina/spectral/cie.h"
 #include "lamina/spectral/emission_spectrum.h"
+#include "lamina/spectral/rgb_to_spectrum.h"
 #include "scratch_directory.h"
 
 namespace lamina::render {
@@ -390,7 +391,8 @@ TEST_F(PbrtTranslation, EnvironmentImagesAreOctahedral) {
 
 TEST_F(PbrtTranslation, Materials) {
     std::string shapes;
-    for (const char* name : {"gold", "mirror", "glass", "thin", "paint", "car", "leaf", "both"})
+    for (const char* name : {"gold", "mirror", "glass", "thin", "paint", "car", "leaf", "both",
+                             "grey-mirror", "copper"})
         shapes += std::string("NamedMaterial \"") + name + "\"\nShape \"sphere\"\n";
     const ImportedScene t = import(
         "MakeNamedMaterial \"gold\" \"string type\" \"conductor\" \"spectrum eta\" "
@@ -407,15 +409,31 @@ TEST_F(PbrtTranslation, Materials) {
         "MakeNamedMaterial \"leaf\" \"string type\" \"diffusetransmission\" \"float scale\" 2\n"
         "MakeNamedMaterial \"both\" \"string type\" \"mix\" \"string materials\" [\"gold\" "
         "\"paint\"] \"float amount\" 0.25\n"
-        "MakeNamedMaterial \"unused\" \"string type\" \"hair\"\n" +
+        "MakeNamedMaterial \"unused\" \"string type\" \"hair\"\n"
+        "MakeNamedMaterial \"grey-mirror\" \"string type\" \"conductor\" \"float reflectance\" "
+        "0.64\n"
+        "MakeNamedMaterial \"copper\" \"string type\" \"conductor\" \"rgb eta\" [0.2 0.92 1.1] "
+        "\"rgb k\" [3.9 2.45 2.14] \"float roughness\" 0.05 \"bool remaproughness\" false\n" +
         shapes);
     const Json& m = t.scene["materials"];
     EXPECT_EQ(m["gold"], Json::parse(R"({"type": "conductor", "material": "Au", "alpha": 0.5})"));
-    // pbrt-v4's reflectance form: eta 1, k = 2 sqrt(r) / sqrt(1 - r).
+    // pbrt-v4's reflectance form: eta 1, k = 2 sqrt(r) / sqrt(1 - r) at each wavelength, of
+    // the colour upsampled as a reflectance: a spectrum every 5 nm over 360-830 nm.
     EXPECT_EQ(m["mirror"]["eta"], 1.0);
-    EXPECT_NEAR(m["mirror"]["k"][0].get<double>(), 2 * 0.8 / 0.6, 1e-12);
-    EXPECT_EQ(m["mirror"]["k"][1], 0.0);
-    EXPECT_NEAR(m["mirror"]["k"][2].get<double>(), 2 * 0.5 / std::sqrt(0.75), 1e-12);
+    const Json& k = m["mirror"]["k"];
+    ASSERT_EQ(k.size(), 95u);
+    const RgbSpectrum r(Rgb<double>(0.64, 0, 0.25), RgbSpectrumKind::Reflectance);
+    for (std::size_t i = 0; i < k.size(); i += 7) {
+        const double nm = 360.0 + 5.0 * double(i), ri = r(nm);
+        EXPECT_EQ(k[i][0].get<double>(), nm);
+        EXPECT_NEAR(k[i][1].get<double>(), 2 * std::sqrt(ri) / std::sqrt(1 - ri), 1e-12) << nm;
+    }
+    // A grey reflectance stays numbers, k = 2 sqrt(r) / sqrt(1 - r).
+    EXPECT_NEAR(m["grey-mirror"]["k"].get<double>(), 2 * 0.8 / 0.6, 1e-12);
+    // rgb eta and k are kept as triples, without a warning (lamina upsamples them as pbrt-v4
+    // does, spectrum_context.h).
+    EXPECT_EQ(m["copper"], Json::parse(R"({"type": "conductor", "eta": [0.2, 0.92, 1.1],
+        "k": [3.9, 2.45, 2.14], "alpha": 0.05})"));
     EXPECT_EQ(m["glass"]["ior"], Json::parse(R"({"sellmeier": {
         "b": [1.73759695, 0.313747346, 1.89878101], "c": [0.013188707, 0.0623068142, 155.23629]}})"));
     EXPECT_NEAR(m["glass"]["alpha_x"].get<double>(), 0.2, 1e-15);

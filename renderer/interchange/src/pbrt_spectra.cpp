@@ -9,6 +9,7 @@
 #include "lamina/core/input_file.h"
 #include "lamina/spectral/cie.h"
 #include "lamina/spectral/emission_spectrum.h"
+#include "lamina/spectral/rgb_to_spectrum.h"
 #include "pbrt_translation.h"
 
 namespace lamina::render::pbrt {
@@ -222,13 +223,22 @@ void conductorOptics(TranslationContext& ctx, const Entity& e, const std::string
         };
         const std::string type = canonicalParamType(reflectance->type);
         Json kJson;
-        if (type == "float" || type == "rgb") {
+        const std::vector<double>& r = reflectance->numbers;
+        if (type == "rgb" && r.size() == 3 && !(r[0] == r[1] && r[1] == r[2])) {
+            // pbrt-v4 upsamples a coloured r as a reflectance (an albedo spectrum) and takes k
+            // of it at each wavelength; k of the upsampled r, tabulated every 5 nm, is the same
+            // metal (an rgb k triple would be upsampled as an unbounded spectrum instead).
+            const RgbSpectrum spectrum(Rgb<double>(r[0], r[1], r[2]), RgbSpectrumKind::Reflectance);
+            kJson = Json::array();
+            for (double nm = kLambdaMin; nm <= kLambdaMax; nm += 5)
+                kJson.push_back({nm, kOf(spectrum(nm)) / outsideIor});
+        } else if (type == "float" || type == "rgb") {
             const std::size_t n = type == "rgb" ? 3 : 1;
-            if (reflectance->numbers.size() != n)
+            if (r.size() != n)
                 params.fail(*reflectance, "expected " + std::to_string(n) + " numbers");
             kJson = Json::array();
-            for (double r : reflectance->numbers)
-                kJson.push_back(kOf(r) / outsideIor);
+            for (double v : r)
+                kJson.push_back(kOf(v) / outsideIor);
             if (n == 1) kJson = kJson[0];
         } else if (type == "spectrum") {
             const auto pairs = spectrumPairs(ctx, params, *reflectance);
@@ -272,13 +282,11 @@ void conductorOptics(TranslationContext& ctx, const Entity& e, const std::string
     }
     if (!eta || !k)
         params.fail(eta ? *eta : *k, "needs both eta and k (or metal-* spectra for both)");
+    // rgb eta and k are kept as triples without a warning: lamina's spectral mode upsamples
+    // them as pbrt-v4 does (unbounded spectra, spectrum_context.h). Dividing the triple by
+    // the coat's index divides that spectrum by it, as pbrt-v4 divides its spectrum.
     material["eta"] = numericSpectrum(ctx, params, *eta, outsideIor);
     material["k"] = numericSpectrum(ctx, params, *k, outsideIor);
-    if (canonicalParamType(eta->type) == "rgb" || canonicalParamType(k->type) == "rgb")
-        ctx.warn(e.location,
-                 "rgb eta/k: lamina reduces them per channel in RGB mode and "
-                 "upsamples them as reflectances in spectral mode, pbrt-v4 as "
-                 "unbounded RGB spectra");
 }
 
 Json dielectricIor(TranslationContext& ctx, const ParamList& params, const std::string& name,

@@ -120,7 +120,6 @@ struct ConductorOptics {
     /// wavelengths. Without it (a description built by hand) the spectrum is evaluated
     /// directly.
     std::shared_ptr<const NkTable> table;
-    bool etaKIsGrey() const;
     /// Spectral optics from n, k: the table and the RGB-mode reductions F0, F82 with it.
     static ConductorOptics fromSpectrum(std::shared_ptr<const IorSpectrum> spectrum);
 };

@@ -137,15 +137,15 @@ class MaterialBuilder {
                                  : Fresnel<S>::schlick(f0);
             }
         }
-        // Exact conductor Fresnel where the optics are known at every channel: per channel in
-        // RGB mode, and in spectral mode only for grey (eta, k), which are constant spectra.
-        const bool exactPossible = !SpectrumContext<S>::kSpectral || o.etaKIsGrey();
-        if (c.fresnel == FresnelChoice::Exact && exactPossible)
+        // Exact conductor Fresnel: per channel in RGB mode; in spectral mode with eta and k
+        // upsampled as unbounded spectra (pbrt-v4's convention, so that the same numbers are
+        // the same metal there; grey values are constant spectra). RGB mode's default is
+        // Hoffman's F82 through the exact reflectance per channel.
+        if (c.fresnel == FresnelChoice::Exact ||
+            (c.fresnel == FresnelChoice::Auto && SpectrumContext<S>::kSpectral))
             return Fresnel<S>::conductor(ctx_.unbounded(o.eta), ctx_.unbounded(o.k));
-        if (c.fresnel == FresnelChoice::Auto && SpectrumContext<S>::kSpectral && exactPossible)
-            return Fresnel<S>::conductor(ctx_.unbounded(o.eta), ctx_.unbounded(o.k));
-        // Otherwise reduce to reflectances (never upsample eta and k as if they were albedos:
-        // Mitsuba 3 issue 208).
+        // The approximations take the reflectances F0 and F82 of eta and k per channel (never
+        // eta and k upsampled as if they were albedos: Mitsuba 3 issue 208).
         const auto [f0rgb, f82rgb] = conductorF0F82(o.eta, o.k);
         const S f0 = ctx_.reflectance(f0rgb);
         switch (c.fresnel) {

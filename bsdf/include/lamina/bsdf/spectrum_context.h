@@ -48,7 +48,8 @@ struct SpectrumContext<Rgb<T>> {
 
 /// Spectral mode: colours are upsampled (Jakob and Hanika 2019) and evaluated at the path's
 /// wavelengths. Per-channel values that are not reflectances (a conductor's eta, k given as
-/// RGB triples) have no spectral meaning; the builder reduces them to reflectances first.
+/// RGB triples) are upsampled as unbounded spectra, never as reflectances (which would clamp
+/// them to [0, 1]).
 template <std::floating_point T>
 struct SpectrumContext<SampledSpectrum<T>> {
     static constexpr bool kSpectral = true;
@@ -103,7 +104,8 @@ struct SpectrumContext<SampledSpectrum<T>> {
     SampledSpectrum<T> reflectance(const C& c) const {
         return c.spectrum ? evaluate(*c.spectrum) : reflectance(c.rgb);
     }
-    /// Grey values are constant spectra; others are upsampled as unbounded spectra (a tint).
+    /// Grey values are exactly constant spectra; others are pbrt-v4's unbounded spectra
+    /// (RgbSpectrumKind::Unbounded: the table's spectrum of rgb / 2 max(rgb), times 2 max(rgb)).
     SampledSpectrum<T> unbounded(const Rgb<double>& c) const {
         if (c[0] == c[1] && c[1] == c[2]) return SampledSpectrum<T>(T(c[0]));
         return evaluate(upsample(c, RgbSpectrumKind::Unbounded));
