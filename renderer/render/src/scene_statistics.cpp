@@ -2,6 +2,7 @@
 
 #include "lamina/bsdf/material_builder.h"
 #include "lamina/bsdf/material_kind.h"
+#include "lamina/lights/area_lights.h"
 
 namespace lamina::render {
 
@@ -28,9 +29,13 @@ SceneStatistics sceneStatistics(const SceneDesc& scene) {
             s.triangles += m->triangles.size();
             s.vertices += m->positions.size();
             s.geometryBytes += meshBytes(*m);
-            if (m->emission) s.emitters += m->triangles.size();
+            if (m->emission) {
+                ++s.emitters;
+                s.areaLights += RectangleLight::isRectangle(*m) ? 1 : m->triangles.size();
+            }
         } else if (surface.emission) {
             ++s.emitters;
+            ++s.areaLights;
         }
     }
     std::size_t objectPrimitives = 0;
@@ -54,8 +59,7 @@ SceneStatistics sceneStatistics(const SceneDesc& scene) {
         s.instancedTriangles += trianglesOf[std::size_t(inst.object)];
     // Embree's BVH over triangles takes roughly 64 bytes per primitive (a rough guide), and
     // an instance about as much as one primitive.
-    s.geometryBytes +=
-        (s.triangles + s.spheres + objectPrimitives + scene.instances.size()) * 64;
+    s.geometryBytes += (s.triangles + s.spheres + objectPrimitives + scene.instances.size()) * 64;
     const int w = scene.film.width, h = scene.film.height;
     s.film = estimateRenderMemory(w, h, false, false);
     s.filmWithAovs = estimateRenderMemory(w, h, true, false).total();
