@@ -1,7 +1,7 @@
 """Error against time for two integrators on the Cornell box: relMSE after every pass
 against seconds, log-log, with each curve's fitted slope (lamina.convergence).
 
-    PYTHONPATH=build/python python3 examples/error_vs_time.py scenes/cornell-box.json err.png
+    PYTHONPATH=build/python /usr/bin/python3 examples/error_vs_time.py scenes/cornell-box.json err.png
 """
 
 import sys

@@ -2,7 +2,7 @@
 Hoffman's F82, Lagarde's spherical Gaussian) for three metals: the luminance of each model's
 colour against the angle of incidence, and its largest RGB error (lamina.fresnel).
 
-    PYTHONPATH=build/python python3 examples/fresnel_metals.py fresnel.png
+    PYTHONPATH=build/python /usr/bin/python3 examples/fresnel_metals.py fresnel.png
 """
 
 import sys

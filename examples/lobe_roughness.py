@@ -1,7 +1,7 @@
 """A BSDF lobe in the plane of incidence for several roughnesses: f |cos theta_i| of a rough
 conductor (gold) for wo at 45 degrees, wi swept from -90 to 90 degrees in the x-z plane.
 
-    PYTHONPATH=build/python python3 examples/lobe_roughness.py lobes.png
+    PYTHONPATH=build/python /usr/bin/python3 examples/lobe_roughness.py lobes.png
 """
 
 import sys

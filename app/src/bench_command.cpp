@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "lamina/geometry/embree_limit.h"
+#include "lamina/render/render_limits.h"
 #include "lamina/render/renderer.h"
 
 namespace lamina::app {
@@ -68,8 +69,13 @@ void registerBenchCommand(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand(
         "bench", "Throughput (paths/s, rays/s) of the path integrator in RGB and spectral mode");
     cmd->add_option("scenes", a->scenes, "Scene files")->required()->check(CLI::ExistingFile);
-    cmd->add_option("--spp", a->spp, "Samples per pixel per run")->capture_default_str();
-    cmd->add_option("--threads", a->threads, "Worker threads (default: all cores)");
+    // The limits of every other command's --spp and --threads (render_limits.h): a count
+    // below 1 would measure nothing and print 0 paths/s.
+    cmd->add_option("--spp", a->spp, "Samples per pixel per run")
+        ->check(CLI::Range(1, render::kMaxSppOverride))
+        ->capture_default_str();
+    cmd->add_option("--threads", a->threads, "Worker threads (default: all cores)")
+        ->check(CLI::Range(1, render::kMaxThreadsOverride));
     cmd->add_option("--repeats", a->repeats, "Runs per scene and mode; the fastest counts")
         ->check(CLI::Range(1, 100))
         ->capture_default_str();

@@ -44,6 +44,9 @@ void run(const CompareArgs& args) {
                          std::to_string(a.height) + " but " + args.b + " is " +
                          std::to_string(b.width) + "x" + std::to_string(b.height));
     const experiments::ImageMetrics m = experiments::compareImages(a, b);
+    experiments::requireComparedValues(m, a, args.a, b, args.b);
+    if (const std::string note = experiments::nonFiniteNote(m); !note.empty())
+        std::fprintf(stderr, "lamina: warning: %s\n", note.c_str());
     for (const experiments::Metric metric : args.metrics)
         std::printf("%s %.9g\n", std::string(experiments::kMetricNames.name(metric)).c_str(),
                     experiments::metricValue(m, metric));

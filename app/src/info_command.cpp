@@ -68,7 +68,9 @@ void run(const std::string& file) {
         render::formatBytes(s.film.total()).c_str(), render::formatBytes(s.film.film).c_str(),
         render::formatBytes(s.film.output).c_str(), render::formatBytes(s.filmWithAovs).c_str(),
         render::formatBytes(s.filmWithStrategies).c_str());
-    std::printf("lights: %zu emitting primitives, %zu other lights\n", s.emitters, s.lights);
+    std::printf("lights: %zu emitting shape%s (sampled as %zu area light%s), %zu other light%s\n",
+                s.emitters, s.emitters == 1 ? "" : "s", s.areaLights, s.areaLights == 1 ? "" : "s",
+                s.lights, s.lights == 1 ? "" : "s");
     std::printf("materials:\n");
     for (const auto& m : s.materials)
         std::printf("  %s: %s; lobes: %s%s\n", m.name.c_str(), m.type.c_str(), m.lobes.c_str(),

@@ -54,10 +54,16 @@ void runInterruptible(const std::string& command, const std::function<void()>& w
     const auto signalName = [&] { return interruption.signal() == SIGTERM ? "SIGTERM" : "SIGINT"; };
     try {
         work();
-    } catch (const experiments::Interrupted&) {
-        std::fprintf(stderr,
-                     "lamina %s: interrupted by %s: stopped before the report, nothing written\n",
-                     command.c_str(), signalName());
+    } catch (const experiments::Interrupted& stopped) {
+        if (stopped.kept.empty())
+            std::fprintf(stderr,
+                         "lamina %s: interrupted by %s: stopped before the report, nothing "
+                         "written\n",
+                         command.c_str(), signalName());
+        else
+            std::fprintf(stderr,
+                         "lamina %s: interrupted by %s: stopped before the report; kept %s\n",
+                         command.c_str(), signalName(), stopped.kept.c_str());
         throw CLI::RuntimeError(interruption.exitStatus());
     }
     if (interruption.signal() != 0) {

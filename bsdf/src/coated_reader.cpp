@@ -58,7 +58,8 @@ MaterialModel readCoated(const JsonReader& r) {
                  "a smooth coat over a base with a smooth (delta) lobe needs a base of "
                  "delta lobes only and no scattering medium; give the coat or the base "
                  "a roughness");
-    c.maxDepth = r.integer("max_depth", 10, 1, 1000);
+    // No cap unless given: the walk then ends by Russian roulette and is unbiased.
+    c.maxDepth = r.integer("max_depth", 0, 1, kMaxCoatedDepth);
     c.samples = r.integer("samples", 1, 1, 256);
     return c;
 }
@@ -93,7 +94,7 @@ extern const MaterialKind kCoatedMaterial{"coated", readCoated,
     "thickness": {"type": "number", "minimum": 0, "maximum": 1000, "default": 0},
     "albedo": {"$ref": "#/$defs/colour"},
     "g": {"type": "number", "minimum": -0.99, "maximum": 0.99, "default": 0},
-    "max_depth": {"type": "integer", "minimum": 1, "maximum": 1000, "default": 10},
+    "max_depth": {"type": "integer", "minimum": 1, "maximum": 1048576, "description": "The most events of a walk (a longer path is absorbed: f is biased low). Absent: no cap, the walk ends by Russian roulette (unbiased)."},
     "samples": {"type": "integer", "minimum": 1, "maximum": 256, "default": 1}
   },
   "examples": [

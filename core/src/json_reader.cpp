@@ -1,7 +1,9 @@
 #include "lamina/core/json_reader.h"
 
 #include <cmath>
+#include <set>
 #include <sstream>
+#include <vector>
 
 #include "lamina/core/input_file.h"
 
@@ -31,6 +33,64 @@ std::string typeName(const Json& v) {
 // an InputError with the file name.
 struct TooDeep {};
 
+// Thrown by the parser callback at the second occurrence of a key in one object: `path` is the
+// key's JSON path, as JsonReader writes paths.
+struct DuplicateKey {
+    std::string path;
+};
+
+// Follows the parser's events to know where it is (the JSON path of the value being read) and
+// which keys each open object has had. nlohmann's parser keeps the last of two equal keys
+// without a word; a scene that sets a key twice means one of them by mistake.
+class KeyTracker {
+  public:
+    void event(Json::parse_event_t event, const Json& parsed) {
+        switch (event) {
+            case Json::parse_event_t::object_start:
+                frames_.push_back({false, 0, {}, {}});
+                break;
+            case Json::parse_event_t::array_start:
+                frames_.push_back({true, 0, {}, {}});
+                break;
+            case Json::parse_event_t::key: {
+                Frame& top = frames_.back();
+                top.key = parsed.get<std::string>();
+                if (!top.keys.insert(top.key).second) throw DuplicateKey{path()};
+                break;
+            }
+            case Json::parse_event_t::object_end:
+            case Json::parse_event_t::array_end:
+                frames_.pop_back();
+                endValue();
+                break;
+            case Json::parse_event_t::value:
+                endValue();
+                break;
+        }
+    }
+
+  private:
+    struct Frame {
+        bool array;
+        std::size_t index;  ///< of the next element, in an array
+        std::string key;    ///< the last key read, in an object
+        std::set<std::string> keys;
+    };
+
+    void endValue() {
+        if (!frames_.empty() && frames_.back().array) ++frames_.back().index;
+    }
+
+    std::string path() const {
+        std::string p;
+        for (const Frame& f : frames_)
+            p += f.array ? "[" + std::to_string(f.index) + "]" : (p.empty() ? "" : ".") + f.key;
+        return p;
+    }
+
+    std::vector<Frame> frames_;
+};
+
 }  // namespace
 
 std::string shortDump(const Json& v) {
@@ -52,15 +112,23 @@ std::string formatNumber(double v) {
 Json parseJsonText(const std::string& text, const JsonSource& source) {
     // A value nested 100 000 levels deep would overflow the stack of everything that walks
     // it recursively (dump, destruction in some versions, the readers); refuse it here.
-    const Json::parser_callback_t limitDepth = [](int depth, Json::parse_event_t, Json&) {
+    // Duplicate keys are refused with their path (KeyTracker).
+    KeyTracker keys;
+    const Json::parser_callback_t check = [&keys](int depth, Json::parse_event_t event,
+                                                  Json& parsed) {
         if (depth > kMaxJsonDepth) throw TooDeep{};
+        keys.event(event, parsed);
         return true;
     };
     try {
-        return Json::parse(text, limitDepth, true, /*ignore_comments=*/true);
+        return Json::parse(text, check, true, /*ignore_comments=*/true);
     } catch (const TooDeep&) {
         throw InputError(source.name + ": malformed JSON: arrays and objects nested deeper than " +
                          std::to_string(kMaxJsonDepth) + " levels");
+    } catch (const DuplicateKey& d) {
+        throw InputError(source.name + ": " + d.path +
+                         ": duplicate key: expected each key once in an object (JSON keeps only "
+                         "one of them)");
     } catch (const Json::parse_error& e) {
         // e.what() is "[json.exception.parse_error.101] parse error at line 3, column 5: ...";
         // keep the part after the position, which says what was expected.

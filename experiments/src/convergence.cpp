@@ -119,6 +119,7 @@ ConvergenceResult runConvergence(const ConvergenceInputs& in) {
             references[m] = filmImage(*r.film);
             render::ImageMetadata meta = render::renderMetadata(scene, o, r, in.build);
             result.references.push_back({m, std::move(r), std::move(meta)});
+            if (in.onReference) in.onReference(result.references.back());
         }
     }
 

@@ -3,6 +3,7 @@
 #include "declarations.h"
 #include "lamina/experiments/command_options.h"
 #include "lamina/experiments/convergence.h"
+#include "lamina/experiments/interrupted.h"
 #include "lamina/experiments/merged_convergence.h"
 
 namespace lamina::experiments {
@@ -44,7 +45,24 @@ ReportWork convergenceReport(const OptionValues& v, const CommandContext& contex
     }
     const ConvergenceInputs in = convergenceInputs(v, context);
     return {[in](Report& report) {
-        writeConvergenceReport(runConvergence(in), report);
+        // Each rendered reference is written as soon as it is done: a run interrupted during
+        // the measured renders keeps it, and says how to reuse it.
+        ConvergenceInputs run = in;
+        std::vector<std::string> kept;
+        run.onReference = [&](const RenderedReference& r) {
+            kept.push_back(writeRenderedReference(r, report).string());
+        };
+        try {
+            writeConvergenceReport(runConvergence(run), report);
+        } catch (Interrupted& stopped) {
+            for (const std::string& file : kept)
+                stopped.kept += (stopped.kept.empty() ? "" : ", ") + file;
+            if (!kept.empty())
+                stopped.kept +=
+                    " (a rerun with --reference FILE, one mode at a time, measures against it "
+                    "without rendering it again)";
+            throw;
+        }
         report.finish();
         return 0;
     }};

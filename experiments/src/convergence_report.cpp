@@ -35,8 +35,7 @@ std::string writeReferences(const ConvergenceResult& result, const Report& repor
     std::string note;
     for (const RenderedReference& ref : result.references) {
         const std::string mode = nameOf(ref.mode), integrator = nameOf(in.referenceIntegrator);
-        render::writeExr(report.file("reference_" + mode + ".exr"), *ref.render.film, false,
-                         ref.metadata);
+        writeRenderedReference(ref, report);
         note +=
             (note.empty() ? "" : "; ") +
             formatText(
@@ -120,6 +119,13 @@ std::string summary(const ConvergenceResult& result, const std::string& referenc
 }
 
 }  // namespace
+
+std::filesystem::path writeRenderedReference(const RenderedReference& reference,
+                                             const Report& report) {
+    const std::filesystem::path path = report.file("reference_" + nameOf(reference.mode) + ".exr");
+    render::writeExr(path, *reference.render.film, false, reference.metadata);
+    return path;
+}
 
 void writeConvergenceReport(const ConvergenceResult& result, Report& report) {
     const std::string referenceNote = writeReferences(result, report);

@@ -15,21 +15,55 @@ ImageMetrics compareImages(const render::RgbImage& a, const render::RgbImage& b)
                          std::to_string(a.height) + " and " + std::to_string(b.width) + "x" +
                          std::to_string(b.height));
     ImageMetrics m;
-    const std::size_t n = a.pixels.size();
-    for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t i = 0; i < a.pixels.size(); ++i) {
         const double d = double(a.pixels[i]) - double(b.pixels[i]);
+        if (!std::isfinite(d)) {
+            ++m.nonFinite;
+            continue;
+        }
         m.mse += d * d;
         m.relmse += d * d / (double(b.pixels[i]) * double(b.pixels[i]) + kRelMseEpsilon);
         m.mae += std::abs(d);
         m.max = std::max(m.max, std::abs(d));
+        ++m.compared;
     }
-    if (n > 0) {
+    if (const std::size_t n = m.compared; n > 0) {
         m.mse /= double(n);
         m.relmse /= double(n);
         m.mae /= double(n);
     }
     m.rmse = std::sqrt(m.mse);
     return m;
+}
+
+namespace {
+
+bool hasFiniteValue(const render::RgbImage& image) {
+    return std::any_of(image.pixels.begin(), image.pixels.end(),
+                       [](float v) { return std::isfinite(v); });
+}
+
+}  // namespace
+
+void requireComparedValues(const ImageMetrics& m, const render::RgbImage& a,
+                           const std::string& nameA, const render::RgbImage& reference,
+                           const std::string& nameB) {
+    if (m.compared > 0) return;
+    for (const auto& [image, name] : {std::pair{&a, &nameA}, std::pair{&reference, &nameB}})
+        if (!hasFiniteValue(*image))
+            throw InputError(*name +
+                             ": the image has no finite pixels (every value is NaN or "
+                             "infinite): there is nothing to measure");
+    throw InputError(nameA + " and " + nameB +
+                     ": no channel value is finite in both images: there is nothing to measure");
+}
+
+std::string nonFiniteNote(const ImageMetrics& m) {
+    if (m.nonFinite == 0) return "";
+    return std::to_string(m.nonFinite) + " of " + std::to_string(m.nonFinite + m.compared) +
+           " channel values are NaN or infinite in one of the images: the metrics are over the "
+           "other " +
+           std::to_string(m.compared);
 }
 
 double metricValue(const ImageMetrics& m, Metric metric) {

@@ -192,6 +192,13 @@ std::size_t sceneMaterialIndex(const render::SceneDesc& scene) {
 
 }  // namespace
 
+std::string cappedWalkNote(int maxDepth) {
+    return "the walk is capped at max_depth " + std::to_string(maxDepth) +
+           ": paths of more events are absorbed, so its f and albedo are biased low and it is "
+           "not the truth the twins are measured against (remove max_depth for the unbiased "
+           "walk, which ends by Russian roulette)";
+}
+
 LayeringResult runLayering(const LayeringInputs& in) {
     if (in.materials.empty()) throw InputError("lamina layering: expected at least one material");
     if (in.estimates < 2 || in.albedoSamples < 2)
@@ -223,6 +230,10 @@ LayeringResult runLayering(const LayeringInputs& in) {
         r.stem = m.stem;
         r.json = m.json;
         r.walksPerEstimate = m.coated().samples;
+        r.walkMaxDepth = m.coated().maxDepth;
+        if (r.walkMaxDepth > 0)
+            tell(in.progress,
+                 "layering: warning: " + m.stem + ": " + cappedWalkNote(r.walkMaxDepth) + "\n");
         const auto walkBsdf = buildBxdf(m.desc, context);
         const auto& walk = dynamic_cast<const CoatedBxdf<S>&>(*walkBsdf);
         tell(in.progress, "layering: " + m.stem + ": the walk...\n");

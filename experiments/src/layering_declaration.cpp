@@ -61,6 +61,8 @@ Data layeringData(const OptionValues& v, const CommandContext& context) {
         Data d = Data::dict();
         d.set("material", m.json);
         d.set("note", m.twinNote);
+        // 0: the unbiased walk; otherwise its cap, and the walk is not a truth.
+        d.set("walk_max_depth", m.walkMaxDepth);
         d.set("theta_o", Data::numbers(r.albedoAngles));
         auto [walk, walkSe] = meansOf(m.walkAlbedo.values);
         d.set("walk_albedo", std::move(walk));

@@ -220,6 +220,7 @@ std::string materialSection(const LayeringMaterialResult& m, const LayeringResul
                             const Report& report) {
     std::ostringstream md;
     md << "## " << m.stem << "\n\n```json\n" << m.json << "\n```\n\n";
+    if (m.walkMaxDepth > 0) md << "**Not a truth: " << cappedWalkNote(m.walkMaxDepth) << ".**\n\n";
     if (!m.twinNote.empty()) md << "Note: " << m.twinNote << ".\n\n";
     writeAlbedo(m, r, report);
     writeLobes(m, r, report);
@@ -290,6 +291,9 @@ void writeLayeringReport(const LayeringResult& result, Report& report) {
             "spectral mode (the scene's integrator, the same seed); the CIEDE2000 of each pixel "
             "between a twin's render and the walk's includes both renders' noise.\n\n",
             in.scene.c_str(), kLayeringSceneMaterial, result.renderSpp);
+    for (const LayeringMaterialResult& m : result.materials)
+        if (m.walkMaxDepth > 0)
+            md += "**" + m.stem + ": " + cappedWalkNote(m.walkMaxDepth) + ".**\n\n";
     for (const LayeringMaterialResult& m : result.materials)
         md += materialSection(m, result, report);
     report.addSummary(md);

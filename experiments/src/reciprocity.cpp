@@ -83,7 +83,8 @@ ReciprocityResult runReciprocity(const ReciprocityInputs& in) {
         });
         const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        tell(in.progress, formatText(" (%.1f s)\n", seconds));
+        tell(in.progress,
+             formatText("\r%s: %d batches (%.1f s)\n", name.c_str(), in.batches, seconds));
         result.renders.push_back({in.integrators[i], std::move(images), seconds});
     }
 

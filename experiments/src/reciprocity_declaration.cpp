@@ -31,6 +31,7 @@ ReportWork reciprocityReport(const OptionValues& v, const CommandContext& contex
     return {[in](Report& report) {
         const ReciprocityResult result = runReciprocity(in);
         writeReciprocityReport(result, report);
+        report.finish();
         return result.allAgree ? 0 : 2;
     }};
 }

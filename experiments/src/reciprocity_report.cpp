@@ -1,5 +1,5 @@
-// The report of `lamina reciprocity`: the log on the console, the mean image of every
-// integrator and the t-statistic maps of every pair.
+// The report of `lamina reciprocity`: summary.md (the pairs, the BSDFs and the verdict, echoed
+// on the console), the mean image of every integrator and the t-statistic maps of every pair.
 #include "lamina/experiments/reciprocity.h"
 #include "lamina/experiments/svg_heat_map.h"
 #include "lamina/experiments/text_format.h"
@@ -19,17 +19,17 @@ void writeMean(const std::filesystem::path& path, const BatchImages& images,
     render::writeFloatExr(path, images.width(), images.height(), {"R", "G", "B"}, data, meta);
 }
 
-void writePair(const PairAgreement& p, double alpha, const Report& report) {
+// The pair's row of the summary's table; its EXR of t statistics and their figures.
+std::string writePair(const PairAgreement& p, double alpha, const Report& report) {
     const bool pixelTestTrusted = p.pixelTest.trustworthy;
     const AgreementResult& r = p.result;
     const int width = p.width, height = p.height;
-    report.print(formatText(
-        "%-6s vs %-9s  pixels rejected %6.2f%% of %d%s  blocks rejected %6.2f%% of %d "
-        "(p %.2g)  mean rel. diff %+.4f +- %.4f (p %.2g)  %s\n",
+    const std::string row = formatText(
+        "| %s vs %s | %.2f%% of %d%s | %.2f%% of %d (p %.2g) | %+.4f +- %.4f (p %.2g) | %s |\n",
         p.nameA.c_str(), p.nameB.c_str(), 100 * r.pixelRejectionRate(), r.pixelsTested,
         pixelTestTrusted ? "" : " (not meaningful: see the verdict)", 100 * r.blockRejectionRate(),
         r.blocksTested, r.blockRejectionPValue(alpha), r.relativeDifference, r.standardError,
-        r.meanPValue, p.agree ? "agree" : "DISAGREE"));
+        r.meanPValue, p.agree ? "agree" : "DISAGREE");
     const std::string stem = "t_" + p.nameA + "_vs_" + p.nameB;
     std::vector<float> data;
     data.reserve(r.pixelT.size() * 2);
@@ -54,16 +54,16 @@ void writePair(const PairAgreement& p, double alpha, const Report& report) {
         const std::string name = stem + (pixels ? "_pixels" : "_blocks");
         map.write(report.file(name + ".svg"), report.file(name + ".png"));
     }
+    return row;
 }
 
-std::string materialLine(const MaterialReciprocity& m) {
+std::string materialRow(const MaterialReciprocity& m) {
     const BsdfReciprocity& r = m.check;
-    return formatText("  %-20s %-8s  reciprocity (reflection) %9.2e   adjoint %9.2e%s\n",
-                      m.material.c_str(),
+    return formatText("| %s | %s | %.2e | %.2e | %s |\n", m.material.c_str(),
                       std::string(render::kRenderModeNames.name(m.mode)).c_str(),
                       r.maxReciprocityError, r.maxAdjointError,
-                      r.maxAdjointError > 1e-3       ? "  ADJOINT BROKEN"
-                      : r.maxReciprocityError > 1e-3 ? "  (not reciprocal)"
+                      r.maxAdjointError > 1e-3       ? "ADJOINT BROKEN"
+                      : r.maxReciprocityError > 1e-3 ? "not reciprocal"
                                                      : "");
 }
 
@@ -90,11 +90,14 @@ std::string pixelTestNote(const ReciprocityResult& result) {
 void writeReciprocityReport(const ReciprocityResult& result, Report& report) {
     const ReciprocityInputs& in = result.inputs;
     const std::string mode(render::kRenderModeNames.name(in.mode));
-    report.print(
-        formatText("reciprocity: %s, %s mode, %d spp in %d independent batches per integrator, "
-                   "alpha %.3g, %dx%d blocks\n",
-                   in.scene.c_str(), mode.c_str(), in.spp, in.batches, in.test.alpha,
-                   in.test.blockSize, in.test.blockSize));
+    std::string md = formatText(
+        "# Reciprocity: do the estimators converge to the same image?\n\n"
+        "`%s`, %s mode, %d spp in %d independent batches per integrator, alpha %.3g, %dx%d "
+        "blocks. Each pair's images are compared per pixel and per block (Welch t-tests on the "
+        "batches) and by their image means (relative difference with its standard error).\n\n",
+        in.scene.c_str(), mode.c_str(), in.spp, in.batches, in.test.alpha, in.test.blockSize,
+        in.test.blockSize);
+    std::string images;
     for (const IntegratorBatches& r : result.renders) {
         const std::string name(render::kIntegratorNames.name(r.integrator));
         render::ImageMetadata meta;
@@ -103,17 +106,31 @@ void writeReciprocityReport(const ReciprocityResult& result, Report& report) {
         meta.ints["spp"] = in.spp;
         meta.ints["batches"] = in.batches;
         writeMean(report.file(name + ".exr"), r.images, meta);
+        images +=
+            formatText("%s`%s.exr` (%.1f s)", images.empty() ? "" : ", ", name.c_str(), r.seconds);
     }
-    for (const PairAgreement& p : result.pairs)
-        writePair(p, in.test.alpha, report);
-
-    report.print(
-        formatText("BSDFs (max relative error over %d direction pairs):\n", kBsdfReciprocityPairs));
+    md +=
+        "| pair | pixels rejected | blocks rejected | mean rel. diff | verdict |\n"
+        "|---|---|---|---|---|\n";
+    std::string maps;
+    for (const PairAgreement& p : result.pairs) {
+        md += writePair(p, in.test.alpha, report);
+        maps += formatText("![%s vs %s, blocks](t_%s_vs_%s_blocks.svg) ", p.nameA.c_str(),
+                           p.nameB.c_str(), p.nameA.c_str(), p.nameB.c_str());
+    }
+    md += formatText("\nBSDFs (max relative error over %d direction pairs):\n\n",
+                     kBsdfReciprocityPairs);
+    md += "| material | mode | reciprocity (reflection) | adjoint | |\n|---|---|---|---|---|\n";
     for (const MaterialReciprocity& m : result.materials)
-        report.print(materialLine(m));
-    report.print(formatText("verdict: %s%s (images and t statistics in %s)\n",
-                            result.allAgree ? "the estimators agree" : "the estimators DISAGREE",
-                            pixelTestNote(result).c_str(), report.directory().string().c_str()));
+        md += materialRow(m);
+    md += formatText("\nverdict: %s%s (images and t statistics in %s)\n\n",
+                     result.allAgree ? "the estimators agree" : "the estimators DISAGREE",
+                     pixelTestNote(result).c_str(), report.directory().string().c_str());
+    md += "Mean images: " + images +
+          "; per pair, its t statistics per pixel and per block (`t_A_vs_B.exr`, "
+          "`t_A_vs_B_pixels.svg`):\n\n" +
+          maps + "\n";
+    report.addSummary(md);
 }
 
 }  // namespace lamina::experiments

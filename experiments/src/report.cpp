@@ -1,5 +1,7 @@
 #include "lamina/experiments/report.h"
 
+#include <unistd.h>
+
 #include "lamina/core/output_files.h"
 #include "lamina/experiments/progress.h"
 #include "lamina/experiments/svg_plot.h"
@@ -7,6 +9,12 @@
 namespace lamina::experiments {
 
 void printToStderr(const std::string& text) {
+    static const bool terminal = ::isatty(STDERR_FILENO) != 0;
+    if (!terminal && !text.empty() && text.front() == '\r') {
+        if (text.back() != '\n') return;  // transient: a log keeps only the final line
+        std::fputs(text.c_str() + 1, stderr);
+        return;
+    }
     std::fputs(text.c_str(), stderr);
 }
 

@@ -15,7 +15,8 @@ void bindSpectra(py::module_& m);      // spectra_binding.cpp
 void bindRender(py::module_& m);       // render_binding.cpp
 void bindExperiments(py::module_& m);  // experiments_binding.cpp
 
-/// A Python dict (or any value json.dumps accepts) as JSON text.
-std::string jsonText(const py::handle& value);
+/// A Python dict (or any value json.dumps accepts) as JSON text; InputError naming `source`
+/// and the JSON path of a NaN or infinite number (JSON has none).
+std::string jsonText(const py::handle& value, const std::string& source);
 
 }  // namespace lamina::python

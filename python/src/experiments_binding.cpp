@@ -7,10 +7,15 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <atomic>
+#include <chrono>
+#include <future>
+
 #include "bindings.h"
 #include "declared_keywords.h"
 #include "lamina/experiments/command_declaration.h"
 #include "lamina/experiments/image_metrics.h"
+#include "lamina/experiments/interrupted.h"
 #include "lamina/version.h"
 
 namespace lamina::python {
@@ -42,6 +47,9 @@ py::object compare(const py::object& a, const py::object& b,
                    const std::optional<std::string>& metric) {
     const render::RgbImage image = imageOf(a, "a"), reference = imageOf(b, "b");
     const ex::ImageMetrics m = ex::compareImages(image, reference);
+    ex::requireComparedValues(m, image, "a", reference, "b");
+    if (const std::string note = ex::nonFiniteNote(m); !note.empty())
+        if (PyErr_WarnEx(PyExc_RuntimeWarning, note.c_str(), 1) != 0) throw py::error_already_set();
     if (!metric) return metricsDict(m);
     const auto e = ex::kMetricNames.find(*metric);
     if (!e)
@@ -64,11 +72,41 @@ py::object runExperiment(const std::string& name, const py::dict& keywords) {
     if (!command.data) throw py::value_error(name + " is not an experiment");
     const ex::OptionValues values = keywordValues(command, keywords, name);
     const ex::CommandContext context{{LAMINA_VERSION_STRING, LAMINA_GIT_COMMIT}, {}};
-    ex::Data result;
-    {
-        py::gil_scoped_release release;
-        result = command.data(values, context);
+    // The experiment runs on a thread of its own while this one, the caller's, looks for
+    // Ctrl-C every 50 ms: Python delivers KeyboardInterrupt only to the thread that holds the
+    // interpreter, and a call that kept the GIL released to its end would ignore Ctrl-C for
+    // the whole run. On a signal the interrupt flag stops the experiment at its next check (a
+    // render finishes its pass in flight; experiments/interrupted.h), and KeyboardInterrupt is
+    // raised here: an experiment's numbers are whole or not at all.
+    std::atomic<bool>& interrupt = render::renderInterruptFlag();
+    interrupt.store(false);
+    std::future<ex::Data> running =
+        std::async(std::launch::async, [&] { return command.data(values, context); });
+    bool interrupted = false;
+    while (true) {
+        {
+            py::gil_scoped_release release;
+            if (running.wait_for(std::chrono::milliseconds(50)) == std::future_status::ready)
+                break;
+        }
+        if (PyErr_CheckSignals() != 0) {
+            interrupted = true;
+            interrupt.store(true);
+            py::gil_scoped_release release;
+            running.wait();
+            break;
+        }
     }
+    ex::Data result;
+    try {
+        result = running.get();
+    } catch (const ex::Interrupted&) {
+        interrupt.store(false);
+        if (!interrupted) throw;
+        throw py::error_already_set();  // the KeyboardInterrupt PyErr_CheckSignals set
+    }
+    interrupt.store(false);
+    if (interrupted) throw py::error_already_set();
     return toPython(result);
 }
 

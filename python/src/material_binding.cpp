@@ -81,7 +81,8 @@ class Material {
             desc_ = parseMaterialArgument(spec.cast<std::string>());
         } else if (py::isinstance<py::dict>(spec)) {
             static const JsonSource source{"<material dict>", "."};
-            desc_ = parseMaterial(JsonReader(parseJsonText(jsonText(spec), source), "", source));
+            desc_ = parseMaterial(
+                JsonReader(parseJsonText(jsonText(spec, source.name), source), "", source));
         } else {
             throw py::type_error("Material: expected a dict or a string (JSON or \"@file.json\")");
         }

@@ -138,7 +138,7 @@ render::SceneDesc sceneOf(const py::object& scene) {
     if (py::isinstance<py::dict>(scene)) {
         // Relative file names in a dict resolve against the working directory.
         const JsonSource source{"<scene dict>", std::filesystem::current_path()};
-        return render::parseScene(jsonText(scene), source);
+        return render::parseScene(jsonText(scene, source.name), source);
     }
     const py::object path = py::module_::import("os").attr("fspath")(scene);
     return render::loadScene(path.cast<std::string>());

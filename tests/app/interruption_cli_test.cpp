@@ -2,7 +2,8 @@
 // in flight and writes the image, marked lamina:partial 1, and lamina exits with 128 + the
 // signal (130 for SIGINT); a signal that arrives while the EXR is being written lets the write
 // finish; no temporary file is ever left behind. The experiment commands stop before their
-// report and write nothing (their results would be incomplete), with the same exit status.
+// report and write nothing (their results would be incomplete), with the same exit status,
+// except a reference `convergence` has already rendered, which it keeps.
 #include <fcntl.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -157,6 +158,32 @@ TEST_F(Interruption, CtrlCDuringConvergenceStopsWithoutAReportAndExits130) {
     EXPECT_THAT(stderrText(), ::testing::HasSubstr("interrupted by SIGINT"));
     EXPECT_FALSE(fs::exists(report) && !fs::is_empty(report)) << "a report was written";
     EXPECT_FALSE(temporaryPresent());
+}
+
+// The reference is the longest render of a convergence run: once rendered it is written at
+// once, so a run interrupted during the measured renders keeps it (and says so), and a rerun
+// measures against it without rendering it again.
+TEST_F(Interruption, CtrlCDuringConvergenceKeepsTheRenderedReference) {
+    const auto s = write("scene.json", scene(32, 32));
+    const auto report = dir_ / "report";
+    const pid_t pid = start({"convergence", s, "-o", report.string(), "--integrators", "path",
+                             "--modes", "rgb", "--time", "60", "--reference-time", "1"});
+    std::this_thread::sleep_for(5000ms);
+    ::kill(pid, SIGINT);
+    EXPECT_EQ(wait(pid), 130) << stderrText();
+    const fs::path reference = report / "reference_rgb.exr";
+    EXPECT_THAT(stderrText(),
+                ::testing::HasSubstr("interrupted by SIGINT: stopped before the report; kept " +
+                                     reference.string()));
+    ASSERT_TRUE(fs::exists(reference));
+    EXPECT_FALSE(fs::exists(report / "summary.md"));
+    EXPECT_EQ(render::readRgbImage(reference).width, 32);
+    EXPECT_FALSE(temporaryPresent());
+    const CommandRun rerun = runLamina("convergence " + s + " -o " + (dir_ / "rerun").string() +
+                                       " --integrators path --modes rgb --time 0.5 --reference " +
+                                       reference.string());
+    EXPECT_EQ(rerun.exitCode, 0) << rerun.output;
+    EXPECT_TRUE(fs::exists(dir_ / "rerun" / "summary.md"));
 }
 
 TEST_F(Interruption, SigtermDuringAFresnelSceneRenderExits143WithoutAReport) {

@@ -50,16 +50,32 @@ MeanAndError evaluatedAlbedo(const Bxdf<Spec>& b, const Vec3d& wo, int n, int c 
 TEST(CoatedWalk, WhiteFurnaceClearCoatOverWhiteBase) {
     // No absorption anywhere and a smooth coat (whose boundary conserves energy exactly): every
     // photon leaves, so the albedo is 1 at every angle, from sample() and from eval() plus the
-    // coat's own specular reflection F.
+    // coat's own specular reflection F. At the material's default settings: no max_depth, the
+    // walk ends by Russian roulette alone.
     for (const char* medium : {"", R"("thickness":0.5,"albedo":1,"g":0.5,)"}) {
-        const auto b = coated(std::string(R"({"type":"coated","ior":1.5,"max_depth":1000,)") +
-                              medium + R"("base":{"type":"lambert","reflectance":1}})");
+        const auto b = coated(std::string(R"({"type":"coated","ior":1.5,)") + medium +
+                              R"("base":{"type":"lambert","reflectance":1}})");
         for (double theta : {0.0, 30.0, 60.0, 85.0}) {
             const Vec3d wo = testing::directionAt(theta);
             EXPECT_TRUE(agrees(sampledAlbedo(*b, wo, 40000), 1.0)) << medium << theta;
             const double F = fresnelDielectric(wo.z, 1.5);
             EXPECT_TRUE(agrees(evaluatedAlbedo(*b, wo, 40000), 1.0 - F)) << medium << theta;
         }
+    }
+}
+
+TEST(CoatedWalk, ACappedWalkIsStillAvailableAndDarker) {
+    // max_depth 10, pbrt-v4's default: paths of more events are absorbed, so the white furnace
+    // reflects measurably less than 1 (by more than four standard errors) at every angle, and
+    // the cap is what the BSDF reports.
+    const auto b = coated(
+        R"({"type":"coated","ior":1.5,"max_depth":10,"base":{"type":"lambert","reflectance":1}})");
+    EXPECT_EQ(asCoated(*b).maxDepth(), 10);
+    EXPECT_EQ(asCoated(*coated(R"({"type":"coated","base":{"type":"lambert"}})")).maxDepth(), 0);
+    for (double theta : {0.0, 60.0}) {
+        const MeanAndError a = sampledAlbedo(*b, testing::directionAt(theta), 40000);
+        EXPECT_LT(a.mean + kZ * a.error, 1.0) << theta;
+        EXPECT_GT(a.mean, 0.9) << theta;  // the issue's 0.93 to 0.97
     }
 }
 
@@ -170,8 +186,8 @@ TEST(CoatedWalk, SmoothCoatOverLambertMatchesTheClosedForm) {
     // the sum of the geometric series of round trips between the base and the coat.
     const double rho = 0.6, eta = 1.5;
     const double Fi = internalDiffuseReflectance(eta);
-    const auto b = coated(R"({"type":"coated","ior":1.5,"max_depth":1000,"base":{"type":"lambert",)"
-                          R"("reflectance":0.6}})");
+    const auto b =
+        coated(R"({"type":"coated","ior":1.5,"base":{"type":"lambert","reflectance":0.6}})");
     for (double theta : {0.0, 30.0, 60.0, 85.0}) {
         const Vec3d wo = testing::directionAt(theta);
         const double F = fresnelDielectric(wo.z, eta);

@@ -84,5 +84,31 @@ TEST(JsonBounds, MessagesEchoAShortPrefixOfAValue) {
     }
 }
 
+// JSON keeps only one of two equal keys (nlohmann: the last): a scene that sets a key twice
+// means one of them by mistake, so the reader refuses it with the key's JSON path.
+TEST(JsonDuplicateKeys, AreRefusedWithTheirPath) {
+    const JsonSource source{"scene.json", "."};
+    EXPECT_EQ(errorOf([&] { parseJsonText(R"({"spp": 4, "spp": 8})", source); }),
+              "scene.json: spp: duplicate key: expected each key once in an object (JSON keeps "
+              "only one of them)");
+    EXPECT_THAT(errorOf([&] {
+                    parseJsonText(R"({"materials": {"red": {"type": "lambert"}},
+                                     "shapes": [{"type": "sphere"},
+                                                {"type": "mesh", "faces": [[0, 1, 2]],
+                                                 "positions": [], "material": "a",
+                                                 "material": "b"}]})",
+                                  source);
+                }),
+                HasSubstr("scene.json: shapes[1].material: duplicate key"));
+    EXPECT_THAT(errorOf([&] { parseJsonText(R"([1, {"a": {"b": 1, "b": 2}}])", source); }),
+                HasSubstr("scene.json: [1].a.b: duplicate key"));
+    // Equal keys in different objects, and equal values, are fine.
+    EXPECT_EQ(errorOf([&] {
+                  parseJsonText(R"({"a": {"x": 1}, "b": {"x": 1}, "c": [{"x": 1}, {"x": 2}]})",
+                                source);
+              }),
+              "(accepted)");
+}
+
 }  // namespace
 }  // namespace lamina

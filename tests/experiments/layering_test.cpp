@@ -7,6 +7,7 @@
 
 #include "lamina/core/error.h"
 #include "lamina/experiments/layering.h"
+#include "scratch_directory.h"
 
 namespace lamina::experiments {
 namespace {
@@ -168,6 +169,54 @@ TEST(LayeringAnalysis, ARealCoatIsDarkerThanItsBaseAndCarriesAnErrorBar) {
             EXPECT_TRUE(std::isfinite(c.error));
             EXPECT_TRUE(std::isfinite(c.standardError));
         }
+}
+
+// The walk is the truth the twins are measured against: in the white furnace (white Lambert
+// under a smooth clear coat, nothing absorbs) its albedo is 1 at every theta_o at the
+// experiment's own settings (its albedo sample count, seed and double-precision RGB walk).
+// Every path leaves with weight exactly 1, so the estimate is 1 to rounding (tolerance 1e-9).
+TEST(LayeringAnalysis, TheWalkReflectsEverythingInTheWhiteFurnace) {
+    LayeringInputs in;
+    in.materials = {R"({"type":"coated","ior":1.5,"base":{"type":"lambert","reflectance":1}})",
+                    R"({"type":"coated","ior":1.5,"thickness":0.5,"albedo":1,"g":0.5,)"
+                    R"("base":{"type":"lambert","reflectance":1}})"};
+    in.estimates = 2;  // eval's points do not enter the albedo
+    const LayeringResult r = runLayering(in);
+    ASSERT_EQ(r.materials.size(), 2u);
+    for (const LayeringMaterialResult& m : r.materials) {
+        EXPECT_EQ(m.walkMaxDepth, 0);
+        for (std::size_t i = 0; i < m.walkAlbedo.values.size(); ++i)
+            EXPECT_NEAR(m.walkAlbedo.values[i].mean, 1.0,
+                        1e-9 + 4 * m.walkAlbedo.values[i].standardError)
+                << m.stem << " at " << r.albedoAngles[i];
+    }
+}
+
+class LayeringReportTest : public testing::ScratchDirectoryTest {};
+
+// A capped walk is no truth: the experiment still runs it, and says so in the summary, on the
+// console and in its data; its furnace albedo is measurably below 1.
+TEST_F(LayeringReportTest, ACappedWalkIsFlaggedAsNoTruth) {
+    LayeringInputs in;
+    in.materials = {
+        R"({"type":"coated","ior":1.5,"max_depth":10,"base":{"type":"lambert","reflectance":1}})"};
+    in.estimates = 2;
+    in.albedoSamples = 1 << 14;
+    std::string console;
+    in.progress = [&console](const std::string& text) { console += text; };
+    const LayeringResult r = runLayering(in);
+    const LayeringMaterialResult& m = r.materials[0];
+    EXPECT_EQ(m.walkMaxDepth, 10);
+    const MeanEstimate& normal = m.walkAlbedo.values.front();
+    EXPECT_LT(normal.mean + 4 * normal.standardError, 1.0);
+    EXPECT_NE(console.find("warning: material1: the walk is capped at max_depth 10"),
+              std::string::npos)
+        << console;
+    Report report(dir_, nullptr);
+    writeLayeringReport(r, report);
+    EXPECT_NE(report.summary().find("**Not a truth: the walk is capped at max_depth 10"),
+              std::string::npos)
+        << report.summary();
 }
 
 }  // namespace

@@ -389,6 +389,15 @@ TEST_F(PbrtTranslation, EnvironmentImagesAreOctahedral) {
     EXPECT_NEAR(r[0][0], std::cos(M_PI / 6), 1e-6);
 }
 
+// pbrt-v4's coated walk stops at maxdepth 10; lamina's would not, so the importer writes the
+// cap and says so.
+std::string coatedWarning(const std::string& type) {
+    return type +
+           " became lamina's coated with max_depth 10 (pbrt-v4's maxdepth: its random walk "
+           "stops there, which darkens bright bases; remove max_depth for lamina's unbiased "
+           "walk, which ends by Russian roulette)";
+}
+
 TEST_F(PbrtTranslation, Materials) {
     std::string shapes;
     for (const char* name : {"gold", "mirror", "glass", "thin", "paint", "car", "leaf", "both",
@@ -461,6 +470,8 @@ TEST_F(PbrtTranslation, Materials) {
         at(3) +
             ": anisotropic roughness became alpha_x along the surface's u tangent and "
             "alpha_y along v",
+        at(5) + ": " + coatedWarning("coateddiffuse"),
+        at(6) + ": " + coatedWarning("coatedconductor"),
         at(9) + ": material \"unused\" is used by no shape: not translated"};
     EXPECT_EQ(t.warnings, expected);
 }

@@ -30,6 +30,19 @@ def test_compare_equals_numpy():
         lamina.compare(a, b[:4])
 
 
+def test_compare_refuses_an_image_of_nans_and_warns_of_some():
+    nans = np.full((4, 4, 3), np.nan, dtype=np.float32)
+    grey = np.full((4, 4, 3), 0.5, dtype=np.float32)
+    with pytest.raises(ValueError, match=r"^a: the image has no finite pixels"):
+        lamina.compare(nans, grey)
+    some = grey + 0.25
+    some[0, 0, 0] = np.nan
+    with pytest.warns(RuntimeWarning, match="1 of 48 channel values are NaN"):
+        m = lamina.compare(some, grey)
+    assert all(np.isfinite(v) for v in m.values())
+    assert m["max"] == pytest.approx(0.25)
+
+
 def test_fresnel():
     (au,) = lamina.fresnel(["Au"])
     assert au["degrees"].shape == (91,)
@@ -110,3 +123,45 @@ def test_convergence_takes_the_command_lines_options(scene):
 def test_reciprocity_takes_the_ablations(scene):
     with pytest.raises(ValueError, match='ablate: unknown "drop"; expected adjoint-correction'):
         lamina.reciprocity(scene, ablate=["drop"])
+
+
+@pytest.mark.parametrize("call", [
+    'lamina.layering(["varnished-wood"], estimates=1000000)',
+    'lamina.convergence(SCENE, integrators=["path"], seconds=60, reference_seconds=120, '
+    'resolution=(64, 64))',
+])
+def test_ctrl_c_stops_an_experiment_within_a_second(scene, call):
+    # SIGINT two seconds into minutes of work: KeyboardInterrupt reaches the caller, the
+    # process ends within a second of the signal (well before the work would), and the
+    # interrupt flag is cleared for the next call.
+    import signal
+    import subprocess
+    import sys
+    import time
+    code = (
+        "import sys, time, lamina\n"
+        f"SCENE = {scene!r}\n"
+        "print('started', flush=True)\n"
+        "try:\n"
+        f"    {call}\n"
+        "except KeyboardInterrupt:\n"
+        "    print('interrupted', flush=True)\n"
+        "    m = lamina.Material({'type': 'lambert'})\n"
+        "    r = lamina.layering(['{\"type\":\"coated\",\"ior\":1,\"base\":{\"type\":\"lambert\"}}'],\n"
+        "                        estimates=2, albedo_samples=64)\n"
+        "    print('next call ran', len(r), flush=True)\n"
+        "    sys.exit(3)\n"
+    )
+    p = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE, text=True,
+                         env=dict(os.environ))
+    assert p.stdout.readline().strip() == "started"
+    time.sleep(2)
+    sent = time.monotonic()
+    p.send_signal(signal.SIGINT)
+    line = p.stdout.readline().strip()
+    stopped = time.monotonic() - sent
+    out, _ = p.communicate(timeout=30)
+    assert line == "interrupted", line + out
+    assert stopped < 1.0, f"KeyboardInterrupt {stopped:.2f} s after SIGINT"
+    assert p.returncode == 3, out
+    assert "next call ran 1" in out, out

@@ -180,6 +180,19 @@ def test_errors_are_value_errors_with_the_json_path(lamina_exe):
         lamina.Material(MATERIALS[0], mode="hyperspectral")
 
 
+def test_a_nan_in_a_dict_is_named_by_its_path_not_malformed_json():
+    # json.dumps writes NaN as a token JSON does not have; the error must name the value.
+    with pytest.raises(ValueError) as e:
+        lamina.Material({"type": "mix", "a": {"type": "lambert"},
+                         "b": {"type": "lambert", "reflectance": [0.5, float("nan"), 0.5]}})
+    assert str(e.value) == "<material dict>: b.reflectance[1]: expected a finite number, got NaN"
+    with pytest.raises(ValueError, match=r"^<material dict>: ior: expected a finite number, "
+                                         r"got infinity$"):
+        lamina.Material({"type": "dielectric", "ior": float("inf")})
+    with pytest.raises(ValueError, match=r"^<scene dict>: film\.resolution\[0\]: .*-infinity$"):
+        lamina.render({"film": {"resolution": [float("-inf"), 4]}})
+
+
 def test_lobes_and_info():
     m = lamina.Material({"type": "dielectric", "ior": 1.5})
     assert m.lobes == ["specular_reflection", "specular_transmission"]

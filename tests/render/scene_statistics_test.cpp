@@ -1,4 +1,5 @@
-// What `lamina info` counts (scene_statistics.h): shapes, emitting primitives, materials with
+// What `lamina info` counts (scene_statistics.h): shapes, emitting shapes and the area lights
+// they become, materials with
 // their lobes and whether a shape uses them, the spectral data of the used ones, and the film's
 // memory at the scene's resolution.
 #include <gtest/gtest.h>
@@ -19,17 +20,21 @@ TEST(SceneStatistics, CountsWhatTheSceneHolds) {
       "shapes": [
         {"type": "sphere", "radius": 1, "material": "gold"},
         {"type": "rectangle", "material": "matte", "transform": [{"translate": [0, 3, 0]}],
-         "emission": {"radiance": 1}}
+         "emission": {"radiance": 1}},
+        {"type": "mesh", "material": "matte", "positions": [[0, 0, 5], [1, 0, 5], [0, 1, 5],
+         [1, 1, 6]], "faces": [[0, 1, 2], [1, 3, 2]], "emission": {"radiance": 1}}
       ]
     })",
                                        JsonSource{"<test>", "."});
     const SceneStatistics s = sceneStatistics(scene);
     EXPECT_EQ(s.spheres, 1u);
-    // The rectangle is a mesh of two triangles, both emitting.
-    EXPECT_EQ(s.meshes, 1u);
-    EXPECT_EQ(s.triangles, 2u);
-    EXPECT_EQ(s.vertices, 4u);
+    // The rectangle is a mesh of two triangles and one light, as written; the bent mesh of two
+    // triangles (no rectangle) is one shape and two triangle lights.
+    EXPECT_EQ(s.meshes, 2u);
+    EXPECT_EQ(s.triangles, 4u);
+    EXPECT_EQ(s.vertices, 8u);
     EXPECT_EQ(s.emitters, 2u);
+    EXPECT_EQ(s.areaLights, 3u);
     EXPECT_EQ(s.lights, 0u);
     EXPECT_GT(s.geometryBytes, 0u);
     EXPECT_EQ(s.film.total(), estimateRenderMemory(16, 8, false, false).total());

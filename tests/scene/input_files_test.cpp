@@ -1,5 +1,6 @@
 // Hostile mesh and image files: PLY counts that lie, faces longer than the vertex
-// array and indices beyond 2^31; OBJ faces with out-of-range indices; NaN, infinite and zero
+// array and indices beyond 2^31; OBJ faces with out-of-range indices; NaN (also spelled out
+// in an OBJ), infinite and zero
 // values in meshes and images; image paths that are not regular files. Each is an
 // InputError naming the file and the first bad element, never a crash, a hang or a silent
 // loss of geometry.
@@ -133,6 +134,17 @@ TEST_F(InputFiles, ObjNonFiniteValuesAndZeroNormalsAreRefused) {
                 HasSubstr("inf.obj: vertex position (v) 2 is not finite"));
     EXPECT_THAT(objError("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 0\nf 1//1 2//1 3//1\n"),
                 HasSubstr("zero.obj: normal (vn) 1 is zero"));
+    // Spelled NaN and infinity, which tinyobjloader would read as 0 (a vertex at the origin),
+    // and a token that is no number at all, each named with its line.
+    EXPECT_THAT(objError("nan.obj", "v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n"),
+                HasSubstr("nan.obj: line 2: vertex position (v): \"nan\" is not a finite number"));
+    EXPECT_THAT(objError("inf.obj", "v 0 0 0\r\nv 1 0 0\r\nv 0 -inf 0\r\nf 1 2 3\r\n"),
+                HasSubstr("inf.obj: line 3: vertex position (v): \"-inf\" is not a finite number"));
+    EXPECT_THAT(
+        objError("vn.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 Infinity\nf 1//1 2//1 3//1\n"),
+        HasSubstr("vn.obj: line 4: normal (vn): \"Infinity\" is not a finite number"));
+    EXPECT_THAT(objError("vt.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 x\nf 1/1 2/1 3/1\n"),
+                HasSubstr("vt.obj: line 4: texture coordinate (vt): \"x\" is not a number"));
 }
 
 TEST_F(InputFiles, ImagesWithNonFiniteSamplesAreRefused) {

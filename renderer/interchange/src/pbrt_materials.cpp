@@ -121,8 +121,15 @@ Json coated(TranslationContext& ctx, const Entity& e, const std::string& roughne
     m["thickness"] = constantNumber(params, "thickness", 0.01);
     m["albedo"] = colour(ctx, e, "albedo", 0.0, false);
     m["g"] = constantNumber(params, "g", 0.0);
-    m["max_depth"] = params.integer("maxdepth", 10);
+    // pbrt-v4's walk stops after maxdepth events (10 by default); lamina's has no cap unless
+    // given, so the cap is written out to render what pbrt-v4 renders.
+    const int maxDepth = params.integer("maxdepth", 10);
+    m["max_depth"] = maxDepth;
     m["samples"] = params.integer("nsamples", 1);
+    ctx.warn(e.location,
+             e.type + " became lamina's coated with max_depth " + std::to_string(maxDepth) +
+                 " (pbrt-v4's maxdepth: its random walk stops there, which darkens bright bases; "
+                 "remove max_depth for lamina's unbiased walk, which ends by Russian roulette)");
     return m;
 }
 

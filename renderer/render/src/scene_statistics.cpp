@@ -2,6 +2,7 @@
 
 #include "lamina/bsdf/material_builder.h"
 #include "lamina/bsdf/material_kind.h"
+#include "lamina/lights/area_lights.h"
 
 namespace lamina::render {
 
@@ -28,9 +29,13 @@ SceneStatistics sceneStatistics(const SceneDesc& scene) {
             s.triangles += m->triangles.size();
             s.vertices += m->positions.size();
             s.geometryBytes += meshBytes(*m);
-            if (m->emission) s.emitters += m->triangles.size();
+            if (m->emission) {
+                ++s.emitters;
+                s.areaLights += RectangleLight::isRectangle(*m) ? 1 : m->triangles.size();
+            }
         } else if (surface.emission) {
             ++s.emitters;
+            ++s.areaLights;
         }
     }
     std::size_t objectPrimitives = 0;

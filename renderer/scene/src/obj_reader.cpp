@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <set>
 #include <sstream>
@@ -61,8 +62,37 @@ void checkValues(const std::filesystem::path& file, const std::vector<tinyobj::r
     }
 }
 
+// tinyobjloader reads a number it cannot parse ("nan", "inf", "x") as 0, so a vertex of NaN
+// or infinity would become a vertex at the origin. The numbers of the v, vn and vt lines are
+// read here first: each must be a finite number (the PLY reader refuses the same).
+void checkAttributeNumbers(const std::filesystem::path& file, const std::string& text) {
+    std::istringstream in(text);
+    std::size_t lineNumber = 0;
+    for (std::string line; std::getline(in, line);) {
+        ++lineNumber;
+        std::istringstream tokens(line);
+        std::string keyword;
+        tokens >> keyword;
+        const char* what = keyword == "v"    ? "vertex position (v)"
+                           : keyword == "vn" ? "normal (vn)"
+                           : keyword == "vt" ? "texture coordinate (vt)"
+                                             : nullptr;
+        if (!what) continue;
+        for (std::string token; tokens >> token;) {
+            char* end = nullptr;
+            const double v = std::strtod(token.c_str(), &end);
+            const bool number = end == token.c_str() + token.size();
+            if (number && std::isfinite(v)) continue;
+            throw InputError(file.string() + ": line " + std::to_string(lineNumber) + ": " + what +
+                             ": \"" + token.substr(0, 40) + "\" is " +
+                             (number ? "not a finite number" : "not a number"));
+        }
+    }
+}
+
 tinyobj::ObjReader parseObj(const std::filesystem::path& file, const std::string& text,
                             const std::string& mtlText) {
+    checkAttributeNumbers(file, text);
     tinyobj::ObjReaderConfig config;
     config.triangulate = true;
     config.vertex_color = false;

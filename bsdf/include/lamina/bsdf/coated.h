@@ -13,8 +13,9 @@
 // two ways of reaching wi are combined by the power heuristic (their section 5.2).
 //
 //   sample(): traces one exact path (the full samplers of every event, Russian roulette on the
-//     throughput after 4 events, at most max_depth events); its weight, the path throughput, is
-//     an unbiased estimate of eval / p where p is the true density of the returned wi.
+//     throughput after 4 events, see survival(); no depth limit unless the material sets
+//     max_depth); its weight, the path throughput, is an unbiased estimate of eval / p where p
+//     is the true density of the returned wi.
 //   eval(), pdf(): one walk (repeated `samples` times) estimates both f |cos| and the true
 //     density p of sample() at wi. The walk uses the same samplers, roulette and depth limit as
 //     sample(), except that at the entry it always refracts and inside the top boundary it
@@ -40,6 +41,10 @@
 
 namespace lamina {
 
+/// The most events a coated walk may take: the largest `max_depth`, and the safeguard of a
+/// walk without one (CoatedBxdf::withinDepth).
+inline constexpr int kMaxCoatedDepth = 1 << 20;
+
 template <SpectrumType S>
 class CoatedBxdf final : public Bxdf<S> {
   public:
@@ -60,6 +65,8 @@ class CoatedBxdf final : public Bxdf<S> {
         Float density = 0;
     };
 
+    /// maxDepth: the most events of a walk (a longer path is absorbed, which biases f low);
+    /// 0: none, the walk ends by Russian roulette and by leaving the coat.
     CoatedBxdf(const CoatInterface<S>& top, std::unique_ptr<Bxdf<S>> base, const Medium& medium,
                int maxDepth, int samples, std::uint64_t seed = 0)
         : top_(top),
@@ -98,6 +105,9 @@ class CoatedBxdf final : public Bxdf<S> {
     /// tests pass their own to average independent estimates). wo and wi on the same side.
     Estimate estimate(V3 wo, V3 wi, TransportMode mode, Pcg32& rng) const;
 
+    /// The cap on a walk's events, 0 for none (unbiased).
+    int maxDepth() const { return maxDepth_; }
+
     /// True when some path through the stack is not a chain of delta events: eval and pdf are
     /// zero otherwise.
     bool continuous() const {
@@ -114,13 +124,30 @@ class CoatedBxdf final : public Bxdf<S> {
         return std::exp(-std::abs(dz) / std::max(std::abs(w.z), Float(1e-8)));
     }
 
-    // Survival probability of the roulette before event `depth` with throughput beta (pbrt-v4's
-    // rule for the same walk: from the fifth event, paths of throughput below 0.25 survive with
-    // probability equal to it).
+    // Survival probability of the Russian roulette before event `depth` with throughput beta
+    // (Arvo and Kirk 1990, "Particle Transport and Image Synthesis", SIGGRAPH '90: a path
+    // survives with probability q and its weight is divided by q, which leaves every estimate
+    // unbiased). The first four events always survive; after them a path whose largest
+    // channel m has fallen below kRouletteThreshold survives with probability m, so a
+    // survivor's weight returns to about 1. The floor kRouletteFloor bounds the factor 1/q by
+    // which a survivor's weight grows, whatever throughput the roulette reads (eval's walk
+    // divides its own throughput by the roulette sample() plays on another one): the weights,
+    // and so the variance, stay bounded. A throughput of zero ends the path (q = 0).
+    static constexpr Float kRouletteThreshold = Float(0.25);
+    static constexpr Float kRouletteFloor = Float(0.05);
     static Float survival(int depth, const S& beta) {
         if (depth <= 3) return Float(1);
         const Float m = beta.maxValue();
-        return m < Float(0.25) ? std::max(m, Float(0)) : Float(1);
+        if (!(m > Float(0))) return Float(0);
+        return m < kRouletteThreshold ? std::max(m, kRouletteFloor) : Float(1);
+    }
+
+    // True while event `depth` is within the cap (always without one). kMaxCoatedDepth stops a
+    // walk that would practically never end (a medium thousands of mean free paths thick that
+    // absorbs nothing): no stack of the tests or the shipped scenes comes within orders of
+    // magnitude of it (docs/bsdf.md, "coated").
+    bool withinDepth(int depth) const {
+        return depth < (maxDepth_ > 0 ? maxDepth_ : kMaxCoatedDepth);
     }
 
     static TransportMode adjoint(TransportMode mode) {

@@ -39,7 +39,7 @@ std::optional<BsdfSample<S>> CoatedBxdf<S>::sample(const V3& woIn, Float uc, con
     Float z = medium_.thickness;
     bool specular = entry->isSpecular(), diffuse = false;
     Float discrete = specular ? entry->pdf : Float(1);
-    for (int depth = 0; depth < maxDepth_; ++depth) {
+    for (int depth = 0; withinDepth(depth); ++depth) {
         const Float q = survival(depth, beta);
         if (q < Float(1)) {
             if (rng.next<Float>() >= q) return std::nullopt;
@@ -148,7 +148,7 @@ void CoatedBxdf<S>::walk(const V3& wo, const V3& wi, TransportMode mode, Pcg32& 
     // Leaving the slab along `up` from height zFrom after event `depth`, which sampled `up` with
     // density pOther (0: a delta event, which next-event estimation cannot reach).
     const auto addSampledExit = [&](const V3& up, Float zFrom, int depth, Float pOther) {
-        if (exitSmooth || !(up.z > Float(0)) || depth + 1 >= maxDepth_) return;
+        if (exitSmooth || !(up.z > Float(0)) || !withinDepth(depth + 1)) return;
         const S f = top_.bxdf().eval(-up, wi, mode);
         const Float p = top_.bxdf().pdf(-up, wi);
         if (f.isZero() && !(p > Float(0))) return;
@@ -159,7 +159,7 @@ void CoatedBxdf<S>::walk(const V3& wo, const V3& wi, TransportMode mode, Pcg32& 
         out.density += prob * (scattering() ? tr : Float(1)) * survival(depth + 1, betaS) * p * wt;
     };
 
-    for (int depth = 0; depth < maxDepth_; ++depth) {
+    for (int depth = 0; withinDepth(depth); ++depth) {
         const Float q = survival(depth, betaS);
         if (q < Float(1)) {
             if (rng.next<Float>() >= q) return;
@@ -180,7 +180,7 @@ void CoatedBxdf<S>::walk(const V3& wo, const V3& wi, TransportMode mode, Pcg32& 
             const Float zp = w.z > Float(0) ? z + dz : z - dz;
             if (zp > Float(0) && zp < medium_.thickness) {
                 z = zp;
-                if (exit && depth + 1 < maxDepth_) {
+                if (exit && withinDepth(depth + 1)) {
                     const V3 up = -exit->w;
                     const Float ph = henyeyGreenstein(glm::dot(w, up), medium_.g);
                     const Float wt = exitSmooth ? Float(1) : power(exit->pdf, ph);
@@ -214,7 +214,7 @@ void CoatedBxdf<S>::walk(const V3& wo, const V3& wi, TransportMode mode, Pcg32& 
             w = r->w;
             continue;
         }
-        if (exit && depth + 1 < maxDepth_) {  // next-event connection from the base
+        if (exit && withinDepth(depth + 1)) {  // next-event connection from the base
             const V3 up = -exit->w;
             const S fb = base_->eval(-w, up, mode);
             const Float pb = base_->pdf(-w, up);

@@ -174,7 +174,7 @@ struct CoatedMaterial {
     double thickness = 0;  ///< optical thickness of the medium at normal incidence; 0: none
     ColorInput albedo{RgbInput(0.0)};  ///< single-scattering albedo of the medium
     double g = 0;                      ///< Henyey-Greenstein asymmetry
-    int maxDepth = 10;
+    int maxDepth = 0;  ///< the most events of a walk; 0: no cap (Russian roulette ends it)
     int samples = 1;
 };
 

@@ -6,6 +6,8 @@
 // Monte Carlo estimator, and the time each needs to reach given error levels).
 #pragma once
 
+#include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -44,6 +46,9 @@ struct ConvergenceInputs {
     render::RenderOptions overrides;
     render::BuildInfo build;  ///< stamped into the rendered references
     ProgressSink progress;
+    /// Called with each reference as soon as it is rendered (the command line writes it at
+    /// once, so an interrupted run keeps what took longest); nothing when empty.
+    std::function<void(const struct RenderedReference&)> onReference;
 };
 
 /// A reference the experiment rendered (one per mode).
@@ -52,6 +57,10 @@ struct RenderedReference {
     render::RenderResult render;
     render::ImageMetadata metadata;  ///< written into reference_MODE.exr
 };
+
+/// Writes reference_MODE.exr into the report's directory; returns its path.
+std::filesystem::path writeRenderedReference(const RenderedReference& reference,
+                                             const Report& report);
 
 /// One combination's error after every pass.
 struct ConvergenceCurve {

@@ -10,15 +10,19 @@
 #include <vector>
 
 #include "lamina/core/name_table.h"
-#include "lamina/render/film.h"
 #include "lamina/output/image_output.h"
+#include "lamina/render/film.h"
 
 namespace lamina::experiments {
 
 inline constexpr double kRelMseEpsilon = 1e-2;
 
+/// Over the channel values finite in both images: a NaN or infinite value (of a broken or
+/// unfinished render) would make every mean NaN, and would vanish from the max.
 struct ImageMetrics {
     double mse = 0, rmse = 0, relmse = 0, mae = 0, max = 0;
+    std::size_t compared = 0;   ///< channel values finite in both images
+    std::size_t nonFinite = 0;  ///< channel values left out: NaN or infinite in either
 };
 
 enum class Metric { Mse, Rmse, Relmse, Mae, Max };
@@ -32,6 +36,17 @@ double metricValue(const ImageMetrics& metrics, Metric metric);
 
 /// InputError if the sizes differ.
 ImageMetrics compareImages(const render::RgbImage& a, const render::RgbImage& reference);
+
+/// InputError when `m` compared nothing: naming the image with no finite value (`nameA` for a,
+/// `nameB` for the reference), or saying that no value is finite in both. A metric of no values
+/// would print as 0, a perfect match.
+void requireComparedValues(const ImageMetrics& m, const render::RgbImage& a,
+                           const std::string& nameA, const render::RgbImage& reference,
+                           const std::string& nameB);
+
+/// "N of M channel values are NaN or infinite ...": what compare says when it left values out;
+/// empty when it left none out.
+std::string nonFiniteNote(const ImageMetrics& m);
 
 /// A false-colour PNG of the mean absolute channel difference |a - b| (black, blue, magenta,
 /// yellow, white from 0 to `scale`, Palette::Sequential), and beside it (same name, .svg) the

@@ -7,6 +7,7 @@
 
 #include <functional>
 #include <stdexcept>
+#include <string>
 
 #include "lamina/render/renderer.h"
 
@@ -14,6 +15,9 @@ namespace lamina::experiments {
 
 struct Interrupted : std::runtime_error {
     Interrupted() : std::runtime_error("the experiment was interrupted") {}
+    /// What the experiment wrote before it stopped, which a rerun can use ("DIR/reference_rgb.exr
+    /// (pass it as --reference ...)"); empty: nothing.
+    std::string kept;
 };
 
 /// Throws Interrupted if the interrupt flag is raised.

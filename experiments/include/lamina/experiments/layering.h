@@ -88,7 +88,10 @@ struct LayeringMaterialResult {
     std::string stem;          ///< file names of the report
     std::string json;          ///< the material as given (a built-in: its definition)
     int walksPerEstimate = 1;  ///< the material's `samples`
-    std::string twinNote;      ///< why there is no twin, or what the twins leave out
+    /// The material's `max_depth`: 0 when its walk has no cap (the unbiased truth); otherwise
+    /// paths of more events are absorbed, the walk is biased low and the report says so.
+    int walkMaxDepth = 0;
+    std::string twinNote;  ///< why there is no twin, or what the twins leave out
     LayeringValues walkAlbedo;
     std::vector<LayeringValues> walkLobes;
     LayeringValues walkMap;
@@ -102,6 +105,10 @@ struct LayeringResult {
     int renderSpp = 0;
     std::vector<double> albedoAngles, lobeAngles, mapAngles;  ///< degrees
 };
+
+/// Why a walk capped at `maxDepth` events is not the truth (the report and the console say it
+/// wherever such a walk is compared).
+std::string cappedWalkNote(int maxDepth);
 
 LayeringResult runLayering(const LayeringInputs& inputs);
 

@@ -15,7 +15,12 @@ inline void tell(const ProgressSink& sink, const std::string& text) {
     if (sink) sink(text);
 }
 
-/// The command line's sink: the text as it is on stderr.
+/// A text that starts with '\r' replaces the line in progress on a terminal. Without a final
+/// newline it is a transient status ("path: batch 3/16") that the next text replaces.
+
+/// The command line's sink: the text as it is on stderr when stderr is a terminal. Otherwise
+/// (a log file, a pipe) no carriage return is written: a transient status is left out and a
+/// final line is written without its '\r'.
 void printToStderr(const std::string& text);
 
 }  // namespace lamina::experiments

@@ -22,8 +22,12 @@ struct SceneStatistics {
     std::size_t objectTriangles = 0;                         ///< stored in the objects
     RenderMemory film;                                       ///< the film at the scene's resolution
     std::uint64_t filmWithAovs = 0, filmWithStrategies = 0;  ///< totals
-    std::size_t emitters = 0;  ///< emitting primitives (triangles, spheres, disks)
-    std::size_t lights = 0;    ///< the other lights
+    /// Emitting shapes as the scene wrote them (a rectangle, a mesh, a sphere, a disk: one each).
+    std::size_t emitters = 0;
+    /// The area lights the renderer samples for them: one per triangle of an emitting mesh,
+    /// one for a rectangle (also a mesh of two triangles that form one), a sphere or a disk.
+    std::size_t areaLights = 0;
+    std::size_t lights = 0;  ///< the other lights
     struct Material {
         std::string name;
         std::string type;
