@@ -179,6 +179,37 @@ TYPED_TEST(MuellerTest, GoldsRetardanceMatchesTheAngleForm) {
     }
 }
 
+/// Q M^T Q with Q = diag(1, 1, -1, 1): the matrix of the reversed event (docs/polarisation.md,
+/// "Reciprocity").
+template <typename T>
+MuellerMatrix<T> reversed(const MuellerMatrix<T>& m) {
+    const MuellerMatrix<T> q = MuellerMatrix<T>::diagonal(T(1), T(1), T(-1), T(1));
+    return q * m.transposed() * q;
+}
+
+TYPED_TEST(MuellerTest, FresnelEventsRunBackwardsGiveTheReciprocalMatrix) {
+    using T = TypeParam;
+    for (const std::complex<T> eta :
+         {std::complex<T>(1.5), std::complex<T>(T(1) / T(1.5)), std::complex<T>(T(0.43), T(2.455))})
+        for (const T cosI : {T(0.15), T(0.5), T(0.95)}) {
+            const FresnelAmplitudes<T> forward = fresnelAmplitudes(cosI, eta);
+            const MuellerMatrix<T> r = fresnelReflectionMueller(forward);
+            this->expectMatrixNear(reversed(r), r, T(1));
+            if (eta.imag() != T(0) || forward.transmittedPowerFactor == T(0)) continue;
+            // The transmitted ray run backwards arrives from side 2 at cos_t.
+            const T sin2T = (T(1) - cosI * cosI) / (eta.real() * eta.real());
+            const T cosT = std::sqrt(T(1) - sin2T);
+            const MuellerMatrix<T> back =
+                fresnelTransmissionMueller(fresnelAmplitudes(cosT, T(1) / eta));
+            this->expectMatrixNear(reversed(back), fresnelTransmissionMueller(forward), T(4));
+        }
+    // A retarder is reciprocal too, and the check is not vacuous: it has M23 = -M32 != 0.
+    const MuellerMatrix<T> quarterWave = linearRetarder(T(0), this->kPi / 2);
+    this->expectMatrixNear(reversed(quarterWave), quarterWave, T(1));
+    EXPECT_NE(quarterWave(2, 3), T(0));
+    EXPECT_GT(std::abs(quarterWave.transposed()(2, 3) - quarterWave(2, 3)), T(1));
+}
+
 /// Two mirrors at incidence angle `theta`, the second plane of incidence turned by `turn`
 /// about the ray between them: the light's S0 after both, for unpolarised light before.
 template <typename T>
