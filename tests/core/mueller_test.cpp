@@ -42,7 +42,7 @@ TYPED_TEST_SUITE(MuellerTest, FloatTypes);
 TYPED_TEST(MuellerTest, ADepolariserLeavesUnpolarisedLightOfItsAlbedo) {
     using T = TypeParam;
     const StokesVector<T> fullyPolarised{T(1), T(0.6), T(-0.64), T(0.48)};
-    const StokesVector<T> out = depolariser(T(0.7)) * fullyPolarised;
+    const StokesVector<T> out = depolarising(T(0.7)) * fullyPolarised;
     this->expectStokesNear(out, unpolarisedStokes(T(0.7)));
     EXPECT_EQ(degreeOfPolarisation(out), T(0));
     EXPECT_NEAR(degreeOfPolarisation(fullyPolarised), T(1), this->kTolerance * 4);

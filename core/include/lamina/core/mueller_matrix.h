@@ -12,13 +12,23 @@
 
 namespace lamina {
 
-template <std::floating_point T>
+/// A 4x4 Mueller matrix whose elements are numbers (float, double) or spectra (one matrix per
+/// wavelength of a SampledSpectrum, the element-wise products of the spectrum types doing the
+/// per-wavelength arithmetic).
+template <typename E>
 struct MuellerMatrix {
-    std::array<std::array<T, 4>, 4> m{};  ///< m[row][column]
+    std::array<std::array<E, 4>, 4> m{};  ///< m[row][column]
+
+    constexpr MuellerMatrix() = default;
+    /// v times the identity: 0 is the zero matrix, 1 the identity.
+    constexpr explicit MuellerMatrix(const E& v) {
+        for (int i = 0; i < 4; ++i)
+            m[i][i] = v;
+    }
 
     static constexpr MuellerMatrix zero() { return {}; }
-    static constexpr MuellerMatrix identity() { return diagonal(T(1), T(1), T(1), T(1)); }
-    static constexpr MuellerMatrix diagonal(T a, T b, T c, T d) {
+    static constexpr MuellerMatrix identity() { return MuellerMatrix(E(1)); }
+    static constexpr MuellerMatrix diagonal(const E& a, const E& b, const E& c, const E& d) {
         MuellerMatrix r;
         r.m[0][0] = a;
         r.m[1][1] = b;
@@ -27,40 +37,58 @@ struct MuellerMatrix {
         return r;
     }
 
-    T& operator()(int row, int column) { return m[row][column]; }
-    T operator()(int row, int column) const { return m[row][column]; }
+    E& operator()(int row, int column) { return m[row][column]; }
+    const E& operator()(int row, int column) const { return m[row][column]; }
 
     friend MuellerMatrix operator*(const MuellerMatrix& a, const MuellerMatrix& b) {
         MuellerMatrix r;
         for (int i = 0; i < 4; ++i)
             for (int j = 0; j < 4; ++j) {
-                T sum = T(0);
-                for (int k = 0; k < 4; ++k)
+                E sum = a.m[i][0] * b.m[0][j];
+                for (int k = 1; k < 4; ++k)
                     sum += a.m[i][k] * b.m[k][j];
                 r.m[i][j] = sum;
             }
         return r;
     }
-    friend StokesVector<T> operator*(const MuellerMatrix& a, const StokesVector<T>& s) {
-        StokesVector<T> r{};
+    MuellerMatrix& operator*=(const MuellerMatrix& b) { return *this = *this * b; }
+    friend StokesVector<E> operator*(const MuellerMatrix& a,
+                                     const StokesVector<E>& s) requires std::floating_point<E> {
+        StokesVector<E> r{};
         for (int i = 0; i < 4; ++i)
             r[i] = a.m[i][0] * s[0] + a.m[i][1] * s[1] + a.m[i][2] * s[2] + a.m[i][3] * s[3];
         return r;
     }
-    friend MuellerMatrix operator*(const MuellerMatrix& a, T scale) {
-        MuellerMatrix r = a;
-        for (auto& row : r.m)
-            for (T& v : row)
+    /// Scaling by a number or, element-wise, by a spectrum of the elements' kind.
+    template <typename F>
+    requires requires(E e, F f) { e *= f; }
+    MuellerMatrix& operator*=(const F& scale) {
+        for (auto& row : m)
+            for (E& v : row)
                 v *= scale;
-        return r;
+        return *this;
     }
-    friend MuellerMatrix operator+(const MuellerMatrix& a, const MuellerMatrix& b) {
-        MuellerMatrix r;
+    template <typename F>
+    requires requires(E e, F f) { e *= f; }
+    friend MuellerMatrix operator*(MuellerMatrix a, const F& scale) { return a *= scale; }
+    template <typename F>
+    requires requires(E e, F f) { e /= f; }
+    MuellerMatrix& operator/=(const F& scale) {
+        for (auto& row : m)
+            for (E& v : row)
+                v /= scale;
+        return *this;
+    }
+    template <typename F>
+    requires requires(E e, F f) { e /= f; }
+    friend MuellerMatrix operator/(MuellerMatrix a, const F& scale) { return a /= scale; }
+    MuellerMatrix& operator+=(const MuellerMatrix& b) {
         for (int i = 0; i < 4; ++i)
             for (int j = 0; j < 4; ++j)
-                r.m[i][j] = a.m[i][j] + b.m[i][j];
-        return r;
+                m[i][j] += b.m[i][j];
+        return *this;
     }
+    friend MuellerMatrix operator+(MuellerMatrix a, const MuellerMatrix& b) { return a += b; }
 
     MuellerMatrix transposed() const {
         MuellerMatrix r;
@@ -91,6 +119,30 @@ MuellerMatrix<T> stokesRotation(const StokesFrame<T>& from, const Vec3<T>& toX) 
     return stokesRotation(frameTurn(from, toX));
 }
 
+/// m followed by a frame turn of `phi` on its output side: stokesRotation(phi) * m, touching
+/// only rows 1 and 2.
+template <typename E, std::floating_point T>
+void turnOutputFrame(MuellerMatrix<E>& m, T phi) {
+    const T c = std::cos(T(2) * phi), s = std::sin(T(2) * phi);
+    for (int j = 0; j < 4; ++j) {
+        const E r1 = m(1, j), r2 = m(2, j);
+        m(1, j) = r1 * c + r2 * s;
+        m(2, j) = r2 * c - r1 * s;
+    }
+}
+
+/// m preceded by a frame turn of `phi` on its input side: m * stokesRotation(phi), touching
+/// only columns 1 and 2.
+template <typename E, std::floating_point T>
+void turnInputFrame(MuellerMatrix<E>& m, T phi) {
+    const T c = std::cos(T(2) * phi), s = std::sin(T(2) * phi);
+    for (int i = 0; i < 4; ++i) {
+        const E c1 = m(i, 1), c2 = m(i, 2);
+        m(i, 1) = c1 * c - c2 * s;
+        m(i, 2) = c1 * s + c2 * c;
+    }
+}
+
 /// An element `m` expressed in frames turned by `theta` from the ones it is written in: an
 /// element whose axis is at theta from x acts as m does on light seen from its own axis.
 template <std::floating_point T>
@@ -98,11 +150,12 @@ MuellerMatrix<T> rotatedElement(const MuellerMatrix<T>& m, T theta) {
     return stokesRotation(-theta) * m * stokesRotation(theta);
 }
 
-/// An ideal depolariser of albedo `a`: whatever arrives, unpolarised light of a times its
-/// radiance leaves. Diffuse reflection and the random walks are modelled as this.
-template <std::floating_point T>
-MuellerMatrix<T> depolariser(T a) {
-    return MuellerMatrix<T>::diagonal(a, T(0), T(0), T(0));
+/// An ideal depolariser of albedo `a` (a number or a spectrum): whatever arrives, unpolarised
+/// light of a times its radiance leaves. Diffuse reflection and the random walks are modelled
+/// as this.
+template <typename E>
+MuellerMatrix<E> depolarising(const E& a) {
+    return MuellerMatrix<E>::diagonal(a, E(0), E(0), E(0));
 }
 
 /// An ideal linear polariser whose transmission axis is at `theta` from x (towards y).

@@ -25,11 +25,13 @@
 #include <array>
 #include <cmath>
 
+#include "lamina/core/frame.h"
 #include "lamina/core/vector.h"
 
 namespace lamina {
 
-template <std::floating_point T>
+/// S0..S3; the elements are numbers or spectra (one Stokes vector per wavelength).
+template <typename T>
 using StokesVector = std::array<T, 4>;
 
 /// Unpolarised light of radiance `s0`.
@@ -42,14 +44,16 @@ constexpr StokesVector<T> unpolarisedStokes(T s0) {
 template <std::floating_point T>
 T degreeOfPolarisation(const StokesVector<T>& s) {
     if (s[0] <= T(0)) return T(0);
-    return std::sqrt(s[1] * s[1] + s[2] * s[2] + s[3] * s[3]) / s[0];
+    // Divided first: the squares of a dim pixel's components would underflow.
+    const T a = s[1] / s[0], b = s[2] / s[0], c = s[3] / s[0];
+    return std::sqrt(a * a + b * b + c * c);
 }
 
 /// The degree of linear polarisation sqrt(S1^2 + S2^2) / S0 (0 for S0 = 0).
 template <std::floating_point T>
 T degreeOfLinearPolarisation(const StokesVector<T>& s) {
     if (s[0] <= T(0)) return T(0);
-    return std::hypot(s[1], s[2]) / s[0];
+    return std::hypot(s[1] / s[0], s[2] / s[0]);
 }
 
 /// The angle of linear polarisation from x towards y, in (-pi/2, pi/2]: atan2(S2, S1) / 2.
@@ -66,6 +70,16 @@ struct StokesFrame {
 
     Vec3<T> y() const { return glm::cross(d, x); }
 };
+
+/// The reference axis every polarised computation uses for a direction it has no other frame
+/// for: the tangent of the orthonormal basis around d (Frame::fromNormal, Duff et al. 2017).
+/// Only consistency matters: a BSDF expresses its Mueller matrices in these frames of its local
+/// directions, and the polarised mode turns them into these frames of the world directions,
+/// so that the matrices of consecutive vertices meet in the same frame.
+template <std::floating_point T>
+Vec3<T> stokesAxis(const Vec3<T>& d) {
+    return Frame<T>::fromNormal(d).s;
+}
 
 /// The angle phi by which `from`'s x axis turns about the shared direction to reach `to`'s
 /// (right-handed about d): x_to = cos(phi) x_from + sin(phi) y_from.
