@@ -179,6 +179,21 @@ TYPED_TEST(MuellerTest, GoldsRetardanceMatchesTheAngleForm) {
     }
 }
 
+TYPED_TEST(MuellerTest, StokesAxesAndShadingFramesAreRightHanded) {
+    using T = TypeParam;
+    // The polarised mode measures frame turns in world space for matrices a BSDF wrote in its
+    // shading frame: that is the same turn only if the frame does not mirror.
+    for (const Vec3<T> n :
+         {Vec3<T>(0, 0, 1), Vec3<T>(0, 0, -1), Vec3<T>(0, -1, 0),
+          glm::normalize(Vec3<T>(1, -2, 0.5)), glm::normalize(Vec3<T>(-3, 1, -2))}) {
+        const Frame<T> f = Frame<T>::fromNormal(n);
+        const Vec3<T> c = glm::cross(f.s, f.t);
+        for (int i = 0; i < 3; ++i)
+            EXPECT_NEAR(c[i], n[i], this->kTolerance * 4);
+        EXPECT_NEAR(glm::dot(stokesAxis(n), n), T(0), this->kTolerance * 4);
+    }
+}
+
 /// Q M^T Q with Q = diag(1, 1, -1, 1): the matrix of the reversed event (docs/polarisation.md,
 /// "Reciprocity").
 template <typename T>
