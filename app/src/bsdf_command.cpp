@@ -218,8 +218,12 @@ class BsdfTool {
 template <typename Action>
 void withTool(const BsdfArgs& a, Action action) {
     const MaterialDesc desc = parseMaterialArgument(a.material);
-    if (parseName(render::kRenderModeNames, a.mode, "mode", "--mode") ==
-        render::RenderModeKind::Spectral) {
+    const auto mode = parseName(render::kRenderModeNames, a.mode, "mode", "--mode");
+    if (mode == render::RenderModeKind::Polarised)
+        throw CLI::ValidationError("--mode",
+                                   "polarised renders scenes; `lamina bsdf` evaluates "
+                                   "in rgb or spectral mode");
+    if (mode == render::RenderModeKind::Spectral) {
         const auto nm = parseNumbers(a.wavelengths, "--wavelengths");
         if (nm.empty() || nm.size() > 4)
             throw CLI::ValidationError("--wavelengths", "expected 1 to 4 wavelengths in nm");

@@ -77,6 +77,10 @@ class Material {
         else
             throw py::value_error("mode: expected one of " + render::kRenderModeNames.list() +
                                   ", got \"" + mode + "\"");
+        if (mode_ == render::RenderModeKind::Polarised)
+            throw py::value_error(
+                "mode: \"polarised\" renders scenes (lamina.render); a Material evaluates in "
+                "\"rgb\" or \"spectral\" mode");
         if (py::isinstance<py::str>(spec)) {
             desc_ = parseMaterialArgument(spec.cast<std::string>());
         } else if (py::isinstance<py::dict>(spec)) {

@@ -75,7 +75,8 @@ TEST_P(AnalyticRender, ClosedEmittingSphereGivesLeOverOneMinusRho) {
 
 INSTANTIATE_TEST_SUITE_P(Modes, AnalyticRender,
                          ::testing::Values(render::RenderModeKind::Rgb,
-                                           render::RenderModeKind::Spectral),
+                                           render::RenderModeKind::Spectral,
+                                           render::RenderModeKind::Polarised),
                          [](const auto& paramInfo) {
                              return std::string(render::kRenderModeNames.name(paramInfo.param));
                          });

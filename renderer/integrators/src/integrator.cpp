@@ -5,6 +5,7 @@
 #include "lamina/integrators/bdpt_integrator.h"
 #include "lamina/integrators/light_integrator.h"
 #include "lamina/integrators/path_integrator.h"
+#include "lamina/render/renderer.h"
 
 namespace lamina::render {
 
@@ -27,6 +28,15 @@ std::unique_ptr<Integrator<S>> makeIntegrator(const IntegratorSetup<S>& setup) {
             return std::make_unique<BdptIntegrator<S>>(setup);
     }
     throw std::logic_error("makeIntegrator: an integrator kind without an integrator");
+}
+
+/// The polarised mode runs the path integrator: light tracing and BDPT need the adjoint
+/// Mueller matrices (docs/polarisation.md), which they do not have yet.
+template <>
+std::unique_ptr<Integrator<PolarisedSpectrum>> makeIntegrator(
+    const IntegratorSetup<PolarisedSpectrum>& setup) {
+    checkModeAndIntegrator(RenderModeKind::Polarised, setup.settings.integrator);
+    return std::make_unique<PathIntegrator<PolarisedSpectrum>>(setup);
 }
 
 template std::unique_ptr<Integrator<Rgb<float>>> makeIntegrator(const IntegratorSetup<Rgb<float>>&);

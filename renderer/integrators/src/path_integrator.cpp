@@ -78,8 +78,8 @@ S PathIntegrator<S>::radiance(const Vec3f& rayOrigin, const Vec3f& rayDirection,
         if (depth >= settings_.maxDepth) break;
 
         const ShapeInfo& shape = c_.geometry.shapes()[std::size_t(hit->shape)];
-        const Bxdf<S>& bsdf = mode_.bsdf(shape.material, hit->uv, path);
         const ShadingPoint at(hit->p, hit->ng, hit->ns, -d, c_.geometry.rayOffsetScale());
+        const Bxdf<S>& bsdf = mode_.bsdf(shape.material, hit->uv, at.frame, path);
 
         // Next-event estimation (its two dimensions are used at every vertex, skipped when
         // there is no estimate to make or, the light's, no light to choose between, so the
@@ -144,5 +144,6 @@ S PathIntegrator<S>::directLight(const SurfaceHit& hit, const ShadingPoint& at, 
 
 template class PathIntegrator<Rgb<float>>;
 template class PathIntegrator<SampledSpectrum<float>>;
+template class PathIntegrator<PolarisedSpectrum>;
 
 }  // namespace lamina::render

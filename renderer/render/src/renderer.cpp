@@ -165,6 +165,13 @@ RenderOptions withCrop(const RenderOptions& options, const PixelBounds& crop) {
 
 }  // namespace
 
+void checkModeAndIntegrator(RenderModeKind mode, IntegratorKind integrator) {
+    if (mode == RenderModeKind::Polarised && integrator != IntegratorKind::Path)
+        throw InputError("the polarised mode renders with the path integrator only (" +
+                         std::string(kIntegratorNames.name(integrator)) +
+                         " is not polarised yet): use --integrator path");
+}
+
 RenderResult renderScene(const SceneDesc& scene, const RenderOptions& options,
                          const std::function<void(const RenderProgress&)>& progress) {
     RenderSettings settings = scene.settings;
@@ -210,9 +217,12 @@ RenderResult renderScene(const SceneDesc& scene, const RenderOptions& options,
         width, height,
         options.resolution ? "--resolution" : scene.file.string() + ": film.resolution");
 
+    checkModeAndIntegrator(options.mode, settings.integrator);
     std::optional<tbb::global_control> threads;
     if (options.threads > 0)
         threads.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(options.threads));
+    if (options.mode == RenderModeKind::Polarised)
+        return renderWithMode<PolarisedSpectrum>(scene, options, settings, width, height, progress);
     if (options.mode == RenderModeKind::Spectral)
         return renderWithMode<SampledSpectrum<float>>(scene, options, settings, width, height,
                                                       progress);

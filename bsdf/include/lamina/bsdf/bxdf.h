@@ -8,6 +8,7 @@
 #include <string>
 
 #include "lamina/bsdf/bsdf_sample.h"
+#include "lamina/core/mueller_matrix.h"
 
 namespace lamina {
 
@@ -35,6 +36,23 @@ class Bxdf {
 
     /// The union of the flags of the lobes this BSDF has.
     virtual std::uint32_t flags() const = 0;
+
+    /// The polarised mode's eval (docs/polarisation.md): the Mueller matrix per channel that
+    /// maps the Stokes vector of light arriving along -wi to that of the light leaving along wo
+    /// (in Radiance mode; the path integrator is the only one the polarised mode runs), each in
+    /// the canonical frame of its local direction (stokesAxis). Its [0][0] is eval(). A BSDF
+    /// that does not override it is an ideal depolariser.
+    virtual MuellerMatrix<S> evalMueller(const V3& wo, const V3& wi, TransportMode mode) const {
+        return depolarising(eval(wo, wi, mode));
+    }
+
+    /// The Mueller weight of a sample sample() returned: for a delta lobe the lobe's matrix
+    /// over its probability, whose [0][0] is the sample's weight; otherwise evalMueller / pdf.
+    virtual MuellerMatrix<S> sampleMueller(const V3& wo, const BsdfSample<S>& s,
+                                           TransportMode mode) const {
+        if (s.isSpecular()) return depolarising(s.weight);
+        return evalMueller(wo, s.wi, mode) / s.pdf;
+    }
 
     /// Whether sample() reads `uc`. A BSDF of one lobe (DiffuseBxdf, every model) does not, and
     /// the integrators then skip the sampler's dimension for it rather than compute a number

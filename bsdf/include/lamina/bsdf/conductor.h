@@ -9,6 +9,7 @@
 #include "lamina/bsdf/bxdf.h"
 #include "lamina/bsdf/microfacet_reflection.h"
 #include "lamina/bsdf/multiscatter.h"
+#include "lamina/bsdf/polarised_fresnel.h"
 
 namespace lamina {
 
@@ -70,6 +71,22 @@ class ConductorBxdf final : public Bxdf<S> {
         const S weight = eval(wo, wi, mode) / p;
         if (!weight.isFinite()) return std::nullopt;
         return BsdfSample<S>{wi, weight, p, kLobeGlossyReflection, Float(1)};
+    }
+
+    /// The microfacet lobe polarises as its Fresnel model does on each microfacet; the
+    /// multiple-scattering compensation lobe is an ideal depolariser.
+    MuellerMatrix<S> evalMueller(const V3& wo, const V3& wi, TransportMode) const override {
+        if (isSmooth()) return MuellerMatrix<S>();
+        const Float s = wo.z < Float(0) ? Float(-1) : Float(1);
+        MuellerMatrix<S> m = reflectionMueller(lobe_.eval(wo * s, wi * s), lobe_.fresnel(), wo, wi);
+        if (ms_) m += depolarising(ms_->eval(wo * s, wi * s));
+        return m;
+    }
+
+    MuellerMatrix<S> sampleMueller(const V3& wo, const BsdfSample<S>& s,
+                                   TransportMode mode) const override {
+        if (!s.isSpecular()) return evalMueller(wo, s.wi, mode) / s.pdf;
+        return reflectionMueller(s.weight, lobe_.fresnel(), wo, s.wi);
     }
 
     std::uint32_t flags() const override {

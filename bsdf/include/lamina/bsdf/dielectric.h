@@ -17,6 +17,7 @@
 
 #include "lamina/bsdf/bxdf.h"
 #include "lamina/bsdf/microfacet_distribution.h"
+#include "lamina/bsdf/polarised_fresnel.h"
 #include "lamina/core/fresnel_equations.h"
 
 namespace lamina {
@@ -110,6 +111,20 @@ class DielectricBxdf final : public Bxdf<S> {
         return BsdfSample<S>{wi, weight, p, flags, etap};
     }
 
+    /// Reflection and refraction polarise by the Fresnel amplitudes on each microfacet, with
+    /// the phase of total internal reflection.
+    MuellerMatrix<S> evalMueller(const V3& wo, const V3& wi, TransportMode mode) const override {
+        const auto g = geometry(wo, wi);
+        if (!g) return MuellerMatrix<S>();
+        return polarised(eval(wo, wi, mode), wo, wi, g->m);
+    }
+
+    MuellerMatrix<S> sampleMueller(const V3& wo, const BsdfSample<S>& s,
+                                   TransportMode mode) const override {
+        if (!s.isSpecular()) return evalMueller(wo, s.wi, mode) / s.pdf;
+        return polarised(s.weight, wo, s.wi, V3(0, 0, 1));
+    }
+
     std::uint32_t flags() const override {
         return isSmooth() ? (kLobeSpecularReflection | kLobeSpecularTransmission)
                           : (kLobeGlossyReflection | kLobeGlossyTransmission);
@@ -179,6 +194,15 @@ class DielectricBxdf final : public Bxdf<S> {
                    (std::abs(wo.z) * sqr(wim + wom / g.etap));
         if (mode == TransportMode::Radiance) ft /= sqr(g.etap);
         return ft;
+    }
+
+    // The Mueller matrix of a lobe value for the pair (wo, wi) on the microfacet m.
+    MuellerMatrix<S> polarised(const S& value, const V3& wo, const V3& wi, const V3& m) const {
+        if (wo.z * wi.z > Float(0))
+            return reflectionMueller(value, Fresnel<S>::dielectric(S(eta_)), wo, wi);
+        // Light crosses from wi's side to wo's.
+        const Float etaLight = wi.z > Float(0) ? eta_ : Float(1) / eta_;
+        return transmissionMueller(value, indexMatched() ? Float(1) : etaLight, wo, wi, m);
     }
 
     // Visible-normal density of m seen from wo's side.

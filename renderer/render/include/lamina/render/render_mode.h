@@ -2,8 +2,9 @@
 // path starts (spectral mode draws its wavelengths), how an RGB emission and a material become
 // the mode's spectrum, and what the film receives (Rec.709 in RGB mode, XYZ in spectral mode).
 // The integrators are templated on a RenderMode and contain no mode-specific code; they are
-// compiled for both (src/integrators/*.cpp instantiate them for Rgb<float> and
-// SampledSpectrum<float>). The mode's names are kRenderModeNames (renderer.h).
+// compiled for each (src/integrators/*.cpp instantiate them for Rgb<float> and
+// SampledSpectrum<float>; the polarised mode's PolarisedSpectrum has its own file). The mode's
+// names are kRenderModeNames (renderer.h).
 //
 // Both modes build their materials with the render's seed as the seed of the `coated`
 // material's random walks, so renders with different seeds get independent walk estimates
@@ -21,6 +22,7 @@
 #include "lamina/bsdf/material_builder.h"
 #include "lamina/lights/emitter_color.h"
 #include "lamina/render/film.h"
+#include "lamina/render/polarised_bxdf.h"
 #include "lamina/render/sampler.h"
 #include "lamina/spectral/cie_xyz_table.h"
 
@@ -55,6 +57,11 @@ class RenderMode<Rgb<float>> {
         textured =
             buildBxdf(texturedMaterial(scene_, material, uv), SpectrumContext<Spectrum>{}, seed_);
         return *textured;
+    }
+    /// The same: the unpolarised modes have no use for the shading frame.
+    const Bxdf<Spectrum>& bsdf(int material, const Vec2<float>& uv, const Frame<float>&,
+                               Path& path) const {
+        return bsdf(material, uv, path);
     }
     Rgb<double> filmValue(const Spectrum& L, const Path&) const { return Rgb<double>(L); }
 
@@ -149,6 +156,12 @@ class RenderMode<SampledSpectrum<float>> {
         return *slot;
     }
 
+    /// The same: the unpolarised modes have no use for the shading frame.
+    const Bxdf<Spectrum>& bsdf(int material, const Vec2<float>& uv, const Frame<float>&,
+                               Path& path) const {
+        return bsdf(material, uv, path);
+    }
+
     Rgb<double> filmValue(const Spectrum& L, const Path& path) const {
         // A wavelength of density 0 (terminated by dispersion) contributes nothing.
         using namespace simd;
@@ -178,6 +191,40 @@ class RenderMode<SampledSpectrum<float>> {
     /// per material: its BSDF if it does not depend on the wavelengths, else null
     std::vector<std::unique_ptr<Bxdf<Spectrum>>> shared_;
     const CieXyzTable& cmf_ = CieXyzTable::normalized();
+};
+
+/// Polarised mode (docs/polarisation.md): the spectral mode's wavelengths, colours, emission and
+/// film, with a Mueller matrix per wavelength as the path's throughput (polarised_spectrum.h).
+/// The BSDFs are the spectral mode's, seen at each shading point through PolarisedBxdf, which
+/// turns their matrices into the world directions' canonical frames; the emitters are
+/// unpolarised. The film receives S0, the radiance, as the spectral mode's XYZ.
+template <>
+class RenderMode<PolarisedSpectrum> {
+  public:
+    using Spectrum = PolarisedSpectrum;
+    using Path = RenderMode<SampledSpectrum<float>>::Path;
+
+    RenderMode(const SceneDesc& scene, std::uint64_t seed) : spectral_(scene, seed) {}
+
+    static constexpr FilmSpace kFilmSpace = FilmSpace::Xyz;
+
+    Path startPath(PixelSampler& sampler) const { return spectral_.startPath(sampler); }
+    Spectrum emission(const Emission& e, Path& path) const {
+        return depolarising(spectral_.emission(e, path));
+    }
+    /// Valid until the next call from this thread, as in the spectral mode.
+    const Bxdf<Spectrum>& bsdf(int material, const Vec2<float>& uv, const Frame<float>& frame,
+                               Path& path) const {
+        thread_local PolarisedBxdf view;
+        view.bind(spectral_.bsdf(material, uv, path), frame);
+        return view;
+    }
+    Rgb<double> filmValue(const Spectrum& L, const Path& path) const {
+        return spectral_.filmValue(L.unpolarised(), path);
+    }
+
+  private:
+    RenderMode<SampledSpectrum<float>> spectral_;
 };
 
 }  // namespace lamina::render

@@ -16,9 +16,10 @@
 
 namespace lamina::render {
 
-enum class RenderModeKind { Rgb, Spectral };
+enum class RenderModeKind { Rgb, Spectral, Polarised };
 inline constexpr NameTable kRenderModeNames{std::array{
-    NameEntry{RenderModeKind::Rgb, "rgb"}, NameEntry{RenderModeKind::Spectral, "spectral"}}};
+    NameEntry{RenderModeKind::Rgb, "rgb"}, NameEntry{RenderModeKind::Spectral, "spectral"},
+    NameEntry{RenderModeKind::Polarised, "polarised"}}};
 
 /// Sample indices [first, first + count) of every pixel (`render --samples FIRST:COUNT`).
 struct SampleRange {
@@ -75,6 +76,11 @@ struct RenderResult {
 std::atomic<bool>& renderInterruptFlag();
 
 /// Renders the scene. `progress` is called from the calling thread now and then.
+/// Refuses a combination of mode and integrator that lamina cannot render (the polarised
+/// mode runs the path integrator only), with the reason. The renderer calls it; experiments
+/// call it before they start work.
+void checkModeAndIntegrator(RenderModeKind mode, IntegratorKind integrator);
+
 RenderResult renderScene(const SceneDesc& scene, const RenderOptions& options,
                          const std::function<void(const RenderProgress&)>& progress = {});
 
