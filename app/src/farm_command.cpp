@@ -29,6 +29,7 @@ struct FarmPlanArgs {
     int threads = 0;
     int cpus = 0;
     bool submit = false;
+    experiments::SbatchOptions sbatch;
 };
 
 void runFarmPlan(const FarmPlanArgs& a) {
@@ -49,6 +50,7 @@ void runFarmPlan(const FarmPlanArgs& a) {
     if (a.maxDepth > 0) r.insert(r.end(), {"--max-depth", std::to_string(a.maxDepth)});
     if (a.threads > 0) r.insert(r.end(), {"--threads", std::to_string(a.threads)});
     in.cpusPerTask = a.cpus > 0 ? a.cpus : a.threads;
+    in.sbatchLines = experiments::sbatchDirectives(a.sbatch);
     // The samples to split: --spp, or the scene's.
     in.spp = a.spp > 0 ? a.spp : render::loadScene(a.scene).settings.spp;
     const auto files = experiments::writeFarmPlan(in);
@@ -100,6 +102,14 @@ void registerFarmCommand(CLI::App& app) {
         ->check(CLI::Range(1, 1024));
     cmd->add_option("--cpus-per-task", args->cpus, "#SBATCH --cpus-per-task (default: --threads)")
         ->check(CLI::Range(1, 1024));
+    cmd->add_option("--time-limit", args->sbatch.timeLimit,
+                    "#SBATCH --time of both jobs: MINUTES, H:M:S or D-H:M:S");
+    cmd->add_option("--partition", args->sbatch.partition, "#SBATCH --partition of both jobs");
+    cmd->add_option("--account", args->sbatch.account, "#SBATCH --account of both jobs");
+    cmd->add_option("--sbatch", args->sbatch.lines,
+                    "Any further #SBATCH line of both jobs, e.g. --sbatch=--mem=4G (repeatable)")
+        ->expected(1)
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     cmd->add_flag("--submit", args->submit,
                   "Submit with sbatch: the array, then the merge after it (afterok)");
     cmd->callback([args] { runFarmPlan(*args); });

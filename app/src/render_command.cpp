@@ -2,9 +2,11 @@
 #include <unistd.h>
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "declared_options.h"
@@ -96,6 +98,28 @@ void checkOutputs(const RenderFiles& a, const std::filesystem::path& output,
     if (!a.strategies.empty()) checkOutputDirectory(a.strategies);
 }
 
+/// The shard in `output` if it is the partial output of this same command (a requeued or
+/// restarted array task: the same command line, scene files and sample range), to resume from
+/// instead of overwriting; nothing otherwise (another file is overwritten as before).
+std::optional<render::ShardFile> partialShardToResume(const std::filesystem::path& output,
+                                                      const render::SceneDesc& scene,
+                                                      const render::SampleRange& range) {
+    if (!std::filesystem::exists(output)) return std::nullopt;
+    try {
+        render::ShardFile shard = render::readShardExr(output);
+        const auto commandLine = shard.metadata.strings.find("command_line");
+        if (!shard.partial || shard.samplesDone < 1 || shard.samplesDone >= range.count ||
+            shard.requested.first != range.first || shard.requested.count != range.count ||
+            shard.sceneHash != render::sceneHash(scene) ||
+            commandLine == shard.metadata.strings.end() ||
+            commandLine->second != render::processCommandLine())
+            return std::nullopt;
+        return shard;
+    } catch (const InputError&) {
+        return std::nullopt;  // not a shard of lamina's, or damaged: rendered anew
+    }
+}
+
 void runRender(const experiments::OptionValues& values) {
     const RenderFiles a(values);
     const render::SceneDesc scene = render::loadScene(a.scene);
@@ -132,17 +156,42 @@ void runRender(const experiments::OptionValues& values) {
                              " but the render is " + std::to_string(w) + "x" + std::to_string(h));
     }
 
+    // A restarted shard keeps the samples its partial output holds and renders the rest of
+    // its range (docs/distributed.md, "Requeued shards").
+    std::optional<render::ShardFile> earlier;
+    if (o.samples) earlier = partialShardToResume(output, scene, *o.samples);
+    const render::RenderOptions asked = o;
+    if (earlier) {
+        o.samples = render::SampleRange{o.samples->first + earlier->samplesDone,
+                                        o.samples->count - earlier->samplesDone};
+        // A time budget is the shard's whole: what the interrupted run spent counts.
+        if (o.seconds) o.seconds = std::max(*o.seconds - earlier->seconds, 1e-3);
+        std::fprintf(stderr, "lamina: resuming %s: %d of its %d samples kept, from sample %d\n",
+                     output.string().c_str(), earlier->samplesDone, asked.samples->count,
+                     o.samples->first);
+    }
+
     ProgressPrinter printer(a.quiet);
     const RenderInterruption interruption;  // until the files are written
-    const render::RenderResult r =
-        render::renderScene(scene, o, [&](const render::RenderProgress& p) {
-            if (errors) errors->record(p.seconds, p.sppDone, *p.film);
-            printer(p);
-        });
+    render::RenderResult r = render::renderScene(scene, o, [&](const render::RenderProgress& p) {
+        if (errors) errors->record(p.seconds, p.sppDone, *p.film);
+        printer(p);
+    });
     printer.finish();
     for (const std::string& w : r.warnings)
         std::fprintf(stderr, "lamina: warning: %s\n", w.c_str());
 
+    if (earlier) {
+        if (render::shardSettings(scene, o, r) != earlier->settings)
+            throw InputError(output.string() +
+                             ": lamina:shard_settings: the partial shard was "
+                             "rendered with other settings than this command's");
+        render::addShardSums(*r.film, *earlier);
+        r.firstSample = asked.samples->first;
+        r.spp += earlier->samplesDone;
+        r.seconds += earlier->seconds;
+        o = asked;
+    }
     render::ImageMetadata meta =
         render::renderMetadata(scene, o, r, {LAMINA_VERSION_STRING, LAMINA_GIT_COMMIT});
     if (shard) {

@@ -1,8 +1,10 @@
 #include "lamina/experiments/convergence.h"
+#include "lamina/experiments/convergence_runs.h"
 #include "lamina/experiments/interrupted.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 
 #include "lamina/core/error.h"
@@ -73,37 +75,133 @@ std::optional<std::string> referenceCorrelation(const render::RgbImage& referenc
         sameScene ? "from the same scene files " : "", sampler.c_str(), seed.c_str());
 }
 
+namespace {
+
+/// The reference in `path` with what the premises read of it: size, metadata, and the noise
+/// floor from its variance channels (Variance.R/G/B, else Variance.Y for every channel).
+ReferenceFacts readReferenceFacts(const std::string& path, ReferenceSource source,
+                                  const render::RgbImage& image) {
+    ReferenceFacts facts;
+    facts.name = path;
+    facts.source = source;
+    facts.width = image.width;
+    facts.height = image.height;
+    facts.metadata = image.metadata;
+    const render::FloatImage all = render::readFloatImage(path);
+    if (all.width != image.width || all.height != image.height) return facts;
+    const int r = all.channel("Variance.R"), g = all.channel("Variance.G"),
+              b = all.channel("Variance.B"), y = all.channel("Variance.Y");
+    const bool rgb = r >= 0 && g >= 0 && b >= 0;
+    if (!rgb && y < 0) return facts;
+    // A pixel of one sample has no variance estimate (the film writes 0).
+    const std::string spp = metadataValue(image, "spp");
+    if (!spp.empty() && std::atoi(spp.c_str()) < 2) {
+        facts.noiseSource =
+            "the reference has " + spp +
+            " sample per pixel: its variance channels hold no estimate of its noise";
+        return facts;
+    }
+    std::vector<float> variance;
+    variance.reserve(image.pixels.size());
+    for (int py = 0; py < all.height; ++py)
+        for (int px = 0; px < all.width; ++px)
+            for (const int c : {r, g, b})
+                variance.push_back(all.at(px, py, rgb ? c : y));
+    facts.noiseFloor = referenceNoiseFloor(image.pixels, variance);
+    facts.noiseSource = rgb ? "Variance.R/G/B channels" : "Variance.Y channel, for every channel";
+    return facts;
+}
+
+/// The premises of a rendered reference: what it is, and its noise from the film's own
+/// per-pixel variance.
+ReferenceFacts renderedReferenceFacts(const std::string& name, const render::Film& film,
+                                      const render::RgbImage& image) {
+    ReferenceFacts facts;
+    facts.name = name;
+    facts.source = ReferenceSource::Rendered;
+    facts.width = image.width;
+    facts.height = image.height;
+    std::vector<float> variance;
+    variance.reserve(image.pixels.size());
+    for (int y = 0; y < film.height(); ++y)
+        for (int x = 0; x < film.width(); ++x) {
+            const Rgb<double> v = film.varianceOfMeanRgb(x, y);
+            for (int c = 0; c < 3; ++c)
+                variance.push_back(float(v[c]));
+        }
+    facts.noiseFloor = referenceNoiseFloor(image.pixels, variance);
+    facts.noiseSource = "per-pixel variance of its samples";
+    return facts;
+}
+
+/// The independence premise of a given reference (referenceCorrelation), and the note the
+/// summary prints.
+Premise independencePremise(const ConvergenceInputs& in, const render::RgbImage& ref,
+                            const render::SceneDesc& scene, std::string& note) {
+    const std::optional<std::string> correlated = referenceCorrelation(ref, scene, in.overrides);
+    if (correlated && !in.allowCorrelatedReference)
+        return {"independence", PremiseOutcome::Refused, *correlated};
+    if (correlated) {
+        note =
+            "correlated with the measured renders (same sampler and seed, allowed by "
+            "--allow-correlated-reference): the errors below are understated";
+        return {"independence", PremiseOutcome::Flagged, note};
+    }
+    if (metadataValue(ref, "seed").empty()) {
+        note =
+            "without lamina metadata (another renderer?): its sampler and seed, and so its "
+            "independence from the measured renders, could not be checked";
+        return {"independence", PremiseOutcome::NotChecked, note};
+    }
+    note = "rendered by lamina with another seed or sampler";
+    return {"independence", PremiseOutcome::Holds, note};
+}
+
+}  // namespace
+
+std::string renderedReferenceName(render::RenderModeKind mode) {
+    return "reference_" + std::string(render::kRenderModeNames.name(mode)) + ".exr";
+}
+
 ConvergenceResult runConvergence(const ConvergenceInputs& in) {
     for (const render::RenderModeKind m : in.modes)
         for (const render::IntegratorKind i : in.integrators)
             render::checkModeAndIntegrator(m, i);
+    if (in.resume && in.keepDirectory.empty())
+        throw std::logic_error("runConvergence: resume without a keepDirectory");
     const render::SceneDesc scene = render::loadScene(in.scene);
-    ConvergenceResult result{in, {}, {}, {}};
+    ConvergenceResult result{in, {}, {}, {}, {}};
 
-    // One reference per mode (the two modes converge to slightly different images), unless
-    // the caller gives one.
+    // The premises of every reference read from a file, before any render: one mode's
+    // reference may be given, another resumed, another still to render.
     std::map<render::RenderModeKind, render::RgbImage> references;
-    if (!in.reference.empty()) {
-        const render::RgbImage ref = render::readLinearRgbImage(in.reference);
-        const std::optional<std::string> correlated =
-            referenceCorrelation(ref, scene, in.overrides);
-        if (correlated && !in.allowCorrelatedReference)
-            throw InputError(in.reference + ": " + *correlated);
-        if (correlated)
-            result.referenceNote =
-                "correlated with the measured renders (same sampler and seed, allowed by "
-                "--allow-correlated-reference): the errors below are understated";
-        else if (metadataValue(ref, "seed").empty())
-            result.referenceNote =
-                "without lamina metadata (another renderer?): its sampler and seed, and so its "
-                "independence from the measured renders, could not be checked";
-        else
-            result.referenceNote = "rendered by lamina with another seed or sampler";
-        for (const render::RenderModeKind m : in.modes)
-            references[m] = ref;
-    } else {
+    std::map<render::RenderModeKind, ReferenceFacts> facts;
+    std::string refused;
+    for (const render::RenderModeKind m : in.modes) {
+        const std::filesystem::path kept = in.keepDirectory / renderedReferenceName(m);
+        const bool given = !in.reference.empty();
+        if (!given && !(in.resume && std::filesystem::exists(kept))) continue;
+        const std::string path = given ? in.reference : kept.string();
+        references[m] = render::readLinearRgbImage(path);
+        facts[m] = readReferenceFacts(
+            path, given ? ReferenceSource::Given : ReferenceSource::Resumed, references[m]);
+        std::vector<Premise> premises = referencePremises(facts[m], scene, in.overrides, m);
+        if (given)
+            premises.push_back(independencePremise(in, references[m], scene, result.referenceNote));
+        for (Premise& p : premises) {
+            if (p.outcome == PremiseOutcome::Refused && refused.find(p.detail) == std::string::npos)
+                refused += (refused.empty() ? path + ": " : "; ") + p.detail;
+            result.premises.push_back({m, std::move(p)});
+        }
+    }
+    if (!refused.empty()) throw InputError(refused);
+
+    try {
+        // One reference per mode (the two modes converge to slightly different images),
+        // unless the caller gives one or the interrupted run rendered it.
         const double refSeconds = in.referenceSeconds > 0 ? in.referenceSeconds : 20 * in.seconds;
         for (const render::RenderModeKind m : in.modes) {
+            if (references.count(m)) continue;
             render::RenderOptions o = in.overrides;
             o.mode = m;
             o.integrator = in.referenceIntegrator;
@@ -120,29 +218,62 @@ ConvergenceResult runConvergence(const ConvergenceInputs& in) {
                      refSeconds));
             render::RenderResult r = renderWhole(scene, o);
             references[m] = filmImage(*r.film);
+            facts[m] = renderedReferenceFacts(renderedReferenceName(m), *r.film, references[m]);
+            for (Premise& p : referencePremises(facts[m], scene, o, m))
+                result.premises.push_back({m, std::move(p)});
             render::ImageMetadata meta = render::renderMetadata(scene, o, r, in.build);
             result.references.push_back({m, std::move(r), std::move(meta)});
             if (in.onReference) in.onReference(result.references.back());
         }
-    }
 
-    for (const render::RenderModeKind m : in.modes)
-        for (const render::IntegratorKind i : in.integrators) {
-            render::RenderOptions o = in.overrides;
-            o.mode = m;
-            o.integrator = i;
-            o.seconds = in.seconds;
-            ErrorLog log(references[m]);
-            tell(in.progress,
-                 formatText("%s, %s mode: %.3g s...\n",
-                            std::string(render::kIntegratorNames.name(i)).c_str(),
-                            std::string(render::kRenderModeNames.name(m)).c_str(), in.seconds));
-            const render::RenderResult r =
-                renderWhole(scene, o, [&](const render::RenderProgress& p) {
-                    log.record(p.seconds, p.sppDone, *p.film);
-                });
-            result.curves.push_back({i, m, std::move(log), double(r.paths) / r.seconds, r.spp});
+        for (const render::RenderModeKind m : in.modes) {
+            const RunSettings settings = runSettings(in, scene, references[m]);
+            double smallest = INFINITY;
+            for (const render::IntegratorKind i : in.integrators) {
+                std::optional<ConvergenceCurve> run;
+                if (in.resume) run = readRunFile(in.keepDirectory, i, m, settings, references[m]);
+                if (run) {
+                    run->resumed = true;
+                    tell(in.progress,
+                         formatText("%s, %s mode: kept from %s\n",
+                                    std::string(render::kIntegratorNames.name(i)).c_str(),
+                                    std::string(render::kRenderModeNames.name(m)).c_str(),
+                                    runFile(i, m).string().c_str()));
+                } else {
+                    render::RenderOptions o = in.overrides;
+                    o.mode = m;
+                    o.integrator = i;
+                    o.seconds = in.seconds;
+                    ErrorLog log(references[m]);
+                    tell(in.progress,
+                         formatText("%s, %s mode: %.3g s...\n",
+                                    std::string(render::kIntegratorNames.name(i)).c_str(),
+                                    std::string(render::kRenderModeNames.name(m)).c_str(),
+                                    in.seconds));
+                    const render::RenderResult r =
+                        renderWhole(scene, o, [&](const render::RenderProgress& p) {
+                            log.record(p.seconds, p.sppDone, *p.film);
+                        });
+                    run =
+                        ConvergenceCurve{i, m, std::move(log), double(r.paths) / r.seconds, r.spp};
+                    if (!in.keepDirectory.empty()) writeRunFile(in.keepDirectory, *run, settings);
+                }
+                if (!run->log.rows().empty())
+                    smallest = std::min(smallest, run->log.rows().back().metrics.relmse);
+                result.curves.push_back(std::move(*run));
+                // The reference's noise against the errors the runs reach: a given reference
+                // too noisy to score them is refused at the first run that shows it.
+                const Premise noise = noisePremise(facts[m], smallest, in.allowNoisyReference);
+                if (noise.outcome == PremiseOutcome::Refused)
+                    throw InputError(facts[m].name + ": " + noise.detail);
+            }
+            result.premises.push_back(
+                {m, noisePremise(facts[m], smallest, in.allowNoisyReference)});
         }
+    } catch (const Interrupted&) {
+        if (in.onInterrupted) in.onInterrupted(result);
+        throw;
+    }
     return result;
 }
 

@@ -3,6 +3,7 @@
 #include "declarations.h"
 #include "lamina/experiments/command_options.h"
 #include "lamina/experiments/convergence.h"
+#include "lamina/experiments/convergence_runs.h"
 #include "lamina/experiments/interrupted.h"
 #include "lamina/experiments/merged_convergence.h"
 
@@ -15,6 +16,7 @@ ConvergenceInputs convergenceInputs(const OptionValues& v, const CommandContext&
     in.scene = *v.text("scene");
     in.reference = v.text("reference").value_or("");
     in.allowCorrelatedReference = v.flag("allow-correlated-reference");
+    in.allowNoisyReference = v.flag("allow-noisy-reference");
     in.build = context.build;
     in.levels.clear();
     for (const std::string& level : v.texts("levels"))
@@ -43,14 +45,21 @@ ReportWork convergenceReport(const OptionValues& v, const CommandContext& contex
                 },
                 false};
     }
-    const ConvergenceInputs in = convergenceInputs(v, context);
+    ConvergenceInputs in = convergenceInputs(v, context);
+    in.resume = v.flag("resume");
     return {[in](Report& report) {
-        // Each rendered reference is written as soon as it is done: a run interrupted during
-        // the measured renders keeps it, and says how to reuse it.
+        // Each rendered reference is written as soon as it is done, and each finished run
+        // (runs/), so a run interrupted later keeps them and --resume continues from them.
         ConvergenceInputs run = in;
+        run.keepDirectory = report.directory();
         std::vector<std::string> kept;
         run.onReference = [&](const RenderedReference& r) {
             kept.push_back(writeRenderedReference(r, report).string());
+        };
+        run.onInterrupted = [&](const ConvergenceResult& partial) {
+            for (const ConvergenceCurve& c : partial.curves)
+                if (!c.resumed)
+                    kept.push_back((report.directory() / runFile(c.integrator, c.mode)).string());
         };
         try {
             writeConvergenceReport(runConvergence(run), report);
@@ -59,8 +68,8 @@ ReportWork convergenceReport(const OptionValues& v, const CommandContext& contex
                 stopped.kept += (stopped.kept.empty() ? "" : ", ") + file;
             if (!kept.empty())
                 stopped.kept +=
-                    " (a rerun with --reference FILE, one mode at a time, measures against it "
-                    "without rendering it again)";
+                    " (the same command with --resume continues from them without rendering "
+                    "them again)";
             throw;
         }
         report.finish();
@@ -97,15 +106,37 @@ Data curveData(const ConvergenceCurve& c, const std::vector<ErrorLevel>& levels)
     return d;
 }
 
-Data convergenceData(const OptionValues& v, const CommandContext& context) {
-    const ConvergenceResult r = runConvergence(convergenceInputs(v, context));
+Data resultData(const ConvergenceResult& r) {
     Data curves = Data::list();
     for (const auto& c : r.curves)
         curves.append(curveData(c, r.inputs.levels));
+    Data premises = Data::list();
+    for (const ModePremise& p : r.premises) {
+        Data d = Data::dict();
+        d.set("mode", render::kRenderModeNames.name(p.mode));
+        d.set("check", p.premise.check);
+        d.set("outcome", kPremiseOutcomeNames.name(p.premise.outcome));
+        d.set("detail", p.premise.detail);
+        premises.append(std::move(d));
+    }
     Data out = Data::dict();
     out.set("curves", std::move(curves));
     out.set("reference_note", r.referenceNote);
+    out.set("premises", std::move(premises));
     return out;
+}
+
+Data convergenceData(const OptionValues& v, const CommandContext& context) {
+    ConvergenceInputs in = convergenceInputs(v, context);
+    // Interrupted (Ctrl-C in Python) carries what was done: the finished runs and premises.
+    std::optional<Data> partial;
+    in.onInterrupted = [&](const ConvergenceResult& r) { partial = resultData(r); };
+    try {
+        return resultData(runConvergence(in));
+    } catch (Interrupted& stopped) {
+        stopped.partial = std::move(partial);
+        throw;
+    }
 }
 
 }  // namespace
@@ -123,7 +154,9 @@ CommandDecl convergenceDeclaration() {
     c.returns =
         "a dict: curves (per mode and integrator: the arrays seconds, spp, mse, relmse and mae "
         "after every pass, the fitted slope against seconds and slope_spp against samples, "
-        "paths_per_second, time_to_relmse per level) and reference_note";
+        "paths_per_second, time_to_relmse per level), reference_note, and premises (per mode "
+        "and check: outcome holds, flagged, not checked or refused, and detail). Ctrl-C raises "
+        "KeyboardInterrupt with .partial: the same dict of what was done";
     c.options = {
         sceneOption(),
         outputDirectoryOption(),
@@ -159,6 +192,14 @@ CommandDecl convergenceDeclaration() {
         flagOption("allow-correlated-reference",
                    "Accept a --reference rendered with the measured renders' sampler and seed "
                    "(their errors are then understated)"),
+        flagOption("allow-noisy-reference",
+                   "Accept a --reference whose own noise is above 10% of the runs' final "
+                   "relMSE (it flattens the slopes; the summary flags it)"),
+        flagOption("resume",
+                   "Continue the interrupted run in --output's directory: its reference_MODE.exr "
+                   "and finished runs/ are used, not rendered again")
+            .commandLineOnly("Python keeps no files: an interrupted call's KeyboardInterrupt "
+                             "carries .partial, what was done"),
         textOption("merged",
                    "Comma-separated images of `lamina merge`: measure them against "
                    "--reference instead of rendering (merged.csv)")

@@ -1,5 +1,6 @@
 // The report of `lamina convergence`: convergence.csv, convergence.svg, reference_MODE.exr
 // for each rendered reference, and summary.md.
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -33,6 +34,13 @@ std::string writeReferences(const ConvergenceResult& result, const Report& repor
     if (!in.reference.empty())
         return "reference: " + in.reference + " (given) for every mode, " + result.referenceNote;
     std::string note;
+    for (const render::RenderModeKind m : in.modes) {
+        const bool rendered = std::any_of(result.references.begin(), result.references.end(),
+                                          [m](const RenderedReference& r) { return r.mode == m; });
+        if (!rendered)
+            note += (note.empty() ? "" : "; ") + renderedReferenceName(m) +
+                    ": rendered by the interrupted run this one resumed";
+    }
     for (const RenderedReference& ref : result.references) {
         const std::string mode = nameOf(ref.mode), integrator = nameOf(in.referenceIntegrator);
         writeRenderedReference(ref, report);
@@ -83,6 +91,20 @@ void writePlot(const ConvergenceResult& result, const Report& report) {
     report.writeFigure("convergence.svg", plot);
 }
 
+/// Each check of each mode's reference and its outcome.
+std::string premisesSection(const ConvergenceResult& result) {
+    std::string md =
+        "\n## Premises\n\nWhat the measurement assumes of its reference, checked before the "
+        "first render (its noise once the runs are done): refused stops the experiment, "
+        "flagged is allowed but changes how to read the numbers.\n\n"
+        "| mode | check | outcome | detail |\n|---|---|---|---|\n";
+    for (const ModePremise& p : result.premises)
+        md += "| " + nameOf(p.mode) + " | " + p.premise.check + " | " +
+              std::string(kPremiseOutcomeNames.name(p.premise.outcome)) + " | " + p.premise.detail +
+              " |\n";
+    return md;
+}
+
 std::string summary(const ConvergenceResult& result, const std::string& referenceNote) {
     const ConvergenceInputs& in = result.inputs;
     std::ostringstream md;
@@ -108,6 +130,13 @@ std::string summary(const ConvergenceResult& result, const std::string& referenc
             md << " " << formatSeconds(timeToReach(rows, l.relmse), in.seconds) << " |";
         md << "\n";
     }
+    std::string resumed;
+    for (const ConvergenceCurve& c : result.curves)
+        if (c.resumed)
+            resumed += (resumed.empty() ? "" : ", ") + nameOf(c.integrator) + " " + nameOf(c.mode);
+    if (!resumed.empty())
+        md << "\nResumed: the runs " << resumed
+           << " were taken from the interrupted run's runs/ files, not rendered again.\n";
     md << "\nA slope is the least-squares fit of log relMSE against log seconds (time) or log "
           "samples per pixel (spp) after the first tenth of the run: -1 for an unbiased "
           "estimator whose error is all variance; flatter once the reference's own error (or a "
@@ -115,6 +144,7 @@ std::string summary(const ConvergenceResult& result, const std::string& referenc
           "proportion to their samples (a busy machine, start-up costs); n/a: fewer than three "
           "passes after the first tenth.\n\n"
        << "![relMSE against time](convergence.svg)\n";
+    md << premisesSection(result);
     return md.str();
 }
 
@@ -122,8 +152,9 @@ std::string summary(const ConvergenceResult& result, const std::string& referenc
 
 std::filesystem::path writeRenderedReference(const RenderedReference& reference,
                                              const Report& report) {
-    const std::filesystem::path path = report.file("reference_" + nameOf(reference.mode) + ".exr");
-    render::writeExr(path, *reference.render.film, false, reference.metadata);
+    const std::filesystem::path path = report.file(renderedReferenceName(reference.mode));
+    // With its variance: a rerun that takes it as --reference, or resumes, knows its noise.
+    render::writeExr(path, *reference.render.film, false, reference.metadata, true);
     return path;
 }
 

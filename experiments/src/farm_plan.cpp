@@ -37,6 +37,29 @@ std::string bashArray(const std::vector<int>& values) {
     return out + ")";
 }
 
+/// sbatch(1), --time: "minutes", "minutes:seconds", "hours:minutes:seconds", "days-hours",
+/// "days-hours:minutes" and "days-hours:minutes:seconds": fields of digits.
+bool isSlurmTimeLimit(const std::string& text) {
+    const std::size_t dash = text.find('-');
+    const std::string days = dash == std::string::npos ? "" : text.substr(0, dash);
+    const std::string clock = dash == std::string::npos ? text : text.substr(dash + 1);
+    const auto digits = [](const std::string& field) {
+        return !field.empty() &&
+               std::all_of(field.begin(), field.end(), [](char c) { return c >= '0' && c <= '9'; });
+    };
+    if (dash != std::string::npos && !digits(days)) return false;
+    int fields = 0;
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t colon = clock.find(':', start);
+        if (!digits(clock.substr(start, colon - start))) return false;
+        ++fields;
+        if (colon == std::string::npos) break;
+        start = colon + 1;
+    }
+    return fields <= 3;
+}
+
 }  // namespace
 
 std::string shellQuote(const std::string& word) {
@@ -48,6 +71,31 @@ std::string shellQuote(const std::string& word) {
             out += c;
     }
     return out + "'";
+}
+
+std::vector<std::string> sbatchDirectives(const SbatchOptions& options) {
+    std::vector<std::string> out;
+    if (!options.timeLimit.empty()) {
+        if (!isSlurmTimeLimit(options.timeLimit))
+            throw InputError("--time-limit " + options.timeLimit +
+                             ": expected a Slurm time limit: MINUTES, H:M:S or D-H:M:S");
+        out.push_back("--time=" + options.timeLimit);
+    }
+    const auto named = [&](const char* option, const std::string& value) {
+        if (value.empty()) return;
+        if (value.find_first_of(" \t\r\n") != std::string::npos)
+            throw InputError(std::string(option) + " " + value + ": expected one word");
+        out.push_back(std::string(option) + "=" + value);
+    };
+    named("--partition", options.partition);
+    named("--account", options.account);
+    for (const std::string& line : options.lines) {
+        if (line.rfind('-', 0) != 0 || line.find_first_of("\r\n") != std::string::npos)
+            throw InputError("--sbatch " + line +
+                             ": expected one sbatch option on one line, such as --mem=4G");
+        out.push_back(line);
+    }
+    return out;
 }
 
 std::vector<render::SampleRange> planSampleRanges(int shards, int spp, bool timed) {
@@ -149,13 +197,18 @@ std::vector<std::filesystem::path> writeFarmPlan(const FarmPlanInputs& in) {
     const std::string cpus =
         in.cpusPerTask > 0 ? "#SBATCH --cpus-per-task=" + std::to_string(in.cpusPerTask) + "\n"
                            : "";
+    // The cluster's own directives go into both jobs: a partition or account that the site
+    // requires is required of the merge job too.
+    std::string site;
+    for (const std::string& line : in.sbatchLines)
+        site += "#SBATCH " + line + "\n";
     write("render.sbatch",
           "#!/bin/bash\n"
           "#SBATCH --job-name=" +
               in.jobName +
               "-render\n"
               "#SBATCH --array=0-" +
-              std::to_string(in.shards - 1) + "\n" + cpus +
+              std::to_string(in.shards - 1) + "\n" + cpus + site +
               "#SBATCH --output=" + (dir / "logs" / "render-%a.log").string() +
               "\n"
               "exec " +
@@ -163,10 +216,8 @@ std::vector<std::filesystem::path> writeFarmPlan(const FarmPlanInputs& in) {
     write("merge.sbatch",
           "#!/bin/bash\n"
           "#SBATCH --job-name=" +
-              in.jobName +
-              "-merge\n"
-              "#SBATCH --output=" +
-              (dir / "logs" / "merge.log").string() +
+              in.jobName + "-merge\n" + site +
+              "#SBATCH --output=" + (dir / "logs" / "merge.log").string() +
               "\n"
               "exec " +
               shellQuote((dir / "merge.sh").string()) + "\n");

@@ -77,7 +77,8 @@ py::object runExperiment(const std::string& name, const py::dict& keywords) {
     // interpreter, and a call that kept the GIL released to its end would ignore Ctrl-C for
     // the whole run. On a signal the interrupt flag stops the experiment at its next check (a
     // render finishes its pass in flight; experiments/interrupted.h), and KeyboardInterrupt is
-    // raised here: an experiment's numbers are whole or not at all.
+    // raised here: an experiment's numbers are whole or not at all, and the exception's .partial
+    // holds what it had finished (Interrupted::partial; convergence's finished runs).
     std::atomic<bool>& interrupt = render::renderInterruptFlag();
     interrupt.store(false);
     std::future<ex::Data> running =
@@ -86,8 +87,7 @@ py::object runExperiment(const std::string& name, const py::dict& keywords) {
     while (true) {
         {
             py::gil_scoped_release release;
-            if (running.wait_for(std::chrono::milliseconds(50)) == std::future_status::ready)
-                break;
+            if (running.wait_for(std::chrono::milliseconds(50)) == std::future_status::ready) break;
         }
         if (PyErr_CheckSignals() != 0) {
             interrupted = true;
@@ -100,10 +100,13 @@ py::object runExperiment(const std::string& name, const py::dict& keywords) {
     ex::Data result;
     try {
         result = running.get();
-    } catch (const ex::Interrupted&) {
+    } catch (const ex::Interrupted& stopped) {
         interrupt.store(false);
         if (!interrupted) throw;
-        throw py::error_already_set();  // the KeyboardInterrupt PyErr_CheckSignals set
+        // The KeyboardInterrupt PyErr_CheckSignals set, with what the experiment had done.
+        py::error_already_set keyboardInterrupt;
+        if (stopped.partial) keyboardInterrupt.value().attr("partial") = toPython(*stopped.partial);
+        throw keyboardInterrupt;
     }
     interrupt.store(false);
     if (interrupted) throw py::error_already_set();

@@ -3,7 +3,8 @@
 // signal (130 for SIGINT); a signal that arrives while the EXR is being written lets the write
 // finish; no temporary file is ever left behind. The experiment commands stop before their
 // report and write nothing (their results would be incomplete), with the same exit status,
-// except a reference `convergence` has already rendered, which it keeps.
+// except what `convergence` has finished (its reference, its finished runs), which it keeps
+// for --resume.
 #include <fcntl.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -15,6 +16,7 @@
 #include <thread>
 
 #include "cli_helpers.h"
+#include "lamina/image/image_io.h"
 #include "lamina/output/image_output.h"
 
 extern char** environ;
@@ -179,11 +181,103 @@ TEST_F(Interruption, CtrlCDuringConvergenceKeepsTheRenderedReference) {
     EXPECT_FALSE(fs::exists(report / "summary.md"));
     EXPECT_EQ(render::readRgbImage(reference).width, 32);
     EXPECT_FALSE(temporaryPresent());
-    const CommandRun rerun = runLamina("convergence " + s + " -o " + (dir_ / "rerun").string() +
-                                       " --integrators path --modes rgb --time 0.5 --reference " +
-                                       reference.string());
+    const CommandRun rerun =
+        runLamina("convergence " + s + " -o " + (dir_ / "rerun").string() +
+                  " --integrators path --modes rgb --time 0.5 --reference " + reference.string());
     EXPECT_EQ(rerun.exitCode, 0) << rerun.output;
     EXPECT_TRUE(fs::exists(dir_ / "rerun" / "summary.md"));
+}
+
+// Each finished run is kept too (runs/INTEGRATOR_MODE.csv, as soon as it is done): Ctrl-C
+// during the second run keeps the reference and the first run, and --resume renders only
+// what is missing.
+TEST_F(Interruption, CtrlCDuringConvergenceKeepsTheFinishedRunsAndResumeContinues) {
+    const auto s = write("scene.json", scene(32, 32));
+    const auto report = dir_ / "report";
+    const std::vector<std::string> args = {
+        "convergence",      s,         "-o",  report.string(), "--integrators",
+        "path,light",       "--modes", "rgb", "--time",        "3",
+        "--reference-time", "1"};
+    const pid_t pid = start(args);
+    const fs::path firstRun = report / "runs" / "path_rgb.csv";
+    const auto deadline = std::chrono::steady_clock::now() + 60s;
+    while (!fs::exists(firstRun) && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(20ms);
+    ASSERT_TRUE(fs::exists(firstRun)) << "the first run was not kept";
+    std::this_thread::sleep_for(300ms);  // into the light run
+    ::kill(pid, SIGINT);
+    EXPECT_EQ(wait(pid), 130) << stderrText();
+    EXPECT_THAT(stderrText(),
+                ::testing::HasSubstr("kept " + (report / "reference_rgb.exr").string() + ", " +
+                                     firstRun.string()));
+    EXPECT_THAT(stderrText(), ::testing::HasSubstr("--resume"));
+    EXPECT_FALSE(fs::exists(report / "runs" / "light_rgb.csv"));
+    EXPECT_FALSE(fs::exists(report / "summary.md"));
+    EXPECT_FALSE(temporaryPresent());
+
+    std::string command;
+    for (const std::string& arg : args)
+        command += arg + " ";
+    const CommandRun resumed = runLaminaStderr(command + "--resume");
+    EXPECT_EQ(resumed.exitCode, 0) << resumed.output;
+    EXPECT_THAT(resumed.output, ::testing::HasSubstr("path, rgb mode: kept from"));
+    EXPECT_THAT(resumed.output, ::testing::HasSubstr("light, rgb mode: 3 s..."));
+    EXPECT_THAT(resumed.output,
+                ::testing::Not(::testing::HasSubstr("rendering the rgb reference")));
+    EXPECT_TRUE(fs::exists(report / "summary.md"));
+    EXPECT_TRUE(fs::exists(report / "runs" / "light_rgb.csv"));
+}
+
+// A shard interrupted (a preempted or requeued array task) and run again with the same command
+// resumes from its partial output: it keeps the samples it has, renders the rest of its range,
+// and the shard equals the one an uninterrupted run writes (the same sums, added in another
+// order: equal to float rounding).
+TEST_F(Interruption, ARestartedShardResumesFromItsPartialOutput) {
+    const auto s = write("scene.json", R"({
+  "camera": {"position": [0, 0, -4], "look_at": [0, 0, 0], "fov": 40},
+  "film": {"resolution": [32, 32]},
+  "materials": {"m": {"type": "standard", "roughness": 0.3}},
+  "shapes": [{"type": "sphere", "radius": 1, "material": "m"}],
+  "lights": [{"type": "environment", "radiance": 1}]
+})");
+    const auto shard = dir_ / "shard.exr";
+    const std::vector<std::string> args = {"render", s,    "--samples",   "8:3000",
+                                           "-q",     "-o", shard.string()};
+    const pid_t pid = start(args);
+    std::this_thread::sleep_for(1500ms);
+    ::kill(pid, SIGINT);
+    ASSERT_EQ(wait(pid), 130) << stderrText();
+    const render::FloatImage partial = render::readFloatImage(shard);
+    ASSERT_EQ(partial.metadata.ints.at("partial"), 1) << "the render ended before the signal";
+    const int kept = partial.metadata.ints.at("samples_done");
+    ASSERT_GT(kept, 0);
+
+    const pid_t again = start(args);
+    EXPECT_EQ(wait(again), 0) << stderrText();
+    EXPECT_THAT(stderrText(),
+                ::testing::HasSubstr("lamina: resuming " + shard.string() + ": " +
+                                     std::to_string(kept) + " of its 3000 samples kept"));
+    const render::FloatImage resumed = render::readFloatImage(shard);
+    EXPECT_EQ(resumed.metadata.ints.at("partial"), 0);
+    EXPECT_EQ(resumed.metadata.ints.at("sample_first"), 8);
+    EXPECT_EQ(resumed.metadata.ints.at("sample_count"), 3000);
+    EXPECT_EQ(resumed.metadata.ints.at("samples_done"), 3000);
+
+    const auto whole = dir_ / "whole.exr";
+    const CommandRun r = runLamina("render " + s + " --samples 8:3000 -q -o " + whole.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const render::FloatImage uninterrupted = render::readFloatImage(whole);
+    ASSERT_EQ(resumed.channels, uninterrupted.channels);
+    for (const char* name : {"R", "G", "B", "Count.N", "Weight.Sum"}) {
+        const int c = resumed.channel(name);
+        ASSERT_GE(c, 0) << name;
+        for (int y = 0; y < 32; ++y)
+            for (int x = 0; x < 32; ++x) {
+                const float a = resumed.at(x, y, c), b = uninterrupted.at(x, y, c);
+                ASSERT_NEAR(a, b, 1e-5f * std::abs(b) + 1e-9f) << name << " " << x << "," << y;
+            }
+    }
+    EXPECT_FALSE(temporaryPresent());
 }
 
 TEST_F(Interruption, SigtermDuringAFresnelSceneRenderExits143WithoutAReport) {

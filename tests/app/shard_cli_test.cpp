@@ -149,6 +149,45 @@ TEST_F(CliTest, FarmPlanScriptsRunWithoutSlurmAndMergeToTheSingleRender) {
     EXPECT_EQ(row.rfind("image.exr,3,7,", 0), 0u) << row;
 }
 
+// A cluster's required directives (time limit, partition, account, anything else) go into
+// both jobs: a merge job without the site's account or partition would be rejected.
+TEST_F(CliTest, FarmPlanWritesTheClustersSbatchLinesIntoBothJobs) {
+    const fs::path plan = dir_ / "plan";
+    const CommandRun p = runLamina("farm plan " + kCornell +
+                                   " --shards 2 --spp 4 --time-limit 1-02:30:00 --partition short "
+                                   "--account proj42 --sbatch=--mem=4G --sbatch=--qos=low -o " +
+                                   plan.string());
+    ASSERT_EQ(p.exitCode, 0) << p.output;
+    for (const char* job : {"render.sbatch", "merge.sbatch"}) {
+        std::ifstream in(plan / job);
+        const std::string text((std::istreambuf_iterator<char>(in)), {});
+        EXPECT_NE(text.find("#SBATCH --time=1-02:30:00\n#SBATCH --partition=short\n"
+                            "#SBATCH --account=proj42\n#SBATCH --mem=4G\n#SBATCH --qos=low\n"),
+                  std::string::npos)
+            << job << ":\n"
+            << text;
+        // sbatch stops reading directives at the first command: they all come before it.
+        EXPECT_LT(text.rfind("#SBATCH"), text.find("\nexec ")) << job;
+    }
+}
+
+TEST_F(CliTest, FarmPlanRefusesATimeLimitOrLineSlurmWouldNotRead) {
+    for (const auto& [options, message] : std::vector<std::pair<std::string, std::string>>{
+             {"--time-limit 2h",
+              "--time-limit 2h: expected a Slurm time limit: MINUTES, H:M:S or D-H:M:S"},
+             {"--time-limit 1:2:3:4",
+              "--time-limit 1:2:3:4: expected a Slurm time limit: MINUTES, H:M:S or D-H:M:S"},
+             {"--sbatch=mem=4G",
+              "--sbatch mem=4G: expected one sbatch option on one line, such as --mem=4G"},
+             {"--partition 'a b'", "--partition a b: expected one word"}}) {
+        const CommandRun r = runLamina("farm plan " + kCornell + " --shards 2 --spp 4 " + options +
+                                       " -o " + (dir_ / "plan").string());
+        EXPECT_EQ(r.exitCode, 1) << options;
+        EXPECT_EQ(r.output, "lamina: error: " + message + "\n");
+        EXPECT_EQ(filesIn(), 0u) << options;
+    }
+}
+
 TEST_F(CliTest, FarmPlanRefusesMoreShardsThanSamples) {
     const CommandRun r =
         runLamina("farm plan " + kCornell + " --shards 9 --spp 8 -o " + (dir_ / "plan").string());

@@ -70,6 +70,23 @@ def test_convergence(scene):
     # Both slopes are numbers or None (too few passes), never NaN.
     for key in ("slope", "slope_spp"):
         assert curve[key] is None or np.isfinite(curve[key])
+    # The premises: the reference it rendered is flagged as its own, its noise measured.
+    checks = {(p["mode"], p["check"]): p for p in r["premises"]}
+    assert checks[("rgb", "reference")]["outcome"] == "flagged"
+    assert "self-rendered" in checks[("rgb", "reference")]["detail"]
+    assert checks[("rgb", "reference noise")]["outcome"] in ("holds", "flagged")
+
+
+def test_convergence_refuses_a_reference_of_another_mode_before_rendering(scene, tmp_path):
+    import time
+    image = lamina.render(scene, spp=2, seed=9, mode="spectral", resolution=(16, 16))
+    path = str(tmp_path / "spectral.exr")
+    image.save(path)
+    start = time.monotonic()
+    with pytest.raises(ValueError, match="rendered with mode spectral, the measured renders use rgb"):
+        lamina.convergence(scene, integrators=["path"], seconds=30, resolution=(16, 16),
+                           reference=path)
+    assert time.monotonic() - start < 20, "refused only after rendering"
 
 
 def test_reciprocity(scene):
@@ -123,6 +140,44 @@ def test_convergence_takes_the_command_lines_options(scene):
 def test_reciprocity_takes_the_ablations(scene):
     with pytest.raises(ValueError, match='ablate: unknown "drop"; expected adjoint-correction'):
         lamina.reciprocity(scene, ablate=["drop"])
+
+
+def test_ctrl_c_during_convergence_carries_the_finished_runs(scene):
+    # The reference (1 s) and the path run (4 s) are done before the signal at 7 s, the
+    # light run (4 s more) is in flight: KeyboardInterrupt comes within a second with
+    # .partial, the result of what was finished.
+    import signal
+    import subprocess
+    import sys
+    import time
+    code = (
+        "import lamina\n"
+        f"SCENE = {scene!r}\n"
+        "print('started', flush=True)\n"
+        "try:\n"
+        "    lamina.convergence(SCENE, integrators=['path', 'light'], seconds=4,\n"
+        "                       reference_seconds=1, resolution=(16, 16))\n"
+        "except KeyboardInterrupt as e:\n"
+        "    print('interrupted', flush=True)\n"
+        "    print([c['integrator'] for c in e.partial['curves']])\n"
+        "    print(sorted({p['check'] for p in e.partial['premises']}))\n"
+    )
+    p = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE, text=True,
+                         env=dict(os.environ))
+    assert p.stdout.readline().strip() == "started"
+    time.sleep(7)
+    sent = time.monotonic()
+    p.send_signal(signal.SIGINT)
+    line = p.stdout.readline().strip()
+    stopped = time.monotonic() - sent
+    # Line by line: communicate() with a timeout reads the pipe itself, past what readline
+    # has already buffered.
+    curves, checks = p.stdout.readline().strip(), p.stdout.readline().strip()
+    assert p.wait(timeout=30) == 0
+    assert line == "interrupted", line
+    assert stopped < 1.0, f"KeyboardInterrupt {stopped:.2f} s after SIGINT"
+    assert curves == "['path']", curves
+    assert "reference" in checks, checks
 
 
 @pytest.mark.parametrize("call", [

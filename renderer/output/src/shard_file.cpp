@@ -247,4 +247,16 @@ ShardFile readShardExr(const std::filesystem::path& path) {
     return shard;
 }
 
+void addShardSums(Film& film, const ShardFile& earlier) {
+    const PixelBounds& w = film.window();
+    const PixelBounds& c = earlier.film->window();
+    if (w.x0 != c.x0 || w.x1 != c.x1 || w.y0 != c.y0 || w.y1 != c.y1 ||
+        film.fullWidth() != earlier.fullWidth || film.fullHeight() != earlier.fullHeight)
+        throw InputError(earlier.path.string() + ": lamina:crop " + boundsText(c) +
+                         ": another window than the render's " + boundsText(w));
+    for (int y = 0; y < film.height(); ++y)
+        for (int x = 0; x < film.width(); ++x)
+            film.addSums(w.x0 + x, w.y0 + y, earlier.film->sums(x, y));
+}
+
 }  // namespace lamina::render

@@ -3,7 +3,9 @@
 // reference (relMSE with epsilon 1e-2, MSE, MAE). The report: convergence.csv,
 // convergence.svg (log-log relMSE against seconds), summary.md (samples per second, final
 // errors, the fitted slope of log relMSE against log seconds, which is -1 for an unbiased
-// Monte Carlo estimator, and the time each needs to reach given error levels).
+// Monte Carlo estimator, and the time each needs to reach given error levels). Before the
+// first render the premises of a given reference are checked (convergence_premises.h); each
+// finished run is kept (convergence_runs.h) so that an interrupted run can resume.
 #pragma once
 
 #include <filesystem>
@@ -12,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "lamina/experiments/convergence_premises.h"
 #include "lamina/experiments/image_metrics.h"
 #include "lamina/experiments/progress.h"
 #include "lamina/experiments/report.h"
@@ -38,6 +41,16 @@ struct ConvergenceInputs {
     /// Measure against a reference rendered with the measured renders' sampler and seed
     /// anyway (referenceCorrelation): the errors are then understated.
     bool allowCorrelatedReference = false;
+    /// Measure against a given reference whose own noise is too large against the runs'
+    /// errors (noisePremise) anyway: the summary flags it.
+    bool allowNoisyReference = false;
+    /// Where finished work is kept: each finished run as runs/INTEGRATOR_MODE.csv
+    /// (convergence_runs.h), as soon as it is done; empty: nowhere.
+    std::filesystem::path keepDirectory;
+    /// Continue the work kept in keepDirectory: its reference_MODE.exr (rendered by an
+    /// interrupted run) instead of rendering the reference, and its finished runs instead of
+    /// rendering them again.
+    bool resume = false;
     render::IntegratorKind referenceIntegrator = render::IntegratorKind::Path;
     double referenceSeconds = 0;  ///< of each rendered reference; 0: 20 x seconds
     /// Applied to every render (threads, sampler, max depth, resolution); the mode, the
@@ -49,6 +62,9 @@ struct ConvergenceInputs {
     /// Called with each reference as soon as it is rendered (the command line writes it at
     /// once, so an interrupted run keeps what took longest); nothing when empty.
     std::function<void(const struct RenderedReference&)> onReference;
+    /// Called with what was done (references, finished runs, premises) when the experiment
+    /// is interrupted, before Interrupted reaches the caller; nothing when empty.
+    std::function<void(const struct ConvergenceResult&)> onInterrupted;
 };
 
 /// A reference the experiment rendered (one per mode).
@@ -58,7 +74,8 @@ struct RenderedReference {
     render::ImageMetadata metadata;  ///< written into reference_MODE.exr
 };
 
-/// Writes reference_MODE.exr into the report's directory; returns its path.
+/// Writes reference_MODE.exr into the report's directory, with the variance of every pixel's
+/// mean (Variance.R/G/B, Variance.Y: the reference's noise when it is reused); returns its path.
 std::filesystem::path writeRenderedReference(const RenderedReference& reference,
                                              const Report& report);
 
@@ -69,6 +86,13 @@ struct ConvergenceCurve {
     ErrorLog log;
     double pathsPerSecond = 0;
     int spp = 0;
+    bool resumed = false;  ///< read back from the kept run (resume), not rendered now
+};
+
+/// A premise of the measurement of one mode.
+struct ModePremise {
+    render::RenderModeKind mode;
+    Premise premise;
 };
 
 struct ConvergenceResult {
@@ -77,6 +101,9 @@ struct ConvergenceResult {
     std::vector<ConvergenceCurve> curves;       ///< modes outer, integrators inner
     /// For the summary: what is known of a given reference's provenance.
     std::string referenceNote;
+    /// Every check of every mode's reference, in the order made (the noise of a mode's
+    /// reference once its runs are done).
+    std::vector<ModePremise> premises;
 };
 
 /// Why a given reference is correlated with the measured renders, or nothing. A reference
@@ -105,8 +132,11 @@ double timeToReach(const std::vector<ErrorLog::Row>& rows, double level);
 
 ConvergenceResult runConvergence(const ConvergenceInputs& inputs);
 
+/// "reference_rgb.exr": the file of a rendered reference of `mode` in the report's directory.
+std::string renderedReferenceName(render::RenderModeKind mode);
+
 /// convergence.csv, convergence.svg, the references rendered (reference_MODE.exr) and the
-/// summary.
+/// summary (with its Premises section).
 void writeConvergenceReport(const ConvergenceResult& result, Report& report);
 
 }  // namespace lamina::experiments

@@ -25,6 +25,10 @@ struct FarmPlanInputs {
     /// Passed to every `lamina render` as they are (already validated options: --mode rgb).
     std::vector<std::string> renderArguments;
     int cpusPerTask = 0;  ///< #SBATCH --cpus-per-task (0: not set)
+    /// Further #SBATCH directives of both jobs (render and merge), each an sbatch option as
+    /// the cluster requires it ("--time=2:00:00", "--partition=gpu", "--account=proj",
+    /// "--mem=4G"): see sbatchDirectives.
+    std::vector<std::string> sbatchLines;
     std::string jobName = "lamina";
 };
 
@@ -37,6 +41,19 @@ std::vector<render::SampleRange> planSampleRanges(int shards, int spp, bool time
 /// The files written, in order: render-shard.sh, merge.sh, render.sbatch, merge.sbatch,
 /// submit.sh. InputError if the directory cannot be written.
 std::vector<std::filesystem::path> writeFarmPlan(const FarmPlanInputs& in);
+
+/// The options of `lamina farm plan` that become #SBATCH lines: --time-limit, --partition,
+/// --account, and any line given as it is (--sbatch, repeated).
+struct SbatchOptions {
+    std::string timeLimit, partition, account;
+    std::vector<std::string> lines;
+};
+
+/// The directives of `options` in the order above ("--time=1:00:00", "--partition=short",
+/// ...). InputError naming the option for a time limit Slurm would not read (minutes, M:S,
+/// H:M:S, D-H, D-H:M or D-H:M:S), or for a line that is not one sbatch option: a line must
+/// start with '-' and hold no line break (it is written into the job script as it is).
+std::vector<std::string> sbatchDirectives(const SbatchOptions& options);
 
 /// A word quoted for the POSIX shell ('...' with ' written '\'').
 std::string shellQuote(const std::string& word);

@@ -67,6 +67,9 @@ class ErrorLog {
         ImageMetrics metrics;
     };
     explicit ErrorLog(render::RgbImage reference) : reference_(std::move(reference)) {}
+    /// Rows measured before (a finished run read back: convergence_runs.h).
+    ErrorLog(render::RgbImage reference, std::vector<Row> rows)
+        : reference_(std::move(reference)), rows_(std::move(rows)) {}
     /// Measures the film; InputError if its size differs from the reference's.
     void record(double seconds, int spp, const render::Film& film);
     const std::vector<Row>& rows() const { return rows_; }

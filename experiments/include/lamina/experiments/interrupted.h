@@ -3,12 +3,16 @@
 // sweep stopped half-way, would give numbers that mislead (a reference with too few samples, a
 // verdict on half the batches). So the render in flight finishes its pass, and the experiment
 // throws Interrupted from its next check instead of returning; the caller writes no report.
+// What was finished whole (a rendered reference, a finished run) is kept: named in `kept` on
+// the command line, carried as `partial` to Python.
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
+#include "lamina/experiments/result_data.h"
 #include "lamina/render/renderer.h"
 
 namespace lamina::experiments {
@@ -18,6 +22,9 @@ struct Interrupted : std::runtime_error {
     /// What the experiment wrote before it stopped, which a rerun can use ("DIR/reference_rgb.exr
     /// (pass it as --reference ...)"); empty: nothing.
     std::string kept;
+    /// What the experiment had done, as its result's data (Python's KeyboardInterrupt carries
+    /// it as .partial); nothing where the experiment keeps nothing.
+    std::optional<Data> partial;
 };
 
 /// Throws Interrupted if the interrupt flag is raised.

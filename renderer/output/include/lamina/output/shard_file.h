@@ -12,8 +12,8 @@
 #include <memory>
 #include <string>
 
-#include "lamina/render/film.h"
 #include "lamina/output/image_output.h"
+#include "lamina/render/film.h"
 #include "lamina/render/renderer.h"
 
 namespace lamina::render {
@@ -46,5 +46,10 @@ struct ShardFile {
 
 /// Reads a shard; InputError naming the file if it is not one or is damaged.
 ShardFile readShardExr(const std::filesystem::path& path);
+
+/// Adds the sums of `earlier`, a shard of the same settings and window, to `film`: a shard
+/// restarted after an interruption renders the rest of its range and adds what it had.
+/// InputError naming the file if the windows differ.
+void addShardSums(Film& film, const ShardFile& earlier);
 
 }  // namespace lamina::render
