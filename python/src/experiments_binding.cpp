@@ -81,6 +81,9 @@ py::object runExperiment(const std::string& name, const py::dict& keywords) {
     // holds what it had finished (Interrupted::partial; convergence's finished runs).
     std::atomic<bool>& interrupt = render::renderInterruptFlag();
     interrupt.store(false);
+    // The result's arrays are NumPy's: imported now, not after a Ctrl-C (an import of a second
+    // or so would delay the KeyboardInterrupt that carries a partial result).
+    py::module_::import("numpy");
     std::future<ex::Data> running =
         std::async(std::launch::async, [&] { return command.data(values, context); });
     bool interrupted = false;
