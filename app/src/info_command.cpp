@@ -73,8 +73,8 @@ void run(const std::string& file) {
                 s.lights, s.lights == 1 ? "" : "s");
     std::printf("materials:\n");
     for (const auto& m : s.materials)
-        std::printf("  %s: %s; lobes: %s%s\n", m.name.c_str(), m.type.c_str(), m.lobes.c_str(),
-                    m.used ? "" : " (unused)");
+        std::printf("  %s: %s; lobes: %s; polarised mode: %s%s\n", m.name.c_str(), m.type.c_str(),
+                    m.lobes.c_str(), m.polarisation.c_str(), m.used ? "" : " (unused)");
     for (const auto& name : scene.unusedMaterialNames)
         std::printf("  %s: unused (never loaded)\n", name.c_str());
     std::printf("textures: %zu loaded", scene.textures.size());

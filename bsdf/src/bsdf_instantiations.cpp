@@ -8,6 +8,7 @@
 #include "lamina/bsdf/diffuse_transmission.h"
 #include "lamina/bsdf/layered.h"
 #include "lamina/bsdf/material_builder.h"
+#include "lamina/bsdf/optical_sheet.h"
 #include "lamina/bsdf/thin_dielectric.h"
 
 namespace lamina {
@@ -23,6 +24,7 @@ LAMINA_INSTANTIATE_BSDF(ConductorBxdf)
 LAMINA_INSTANTIATE_BSDF(DielectricBxdf)
 LAMINA_INSTANTIATE_BSDF(DiffuseTransmissionBxdf)
 LAMINA_INSTANTIATE_BSDF(ThinDielectricBxdf)
+LAMINA_INSTANTIATE_BSDF(OpticalSheetBxdf)
 LAMINA_INSTANTIATE_BSDF(LayeredBxdf)
 LAMINA_INSTANTIATE_BSDF(MicrofacetReflectionLobe)
 LAMINA_INSTANTIATE_BSDF(MixBxdf)

@@ -16,7 +16,9 @@ bool transmits(const MaterialDesc& m) {
         [](const auto& x) -> bool {
             using M = std::decay_t<decltype(x)>;
             if constexpr (std::is_same_v<M, DielectricMaterial> ||
-                          std::is_same_v<M, ThinDielectricMaterial>)
+                          std::is_same_v<M, ThinDielectricMaterial> ||
+                          std::is_same_v<M, PolariserMaterial> ||
+                          std::is_same_v<M, RetarderMaterial>)
                 return true;
             if constexpr (std::is_same_v<M, DiffuseTransmissionMaterial>)
                 return x.transmittance.rgb.maxValue() > 0 || x.transmittance.spectrum;
@@ -41,7 +43,8 @@ MaterialModel readCoated(const JsonReader& r) {
     if (transmits(*c.base))
         r.failAt("base",
                  "expected a material without transmission (no dielectric or thin_dielectric, "
-                 "no diffuse_transmission, no standard or layered transmission)");
+                 "no diffuse_transmission, no polariser or retarder, no standard or layered "
+                 "transmission)");
     c.thickness = r.number("thickness", 0.0, {0.0, 1e3});
     c.albedo = readColor(r, "albedo", 0.0);
     c.g = r.number("g", 0.0, {-0.99, 0.99});

@@ -116,7 +116,8 @@ void conductorSpectra(const MaterialModel& model, std::vector<std::string>& out)
 
 }  // namespace
 
-extern const MaterialKind kConductorMaterial{"conductor",       readConductor,
+extern const MaterialKind kConductorMaterial{"conductor",
+                                             readConductor,
                                              R"json({
   "type": "object",
   "description": "A metal: named, eta and k (numbers, [r, g, b] or spectra), an n/k file, or f0 and f82.",
@@ -167,7 +168,14 @@ extern const MaterialKind kConductorMaterial{"conductor",       readConductor,
       "sampling": "vndf"
     }
   ]
-})json",          kConductorTextured,
-                                             texturedConductor, conductorSpectra};
+})json",
+                                             kConductorTextured,
+                                             texturedConductor,
+                                             conductorSpectra,
+                                             nullptr,
+                                             nullptr,
+                                             "polarising: the Fresnel amplitudes of its optics "
+                                             "on each microfacet (its multiple-scattering "
+                                             "compensation depolarises)"};
 
 }  // namespace lamina

@@ -140,7 +140,8 @@ void thinDielectricSpectra(const MaterialModel& model, std::vector<std::string>&
 
 }  // namespace
 
-extern const MaterialKind kDielectricMaterial{"dielectric",       readDielectric,
+extern const MaterialKind kDielectricMaterial{"dielectric",
+                                              readDielectric,
                                               R"json({
   "type": "object",
   "description": "Glass: ior as a number, a named glass or a dispersion formula, or an index file.",
@@ -181,8 +182,15 @@ extern const MaterialKind kDielectricMaterial{"dielectric",       readDielectric
     },
     {"type": "dielectric", "ior": {"cauchy": [1.5046, 0.0042]}}
   ]
-})json",           kDielectricTextured,
-                                              texturedDielectric, dielectricSpectra};
+})json",
+                                              kDielectricTextured,
+                                              texturedDielectric,
+                                              dielectricSpectra,
+                                              nullptr,
+                                              nullptr,
+                                              "polarising: the Fresnel amplitudes on each "
+                                              "microfacet, with the phase of total internal "
+                                              "reflection"};
 
 extern const MaterialKind kThinDielectricMaterial{"thin_dielectric", readThinDielectric,
                                                   R"json({

@@ -8,7 +8,8 @@ namespace lamina {
 
 extern const MaterialKind kStandardMaterial, kLambertMaterial, kOrenNayarMaterial, kBurleyMaterial,
     kFrostbiteMaterial, kConductorMaterial, kDiffuseTransmissionMaterial, kDielectricMaterial,
-    kThinDielectricMaterial, kPhongMaterial, kLayeredMaterial, kMixMaterial, kCoatedMaterial;
+    kThinDielectricMaterial, kPhongMaterial, kLayeredMaterial, kMixMaterial, kCoatedMaterial,
+    kPolariserMaterial, kRetarderMaterial;
 
 namespace {
 
@@ -27,6 +28,8 @@ const MaterialKind* const kMaterialKinds[] = {
     &kLayeredMaterial,
     &kMixMaterial,
     &kCoatedMaterial,
+    &kPolariserMaterial,
+    &kRetarderMaterial,
 };
 
 }  // namespace
@@ -45,6 +48,18 @@ const MaterialKind* findMaterialKind(std::string_view name) {
     const auto kind = std::find_if(std::begin(kMaterialKinds), std::end(kMaterialKinds),
                                    [&](const MaterialKind* k) { return k->name == name; });
     return kind == std::end(kMaterialKinds) ? nullptr : *kind;
+}
+
+bool needsOrientation(const MaterialDesc& m) {
+    const MaterialKind* kind = findMaterialKind(m.type);
+    return kind && kind->orient;
+}
+
+MaterialDesc orientedMaterial(const MaterialDesc& m, const Frame<double>& frame) {
+    MaterialDesc out = m;
+    if (const MaterialKind* kind = findMaterialKind(m.type); kind && kind->orient)
+        kind->orient(out.model, frame);
+    return out;
 }
 
 void collectSpectralData(const MaterialDesc& m, std::vector<std::string>& out) {

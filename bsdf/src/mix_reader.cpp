@@ -11,6 +11,12 @@ MaterialModel readMix(const JsonReader& r) {
     m.weight = r.number("weight", 0.5, Range::unit());
     m.a = std::make_shared<MaterialDesc>(parseMaterial(r.child("a")));
     m.b = std::make_shared<MaterialDesc>(parseMaterial(r.child("b")));
+    // A polariser's or retarder's axis is turned into each hit's frame at the top of the
+    // material only (material_kind.h, orient).
+    for (const char* key : {"a", "b"})
+        if (needsOrientation(key[0] == 'a' ? *m.a : *m.b))
+            r.failAt(key, "a " + (key[0] == 'a' ? m.a : m.b)->type +
+                              " is an optical sheet of its own: it cannot be mixed");
     return m;
 }
 
@@ -22,8 +28,9 @@ std::vector<const MaterialDesc*> mixNested(const MaterialModel& model) {
 }  // namespace
 
 // The registration of `mix` (material_kind.h; listed in material_kinds.cpp).
-extern const MaterialKind kMixMaterial{"mix",    readMix,
-                                       R"json({
+extern const MaterialKind kMixMaterial{
+    "mix",    readMix,
+    R"json({
   "type": "object",
   "description": "A stochastic blend of two materials: a with probability 1 - weight, b with weight.",
   "required": ["type"],
@@ -42,6 +49,6 @@ extern const MaterialKind kMixMaterial{"mix",    readMix,
       "b": {"type": "conductor", "material": "Cu"}
     }
   ]
-})json", {},      nullptr, nullptr, mixNested};
+})json", {},      nullptr, nullptr, mixNested, nullptr, "as its materials a and b"};
 
 }  // namespace lamina

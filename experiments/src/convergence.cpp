@@ -164,9 +164,6 @@ std::string renderedReferenceName(render::RenderModeKind mode) {
 }
 
 ConvergenceResult runConvergence(const ConvergenceInputs& in) {
-    for (const render::RenderModeKind m : in.modes)
-        for (const render::IntegratorKind i : in.integrators)
-            render::checkModeAndIntegrator(m, i);
     if (in.resume && in.keepDirectory.empty())
         throw std::logic_error("runConvergence: resume without a keepDirectory");
     const render::SceneDesc scene = render::loadScene(in.scene);

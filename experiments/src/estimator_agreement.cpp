@@ -11,18 +11,27 @@
 
 namespace lamina::experiments {
 
-void BatchImages::add(const render::Film& film) {
+template <typename PixelOf>
+void BatchImages::addPixels(PixelOf&& pixelOf) {
     std::vector<float> lum(std::size_t(width_) * height_);
     if (meanRgb_.empty()) meanRgb_.assign(lum.size(), Rgb<double>(0.0));
     const double k = double(batches_.size());
     for (int y = 0; y < height_; ++y)
         for (int x = 0; x < width_; ++x) {
             const std::size_t i = std::size_t(y) * width_ + x;
-            const Rgb<double> v = film.pixel(x, y);
+            const Rgb<double> v = pixelOf(x, y);
             lum[i] = float(luminance(v));
             meanRgb_[i] = (meanRgb_[i] * k + v) / (k + 1.0);
         }
     batches_.push_back(std::move(lum));
+}
+
+void BatchImages::add(const render::Film& film) {
+    addPixels([&](int x, int y) { return film.pixel(x, y); });
+}
+
+void BatchImages::addStokes(const render::Film& film, int component) {
+    addPixels([&](int x, int y) { return film.stokes(x, y)[std::size_t(component)]; });
 }
 
 double BatchImages::regionMean(std::size_t batch, int x0, int y0, int x1, int y1) const {

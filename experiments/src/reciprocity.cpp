@@ -66,8 +66,6 @@ void checkMaterials(const render::SceneDesc& scene, const SpectrumContext<S>& co
 }  // namespace
 
 ReciprocityResult runReciprocity(const ReciprocityInputs& in) {
-    for (const render::IntegratorKind i : in.integrators)
-        render::checkModeAndIntegrator(in.mode, i);
     const render::SceneDesc scene = render::loadScene(in.scene);
     ReciprocityResult result{in, {}, {}, {}, {}};
     render::RenderOptions o = in.overrides;

@@ -81,6 +81,26 @@ class RenderedImage {
         return d;
     }
 
+    /// The Stokes layers of a polarised render, (4, H, W, 3): S0..S3 in linear Rec.709, in the
+    /// image frame (docs/polarisation.md, "Stokes images"); None for the other modes.
+    py::object stokes() const {
+        const render::Film& film = *result_->film;
+        if (!film.hasStokes()) return py::none();
+        const py::ssize_t w = film.width(), h = film.height();
+        py::array_t<float> out({py::ssize_t(4), h, w, py::ssize_t(3)});
+        float* p = out.mutable_data();
+        const std::size_t layer = std::size_t(w) * std::size_t(h) * 3;
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const std::array<Rgb<double>, 4> s = film.stokes(x, y);
+                const std::size_t at = (std::size_t(y) * std::size_t(w) + std::size_t(x)) * 3;
+                for (std::size_t i = 0; i < 4; ++i)
+                    for (int c = 0; c < 3; ++c)
+                        p[i * layer + at + std::size_t(c)] = float(s[i][c]);
+            }
+        return out;
+    }
+
     /// Every "lamina:<key>" of the EXR, by key.
     py::dict metadata() const {
         py::dict d;
@@ -193,6 +213,9 @@ void bindRender(py::module_& m) {
     py::class_<RenderedImage>(m, "Image", "A render: rgb, aovs, metadata, save(path)")
         .def_property_readonly("rgb", &RenderedImage::rgb, "Linear Rec.709, (H, W, 3) float32")
         .def_property_readonly("aovs", &RenderedImage::aovs)
+        .def_property_readonly("stokes", &RenderedImage::stokes,
+                               "Polarised mode: S0..S3, (4, H, W, 3) float32 in the image frame; "
+                               "else None")
         .def_property_readonly("metadata", &RenderedImage::metadata)
         .def_property_readonly("spp", &RenderedImage::spp)
         .def_property_readonly("seconds", &RenderedImage::seconds)

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "bsdf_cases.h"
+#include "lamina/bsdf/optical_sheet.h"
 #include "lamina/core/pcg32.h"
 
 namespace lamina {
@@ -180,6 +181,66 @@ TEST(PolarisedDeltaLobes, ASmoothConductorRetardsAndItsFirstElementIsFresnel) {
         const double circular = std::hypot(m(3, 1)[c], m(3, 2)[c]);
         EXPECT_GT(circular, 0.05 * m(0, 0)[c]) << "channel " << c;
     }
+}
+
+// The optical sheets (optical_sheet.h): at normal incidence the frame of the light along +z
+// has x = (1, 0, 0) and y = (0, 1, 0) (stokesAxis), so a sheet whose axis is at theta in the
+// shading plane is the element at theta: linearPolariser(theta) times its transmittance, and
+// linearRetarder(theta, delta). Straight through, with [0][0] the unpolarised weight (T / 2
+// and 1). Running the light backwards through either gives the reciprocal matrix Q M^T Q in
+// the forward frames' x lines, at oblique incidence too.
+OpticalSheetBxdf<Spec> sheet(bool polariser, double theta) {
+    const Vec3d axis(std::cos(theta), std::sin(theta), 0.0);
+    using Element = OpticalSheetBxdf<Spec>::Element;
+    return polariser ? OpticalSheetBxdf<Spec>(Element::Polariser, axis, 0.8, 0.0)
+                     : OpticalSheetBxdf<Spec>(Element::Retarder, axis, 1.0, std::numbers::pi / 3);
+}
+
+TEST(PolarisedOpticalSheets, AtNormalIncidenceTheyAreTheirClosedFormsAtTheirAxesAngle) {
+    for (const bool polariser : {true, false})
+        for (const double theta : {0.0, 0.3, 1.2, -0.7, 2.0}) {
+            const auto bxdf = sheet(polariser, theta);
+            const Vec3d wo(0.0, 0.0, 1.0);
+            const auto s = bxdf.sample(wo, 0.5, {0.5, 0.5}, TransportMode::Radiance);
+            ASSERT_TRUE(s && s->isSpecular() && s->isTransmission());
+            EXPECT_EQ(s->wi, -wo);
+            EXPECT_NEAR(s->weight[1], polariser ? 0.4 : 1.0, 1e-12);
+            const Mueller m = bxdf.sampleMueller(wo, *s, TransportMode::Radiance);
+            const MuellerMatrix<double> expected =
+                polariser ? linearPolariser(theta) * 0.8
+                          : linearRetarder(theta, std::numbers::pi / 3);
+            for (int r = 0; r < 4; ++r)
+                for (int k = 0; k < 4; ++k)
+                    for (int c = 0; c < 3; ++c)
+                        EXPECT_NEAR(m(r, k)[c], expected(r, k), 1e-12)
+                            << (polariser ? "polariser" : "retarder") << " at " << theta
+                            << ", element " << r << k;
+        }
+}
+
+TEST(PolarisedOpticalSheets, RunningTheLightBackwardsGivesTheReciprocalMatrix) {
+    const Mueller q = Mueller::diagonal(Spec(1.0), Spec(1.0), Spec(-1.0), Spec(1.0));
+    Pcg32 rng(4);
+    for (const bool polariser : {true, false})
+        for (int i = 0; i < 50; ++i) {
+            const auto bxdf = sheet(polariser, 3.0 * rng.nextDouble());
+            Vec3d wo = randomDirection(rng);
+            if (std::abs(wo.z) < 0.05) continue;
+            const auto s = bxdf.sample(wo, 0.5, {0.5, 0.5}, TransportMode::Radiance);
+            ASSERT_TRUE(s);
+            const Vec3d wi = s->wi;  // -wo
+            const Mueller forward = bxdf.sampleMueller(wo, *s, TransportMode::Radiance);
+            const auto back = bxdf.sample(wi, 0.5, {0.5, 0.5}, TransportMode::Radiance);
+            ASSERT_TRUE(back);
+            const Mueller backward =
+                reframed(bxdf.sampleMueller(wi, *back, TransportMode::Radiance), -wo,
+                         stokesAxis(wo), wi, stokesAxis(-wi));
+            const Mueller expected = q * forward.transposed() * q;
+            for (int r = 0; r < 4; ++r)
+                for (int k = 0; k < 4; ++k)
+                    EXPECT_NEAR(backward(r, k)[0], expected(r, k)[0], 1e-9)
+                        << (polariser ? "polariser" : "retarder") << ", element " << r << k;
+        }
 }
 
 }  // namespace

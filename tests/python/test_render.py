@@ -154,3 +154,31 @@ def test_light_selection_and_every_override_the_command_line_has(cornell, lamina
     assert np.array_equal(img.rgb, cli)
     with pytest.raises(ValueError, match="light_selection: expected one of bvh, power, uniform"):
         lamina.render(cornell, light_selection="random")
+
+
+def _through_two_sheets(near):
+    """A lamp of radiance 1 seen through a polariser along the image's right and `near`."""
+    return {
+        "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0], "fov": 5},
+        "film": {"resolution": [4, 4]},
+        "materials": {"far": {"type": "polariser", "axis": [1, 0, 0]}, "near": near,
+                      "lamp": {"type": "lambert", "reflectance": 0}},
+        "shapes": [{"type": "rectangle", "material": "near"},
+                   {"type": "rectangle", "material": "far",
+                    "transform": [{"translate": [0, 0, -1]}]},
+                   {"type": "rectangle", "material": "lamp", "emission": {"radiance": 1},
+                    "transform": [{"translate": [0, 0, -2]}]}]}
+
+
+def test_a_polarised_render_returns_its_stokes_layers():
+    """Linear light along the image's right through a quarter-wave plate at 45 degrees is
+    circular: S3 = -S0 (docs/polarisation.md); the image is S0."""
+    scene = _through_two_sheets({"type": "retarder", "axis": [1, 1, 0], "retardance": 90})
+    img = lamina.render(scene, spp=2, mode="polarised")
+    s = img.stokes
+    assert s.dtype == np.float32 and s.shape == (4, 4, 4, 3)
+    np.testing.assert_array_equal(s[0], img.rgb)
+    np.testing.assert_allclose(s[0], 0.5, atol=1e-4)
+    np.testing.assert_allclose(s[1:3], 0.0, atol=1e-4)
+    np.testing.assert_allclose(s[3], -0.5, atol=1e-4)
+    assert lamina.render(scene, spp=1, mode="spectral").stokes is None

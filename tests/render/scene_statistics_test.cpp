@@ -1,7 +1,7 @@
 // What `lamina info` counts (scene_statistics.h): shapes, emitting shapes and the area lights
 // they become, materials with
-// their lobes and whether a shape uses them, the spectral data of the used ones, and the film's
-// memory at the scene's resolution.
+// their lobes, what the polarised mode makes of them and whether a shape uses them, the
+// spectral data of the used ones, and the film's memory at the scene's resolution.
 #include <gtest/gtest.h>
 
 #include "lamina/core/json_reader.h"
@@ -43,6 +43,12 @@ TEST(SceneStatistics, CountsWhatTheSceneHolds) {
     for (const auto& m : s.materials) {
         EXPECT_FALSE(m.lobes.empty()) << m.name;
         EXPECT_EQ(m.used, m.name != "spare") << m.name;
+        // What the polarised mode makes of each (docs/polarisation.md): the conductors
+        // polarise by their Fresnel amplitudes, the diffuse lobe is an ideal depolariser.
+        EXPECT_EQ(m.polarisation.starts_with("polarising"), m.type == "conductor") << m.name;
+        if (m.type == "lambert") {
+            EXPECT_EQ(m.polarisation, "an ideal depolariser");
+        }
     }
     // The used conductor's n, k; the unused one's not.
     ASSERT_EQ(s.spectralData.size(), 1u);

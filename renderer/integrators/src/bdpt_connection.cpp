@@ -13,7 +13,7 @@ S BdptConnector<S>::evalAt(const Vertex& v, const Vec3f& wPrev, const Vec3f& wNe
                            bool lightSubpath, typename Mode::Path& path) const {
     if (!sidesAgree(wPrev, wNext, v.ng, v.ns)) return S(0.0f);
     const Frame<float> frame = Frame<float>::fromNormal(v.ns);
-    const Bxdf<S>& bsdf = mode_.bsdf(v.material, v.uv, path);
+    const Bxdf<S>& bsdf = mode_.bsdf(v.material, v.uv, frame, path);
     const Vec3f prev = frame.toLocal(wPrev), next = frame.toLocal(wNext);
     if (!lightSubpath) return bsdf.eval(prev, next, TransportMode::Radiance);
     S f = ablations_.connectionBsdf(bsdf, prev, next);
@@ -70,7 +70,10 @@ BdptConnection<S> BdptConnector<S>::connect(const std::vector<Vertex>& lightPath
         const Vec3f wPrev = directionTo(lv, lightPath[std::size_t(s - 2)]);
         const S f = evalAt(lv, wPrev, cc->wi, true, path);
         if (f.maxValue() <= 0.0f) return result;
-        value = lv.beta * f * sampled.beta;
+        // f before the light prefix: in the polarised mode a light subpath's matrices act in
+        // the order light meets them (docs/polarisation.md, "Light paths").
+        value = f * lv.beta * sampled.beta;
+        result.toLens = cc->wi;
         if (!unoccluded(lv, sampled, stats)) return BdptConnection<S>{};
     } else if (s == 1) {
         // Next-event estimation: a fresh point on a light.
@@ -132,5 +135,6 @@ BdptConnection<S> BdptConnector<S>::connect(const std::vector<Vertex>& lightPath
 
 template class BdptConnector<Rgb<float>>;
 template class BdptConnector<SampledSpectrum<float>>;
+template class BdptConnector<PolarisedSpectrum>;
 
 }  // namespace lamina::render

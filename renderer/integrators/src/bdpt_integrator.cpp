@@ -23,7 +23,7 @@ std::optional<CameraEstimate<S>> BdptIntegrator<S>::sample(const PixelSample<S>&
     thread_local std::vector<Vertex> cameraPath, lightPath;
     cameraPath.clear();
     lightPath.clear();
-    generateCameraSubpath(cs, ps.sampler, ps.path, cameraPath, ps.stats);
+    const Vec3f rayDirection = generateCameraSubpath(cs, ps.sampler, ps.path, cameraPath, ps.stats);
     generateLightSubpath(ps.sampler, ps.path, lightPath, ps.stats);
 
     S L(0.0f);
@@ -39,7 +39,8 @@ std::optional<CameraEstimate<S>> BdptIntegrator<S>::sample(const PixelSample<S>&
             if (c.contribution.maxValue() <= 0.0f || !c.contribution.isFinite()) continue;
             const S weighted = c.contribution * c.misWeight;
             if (t == 1)
-                splatFiltered(ps.film, filter_, c.splatAt, mode_.filmValue(weighted, ps.path));
+                splatContribution(ps.film, filter_, c.splatAt, mode_, weighted, c.toLens,
+                                  c_.camera.imageRight(), ps.path);
             else
                 L += weighted;
             if (strategies_)
@@ -49,7 +50,7 @@ std::optional<CameraEstimate<S>> BdptIntegrator<S>::sample(const PixelSample<S>&
         }
     }
     if (strategies_) strategies_->addWeight(ps.x, ps.y, cs.filterWeight);
-    return CameraEstimate<S>{L, cs.filterWeight, std::nullopt};
+    return CameraEstimate<S>{L, cs.filterWeight, std::nullopt, rayDirection};
 }
 
 template <SpectrumType S>
@@ -68,9 +69,9 @@ void BdptIntegrator<S>::recordStrategy(int s, int t, const Rgb<double>& weighted
 }
 
 template <SpectrumType S>
-void BdptIntegrator<S>::generateCameraSubpath(const CameraSample& cs, PixelSampler& sampler,
-                                              typename Mode::Path& path, std::vector<Vertex>& out,
-                                              PathStatistics& stats) const {
+Vec3f BdptIntegrator<S>::generateCameraSubpath(const CameraSample& cs, PixelSampler& sampler,
+                                               typename Mode::Path& path, std::vector<Vertex>& out,
+                                               PathStatistics& stats) const {
     const auto ray = c_.camera.generateRay(cs.raster.x, cs.raster.y, cs.lens);
     Vertex v;
     v.type = BdptVertexType::Camera;
@@ -83,6 +84,7 @@ void BdptIntegrator<S>::generateCameraSubpath(const CameraSample& cs, PixelSampl
     // Parallel rays (orthographic): the first vertex's density is the film's, projected.
     if (c_.camera.parallel() && out.size() > 1 && !out[1].infinite)
         out[1].pdfFwd = c_.camera.parallelPdf(out[1].ng, out[1].onSurface());
+    return ray.direction;
 }
 
 template <SpectrumType S>
@@ -154,14 +156,19 @@ void BdptIntegrator<S>::randomWalk(Vec3f o, Vec3f d, S beta, float pdfDir, int m
         Vertex& before = out[out.size() - 2];
         if (surfaces + 1 >= maxSurfaces) return;
 
-        const Bxdf<S>& bsdf = mode_.bsdf(cur.material, cur.uv, path);
         const ShadingPoint at(cur.p, cur.ng, cur.ns, -d, c_.geometry.rayOffsetScale());
+        const Bxdf<S>& bsdf = mode_.bsdf(cur.material, cur.uv, at.frame, path);
         const auto step =
             scatter(bsdf, at, bsdfMode, surfaces + 1, settings_.russianRouletteDepth, sampler, beta,
                     [&](S& b, const BsdfSample<S>& s, const Vec3f& wi) {
-                        b *= s.weight;
-                        if (lightPath)
+                        // A light subpath's matrices act in the order light meets them (the
+                        // same product for the other modes' spectra, bit for bit).
+                        if (lightPath) {
+                            b = s.weight * b;
                             b *= ablations_.adjointCorrection(at.woWorld, wi, cur.ng, cur.ns);
+                        } else {
+                            b *= s.weight;
+                        }
                         // The densities of this scattering both ways, for the MIS weights.
                         float pdfRev;
                         if (s.isSpecular()) {
@@ -182,5 +189,6 @@ void BdptIntegrator<S>::randomWalk(Vec3f o, Vec3f d, S beta, float pdfDir, int m
 
 template class BdptIntegrator<Rgb<float>>;
 template class BdptIntegrator<SampledSpectrum<float>>;
+template class BdptIntegrator<PolarisedSpectrum>;
 
 }  // namespace lamina::render

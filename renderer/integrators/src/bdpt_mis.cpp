@@ -68,7 +68,7 @@ float BdptMisWeights<S>::pdf(const Vertex& v, const Vertex* prev, const Vertex& 
                                     : toArea(c_.camera.rayPdf(wn).direction, v, next);
     const Frame<float> frame = Frame<float>::fromNormal(v.ns);
     const Vec3f wp = directionTo(v, *prev);
-    const Bxdf<S>& bsdf = mode_.bsdf(v.material, v.uv, path);
+    const Bxdf<S>& bsdf = mode_.bsdf(v.material, v.uv, frame, path);
     return toArea(bsdf.pdf(frame.toLocal(wp), frame.toLocal(wn)), v, next);
 }
 
@@ -157,5 +157,6 @@ float BdptMisWeights<S>::weight(const std::vector<Vertex>& lightPath, int s,
 
 template class BdptMisWeights<Rgb<float>>;
 template class BdptMisWeights<SampledSpectrum<float>>;
+template class BdptMisWeights<PolarisedSpectrum>;
 
 }  // namespace lamina::render

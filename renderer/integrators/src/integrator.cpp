@@ -30,17 +30,10 @@ std::unique_ptr<Integrator<S>> makeIntegrator(const IntegratorSetup<S>& setup) {
     throw std::logic_error("makeIntegrator: an integrator kind without an integrator");
 }
 
-/// The polarised mode runs the path integrator: light tracing and BDPT need the adjoint
-/// Mueller matrices (docs/polarisation.md), which they do not have yet.
-template <>
-std::unique_ptr<Integrator<PolarisedSpectrum>> makeIntegrator(
-    const IntegratorSetup<PolarisedSpectrum>& setup) {
-    checkModeAndIntegrator(RenderModeKind::Polarised, setup.settings.integrator);
-    return std::make_unique<PathIntegrator<PolarisedSpectrum>>(setup);
-}
-
 template std::unique_ptr<Integrator<Rgb<float>>> makeIntegrator(const IntegratorSetup<Rgb<float>>&);
 template std::unique_ptr<Integrator<SampledSpectrum<float>>> makeIntegrator(
     const IntegratorSetup<SampledSpectrum<float>>&);
+template std::unique_ptr<Integrator<PolarisedSpectrum>> makeIntegrator(
+    const IntegratorSetup<PolarisedSpectrum>&);
 
 }  // namespace lamina::render

@@ -42,7 +42,8 @@ void LightIntegrator<S>::traceParticle(PixelSampler& sampler, typename Mode::Pat
                 const S value =
                     mode_.emission(toCamera, path) *
                     (cosLight * cc->importance / (cc->pdf * particle->pmf * e.pdfPosition));
-                splatFiltered(film, filter_, cc->raster, mode_.filmValue(value, path));
+                splatContribution(film, filter_, cc->raster, mode_, value, cc->wi,
+                                  c_.camera.imageRight(), path);
             }
         }
     }
@@ -57,9 +58,9 @@ void LightIntegrator<S>::traceParticle(PixelSampler& sampler, typename Mode::Pat
         const auto hit = c_.geometry.intersect(o, d);
         if (!hit) break;
         const ShapeInfo& shape = c_.geometry.shapes()[std::size_t(hit->shape)];
-        const Bxdf<S>& bsdf = mode_.bsdf(shape.material, hit->uv, path);
         const ShadingPoint at(hit->p, hit->ng, hit->ns, -d,
                               c_.geometry.rayOffsetScale());  // wo towards the light's side
+        const Bxdf<S>& bsdf = mode_.bsdf(shape.material, hit->uv, at.frame, path);
 
         // Connection to the camera.
         const Vec2f uCamera = sampler.get2DIfUsed(!c_.camera.isPinhole());
@@ -71,20 +72,23 @@ void LightIntegrator<S>::traceParticle(PixelSampler& sampler, typename Mode::Pat
                             ablations_.adjointCorrection(at.woWorld, cc->wi, hit->ng, hit->ns);
                 if (f.maxValue() > 0.0f && segmentUnoccluded(c_.geometry, hit->p, hit->ng,
                                                              cc->lensPoint, Vec3f(0.0f), stats)) {
-                    const S value = beta * f * (cc->importance / cc->pdf);
-                    splatFiltered(film, filter_, cc->raster, mode_.filmValue(value, path));
+                    // f before beta: in the polarised mode the light path's matrices act
+                    // in the order light meets them (docs/polarisation.md, "Light paths").
+                    const S value = f * beta * (cc->importance / cc->pdf);
+                    splatContribution(film, filter_, cc->raster, mode_, value, cc->wi,
+                                      c_.camera.imageRight(), path);
                 }
             }
         }
         if (bounces == settings_.maxDepth) break;
 
         // Russian roulette on the throughput relative to the particle's start.
-        const auto step = scatter(bsdf, at, mode, bounces, settings_.russianRouletteDepth, sampler,
-                                  beta, [&](S& b, const BsdfSample<S>& s, const Vec3f& wi) {
-                                      b *= s.weight * ablations_.adjointCorrection(
-                                                          at.woWorld, wi, hit->ng, hit->ns);
-                                      return b.maxValue() / beta0;
-                                  });
+        const auto step = scatter(
+            bsdf, at, mode, bounces, settings_.russianRouletteDepth, sampler, beta,
+            [&](S& b, const BsdfSample<S>& s, const Vec3f& wi) {
+                b = s.weight * ablations_.adjointCorrection(at.woWorld, wi, hit->ng, hit->ns) * b;
+                return b.maxValue() / beta0;
+            });
         if (!step.next) break;
         o = step.next->origin;
         d = step.next->direction;
@@ -93,5 +97,6 @@ void LightIntegrator<S>::traceParticle(PixelSampler& sampler, typename Mode::Pat
 
 template class LightIntegrator<Rgb<float>>;
 template class LightIntegrator<SampledSpectrum<float>>;
+template class LightIntegrator<PolarisedSpectrum>;
 
 }  // namespace lamina::render

@@ -36,5 +36,8 @@ template std::optional<ParticleStart<Rgb<float>>> startParticle(const LightSet&,
 template std::optional<ParticleStart<SampledSpectrum<float>>> startParticle(
     const LightSet&, const Geometry&, const RenderMode<SampledSpectrum<float>>&, PixelSampler&,
     RenderMode<SampledSpectrum<float>>::Path&);
+template std::optional<ParticleStart<PolarisedSpectrum>> startParticle(
+    const LightSet&, const Geometry&, const RenderMode<PolarisedSpectrum>&, PixelSampler&,
+    RenderMode<PolarisedSpectrum>::Path&);
 
 }  // namespace lamina::render

@@ -25,7 +25,7 @@ template <SpectrumType S>
 std::optional<CameraEstimate<S>> PathIntegrator<S>::sample(const PixelSample<S>& ps) const {
     const CameraSample cs = sampleCamera(filter_, c_.camera, ps.sampler, ps.x, ps.y);
     const auto ray = c_.camera.generateRay(cs.raster.x, cs.raster.y, cs.lens);
-    CameraEstimate<S> estimate{S(0.0f), cs.filterWeight, std::nullopt};
+    CameraEstimate<S> estimate{S(0.0f), cs.filterWeight, std::nullopt, ray.direction};
     if (aovs_) estimate.aovs.emplace();
     estimate.value = radiance(ray.origin, ray.direction, ps.sampler, ps.path, ps.stats,
                               estimate.aovs ? &*estimate.aovs : nullptr);

@@ -18,6 +18,12 @@ void writeExr(const std::filesystem::path& path, const Film& film, bool aovs,
     else if (variance)
         channels.push_back("Variance.Y");
     if (variance) channels.insert(channels.end(), {"Variance.R", "Variance.G", "Variance.B"});
+    // The polarised mode's Stokes layers last (docs/polarisation.md, "Stokes images").
+    const std::size_t stokesAt = channels.size();
+    if (film.hasStokes())
+        for (const char* s : {"S0", "S1", "S2", "S3"})
+            for (const char* c : {".R", ".G", ".B"})
+                channels.push_back(std::string(s) + c);
     const std::size_t nc = channels.size();
     std::vector<float> data(std::size_t(w) * h * nc);
     ImageToWrite image = floatImage(w, h, channels, data, metadata);
@@ -39,7 +45,13 @@ void writeExr(const std::filesystem::path& path, const Film& film, bool aovs,
             if (variance) {
                 const Rgb<double> var = film.varianceOfMeanRgb(x, y);
                 for (int c = 0; c < 3; ++c)
-                    p[nc - 3 + std::size_t(c)] = float(var[c]);
+                    p[stokesAt - 3 + std::size_t(c)] = float(var[c]);
+            }
+            if (film.hasStokes()) {
+                const std::array<Rgb<double>, 4> s = film.stokes(x, y);
+                for (std::size_t i = 0; i < 4; ++i)
+                    for (std::size_t c = 0; c < 3; ++c)
+                        p[stokesAt + 3 * i + c] = float(s[i][int(c)]);
             }
             if (!aovs) {
                 if (variance) p[3] = float(film.varianceOfMean(x, y));

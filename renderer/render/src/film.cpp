@@ -56,6 +56,52 @@ bool Film::addSample(int x, int y, const Rgb<double>& value, double weight) {
     return accumulate(x, y, v, weight);
 }
 
+bool Film::addPolarisedSample(int x, int y, const std::array<Rgb<double>, 4>& stokes,
+                              double weight) {
+    if (!window_.contains(x, y)) return false;
+    for (int i = 1; i < 4; ++i)
+        if (!stokes[std::size_t(i)].isFinite()) {
+            rejected_.fetch_add(1, std::memory_order_relaxed);
+            return false;
+        }
+    if (!addSample(x, y, stokes[0], weight)) return false;
+    StokesSums& sums = stokes_[std::size_t(y - window_.y0) * width_ + std::size_t(x - window_.x0)];
+    for (std::size_t i = 0; i < 3; ++i)
+        sums[i] += response_.applyAlongside(stokes[0], stokes[i + 1]) * weight;
+    return true;
+}
+
+bool Film::addPolarisedSplat(int x, int y, const std::array<Rgb<double>, 4>& stokes,
+                             double weight) {
+    if (!window_.contains(x, y)) return false;
+    for (int i = 1; i < 4; ++i)
+        if (!stokes[std::size_t(i)].isFinite()) {
+            rejected_.fetch_add(1, std::memory_order_relaxed);
+            return false;
+        }
+    if (!addSplat(x, y, stokes[0], weight)) return false;
+    StokesSums& target =
+        stokesSplatIteration_[std::size_t(y - window_.y0) * width_ + std::size_t(x - window_.x0)];
+    for (std::size_t i = 0; i < 3; ++i) {
+        const Rgb<double> v = response_.applyAlongside(stokes[0], stokes[i + 1]) * weight;
+        for (int c = 0; c < 3; ++c)
+            std::atomic_ref<double>(target[i][c]).fetch_add(v[c], std::memory_order_relaxed);
+    }
+    return true;
+}
+
+std::array<Rgb<double>, 4> Film::stokes(int x, int y) const {
+    const Pixel& p = at(x, y);
+    const std::size_t i = std::size_t(y) * width_ + std::size_t(x);
+    std::array<Rgb<double>, 4> s{pixel(x, y), Rgb<double>(0.0), Rgb<double>(0.0), Rgb<double>(0.0)};
+    for (std::size_t k = 0; k < 3; ++k) {
+        Rgb<double> v = p.weightSum > 0 ? stokes_[i][k] / p.weightSum : Rgb<double>(0.0);
+        if (p.splatCount > 0) v += stokesSplatSum_[i][k] / double(p.splatCount);
+        s[k + 1] = toRec709(v);
+    }
+    return s;
+}
+
 bool Film::accumulate(int x, int y, const Rgb<double>& value, double weight) {
     Pixel& p = at(x - window_.x0, y - window_.y0);
     p.sum += value * weight;
@@ -115,6 +161,11 @@ void Film::endSplatIteration(double scale) {
         const Rgb<double> rgb = toRec709(v);
         p.splatSqSum += rgb * rgb;
         ++p.splatCount;
+        if (hasStokes())
+            for (std::size_t k = 0; k < 3; ++k) {
+                stokesSplatSum_[i][k] += stokesSplatIteration_[i][k] * scale;
+                stokesSplatIteration_[i][k] = Rgb<double>(0.0);
+            }
     }
     ++splatIterations_;
 }

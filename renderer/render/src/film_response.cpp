@@ -23,11 +23,23 @@ FilmResponse::FilmResponse(const FilmDesc& film, FilmSpace space)
 Rgb<double> FilmResponse::apply(const Rgb<double>& v) const {
     if (identity_) return v;
     Vec3d c(v[0] * scale_, v[1] * scale_, v[2] * scale_);
-    if (maxComponent_) {
-        const Vec3d xyz = toXyz_ * c;
-        const double m = std::max({xyz.x, xyz.y, xyz.z});
-        if (m > *maxComponent_) c *= *maxComponent_ / m;
-    }
+    // Multiplying by a ratio of 1 changes no bit.
+    if (maxComponent_) c *= clampRatio(c);
+    if (balance_) c = *balance_ * c;
+    return {c.x, c.y, c.z};
+}
+
+double FilmResponse::clampRatio(const Vec3d& c) const {
+    if (!maxComponent_) return 1.0;
+    const Vec3d xyz = toXyz_ * c;
+    const double m = std::max({xyz.x, xyz.y, xyz.z});
+    return m > *maxComponent_ ? *maxComponent_ / m : 1.0;
+}
+
+Rgb<double> FilmResponse::applyAlongside(const Rgb<double>& v, const Rgb<double>& other) const {
+    if (identity_) return other;
+    const double k = scale_ * clampRatio(Vec3d(v[0] * scale_, v[1] * scale_, v[2] * scale_));
+    Vec3d c(other[0] * k, other[1] * k, other[2] * k);
     if (balance_) c = *balance_ * c;
     return {c.x, c.y, c.z};
 }

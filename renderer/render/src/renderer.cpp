@@ -47,6 +47,8 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
     Geometry geometry(scene);
     const LightSet lights(scene, geometry, settings.lightSelection);
     const Camera camera(scene.camera, width, height);
+    const Vec3f imageRight = camera.imageRight();
+    if constexpr (std::is_same_v<S, PolarisedSpectrum>) film.enableStokes();
     const PixelFilter filter(scene.film);
     const RenderMode<S> mode(scene, settings.seed);
     const SceneContext context{scene, geometry, lights, camera};
@@ -79,7 +81,12 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
         auto path = mode.startPath(sampler);
         const auto estimate = integrator->sample({x, y, sampler, path, film, stats});
         if (!estimate) return;
-        film.addSample(x, y, mode.filmValue(estimate->value, path), estimate->filterWeight);
+        if constexpr (std::is_same_v<S, PolarisedSpectrum>)
+            film.addPolarisedSample(
+                x, y, mode.filmStokes(estimate->value, estimate->rayDirection, imageRight, path),
+                estimate->filterWeight);
+        else
+            film.addSample(x, y, mode.filmValue(estimate->value, path), estimate->filterWeight);
         if (estimate->aovs) film.addAovs(x, y, *estimate->aovs);
     };
     // Samples [first, first + count) of every pixel, tile by tile in parallel.
@@ -165,13 +172,6 @@ RenderOptions withCrop(const RenderOptions& options, const PixelBounds& crop) {
 
 }  // namespace
 
-void checkModeAndIntegrator(RenderModeKind mode, IntegratorKind integrator) {
-    if (mode == RenderModeKind::Polarised && integrator != IntegratorKind::Path)
-        throw InputError("the polarised mode renders with the path integrator only (" +
-                         std::string(kIntegratorNames.name(integrator)) +
-                         " is not polarised yet): use --integrator path");
-}
-
 RenderResult renderScene(const SceneDesc& scene, const RenderOptions& options,
                          const std::function<void(const RenderProgress&)>& progress) {
     RenderSettings settings = scene.settings;
@@ -217,7 +217,12 @@ RenderResult renderScene(const SceneDesc& scene, const RenderOptions& options,
         width, height,
         options.resolution ? "--resolution" : scene.file.string() + ": film.resolution");
 
-    checkModeAndIntegrator(options.mode, settings.integrator);
+    if (scene.camera.analyserDegrees && options.mode != RenderModeKind::Polarised)
+        throw InputError(scene.file.string() +
+                         ": camera.analyser: a polariser in front of the lens needs --mode "
+                         "polarised (the " +
+                         std::string(kRenderModeNames.name(options.mode)) +
+                         " mode renders unpolarised light)");
     std::optional<tbb::global_control> threads;
     if (options.threads > 0)
         threads.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(options.threads));

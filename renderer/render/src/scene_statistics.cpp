@@ -70,8 +70,10 @@ SceneStatistics sceneStatistics(const SceneDesc& scene) {
     const SpectrumContext<Rgb<float>> context;
     for (std::size_t i = 0; i < scene.materials.size(); ++i) {
         const auto bsdf = buildBxdf(scene.materials[i], context);
+        const MaterialKind* kind = findMaterialKind(scene.materials[i].type);
         s.materials.push_back({scene.materialNames[i], scene.materials[i].type,
-                               describeLobes(bsdf->flags()), used[i]});
+                               describeLobes(bsdf->flags()), used[i],
+                               kind ? std::string(kind->polarisation) : std::string()});
         if (used[i]) collectSpectralData(scene.materials[i], s.spectralData);
     }
     return s;

@@ -27,6 +27,8 @@ void readOrthographic(const JsonReader& r, CameraDesc& c) {
 CameraDesc readCamera(const JsonReader& r) {
     r.expectObject();
     CameraDesc c;
+    // Any angle is an axis; [-180, 180] keeps typing errors (radians times 100) out.
+    c.analyserDegrees = r.optionalNumber("analyser", {-180.0, 180.0});
     r.noteNames("type", kCameraKindNames.names());
     const std::string type = r.string("type", "perspective");
     const auto kind = kCameraKindNames.find(type);

@@ -178,9 +178,25 @@ struct CoatedMaterial {
     int samples = 1;
 };
 
-using MaterialModel = std::variant<StandardMaterial, DiffuseMaterial, ConductorMaterial,
-                                   DielectricMaterial, PhongMaterial, MixMaterial, CoatedMaterial,
-                                   DiffuseTransmissionMaterial, ThinDielectricMaterial>;
+/// `polariser`: an ideal linear polariser sheet (optical_sheet.h). `axis`: the transmission
+/// axis, in the world as the scene gives it, in the shading frame once the polarised mode has
+/// turned it (MaterialKind::orient); unit length.
+struct PolariserMaterial {
+    Vec3d axis{1, 0, 0};
+    double transmittance = 1;  ///< of light polarised along the axis
+};
+
+/// `retarder`: an ideal linear retarder sheet, a wave plate (optical_sheet.h). `axis`: the fast
+/// axis, as PolariserMaterial's.
+struct RetarderMaterial {
+    Vec3d axis{1, 0, 0};
+    double retardanceDegrees = 90;  ///< the slow component's lag, at every wavelength
+};
+
+using MaterialModel =
+    std::variant<StandardMaterial, DiffuseMaterial, ConductorMaterial, DielectricMaterial,
+                 PhongMaterial, MixMaterial, CoatedMaterial, DiffuseTransmissionMaterial,
+                 ThinDielectricMaterial, PolariserMaterial, RetarderMaterial>;
 
 struct MaterialDesc {
     std::string type;  ///< the JSON "type", for messages and `lamina info`

@@ -12,6 +12,7 @@
 #include "lamina/bsdf/layered.h"
 #include "lamina/bsdf/material.h"
 #include "lamina/bsdf/mix.h"
+#include "lamina/bsdf/optical_sheet.h"
 #include "lamina/bsdf/spectrum_context.h"
 #include "lamina/bsdf/thin_dielectric.h"
 
@@ -72,6 +73,18 @@ class MaterialBuilder {
     std::unique_ptr<Bxdf<S>> buildModel(const ThinDielectricMaterial& t) const {
         return std::make_unique<ThinDielectricBxdf<S>>(
             t.spectrum ? ctx_.indexPerChannel(*t.spectrum) : S(Float(t.ior)));
+    }
+
+    std::unique_ptr<Bxdf<S>> buildModel(const PolariserMaterial& p) const {
+        return std::make_unique<OpticalSheetBxdf<S>>(OpticalSheetBxdf<S>::Element::Polariser,
+                                                     Vec3<Float>(p.axis), Float(p.transmittance),
+                                                     Float(0));
+    }
+
+    std::unique_ptr<Bxdf<S>> buildModel(const RetarderMaterial& r) const {
+        return std::make_unique<OpticalSheetBxdf<S>>(
+            OpticalSheetBxdf<S>::Element::Retarder, Vec3<Float>(r.axis), Float(1),
+            Float(r.retardanceDegrees * kPi<double> / 180.0));
     }
 
     std::unique_ptr<Bxdf<S>> buildModel(const PhongMaterial& p) const {
@@ -298,6 +311,7 @@ LAMINA_EXTERN_BSDF_VARIANTS(ConductorBxdf)
 LAMINA_EXTERN_BSDF_VARIANTS(DielectricBxdf)
 LAMINA_EXTERN_BSDF_VARIANTS(DiffuseTransmissionBxdf)
 LAMINA_EXTERN_BSDF_VARIANTS(ThinDielectricBxdf)
+LAMINA_EXTERN_BSDF_VARIANTS(OpticalSheetBxdf)
 LAMINA_EXTERN_BSDF_VARIANTS(LayeredBxdf)
 LAMINA_EXTERN_BSDF_VARIANTS(MicrofacetReflectionLobe)
 LAMINA_EXTERN_BSDF_VARIANTS(MixBxdf)

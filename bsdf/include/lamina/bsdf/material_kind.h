@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "lamina/bsdf/material.h"
+#include "lamina/core/frame.h"
 
 namespace lamina {
 
@@ -54,6 +55,13 @@ struct MaterialKind {
     void (*spectralData)(const MaterialModel&, std::vector<std::string>&) = nullptr;
     /// The materials inside a model of this type (mix: a and b; coated: its base); null: none.
     std::vector<const MaterialDesc*> (*nested)(const MaterialModel&) = nullptr;
+    /// Turns the world directions of a model of this type into the shading frame `frame` of a
+    /// hit (the axes of the polariser and retarder, which only the polarised mode sees); null:
+    /// the type has none.
+    void (*orient)(MaterialModel&, const Frame<double>& frame) = nullptr;
+    /// What the polarised mode makes of this type, as `lamina info` says it
+    /// (docs/polarisation.md, "What each material does").
+    std::string_view polarisation = "an ideal depolariser";
 
     /// The parameter `key` takes from a texture, if it may be textured.
     std::optional<TexturedParameter> texturedParameter(std::string_view key) const;
@@ -63,6 +71,11 @@ struct MaterialKind {
 std::span<const MaterialKind* const> materialKinds();
 /// The type called `name`; nullptr if there is none.
 const MaterialKind* findMaterialKind(std::string_view name);
+/// Whether `m` has world directions to turn into each hit's shading frame (orient).
+bool needsOrientation(const MaterialDesc& m);
+/// `m` with its world directions turned into the shading frame `frame` (a copy; `m` itself
+/// if it has none).
+MaterialDesc orientedMaterial(const MaterialDesc& m, const Frame<double>& frame);
 /// The spectral data of `m` and of every material nested in it, for `lamina info`.
 void collectSpectralData(const MaterialDesc& m, std::vector<std::string>& out);
 

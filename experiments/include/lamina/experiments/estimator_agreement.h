@@ -19,6 +19,9 @@ class BatchImages {
   public:
     BatchImages(int width, int height) : width_(width), height_(height) {}
     void add(const render::Film& film);
+    /// Adds the batch's Stokes component S_component (0..3) of a polarised render (the film's
+    /// Stokes layers; S0 is the image) instead of the image: its luminance, signed.
+    void addStokes(const render::Film& film, int component);
 
     int width() const { return width_; }
     int height() const { return height_; }
@@ -37,6 +40,8 @@ class BatchImages {
     }
 
   private:
+    template <typename PixelOf>
+    void addPixels(PixelOf&& pixelOf);
     double regionMean(std::size_t batch, int x0, int y0, int x1, int y1) const;
     int width_, height_;
     std::vector<std::vector<float>> batches_;  ///< luminance per batch

@@ -5,7 +5,9 @@
 //   t = 1       light vertex s-1 connected to the lens (light tracing), to be splatted;
 //   s, t >= 2   a deterministic connection of the two subpath ends, with a shadow ray.
 // Light-subpath vertices evaluate the adjoint BSDF with the shading-normal correction
-// (transport_ablations.h), camera-subpath vertices the BSDF.
+// (transport_ablations.h), camera-subpath vertices the BSDF. A contribution is the camera
+// prefix, the connection and the light prefix multiplied in that order, which the polarised
+// mode's matrices need (docs/polarisation.md, "Light paths").
 #pragma once
 
 #include <vector>
@@ -20,6 +22,7 @@ struct BdptConnection {
     S contribution{0.0f};  ///< unweighted
     float misWeight = 0.0f;
     Vec2f splatAt{0.0f};  ///< the film position of a t = 1 strategy
+    Vec3f toLens{0.0f};   ///< t = 1: the direction the light reaches the lens along
 };
 
 template <SpectrumType S>

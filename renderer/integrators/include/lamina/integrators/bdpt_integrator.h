@@ -25,9 +25,10 @@ class BdptIntegrator final : public Integrator<S> {
     std::optional<CameraEstimate<S>> sample(const PixelSample<S>& sample) const override;
 
   private:
-    void generateCameraSubpath(const CameraSample& cs, PixelSampler& sampler,
-                               typename Mode::Path& path, std::vector<Vertex>& out,
-                               PathStatistics& stats) const;
+    /// Returns the camera ray's direction.
+    Vec3f generateCameraSubpath(const CameraSample& cs, PixelSampler& sampler,
+                                typename Mode::Path& path, std::vector<Vertex>& out,
+                                PathStatistics& stats) const;
     void generateLightSubpath(PixelSampler& sampler, typename Mode::Path& path,
                               std::vector<Vertex>& out, PathStatistics& stats) const;
     void randomWalk(Vec3f o, Vec3f d, S beta, float pdfDir, int maxSurfaces, TransportMode mode,

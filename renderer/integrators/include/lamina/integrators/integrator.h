@@ -9,19 +9,20 @@
 //      the mode's film value and the filter weight), its AOVs with it.
 // An integrator that splats is run one sample per pixel at a time, each such iteration ending
 // with Film::endSplatIteration (the splat layer's variance is estimated per iteration).
-// The integrators are compiled for the two render modes (Rgb<float>, SampledSpectrum<float>).
+// The integrators are compiled for the render modes (Rgb<float>, SampledSpectrum<float>, and
+// PolarisedSpectrum for those that are polarised).
 #pragma once
 
 #include <memory>
 #include <optional>
 
-#include "lamina/render/camera.h"
-#include "lamina/render/film.h"
+#include "lamina/integrators/strategy_images.h"
 #include "lamina/integrators/transport_ablations.h"
 #include "lamina/lights/lights.h"
+#include "lamina/render/camera.h"
+#include "lamina/render/film.h"
 #include "lamina/render/pixel_filter.h"
 #include "lamina/render/render_mode.h"
-#include "lamina/integrators/strategy_images.h"
 
 namespace lamina::render {
 
@@ -67,6 +68,9 @@ struct CameraEstimate {
     S value;
     float filterWeight;
     std::optional<PixelAovs> aovs;
+    /// The camera ray's direction (the polarised mode turns the Stokes vector into the image
+    /// frame about it).
+    Vec3f rayDirection{0.0f, 0.0f, 1.0f};
 };
 
 template <SpectrumType S>

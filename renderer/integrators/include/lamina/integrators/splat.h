@@ -5,8 +5,11 @@
 
 #include <cmath>
 
+#include <type_traits>
+
 #include "lamina/render/film.h"
 #include "lamina/render/pixel_filter.h"
+#include "lamina/render/render_mode.h"
 
 namespace lamina::render {
 
@@ -32,6 +35,23 @@ inline void splatFiltered(Film& film, const PixelFilter& filter, const Vec2<floa
                           const Rgb<double>& value) {
     forEachFilteredPixel(filter, raster, film.fullWidth(), film.fullHeight(),
                          [&](int x, int y, double w) { film.addSplat(x, y, value, w); });
+}
+
+/// Splats a light-path contribution `value` that reaches the lens travelling along `toLens`:
+/// the mode's film value, or in the polarised mode its Stokes vector in the image frame
+/// (RenderMode<PolarisedSpectrum>::filmStokes) with the Stokes layers.
+template <SpectrumType S>
+void splatContribution(Film& film, const PixelFilter& filter, const Vec2<float>& raster,
+                       const RenderMode<S>& mode, const S& value, const Vec3<float>& toLens,
+                       const Vec3<float>& imageRight, const typename RenderMode<S>::Path& path) {
+    if constexpr (std::is_same_v<S, PolarisedSpectrum>) {
+        const std::array<Rgb<double>, 4> stokes = mode.filmStokes(value, -toLens, imageRight, path);
+        forEachFilteredPixel(
+            filter, raster, film.fullWidth(), film.fullHeight(),
+            [&](int x, int y, double w) { film.addPolarisedSplat(x, y, stokes, w); });
+    } else {
+        splatFiltered(film, filter, raster, mode.filmValue(value, path));
+    }
 }
 
 }  // namespace lamina::render

@@ -29,6 +29,11 @@ class Camera {
     Matrix4 cameraToWorld() const {
         return std::visit([](const auto& c) { return c.cameraToWorld(); }, kind_);
     }
+    /// The image's right in the world: the first column of cameraToWorld (row-major).
+    Vec3<float> imageRight() const {
+        const Matrix4 m = cameraToWorld();
+        return {m[0], m[4], m[8]};
+    }
     Matrix4 worldToNdc() const {
         return std::visit([](const auto& c) { return c.worldToNdc(); }, kind_);
     }

@@ -12,6 +12,7 @@
 // (PixelSums), so films of disjoint sample ranges or windows add up exactly (`lamina merge`).
 #pragma once
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <string>
@@ -29,6 +30,10 @@ struct PixelAovs {
     Vec3<double> normal{0.0};
     double depth = 0;
 };
+
+/// The polarised mode's Stokes layers of a pixel (docs/polarisation.md, "Stokes images"): the
+/// weighted sums of its camera samples' S1, S2 and S3, in the film's space, in the image frame.
+using StokesSums = std::array<Rgb<double>, 3>;
 
 /// What a pixel accumulates: the camera samples' weighted sums (of the film-space value and of
 /// its luminance and squared luminance, for the variance), their weight sum and count, the AOV
@@ -74,6 +79,24 @@ class Film {
     /// false if it is outside the window, or if rejected (and counts it).
     bool addSample(int x, int y, const Rgb<double>& value, double weight);
     void addAovs(int x, int y, const PixelAovs& aovs);
+
+    /// Gives the film Stokes layers (the polarised mode): S1..S3 beside the image, which is S0.
+    void enableStokes() {
+        stokes_.assign(pixels_.size(), StokesSums{});
+        stokesSplatIteration_.assign(pixels_.size(), StokesSums{});
+        stokesSplatSum_.assign(pixels_.size(), StokesSums{});
+    }
+    bool hasStokes() const { return !stokes_.empty(); }
+    /// Adds a polarised camera sample: its Stokes vector S0..S3 in the film's space (S0 is the
+    /// sample's value, as addSample takes it; S1..S3 may be negative). All four go through the
+    /// response as one (FilmResponse::applyAlongside). Returns false, and adds nothing, if it
+    /// is outside the window or rejected (and counts it). Needs enableStokes().
+    bool addPolarisedSample(int x, int y, const std::array<Rgb<double>, 4>& stokes, double weight);
+    /// The same for a splat (light tracing, BDPT), as addSplat takes it. Thread-safe.
+    bool addPolarisedSplat(int x, int y, const std::array<Rgb<double>, 4>& stokes, double weight);
+    /// The pixel's Stokes vector in linear Rec.709 (each component converted as the image is):
+    /// S0 is pixel(x, y). Needs enableStokes().
+    std::array<Rgb<double>, 4> stokes(int x, int y) const;
     /// Adds a value times `weight` (its filter weight: the response sees the value before it)
     /// to pixel (x, y) of the whole image in the current splat iteration (thread-safe).
     /// Returns false if it is outside the window, or if rejected (and counts it).
@@ -121,6 +144,9 @@ class Film {
     Mat3<double> xyzToRec709_;  ///< looked up once: every sample's squares are taken in Rec.709
     std::vector<Pixel> pixels_;
     std::vector<Rgb<double>> splatIteration_;
+    /// per pixel, empty unless enableStokes(): the camera samples' sums, the current splat
+    /// iteration's and the sum of the finished iterations'
+    std::vector<StokesSums> stokes_, stokesSplatIteration_, stokesSplatSum_;
     int splatIterations_ = 0;
     std::atomic<std::uint64_t> rejected_{0};
 };

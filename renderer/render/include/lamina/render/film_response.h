@@ -30,8 +30,16 @@ class FilmResponse {
     bool isIdentity() const { return identity_; }
     /// The value (in the film's space) the film adds for a sample or splat of value `v`.
     Rgb<double> apply(const Rgb<double>& v) const;
+    /// What the response makes of `other`, a quantity that travels with a sample of value `v`
+    /// (a Stokes component S1..S3 of a polarised sample whose S0 is v): the same linear map,
+    /// with the clamp's ratio of v, so that the pair keeps its proportion.
+    Rgb<double> applyAlongside(const Rgb<double>& v, const Rgb<double>& other) const;
 
   private:
+    /// The factor by which the clamp scales a value c (already times scale_): 1 unless its
+    /// largest XYZ component exceeds maxComponent_.
+    double clampRatio(const Vec3d& c) const;
+
     bool identity_ = true;
     double scale_ = 1;
     std::optional<double> maxComponent_;

@@ -3,6 +3,14 @@
 // turned into the canonical frames of the world directions (stokesAxis of each), so that the
 // matrices of consecutive vertices meet in the same frame (docs/polarisation.md, "Frames along
 // a path"). Sampling and densities are the spectral BSDF's.
+//
+// In importance mode (light paths) the matrices are those of the physical event, light
+// arriving along -wo and leaving along wi: the camera path's event with the directions
+// swapped (evalMueller(wi, wo) in radiance mode), scaled per wavelength so that [0][0] is the
+// adjoint BSDF's value, eval(wo, wi) in importance mode, which differs by the radiance
+// factor 1/eta^2 of refraction (docs/polarisation.md, "Light paths"). So a light path's
+// throughput is the product of its matrices in the order light meets them, as a camera path's
+// is in the reverse order, and both end in the same frames.
 #pragma once
 
 #include "lamina/bsdf/bxdf.h"
@@ -22,21 +30,50 @@ class PolarisedBxdf final : public Bxdf<PolarisedSpectrum> {
     }
 
     PolarisedSpectrum eval(const Vec3f& wo, const Vec3f& wi, TransportMode mode) const override {
-        return inWorldFrames(bsdf_->evalMueller(wo, wi, mode), wo, wi);
+        if (mode == TransportMode::Radiance)
+            return inWorldFrames(bsdf_->evalMueller(wo, wi, mode), wo, wi);
+        return withUnpolarised(
+            inWorldFrames(bsdf_->evalMueller(wi, wo, TransportMode::Radiance), wi, wo),
+            bsdf_->eval(wo, wi, mode));
     }
     float pdf(const Vec3f& wo, const Vec3f& wi) const override { return bsdf_->pdf(wo, wi); }
     std::optional<BsdfSample<PolarisedSpectrum>> sample(const Vec3f& wo, float uc, const Vec2f& u,
                                                         TransportMode mode) const override {
         const auto s = bsdf_->sample(wo, uc, u, mode);
         if (!s) return std::nullopt;
+        if (mode == TransportMode::Radiance)
+            return BsdfSample<PolarisedSpectrum>{
+                s->wi, inWorldFrames(bsdf_->sampleMueller(wo, *s, mode), wo, s->wi), s->pdf,
+                s->flags, s->eta};
+        // The physical event of a delta lobe is its sample seen from the other end.
+        const BsdfSample<SampledSpectrum<float>> reversed{
+            wo, s->weight, s->pdf, s->flags, s->isTransmission() ? 1.0f / s->eta : s->eta};
+        const PolarisedSpectrum::Base m =
+            s->isSpecular() ? bsdf_->sampleMueller(s->wi, reversed, TransportMode::Radiance)
+                            : bsdf_->evalMueller(s->wi, wo, TransportMode::Radiance);
         return BsdfSample<PolarisedSpectrum>{
-            s->wi, inWorldFrames(bsdf_->sampleMueller(wo, *s, mode), wo, s->wi), s->pdf, s->flags,
+            s->wi, withUnpolarised(inWorldFrames(m, s->wi, wo), s->weight), s->pdf, s->flags,
             s->eta};
     }
     std::uint32_t flags() const override { return bsdf_->flags(); }
     bool usesLobeChoice() const override { return bsdf_->usesLobeChoice(); }
 
   private:
+    // m scaled per wavelength so that its [0][0] is `value`; a wavelength where m has no
+    // [0][0] to scale becomes the depolariser of `value`.
+    static PolarisedSpectrum withUnpolarised(PolarisedSpectrum m,
+                                             const SampledSpectrum<float>& value) {
+        for (int i = 0; i < PolarisedSpectrum::kSize; ++i) {
+            const float m00 = m.m[0][0][i];
+            const float k = m00 > 0.0f ? value[i] / m00 : 0.0f;
+            for (auto& row : m.m)
+                for (auto& e : row)
+                    e[i] *= k;
+            m.m[0][0][i] = value[i];
+        }
+        return m;
+    }
+
     // Light arrives propagating along -wi and leaves along wo (local directions).
     PolarisedSpectrum inWorldFrames(PolarisedSpectrum::Base m, const Vec3f& wo,
                                     const Vec3f& wi) const {

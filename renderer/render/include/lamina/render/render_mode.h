@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "lamina/bsdf/material_builder.h"
+#include "lamina/bsdf/material_kind.h"
 #include "lamina/lights/emitter_color.h"
 #include "lamina/render/film.h"
 #include "lamina/render/polarised_bxdf.h"
@@ -197,14 +198,22 @@ class RenderMode<SampledSpectrum<float>> {
 /// film, with a Mueller matrix per wavelength as the path's throughput (polarised_spectrum.h).
 /// The BSDFs are the spectral mode's, seen at each shading point through PolarisedBxdf, which
 /// turns their matrices into the world directions' canonical frames; the emitters are
-/// unpolarised. The film receives S0, the radiance, as the spectral mode's XYZ.
+/// unpolarised. The film receives S0, the radiance, as the spectral mode's XYZ. An optical
+/// sheet (polariser, retarder) is built at each hit with its world axis in the hit's frame.
 template <>
 class RenderMode<PolarisedSpectrum> {
   public:
     using Spectrum = PolarisedSpectrum;
     using Path = RenderMode<SampledSpectrum<float>>::Path;
 
-    RenderMode(const SceneDesc& scene, std::uint64_t seed) : spectral_(scene, seed) {}
+    RenderMode(const SceneDesc& scene, std::uint64_t seed)
+        : scene_(scene),
+          seed_(seed),
+          spectral_(scene, seed),
+          analyserDegrees_(scene.camera.analyserDegrees) {
+        for (const MaterialDesc& m : scene.materials)
+            oriented_.push_back(needsOrientation(m));
+    }
 
     static constexpr FilmSpace kFilmSpace = FilmSpace::Xyz;
 
@@ -216,15 +225,37 @@ class RenderMode<PolarisedSpectrum> {
     const Bxdf<Spectrum>& bsdf(int material, const Vec2<float>& uv, const Frame<float>& frame,
                                Path& path) const {
         thread_local PolarisedBxdf view;
+        if (oriented_[std::size_t(material)]) {
+            // An optical sheet's axis is a world direction: built at every hit, in its frame.
+            thread_local std::unique_ptr<Bxdf<SampledSpectrum<float>>> sheet;
+            const Frame<double> f{Vec3d(frame.s), Vec3d(frame.t), Vec3d(frame.n)};
+            sheet = buildBxdf(orientedMaterial(scene_.materials[std::size_t(material)], f),
+                              SpectrumContext<SampledSpectrum<float>>{path.lambda}, seed_);
+            view.bind(*sheet, frame);
+            return view;
+        }
         view.bind(spectral_.bsdf(material, uv, path), frame);
         return view;
     }
     Rgb<double> filmValue(const Spectrum& L, const Path& path) const {
         return spectral_.filmValue(L.unpolarised(), path);
     }
+    /// What a camera sample gives the film's Stokes layers (Film::addPolarisedSample): the
+    /// Stokes vector of the light arriving against `rayDirection` (L's first column: the
+    /// emitters are unpolarised), turned into the image frame (x the image's right, projected
+    /// perpendicular to the light; y = d x x with d the light's direction, towards the lens),
+    /// through the camera's analyser if it has one, each component in the film's space as
+    /// filmValue converts S0 (docs/polarisation.md, "Stokes images"). Defined in
+    /// polarised_film_value.cpp.
+    std::array<Rgb<double>, 4> filmStokes(const Spectrum& L, const Vec3f& rayDirection,
+                                          const Vec3f& imageRight, const Path& path) const;
 
   private:
+    const SceneDesc& scene_;
+    std::uint64_t seed_;
     RenderMode<SampledSpectrum<float>> spectral_;
+    std::optional<double> analyserDegrees_;
+    std::vector<bool> oriented_;  ///< per material: needsOrientation
 };
 
 }  // namespace lamina::render

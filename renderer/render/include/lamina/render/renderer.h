@@ -76,10 +76,6 @@ struct RenderResult {
 std::atomic<bool>& renderInterruptFlag();
 
 /// Renders the scene. `progress` is called from the calling thread now and then.
-/// Refuses a combination of mode and integrator that lamina cannot render (the polarised
-/// mode runs the path integrator only), with the reason. The renderer calls it; experiments
-/// call it before they start work.
-void checkModeAndIntegrator(RenderModeKind mode, IntegratorKind integrator);
 
 RenderResult renderScene(const SceneDesc& scene, const RenderOptions& options,
                          const std::function<void(const RenderProgress&)>& progress = {});

@@ -33,6 +33,7 @@ struct SceneStatistics {
         std::string type;
         std::string lobes;  ///< describeLobes of its BSDF built in RGB mode
         bool used = false;
+        std::string polarisation;  ///< what the polarised mode makes of it (MaterialKind)
     };
     std::vector<Material> materials;
     /// The spectral data of the used materials: "Au (n, k)", "bk7 (dispersion)", ...

@@ -51,6 +51,10 @@ struct CameraDesc {
     /// the view, [x0, x1, y0, y1] with x to the image's right and y up; unset: the shorter
     /// image axis spans [-1, 1] (pbrt-v4's default)
     std::optional<std::array<double, 4>> screenWindow;
+    /// An ideal linear polariser in front of the lens (the polarised mode only): the angle of
+    /// its transmission axis in degrees from the image's right towards its up
+    /// (docs/polarisation.md, "Stokes images"); unset: none.
+    std::optional<double> analyserDegrees;
 };
 
 enum class FilterKind { Box, Gaussian, BlackmanHarris, Triangle };
