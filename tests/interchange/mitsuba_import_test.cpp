@@ -650,7 +650,8 @@ TEST_F(MitsubaBsdf, UnsupportedPluginAndTextureAreRefused) {
               where(3) +
                   ": <bsdf type=\"hair\">: the BSDF plugin \"hair\" is not supported "
                   "(diffuse, conductor, roughconductor, dielectric, roughdielectric, "
-                  "thindielectric, plastic, roughplastic, twosided, blendbsdf, mask)");
+                  "thindielectric, plastic, roughplastic, twosided, blendbsdf, mask, bumpmap, "
+                  "normalmap)");
     EXPECT_EQ(
         error("<bsdf type=\"diffuse\" id=\"m\">\n<texture type=\"bitmap\" name=\"reflectance\"/>"
               "</bsdf>"),

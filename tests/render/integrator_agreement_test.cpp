@@ -101,6 +101,8 @@ INSTANTIATE_TEST_SUITE_P(
         AgreementCase{"InstancesAndCutOuts", "scenes/reciprocity/cutouts.json",
                       RenderModeKind::Rgb},
         AgreementCase{"OrthographicCamera", "scenes/reciprocity/orthographic.json",
+                      RenderModeKind::Rgb},
+        AgreementCase{"BumpAndNormalMaps", "scenes/reciprocity/bump-and-normal-maps.json",
                       RenderModeKind::Rgb}),
     [](const ::testing::TestParamInfo<AgreementCase>& p) { return std::string(p.param.name); });
 
@@ -207,6 +209,13 @@ TEST(NextEventKey, IsReadForPathAndRefusedElsewhere) {
 
 TEST(IntegratorsAgreeBreakIt, WithoutTheAdjointCorrectionLightTracingDisagrees) {
     expectBrokenDisagrees("scenes/reciprocity/smooth-normals.json", IntegratorKind::Light,
+                          &TransportAblations::noAdjointCorrection);
+}
+
+// ... and on bump- and normal-mapped surfaces, whose shading normals go through the same
+// correction.
+TEST(IntegratorsAgreeBreakIt, WithoutTheAdjointCorrectionLightTracingDisagreesOnBumpMaps) {
+    expectBrokenDisagrees("scenes/reciprocity/bump-and-normal-maps.json", IntegratorKind::Light,
                           &TransportAblations::noAdjointCorrection);
 }
 

@@ -4,6 +4,9 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "lamina/core/overloaded.h"
+#include "surface_derivatives.h"
+
 namespace lamina::render {
 
 namespace {
@@ -56,7 +59,12 @@ void Geometry::addShapes(RTCScene target, const std::vector<ShapeDesc>& shapes, 
         rtcCommitGeometry(g);
         rtcAttachGeometryByID(target, g, id++);
         rtcReleaseGeometry(g);
-        shapes_.push_back({&shape, surface(shape).material, object});
+        const int material = surface(shape).material;
+        // A scene built in code may have no material textures at all.
+        const bool turnsNormal = material >= 0 &&
+                                 std::size_t(material) < scene_.materialTextures.size() &&
+                                 scene_.materialTextures[std::size_t(material)].perturbsNormal();
+        shapes_.push_back({&shape, material, object, turnsNormal});
     }
 }
 
@@ -242,6 +250,12 @@ void surfaceAt(const SphereDesc& s, const Vec3<double>& origin, const Vec3<doubl
 void surfaceAt(const ShapeInfo& info, const Vec3<double>& origin, const Vec3<double>& direction,
                const RTCHit& h, SurfaceHit& hit) {
     std::visit([&](const auto& shape) { surfaceAt(shape, origin, direction, h, hit); }, *info.desc);
+    if (!info.turnsNormal) return;
+    hit.derivatives = std::visit(
+        Overloaded{
+            [&](const MeshDesc& m) { return surfaceDerivatives(m, h.primID, h.u, h.v, hit); },
+            [&](const auto& shape) { return surfaceDerivatives(shape, hit); }},
+        *info.desc);
 }
 
 }  // namespace
@@ -270,8 +284,11 @@ std::optional<SurfaceHit> Geometry::intersect(const Vec3f& origin, const Vec3f& 
     hit.primitive = rh.hit.primID;
     if (rh.hit.instID[0] == RTC_INVALID_GEOMETRY_ID) {
         hit.shape = int(rh.hit.geomID);
-        surfaceAt(shapes_[rh.hit.geomID], Vec3<double>(origin), Vec3<double>(direction), rh.hit,
-                  hit);
+        const ShapeInfo& info = shapes_[rh.hit.geomID];
+        surfaceAt(info, Vec3<double>(origin), Vec3<double>(direction), rh.hit, hit);
+        if (info.turnsNormal)
+            hit.ns = perturbedShadingNormal(scene_, info.material, hit.uv, hit.ng, hit.ns,
+                                            hit.derivatives);
         return hit;
     }
     // An instance's hit: the surface in the object's space along the ray Embree traced there
@@ -289,10 +306,28 @@ std::optional<SurfaceHit> Geometry::intersect(const Vec3f& origin, const Vec3f& 
     hit.p = Vec3f(xf.toWorld * glm::dvec4(Vec3<double>(hit.p), 1.0));
     const double flip = std::holds_alternative<DiskDesc>(*info.desc) && xf.mirrors ? -1.0 : 1.0;
     const Vec3<double> ng = flip * glm::normalize(xf.normalMatrix * Vec3<double>(hit.ng));
-    Vec3<double> ns = glm::normalize(xf.normalMatrix * Vec3<double>(hit.ns)) * flip;
-    if (glm::dot(ns, ng) < 0) ns = -ns;
+    const Vec3<double> nsTransformed = xf.normalMatrix * Vec3<double>(hit.ns);
+    Vec3<double> ns = glm::normalize(nsTransformed) * flip;
+    const double side = glm::dot(ns, ng) < 0 ? -1.0 : 1.0;
+    ns *= side;
     hit.ng = Vec3f(ng);
     hit.ns = Vec3f(ns);
+    if (info.turnsNormal) {
+        // Tangents are vectors; the normal's derivatives are those of the transformed,
+        // normalised normal: N dn / |N n| without its component along the new normal.
+        SurfaceDerivatives& dw = hit.derivatives;
+        const glm::dmat3 linear(xf.toWorld);
+        dw.dpdu = Vec3f(linear * Vec3<double>(dw.dpdu));
+        dw.dpdv = Vec3f(linear * Vec3<double>(dw.dpdv));
+        const double scale = flip * side / glm::length(nsTransformed);
+        const auto normalDerivative = [&](const Vec3f& dn) {
+            const Vec3<double> v = scale * (xf.normalMatrix * Vec3<double>(dn));
+            return Vec3f(v - glm::dot(v, ns) * ns);
+        };
+        dw.dndu = normalDerivative(dw.dndu);
+        dw.dndv = normalDerivative(dw.dndv);
+        hit.ns = perturbedShadingNormal(scene_, info.material, hit.uv, hit.ng, hit.ns, dw);
+    }
     return hit;
 }
 

@@ -149,6 +149,94 @@ Json plastic(Plugin& p, bool rough, bool insideTwoSided) {
     return m;
 }
 
+bool mapsNormals(const Json& material) {
+    return material.contains("displacement") || material.contains("normal_map");
+}
+
+// The texture of a bumpmap or normalmap: a `bitmap` as a lamina image texture (mitsuba3
+// src/textures/bitmap.cpp: `raw` false decodes 8-bit sRGB, bilinear and repeating by default).
+TranslatedTexture bitmap(const Element& texture, const MitsubaDocument& document,
+                         Diagnostics& diagnostics, bool& raw) {
+    Plugin p(texture, document, diagnostics);
+    if (p.type() != "bitmap")
+        p.fail("a bumpmap's or normalmap's texture must be a bitmap (lamina reads image files)");
+    const auto file = p.file("filename");
+    if (!file) p.fail("a bitmap needs \"filename\"");
+    raw = p.boolean("raw", false);
+    const std::string filter = p.string("filter_type").value_or("bilinear");
+    if (filter != "bilinear" && filter != "nearest")
+        p.fail("filter_type \"" + filter + "\" is not supported (bilinear or nearest)");
+    if (filter == "nearest") p.warn("filter_type nearest became lamina's bilinear lookup");
+    if (p.string("wrap_mode").value_or("repeat") != "repeat")
+        p.fail("only wrap_mode \"repeat\" is supported");
+    if (p.has("to_uv")) p.fail("to_uv on a bump or normal map is not supported");
+    if (p.has("format")) p.ignore("format", "lamina stores textures as float");
+    p.warn(
+        "bitmap became an image texture: Mitsuba reads v = 0 at the image's top row, lamina "
+        "at its bottom row (the same on OBJ meshes, whose v Mitsuba flips when reading them; "
+        "elsewhere the image lands mirrored in v)");
+    p.finish();
+    return {"bitmap " + file->filename().string() + " (line " + std::to_string(texture.line) + ")",
+            {{"type", "image"}, {"color_space", raw ? "linear" : "srgb"}},
+            *file};
+}
+
+// `bumpmap` and `normalmap` (mitsuba3 src/bsdfs/bumpmap.cpp, normalmap.cpp): the nested BSDF's
+// material with lamina's `displacement` or `normal_map`.
+TranslatedBsdf shadingNormalMap(Plugin& p, const MitsubaDocument& document,
+                                Diagnostics& diagnostics, bool insideTwoSided, int depth) {
+    const bool bump = p.type() == "bumpmap";
+    const auto nested = p.objects("bsdf");
+    if (nested.size() != 1) p.fail(p.type() + " needs one nested BSDF");
+    const auto textures = p.objects("texture");
+    if (textures.size() != 1) p.fail(p.type() + " needs one nested texture");
+    if (!bump && !textures[0]->attribute("name"))
+        p.fail("a normalmap's texture must be named \"normalmap\"");
+    if (!bump && *textures[0]->attribute("name") != "normalmap")
+        p.fail("a normalmap's texture must be named \"normalmap\", not \"" +
+               *textures[0]->attribute("name") + "\"");
+    const double scale = bump ? p.number("scale", 1.0) : 1.0;
+    if (!(scale >= 0 && scale <= 1e6))
+        p.fail("scale must be in [0, 1e6] for lamina (a negative height is not supported)");
+    if (!p.boolean("flip_invalid_normals", true))
+        p.warn(
+            "flip_invalid_normals false became lamina's rule: a shading normal is always "
+            "turned to the geometric normal's side");
+    if (p.boolean("use_shadowing_function", true))
+        p.warn(
+            "the shadowing function of the perturbed normal (Conty Estevez et al. 2019) is "
+            "not applied: lamina keeps Veach's shading-normal rules, which darken the "
+            "terminator differently");
+    TranslatedBsdf out =
+        translateBsdf(*nested[0], document, diagnostics, insideTwoSided, depth + 1);
+    if (mapsNormals(out.material)) p.fail("a bumpmap or normalmap inside another is not supported");
+    bool raw = false;
+    TranslatedTexture image = bitmap(*textures[0], document, diagnostics, raw);
+    if (!bump && !raw)
+        p.fail(
+            "a normalmap's bitmap decoded from sRGB is not supported: set raw to true "
+            "(its texels are vectors)");
+    std::string name = image.name;
+    out.textures.push_back(std::move(image));
+    if (bump) {
+        if (scale != 1) {
+            out.textures.push_back({name + " times " + formatNumber(scale),
+                                    {{"type", "scale"}, {"texture", name}, {"scale", scale}},
+                                    {}});
+            name = out.textures.back().name;
+        }
+        out.material["displacement"] = {{"texture", name}};
+        p.warn(
+            "bumpmap became the material's displacement: lamina's bump includes the h dn/du "
+            "term Mitsuba leaves out (the same on flat faces; curved ones shade slightly "
+            "differently where the height is not 0), and takes the image's first channel "
+            "where Mitsuba takes an RGB image's luminance");
+    } else {
+        out.material["normal_map"] = {{"texture", name}};
+    }
+    return out;
+}
+
 }  // namespace
 
 std::optional<double> namedIor(const std::string& name) {
@@ -201,6 +289,12 @@ TranslatedBsdf translateBsdf(const Element& bsdf, const MitsubaDocument& documen
         TranslatedBsdf b =
             translateBsdf(*nested[1], document, diagnostics, insideTwoSided, depth + 1);
         if (a.alpha || b.alpha) p.fail("a mask inside blendbsdf is not supported");
+        if (mapsNormals(a.material) || mapsNormals(b.material))
+            p.fail(
+                "a bumpmap or normalmap inside blendbsdf is not supported (lamina's maps "
+                "belong to the material a shape uses)");
+        out.textures = std::move(a.textures);
+        out.textures.insert(out.textures.end(), b.textures.begin(), b.textures.end());
         // Mitsuba: (1 - weight) first + weight second; lamina's mix: (1 - w) a + w b.
         out.material = {{"type", "mix"}, {"a", a.material}, {"b", b.material}, {"weight", w}};
     } else if (type == "mask") {
@@ -214,11 +308,13 @@ TranslatedBsdf translateBsdf(const Element& bsdf, const MitsubaDocument& documen
         out = translateBsdf(*nested[0], document, diagnostics, insideTwoSided, depth + 1);
         if (out.alpha) p.fail("a mask inside a mask is not supported");
         if (alpha < 1) out.alpha = alpha;
+    } else if (type == "bumpmap" || type == "normalmap") {
+        out = shadingNormalMap(p, document, diagnostics, insideTwoSided, depth);
     } else {
         p.fail("the BSDF plugin \"" + type +
                "\" is not supported (diffuse, conductor, roughconductor, dielectric, "
                "roughdielectric, thindielectric, plastic, roughplastic, twosided, blendbsdf, "
-               "mask)");
+               "mask, bumpmap, normalmap)");
     }
     p.finish();
     return out;

@@ -1,16 +1,30 @@
 // Mitsuba 3 BSDF plugins -> lamina materials (docs/interchange.md, "Mitsuba 3").
 #pragma once
 
+#include <filesystem>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "mitsuba_plugin.h"
 
 namespace lamina::render::mitsuba {
 
-/// A translated `<bsdf>`: the lamina material, and for `mask` the shape's alpha.
+/// A lamina texture a translated BSDF names (a bumpmap's or normalmap's `bitmap`): its name
+/// in the document's `textures`, its definition, and the image file it reads, which the
+/// caller writes as `file` relative to the document.
+struct TranslatedTexture {
+    std::string name;
+    Json texture;
+    std::filesystem::path file;  ///< empty: a texture of other textures
+};
+
+/// A translated `<bsdf>`: the lamina material, for `mask` the shape's alpha, and the textures
+/// the material names.
 struct TranslatedBsdf {
     Json material;
     std::optional<double> alpha;
+    std::vector<TranslatedTexture> textures;
 };
 
 /// Translates `bsdf` (and what it nests). `insideTwoSided`: the BSDF is wrapped in

@@ -56,6 +56,7 @@ Json shapeMaterial(Translation& t, Plugin& p, std::optional<double>& alpha) {
     }
     TranslatedBsdf translated = translateBsdf(bsdf, t.document, t.diagnostics);
     alpha = translated.alpha;
+    addTextures(t, translated.textures);
     return translated.material;
 }
 
@@ -120,6 +121,14 @@ Json environmentTransform(Plugin& p, const std::optional<Transform>& transform) 
 }
 
 }  // namespace
+
+void addTextures(Translation& t, const std::vector<TranslatedTexture>& textures) {
+    for (const TranslatedTexture& texture : textures) {
+        Json definition = texture.texture;
+        if (!texture.file.empty()) definition["file"] = path(t, texture.file);
+        t.scene["textures"][texture.name] = std::move(definition);
+    }
+}
 
 void translateShape(Translation& t, const Element& e, Json& out, bool inGroup) {
     Plugin p(e, t.document, t.diagnostics);

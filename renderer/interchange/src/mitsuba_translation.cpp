@@ -269,6 +269,7 @@ ImportedScene importMitsubaScene(const std::filesystem::path& file,
         }
         TranslatedBsdf bsdf = translateBsdf(e, document, diagnostics);
         t.scene["materials"][*id] = bsdf.material;
+        addTextures(t, bsdf.textures);
         t.namedBsdfs.emplace(&e, bsdf.alpha);
     }
     const Element* sensor = nullptr;

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "lamina/interchange/scene_import.h"
+#include "mitsuba_bsdfs.h"
 #include "mitsuba_plugin.h"
 
 namespace lamina::render::mitsuba {
@@ -24,6 +25,9 @@ struct Translation {
     std::map<const Element*, std::optional<double>> namedBsdfs;
 };
 
+/// Writes the textures a translated BSDF names into the document's `textures` (their files
+/// relative to the document).
+void addTextures(Translation& t, const std::vector<TranslatedTexture>& textures);
 /// `<shape>` (also inside a shapegroup: `inGroup`) -> the lamina shape, appended to `out`.
 void translateShape(Translation& t, const Element& shape, Json& out, bool inGroup);
 /// `<shape type="shapegroup" id>` -> lamina `objects[id]`.

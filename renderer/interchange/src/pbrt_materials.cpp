@@ -88,6 +88,46 @@ void roughness(TranslationContext& ctx, const Entity& e, const std::string& pref
              "and alpha_y along v");
 }
 
+// pbrt-v4's bump and normal maps, which every material but mix and interface takes
+// (materials.cpp): lamina's `displacement` and `normal_map` on the material. pbrt-v4 reads a
+// normal map's image as linear and uses it instead of a displacement (Material::GetBSDF).
+void shadingNormalMaps(TranslationContext& ctx, const Entity& e, Json& material) {
+    const ParamList& params = e.params;
+    const Param* displacement = params.find("displacement");
+    const Param* normalMap = params.find("normalmap");
+    if (normalMap) {
+        params.expectType(*normalMap, {"string"});
+        if (normalMap->strings.size() != 1) params.fail(*normalMap, "expected one file name");
+        const std::string name = "normal map " + normalMap->strings[0];
+        ctx.document["textures"][name] = {{"type", "image"},
+                                          {"file", ctx.filePath(params, *normalMap)},
+                                          {"color_space", "linear"}};
+        material["normal_map"] = {{"texture", name}};
+    }
+    if (!displacement) return;
+    params.expectType(*displacement, {"float", "texture"});
+    if (displacement->strings.size() + displacement->numbers.size() != 1)
+        params.fail(*displacement, "expected one value");
+    if (normalMap) {
+        ctx.warn(displacement->location,
+                 "displacement ignored: the material's normalmap replaces it, as in pbrt-v4");
+    } else if (canonicalParamType(displacement->type) == "float") {
+        // A constant height moves no normal of a flat face or a sphere; pbrt-v4's h dn/du term
+        // turns interpolated vertex normals slightly, which lamina's constant-free key cannot.
+        if (displacement->numbers[0] != 0)
+            ctx.warn(displacement->location,
+                     "a constant displacement was dropped (it turns only interpolated vertex "
+                     "normals, slightly, in pbrt-v4)");
+    } else {
+        material["displacement"] = {{"texture", useTexture(ctx, displacement->strings[0], "float",
+                                                           displacement->location)}};
+        ctx.warn(displacement->location,
+                 "the bump map's slopes are differences over 0.0005 in uv (pbrt-v4 differences "
+                 "over the pixel's footprint with ray differentials: bumps finer than a pixel "
+                 "look sharper in lamina)");
+    }
+}
+
 Json translateMaterial(TranslationContext& ctx, const MaterialDef& def, int depth);
 
 Json materialByName(TranslationContext& ctx, const std::string& name, const Location& at,
@@ -190,6 +230,11 @@ Json translateMaterial(TranslationContext& ctx, const MaterialDef& def, int dept
         Json b = materialByName(ctx, names->strings[1], names->location, depth);
         if (a.is_null() || b.is_null())
             ctx.fail(e.location, "mix: an interface material cannot be mixed");
+        for (const Json* mixed : {&a, &b})
+            if (mixed->contains("displacement") || mixed->contains("normal_map"))
+                ctx.fail(e.location,
+                         "mix: a material with a bump or normal map cannot be mixed (lamina's "
+                         "maps belong to the material a shape uses)");
         m = {{"type", "mix"}, {"a", a}, {"b", b}, {"weight", std::clamp(amount, 0.0, 1.0)}};
     } else if (e.type == "interface") {
         params.refuseUnused();
@@ -200,6 +245,7 @@ Json translateMaterial(TranslationContext& ctx, const MaterialDef& def, int dept
                                  "dielectric, thindielectric, coateddiffuse, coatedconductor, "
                                  "diffusetransmission, mix and interface)");
     }
+    if (e.type != "mix") shadingNormalMaps(ctx, e, m);
     params.refuseUnused();
     return m;
 }

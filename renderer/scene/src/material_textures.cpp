@@ -119,7 +119,24 @@ std::pair<MaterialDesc, MaterialTextures> readTexturedMaterial(const JsonReader&
     if (!kind) return {parseMaterial(r), {}};  // the parser names what is wrong with the type
     Json copy = r.value();
     MaterialTextures tex;
+    // The shading-normal maps belong to the scene's material, not to its BSDF: read here and
+    // taken out of what the material parser reads.
+    for (const auto& [key, index] :
+         {std::pair{"displacement", &tex.displacement}, std::pair{"normal_map", &tex.normalMap}}) {
+        if (!r.has(key)) continue;
+        const JsonReader t = r.child(key);
+        if (!t.value().is_object() || !t.value().contains("texture"))
+            t.fail("expected {\"texture\": name}");
+        const std::string name = t.requiredString("texture");
+        t.finish();
+        *index = textureIndex(t, "texture", name);
+        copy.erase(key);
+    }
+    if (tex.displacement >= 0 && tex.normalMap >= 0)
+        r.failAt("normal_map",
+                 "a material takes a displacement (a bump map) or a normal_map, not both");
     for (const auto& [key, value] : r.value().items()) {
+        if (!copy.contains(key)) continue;  // a shading-normal map, read above
         if (!value.is_object() || !value.contains("texture")) continue;
         const auto parameter = kind->texturedParameter(key);
         if (!parameter) r.failAt(key, texturableKeysMessage(*kind, key));

@@ -106,6 +106,16 @@ int SceneMaterials::add(const JsonReader& material) {
         material, [this](const JsonReader& at, const std::string& key, const std::string& name) {
             return textureIndex(at, key, name);
         });
+    // A normal map's texels are vectors: decoding them from sRGB would tilt every normal.
+    if (textures.normalMap >= 0) {
+        const auto* image = dynamic_cast<const ImageTexture*>(
+            scene_.textures[std::size_t(textures.normalMap)].get());
+        if (image && image->decodedSrgb())
+            material.child("normal_map")
+                .failAt("texture",
+                        "a normal map's image must be read with \"color_space\": "
+                        "\"linear\" (its texels are vectors, not sRGB colours)");
+    }
     scene_.materialTextures.push_back(textures);
     scene_.materials.push_back(std::move(desc));
     return int(scene_.materials.size() - 1);

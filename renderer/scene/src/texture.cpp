@@ -16,6 +16,7 @@ ImageTexture::ImageTexture(const std::filesystem::path& file, const Vec2<float>&
     const int channels = image.channels;
     const std::vector<float>& data = image.samples;
     const bool decode = srgb && image.integerFormat;
+    decodedSrgb_ = decode;
     pixels_.resize(std::size_t(width_) * height_);
     for (std::size_t i = 0; i < pixels_.size(); ++i)
         for (int c = 0; c < 3; ++c) {

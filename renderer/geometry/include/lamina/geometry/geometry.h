@@ -1,6 +1,8 @@
 // The scene's geometry in Embree 3: triangle meshes, analytic spheres and disks, one Embree
 // geometry per shape, and the surface interaction at a hit (position recomputed from the
-// primitive for accuracy, geometric and shading normals, uv). Objects (SceneDesc::objects)
+// primitive for accuracy, geometric and shading normals, uv; where the shape's material has a
+// bump or normal map, the uv derivatives and the shading normal that map makes,
+// shading_normal_maps.h). Objects (SceneDesc::objects)
 // are Embree scenes of their own, built once and placed by Embree instance geometries, never
 // copied. Shapes with an alpha cut-out carry Embree filter functions, so closest-hit and
 // shadow rays alike pass through their holes (alpha_filter.h). Which shapes emit is the light
@@ -16,6 +18,7 @@
 #include "lamina/core/ray.h"
 #include "lamina/geometry/alpha_filter.h"
 #include "lamina/scene/scene_description.h"
+#include "lamina/scene/shading_normal_maps.h"
 
 namespace lamina::render {
 
@@ -26,8 +29,11 @@ using Vec2f = Vec2<float>;
 struct SurfaceHit {
     Vec3f p;   ///< on the surface (recomputed from the primitive, not o + t d)
     Vec3f ng;  ///< geometric normal, unit, outward (winding / sphere orientation)
-    Vec3f ns;  ///< shading normal, unit, on the same side as ng
+    Vec3f ns;  ///< shading normal, unit, on the same side as ng (a material's map applied)
     Vec2f uv{0.0f};
+    /// In the world; only where the shape's material turns the shading normal (ShapeInfo),
+    /// zero elsewhere.
+    SurfaceDerivatives derivatives;
     float t = 0;
     int shape = -1;  ///< index into Geometry::shapes()
     std::uint32_t primitive = 0;
@@ -39,6 +45,8 @@ struct ShapeInfo {
     const ShapeDesc* desc = nullptr;  ///< in SceneDesc::shapes or in its object's shapes
     int material = -1;
     int object = -1;  ///< into SceneDesc::objects; -1: a shape of the scene's own list
+    /// Its material has a bump or normal map (MaterialTextures::perturbsNormal).
+    bool turnsNormal = false;
 };
 
 /// What the Embree scenes hold: triangles stored once, and those instances make visible.

@@ -1,6 +1,7 @@
 // Textures in materials: reading a scene file's texture definitions and the material keys
-// that name a texture ({"texture": name} for base_color / reflectance / roughness), and the
-// material with its textured parameters looked up at a surface's uv.
+// that name a texture ({"texture": name} for base_color / reflectance / roughness, and the
+// shading-normal maps `displacement` and `normal_map` of any material), and the material with
+// its textured parameters looked up at a surface's uv.
 #pragma once
 
 #include <functional>
@@ -19,7 +20,14 @@ struct SceneDesc;
 struct MaterialTextures {
     int color = -1;      ///< base_color (standard) or reflectance (diffuse, phong)
     int roughness = -1;  ///< perceptual roughness, from the texture's first channel
+    /// The shading-normal maps (shading_normal_maps.h), at most one of the two: a height in
+    /// scene units (the texture's first channel), or a tangent-space normal map.
+    int displacement = -1;
+    int normalMap = -1;
+    /// A parameter of the BSDF comes from a texture: the BSDF is built at every hit.
     bool any() const { return color >= 0 || roughness >= 0; }
+    /// The material turns the shading normal: the geometry applies it at every hit.
+    bool perturbsNormal() const { return displacement >= 0 || normalMap >= 0; }
 };
 
 /// Finds a texture by name for the key of `at` that names it (failing there when unknown, or

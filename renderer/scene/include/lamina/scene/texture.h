@@ -55,6 +55,8 @@ class ImageTexture final : public Texture {
     ImageTexture(const std::filesystem::path& file, const Vec2<float>& scale, bool srgb,
                  bool invert);
     Rgb<float> evaluate(const Vec2<float>& uv) const override;
+    /// Its texels were decoded from sRGB (an integer image not declared linear).
+    bool decodedSrgb() const { return decodedSrgb_; }
 
   private:
     Rgb<float> texel(int x, int y) const;
@@ -62,6 +64,7 @@ class ImageTexture final : public Texture {
     std::vector<Rgb<float>> pixels_;
     Vec2<float> scale_;
     bool invert_;
+    bool decodedSrgb_ = false;
 };
 
 /// The same colour everywhere: a constant operand of an operation.
