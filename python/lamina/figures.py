@@ -5,14 +5,16 @@ An experiment (experiments/, `Report::addFigure`) writes each figure's data as N
 NaN where there is no value) and, at the end of the run, runs this file as a script on its
 directory: ``python3 figures.py DIR`` draws every spec found there into NAME.png and NAME.pdf.
 
-Two kinds of figure:
+Three kinds of figure:
 
 - ``lines``: series against x, each optionally with standard errors drawn as a band around it
-  (never as a series of its own); logarithmic axes where the data span decades.
+  (never as a series of its own); logarithmic axes where the data span decades; one panel, or
+  several side by side sharing the y axis.
 - ``map``: a false-colour map. Unsigned quantities use a sequential perceptual map (viridis),
   signed ones a diverging map with limits symmetric about zero; a logarithmic colour scale
   where the values span decades. The limits come from the data's percentiles and the caption
   printed under the map says which, and how many pixels lie beyond them.
+- ``swatches``: a grid of true colours (what models look like side by side).
 
 ``problems(figure)`` lists what a reader of a drawn figure could be misled by (too many
 pixels clipped, colour-bar limits that cut into the data's 1st-99th percentiles, text that
@@ -22,7 +24,6 @@ object interface only (no pyplot), so importing it changes no backend.
 """
 
 import json
-import math
 import os
 import sys
 import textwrap
@@ -72,8 +73,8 @@ def load(path):
         raise SpecError(f"{path}: expected a JSON figure spec ({e})") from None
     if spec.get("lamina_figure") != SPEC_VERSION:
         raise SpecError(f"{path}: lamina_figure: expected {SPEC_VERSION}")
-    if spec.get("kind") not in ("lines", "map"):
-        raise SpecError(f"{path}: kind: expected \"lines\" or \"map\"")
+    if spec.get("kind") not in ("lines", "map", "swatches"):
+        raise SpecError(f"{path}: kind: expected \"lines\", \"map\" or \"swatches\"")
     if spec["kind"] == "map":
         data = os.path.join(os.path.dirname(path), spec["data"])
         w, h = int(spec["width"]), int(spec["height"])
@@ -98,25 +99,27 @@ def spans_decades(values):
 
 
 def _axis_is_log(setting, values):
+    """A spec's log_x / log_y: "auto" (log where the data span decades), "log" or "linear"."""
     if setting == "auto":
         return spans_decades(values)
-    return bool(setting)
+    return setting in ("log", True)
 
 
-def map_scale(values, signed, from_zero=False, percentile=99.0, scale="auto"):
+def map_scale(values, signed, from_zero=False, percentile=99.0, scale="auto", upper=None):
     """The colour scale of a map: (norm, colour map name, caption sentence).
 
     Unsigned: viridis from 0 (`from_zero`) or the data's (100 - percentile)th percentile to its
     `percentile`th; logarithmic when `scale` is "log", or "auto" and the values are positive
     and span decades. Signed: RdBu_r from -L to L, L the `percentile`th percentile of |values|
-    (symmetric log when they span decades)."""
+    (symmetric log when they span decades). A given `upper` replaces the upper percentile (and
+    L): a limit the user fixed."""
     v = values[np.isfinite(values)]
     if v.size == 0:
         return colors.Normalize(0, 1), "viridis", "No finite values."
     lo_p = 100.0 - percentile
     if signed:
         mag = np.abs(v)
-        limit = float(np.percentile(mag, percentile))
+        limit = float(upper) if upper else float(np.percentile(mag, percentile))
         if limit <= 0:
             limit = float(mag.max()) or 1.0
         small = float(np.percentile(mag[mag > 0], 50)) if np.any(mag > 0) else limit
@@ -129,26 +132,29 @@ def map_scale(values, signed, from_zero=False, percentile=99.0, scale="auto"):
         else:
             norm = colors.Normalize(-limit, limit)
             how = f"limits +-{limit:.3g}"
-        return norm, "RdBu_r", (f"Diverging colour scale, {how}: the {percentile:g}th "
-                                f"percentile of |value|")
+        source = ("fixed (the 99th percentile of |value| is "
+                  f"{np.percentile(mag, 99):.3g})" if upper
+                  else f"the {percentile:g}th percentile of |value|")
+        return norm, "RdBu_r", f"Diverging colour scale, {how}: {source}"
     positive = v[v > 0]
     log = not from_zero and (scale == "log" or (scale == "auto" and spans_decades(v)))
     if log and positive.size:
         lo = float(np.percentile(positive, lo_p))
-        hi = float(np.percentile(positive, percentile))
+        hi = float(upper) if upper else float(np.percentile(positive, percentile))
         if hi <= lo:
             hi = lo * 10
+        top = "fixed" if upper else f"the {percentile:g}th percentile"
         return colors.LogNorm(lo, hi), "viridis", (
-            f"Log colour scale from {lo:.3g} to {hi:.3g}: the {lo_p:g}th and {percentile:g}th "
-            f"percentiles of the values")
+            f"Log colour scale from {lo:.3g} (the {lo_p:g}th percentile of the values) to "
+            f"{hi:.3g} ({top})")
     lo = 0.0 if from_zero else float(np.percentile(v, lo_p))
-    hi = float(np.percentile(v, percentile))
+    hi = float(upper) if upper else float(np.percentile(v, percentile))
     if hi <= lo:
         hi = lo + (abs(lo) if lo else 1.0)
     where = "0" if from_zero else f"the {lo_p:g}th percentile ({lo:.3g})"
-    return colors.Normalize(lo, hi), "viridis", (
-        f"Colour scale from {where} to the {percentile:g}th percentile of the values "
-        f"({hi:.3g})")
+    to = (f"{hi:.3g} (fixed; the values' 99th percentile is {np.percentile(v, 99):.3g})"
+          if upper else f"the {percentile:g}th percentile of the values ({hi:.3g})")
+    return colors.Normalize(lo, hi), "viridis", f"Colour scale from {where} to {to}"
 
 
 def clipped_fraction(values, norm):
@@ -166,67 +172,113 @@ def clipped_fraction(values, norm):
 # --------------------------------------------------------------------------- drawing
 
 
-def _wrap(text, points):
+def _wrap(text, points, width_in=_WIDTH_IN):
     # Characters per line for the figure's width at this font size (about 0.5 em a glyph).
-    chars = max(20, int(_WIDTH_IN * 72 / (0.52 * points)) - 4)
+    chars = max(20, int(width_in * 72 / (0.52 * points)) - 4)
     return "\n".join(textwrap.wrap(text, chars)) if text else ""
 
 
 def _finish(fig, spec, caption):
     """Title, caption under the axes, layout with room for both."""
-    caption = _wrap(caption, _CAPTION_POINTS)
+    caption = _wrap(caption, _CAPTION_POINTS, fig.get_figwidth())
     lines = caption.count("\n") + 1 if caption else 0
     bottom = (lines * _CAPTION_POINTS * 1.3 + 8) / (72 * fig.get_figheight()) if lines else 0
     if caption:
         fig.text(0.012, 0.008, caption, fontsize=_CAPTION_POINTS, va="bottom", ha="left")
-    fig.suptitle(_wrap(spec.get("title", ""), _TITLE_POINTS), fontsize=_TITLE_POINTS)
+    fig.suptitle(_wrap(spec.get("title", ""), _TITLE_POINTS, fig.get_figwidth()),
+                 fontsize=_TITLE_POINTS)
     fig.tight_layout(rect=(0, bottom, 1, 1))
     fig.lamina_caption = caption.replace("\n", " ")
     fig.lamina_name = spec.get("name", "")
 
 
-def draw_lines(spec):
-    """A line plot: every series with its standard-error band (spec["series"][i]["se"])."""
-    fig = Figure(figsize=(_WIDTH_IN, spec.get("height_in", _LINE_HEIGHT_IN)))
-    FigureCanvasAgg(fig)
-    ax = fig.add_subplot()
-    xs = [np.asarray(s["x"], dtype=np.float64) for s in spec["series"]]
-    ys = [np.asarray(s["y"], dtype=np.float64) for s in spec["series"]]
-    log_x = _axis_is_log(spec.get("log_x", "auto"), np.concatenate(xs) if xs else [])
-    log_y = _axis_is_log(spec.get("log_y", "auto"), np.concatenate(ys) if ys else [])
-    for s, x, y in zip(spec["series"], xs, ys):
-        ok = np.isfinite(x) & np.isfinite(y)
-        if log_x:
-            ok &= x > 0
-        if log_y:
-            ok &= y > 0
-        style = {"dashed": "--", "dotted": ":"}.get(s.get("style", "solid"), "-")
-        (line,) = ax.plot(x[ok], y[ok], style, label=s.get("name") or None,
-                          color=s.get("color"), linewidth=1.4,
-                          marker="o" if s.get("markers") else None, markersize=3)
-        if s.get("se") is not None:
-            se = np.asarray(s["se"], dtype=np.float64)[ok]
-            low, high = y[ok] - se, y[ok] + se
-            if log_y:  # a band below zero cannot be drawn on a log axis: cut it at y / 10
-                low = np.maximum(low, y[ok] / 10)
-            ax.fill_between(x[ok], low, high, color=line.get_color(), alpha=0.25, linewidth=0)
+def _panels(spec):
+    """A lines spec's panels: spec["panels"], or its "series" as the one panel."""
+    if "panels" in spec:
+        return spec["panels"]
+    return [{"title": "", "series": spec.get("series", [])}]
+
+
+def _draw_series(ax, s, log_x, log_y):
+    x = np.asarray(s["x"], dtype=np.float64)
+    y = np.asarray(s["y"], dtype=np.float64)
+    ok = np.isfinite(x) & np.isfinite(y)
     if log_x:
-        ax.set_xscale("log")
+        ok &= x > 0
     if log_y:
-        ax.set_yscale("log")
-    if "y_min" in spec or "y_max" in spec:
-        ax.set_ylim(spec.get("y_min"), spec.get("y_max"))
-    ax.set_xlabel(spec["x_label"])
-    ax.set_ylabel(spec["y_label"])
-    ax.grid(True, which="major", alpha=0.3)
-    named = [s for s in spec["series"] if s.get("name")]
-    if named:
-        ax.legend(loc=spec.get("legend", "best"), fontsize="small",
-                  ncol=2 if len(named) > 5 else 1, framealpha=0.85)
+        ok &= y > 0
+    style = {"dashed": "--", "dotted": ":"}.get(s.get("style", "solid"), "-")
+    (line,) = ax.plot(x[ok], y[ok], style, label=s.get("name") or None, color=s.get("color"),
+                      linewidth=1.4, marker="o" if s.get("markers") else None, markersize=3)
+    if s.get("se") is not None:
+        se = np.asarray(s["se"], dtype=np.float64)[ok]
+        low, high = y[ok] - se, y[ok] + se
+        if log_y:  # a band below zero cannot be drawn on a log axis: cut it at y / 10
+            low = np.maximum(low, y[ok] / 10)
+        ax.fill_between(x[ok], low, high, color=line.get_color(), alpha=0.25, linewidth=0)
+
+
+def draw_lines(spec):
+    """Line plots, one per panel side by side (a shared y axis), every series with its
+    standard-error band (series["se"])."""
+    panels = _panels(spec)
+    every = [s for p in panels for s in p["series"]]
+
+    def values(key):
+        v = [np.asarray(s[key], dtype=np.float64) for s in every]
+        return np.concatenate(v) if v else np.zeros(0)
+
+    log_x = _axis_is_log(spec.get("log_x", "auto"), values("x"))
+    log_y = _axis_is_log(spec.get("log_y", "auto"), values("y"))
+    width = _WIDTH_IN if len(panels) == 1 else min(10.0, 3.3 * len(panels))
+    fig = Figure(figsize=(width, spec.get("height_in", _LINE_HEIGHT_IN)))
+    FigureCanvasAgg(fig)
+    axes = fig.subplots(1, len(panels), sharey=True, squeeze=False)[0]
+    for i, (ax, panel) in enumerate(zip(axes, panels)):
+        for s in panel["series"]:
+            _draw_series(ax, s, log_x, log_y)
+        if log_x:
+            ax.set_xscale("log")
+        if log_y:
+            ax.set_yscale("log")
+        if panel.get("title"):
+            ax.set_title(panel["title"], fontsize="medium")
+        ax.set_xlabel(panel.get("x_label", spec["x_label"]))
+        ax.set_ylabel(spec["y_label"] if i == 0 else "")
+        ax.grid(True, which="major", alpha=0.3)
+        # One legend (the first panel's) names what every panel shows.
+        named = [s for s in panel["series"] if s.get("name")]
+        if named and i == 0:
+            ax.legend(loc=spec.get("legend", "best"), fontsize="small" if len(panels) == 1
+                      else "x-small", ncol=2 if len(named) > 5 and len(panels) == 1 else 1,
+                      framealpha=0.85)
+    if len(panels) > 1:  # one y label for the row: the other panels share the first's axis
+        for ax in axes[1:]:
+            ax.lamina_shares_y_label = True
     caption = spec.get("caption", "")
-    if any(s.get("se") is not None for s in spec["series"]):
+    if any(s.get("se") is not None for s in every):
         caption = (caption + " " if caption else "") + "Bands: +-1 standard error."
     _finish(fig, spec, caption)
+    return fig
+
+
+def draw_swatches(spec):
+    """A grid of true colours (linear Rec.709, shown sRGB-encoded), rows and columns named."""
+    rows, columns = spec["rows"], spec["columns"]
+    rgb = np.asarray([[np.nan if c is None else c for c in colour] for colour in spec["colours"]],
+                     dtype=np.float64).reshape(len(rows), len(columns), 3)
+    rgb = np.clip(np.nan_to_num(rgb, nan=0.0), 0.0, 1.0)
+    srgb = np.where(rgb <= 0.0031308, 12.92 * rgb, 1.055 * rgb ** (1 / 2.4) - 0.055)
+    height = min(7.0, 1.6 + 0.45 * len(rows))
+    fig = Figure(figsize=(_WIDTH_IN, height))
+    FigureCanvasAgg(fig)
+    ax = fig.add_subplot()
+    ax.imshow(srgb, interpolation="nearest", aspect="auto")
+    ax.set_xticks(range(len(columns)), columns)
+    ax.set_yticks(range(len(rows)), rows, fontsize="small")
+    ax.set_xlabel(spec["x_label"])
+    ax.set_ylabel(spec["y_label"])
+    _finish(fig, spec, spec.get("caption", ""))
     return fig
 
 
@@ -255,7 +307,7 @@ def draw_map(spec):
     signed = bool(spec.get("signed", False))
     norm, cmap_name, how = map_scale(values, signed, bool(spec.get("from_zero", False)),
                                      float(spec.get("percentile", 99.0)),
-                                     spec.get("scale", "auto"))
+                                     spec.get("scale", "auto"), spec.get("upper"))
     extent, pixels = _map_extent(spec, w, h)
     aspect_ratio = h / w if pixels else 0.75
     fig = Figure(figsize=(_WIDTH_IN, min(7.5, max(3.4, _WIDTH_IN * 0.78 * aspect_ratio + 1.4))))
@@ -302,7 +354,7 @@ def draw_map(spec):
 
 def draw(spec):
     """The figure of a spec (a dict from load())."""
-    return draw_map(spec) if spec["kind"] == "map" else draw_lines(spec)
+    return {"map": draw_map, "lines": draw_lines, "swatches": draw_swatches}[spec["kind"]](spec)
 
 
 def write(fig, stem):
@@ -363,6 +415,8 @@ def problems(fig):
     caption = getattr(fig, "lamina_caption", "")
 
     for im in fig.findobj(AxesImage):
+        if im.get_array().ndim == 3:
+            continue  # true colours (swatches): no colour scale to mislead
         data = np.ma.filled(im.get_array().astype(np.float64), np.nan)
         v = data[np.isfinite(data)]
         if v.size == 0:
@@ -386,7 +440,8 @@ def problems(fig):
     for ax in fig.axes:
         if any(ax is im.colorbar.ax for im in fig.findobj(AxesImage) if im.colorbar):
             continue
-        if not ax.get_xlabel().strip() or not ax.get_ylabel().strip():
+        shared = getattr(ax, "lamina_shares_y_label", False)
+        if not ax.get_xlabel().strip() or not (shared or ax.get_ylabel().strip()):
             found.append(f"{name}: axes without a label on x or y")
 
     texts = list(_texts(fig))

@@ -11,6 +11,8 @@ import sys
 import numpy as np
 import pytest
 
+from conftest import run_cli
+
 
 @pytest.fixture(scope="module")
 def figures(source_dir):
@@ -149,3 +151,119 @@ def test_the_script_writes_png_and_pdf_and_refuses_a_bad_spec(source_dir, tmp_pa
     assert p.returncode == 1
     assert p.stderr.count("\n") == 1 and p.stderr.startswith("lamina: error: ")
     assert "expected 3 x 2 float32 values, found 4" in p.stderr
+
+
+# ----------------------------------------------------------------- the experiments' figures
+
+def specs_of(directory):
+    return sorted(f for f in os.listdir(directory) if f.endswith(".figure.json"))
+
+
+def assert_drawn_without_problems(figures, directory):
+    """Every figure of a report was drawn by its run (PNG and PDF), and drawn again here it
+    shows no problem."""
+    specs = specs_of(directory)
+    assert specs, os.listdir(directory)
+    for name in specs:
+        stem = os.path.join(directory, name[: -len(".figure.json")])
+        assert os.path.getsize(stem + ".png") > 0 and os.path.getsize(stem + ".pdf") > 0, stem
+        spec = figures.load(stem + ".figure.json")
+        spec["name"] = name
+        assert figures.problems(figures.draw(spec)) == []
+    return specs
+
+
+def test_fresnel_figures(figures, lamina_exe, source_dir, tmp_path):
+    scene = os.path.join(source_dir, "scenes", "fresnel-spheres.json")
+    out = tmp_path / "report"
+    code, _, err = run_cli(lamina_exe, "fresnel", "Au", "bk7", "--scene", scene, "--spp", "4",
+                           "--resolution", "96x48", "-o", str(out))
+    assert code == 0, err
+    assert "lamina: note" not in err, err
+    specs = assert_drawn_without_problems(figures, str(out))
+    assert {"Au.figure.json", "Au_swatches.figure.json", "scene_ciede2000.figure.json",
+            "scene_difference.figure.json"} <= set(specs)
+    # Per channel, not luminance alone: one panel for each of R, G, B.
+    au = figures.load(str(out / "Au.figure.json"))
+    assert [p["title"] for p in au["panels"]] == ["R channel", "G channel", "B channel"]
+    # CIEDE2000 is a distance: a sequential scale from 0.
+    de = figures.load(str(out / "scene_ciede2000.figure.json"))
+    assert de["from_zero"] and not de["signed"]
+    assert de["values"].shape == (48, 96)  # --resolution
+    norm = figures.draw(de).axes[0].images[0].norm
+    assert norm.vmin == 0 and norm.vmax == pytest.approx(
+        np.nanpercentile(de["values"], 99), rel=1e-6)
+    # Every CIEDE2000 statistic beside its noise floor.
+    summary = (out / "summary.md").read_text()
+    assert "| mean | " in summary and "| 95th percentile | " in summary
+    assert summary.count("(noise floor ") == 2, summary
+
+
+def test_without_matplotlib_the_data_is_written_and_one_line_says_so(lamina_exe, tmp_path):
+    fake = tmp_path / "fake"
+    (fake / "matplotlib").mkdir(parents=True)
+    (fake / "matplotlib" / "__init__.py").write_text("raise ImportError('no matplotlib here')\n")
+    env = dict(os.environ, PYTHONPATH=str(fake), LAMINA_PYTHON=sys.executable)
+    out = tmp_path / "report"
+    p = subprocess.run([lamina_exe, "fresnel", "Cu", "-o", str(out)], capture_output=True,
+                       text=True, env=env)
+    assert p.returncode == 0, p.stderr
+    notes = [line for line in p.stderr.splitlines() if line.startswith("lamina: note")]
+    assert len(notes) == 1 and "has no matplotlib" in notes[0], p.stderr
+    assert "Cu.figure.json" in specs_of(str(out))
+    assert not os.path.exists(out / "Cu.png")
+    env["LAMINA_PYTHON"] = str(tmp_path / "no-such-python")
+    p = subprocess.run([lamina_exe, "fresnel", "Cu", "-o", str(tmp_path / "r2")],
+                       capture_output=True, text=True, env=env)
+    assert p.returncode == 0, p.stderr
+    assert p.stderr.count("lamina: note: figures not drawn (cannot run") == 1, p.stderr
+
+
+def test_layering_figures(figures, lamina_exe, source_dir, tmp_path):
+    scene = os.path.join(source_dir, "scenes", "layering", "test-object.json")
+    out = tmp_path / "report"
+    code, _, err = run_cli(lamina_exe, "layering", "clear-paint", "--estimates", "16",
+                           "--albedo-samples", "4096", "--scene", scene, "--spp", "2",
+                           "--resolution", "48x40", "-o", str(out))
+    assert code == 0, err
+    assert "lamina: note" not in err, err
+    specs = assert_drawn_without_problems(figures, str(out))
+    error_maps = [s for s in specs if s.endswith("_error.figure.json")]
+    assert len(error_maps) == 2, specs  # one per twin
+    for name in error_maps:
+        spec = figures.load(str(out / name))
+        assert spec["signed"]
+        norm = figures.draw(spec).axes[0].images[0].norm
+        # Limits from the data (the shipped maps were fixed at +-20%): symmetric, at the 99th
+        # percentile of |error|.
+        assert norm.vmin == -norm.vmax
+        assert norm.vmax == pytest.approx(np.nanpercentile(np.abs(spec["values"]), 99),
+                                          rel=1e-6)
+    maps = [s for s in specs if s.endswith("_ciede2000.figure.json")]
+    assert len(maps) == 4  # two twins, two modes
+    assert figures.load(str(out / maps[0]))["values"].shape == (40, 48)  # --resolution
+    # Each twin's mean and 95th percentile in each mode beside the noise floor: 2 x 2 x 2.
+    assert (out / "summary.md").read_text().count("(noise floor ") == 8
+    albedo = figures.load(str(out / "clear-paint_albedo.figure.json"))
+    walk = albedo["panels"][0]["series"][0]
+    assert walk["name"] == "random walk" and len(walk["se"]) == len(walk["y"])
+
+
+def test_convergence_figures(figures, lamina_exe, source_dir, tmp_path):
+    scene = os.path.join(source_dir, "scenes", "cornell-box.json")
+    out = tmp_path / "report"
+    code, _, err = run_cli(lamina_exe, "convergence", scene, "--integrators", "path",
+                           "--modes", "rgb", "--time", "1", "--reference-time", "2",
+                           "--resolution", "32x32", "-o", str(out))
+    assert code == 0, err
+    assert "lamina: note" not in err, err
+    assert_drawn_without_problems(figures, str(out))
+    spec = figures.load(str(out / "convergence.figure.json"))
+    fig = figures.draw(spec)
+    # Error against time and against samples, both log-log, each pass with its standard error.
+    assert [p["title"] for p in spec["panels"]] == ["against time", "against samples"]
+    for ax in fig.axes:
+        assert ax.get_xscale() == "log" and ax.get_yscale() == "log"
+    for panel in spec["panels"]:
+        (path,) = panel["series"]
+        assert len(path["se"]) == len(path["y"]) and all(e > 0 for e in path["se"])
