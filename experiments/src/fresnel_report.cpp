@@ -163,8 +163,9 @@ std::string writeScene(const FresnelSceneComparison& c, Report& report) {
                c.maxDeltaE, describeReading(meanReading, spp).c_str(),
                describeReading(p95Reading, spp).c_str()) +
            formatText(
-               "The noise floor is the same statistic between the spectral render and a second "
-               "one with another seed: both renders' noise, no difference of models. A "
+               "The noise floor is the same statistic between each mode's render and a second one "
+               "with another seed (noise alone), the two combined as sqrt((rgb^2 + spectral^2) / "
+               "2): the noise of one render of each mode. A "
                "difference is resolved when it exceeds %g times its floor; the samples that "
                "would resolve one that does not are estimated with the noise falling as "
                "1/sqrt(spp) and adding in quadrature to the true difference.\n\n"

@@ -15,9 +15,9 @@
 // the figures (figure_spec.h) MATERIAL.png/.pdf (each model's reflectance against angle, one
 // panel per channel) and MATERIAL_swatches.png/.pdf (rows: exact, models; columns: 0, 30, 60,
 // 75, 82, 87 degrees), summary.md. With a scene, renders it in both modes and writes the
-// difference and a CIEDE2000 map (scene_ciede2000.png/.pdf), and renders the spectral mode
-// once more with another seed: the CIEDE2000 between the two spectral renders is the noise
-// floor every difference is read against (noise_floor.h).
+// difference and a CIEDE2000 map (scene_ciede2000.png/.pdf), and renders each mode once more
+// with another seed: the CIEDE2000 within each pair, combined, is the noise floor every
+// difference is read against (noise_floor.h).
 #pragma once
 
 #include <optional>
@@ -71,8 +71,9 @@ struct FresnelSceneComparison {
     ImageMetrics metrics;          ///< RGB against spectral
     std::vector<float> ciede2000;  ///< per pixel
     double meanDeltaE = 0, maxDeltaE = 0, p95DeltaE = 0;
-    /// The noise floor: the CIEDE2000 between the spectral render and a second one with
-    /// another seed (noise alone), its mean and 95th percentile.
+    /// The noise floor, its mean and 95th percentile: the CIEDE2000 between each mode's render
+    /// and a second one with another seed (noise alone), the two pairs' statistics combined
+    /// as sqrt((rgb^2 + spectral^2) / 2).
     double floorMeanDeltaE = 0, floorP95DeltaE = 0;
 };
 
