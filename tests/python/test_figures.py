@@ -247,6 +247,17 @@ def test_layering_figures(figures, lamina_exe, source_dir, tmp_path):
     albedo = figures.load(str(out / "clear-paint_albedo.figure.json"))
     walk = albedo["panels"][0]["series"][0]
     assert walk["name"] == "random walk" and len(walk["se"]) == len(walk["y"])
+    # The table's own script draws the standard errors as bands too, not as series.
+    import runpy
+    from unittest import mock
+    with mock.patch.object(sys, "argv", ["script", str(tmp_path / "table.png")]):
+        runpy.run_path(str(out / "clear-paint_albedo.py"), run_name="__main__")
+    import matplotlib.pyplot as plt
+    ax = plt.gcf().axes[0]
+    labels = [line.get_label() for line in ax.get_lines()]
+    assert labels == ["walk", "fresnel", "albedo"], labels
+    assert len(ax.collections) == 3  # a band for each: the walk's and the twins' albedo SE
+    plt.close("all")
 
 
 def test_convergence_figures(figures, lamina_exe, source_dir, tmp_path):
