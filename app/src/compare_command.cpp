@@ -44,6 +44,11 @@ double writeDifference(const CompareArgs& args, const render::RgbImage& a,
         map.upper = scale;
         map.clipReason = "The scale was fixed by --diff-scale.";
     }
+    if (std::filesystem::path(args.diff).extension() != ".png") {
+        // Another format (TIFF, EXR, ...): the false-colour image alone, as lamina writes it.
+        experiments::writeDifferenceImage(args.diff, a, b, scale);
+        return scale;
+    }
     const std::filesystem::path stem = std::filesystem::path(args.diff).replace_extension();
     const std::filesystem::path directory =
         stem.has_parent_path() ? stem.parent_path() : std::filesystem::path(".");
@@ -55,12 +60,7 @@ double writeDifference(const CompareArgs& args, const render::RgbImage& a,
 }
 
 void run(const CompareArgs& args) {
-    if (!args.diff.empty()) {
-        if (std::filesystem::path(args.diff).extension() != ".png")
-            throw CLI::ValidationError("--diff",
-                                       "expected a .png file name, got \"" + args.diff + "\"");
-        checkOutputFile(args.diff, {args.a, args.b});
-    }
+    if (!args.diff.empty()) checkOutputFile(args.diff, {args.a, args.b});
     const render::RgbImage a = render::readRgbImage(args.a);
     const render::RgbImage b = render::readRgbImage(args.b);
     // Both sides are linear after reading; a display image (sRGB, tone-mapped and clipped)

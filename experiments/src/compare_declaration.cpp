@@ -26,8 +26,9 @@ CommandDecl compareDeclaration() {
             .differsInPython("one name, whose value is returned; None (the default) returns a "
                              "dict of every metric"),
         textOption("diff",
-                   "Write a false-colour map of |image - reference| as NAME.png and NAME.pdf "
-                   "(with its data NAME.figure.json, NAME.f32)")
+                   "Write a false-colour map of |image - reference|: NAME.png is a figure, also as "
+                   "NAME.pdf (with its data NAME.figure.json, NAME.f32); another format the "
+                   "image alone")
             .commandLineOnly("a picture file; in Python |a - b| is one NumPy expression"),
         positiveOption("diff-scale",
                        "The top of --diff's colour scale (default: the difference's 99th "

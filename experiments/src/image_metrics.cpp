@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "lamina/core/error.h"
+#include "lamina/experiments/svg_heat_map.h"
 
 namespace lamina::experiments {
 
@@ -114,6 +115,14 @@ MapFigure differenceFigure(const render::RgbImage& a, const render::RgbImage& b,
     map.values = meanAbsoluteDifference(a, b);
     map.fromZero = true;
     return map;
+}
+
+void writeDifferenceImage(const std::filesystem::path& path, const render::RgbImage& a,
+                          const render::RgbImage& b, double scale) {
+    SvgHeatMap map("|image - reference|, mean over R, G, B", a.width, a.height,
+                   meanAbsoluteDifference(a, b));
+    map.setScale(Palette::Sequential, 0, scale > 0 ? scale : 1, "|difference| (linear radiance)");
+    map.write(std::filesystem::path(path).replace_extension(".svg"), path);
 }
 
 double percentileOf(std::vector<float> values, double p) {

@@ -58,6 +58,13 @@ std::string nonFiniteNote(const ImageMetrics& m);
 MapFigure differenceFigure(const render::RgbImage& a, const render::RgbImage& b,
                            const std::string& title);
 
+/// The false-colour image alone of the mean absolute channel difference |a - b| in any format
+/// lamina writes (`compare --diff NAME.tif`, ...; a PNG gets the figure of differenceFigure
+/// instead): black, blue, magenta, yellow, white from 0 to `scale` (Palette::Sequential), and
+/// beside it (same name, .svg) the figure with its axes and colour bar.
+void writeDifferenceImage(const std::filesystem::path& path, const render::RgbImage& a,
+                          const render::RgbImage& b, double scale);
+
 /// The p-th percentile (0-100) of the finite values, interpolated linearly between the two
 /// nearest ranks (NumPy's default, which the figure module uses); 0 when none is finite.
 double percentileOf(std::vector<float> values, double p);
