@@ -1,11 +1,15 @@
 // `lamina compare A.exr B.exr`: error metrics of A against the reference B (image_metrics.h)
-// and, optionally, a false-colour picture of |A - B|.
+// and, optionally, a false-colour map of |A - B| (a figure of the figure module: NAME.png,
+// NAME.pdf, with its data NAME.figure.json and NAME.f32; docs/figures.md).
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <filesystem>
 
 #include "declared_options.h"
 #include "interruption.h"
 #include "lamina/core/error.h"
+#include "lamina/core/output_files.h"
+#include "lamina/experiments/figure_drawing.h"
 #include "lamina/experiments/image_metrics.h"
 
 namespace lamina::app {
@@ -16,7 +20,7 @@ struct CompareArgs {
     std::string a, b;
     std::vector<experiments::Metric> metrics;
     std::string diff;
-    double diffScale = 0;  ///< 0: the largest difference
+    double diffScale = 0;  ///< 0: the 99th percentile of the difference
 
     explicit CompareArgs(const experiments::OptionValues& v)
         : a(*v.text("image")),
@@ -26,7 +30,37 @@ struct CompareArgs {
           diffScale(v.number("diff-scale").value_or(0)) {}
 };
 
+/// The map of |a - b| as a figure beside `png` (its stem): the scale from the difference's
+/// 99th percentile, or fixed by --diff-scale. Returns the scale.
+double writeDifference(const CompareArgs& args, const render::RgbImage& a,
+                       const render::RgbImage& b) {
+    experiments::MapFigure map = experiments::differenceFigure(
+        a, b,
+        "|" + std::filesystem::path(args.a).filename().string() + " - " +
+            std::filesystem::path(args.b).filename().string() + "| of each pixel");
+    double scale = experiments::percentileOf(map.values, map.percentile);
+    if (args.diffScale > 0) {
+        scale = args.diffScale;
+        map.upper = scale;
+        map.clipReason = "The scale was fixed by --diff-scale.";
+    }
+    if (std::filesystem::path(args.diff).extension() != ".png") {
+        // Another format (TIFF, EXR, ...): the false-colour image alone, as lamina writes it.
+        experiments::writeDifferenceImage(args.diff, a, b, scale);
+        return scale;
+    }
+    const std::filesystem::path stem = std::filesystem::path(args.diff).replace_extension();
+    const std::filesystem::path directory =
+        stem.has_parent_path() ? stem.parent_path() : std::filesystem::path(".");
+    experiments::writeFigureSpec(directory, stem.filename().string(), map);
+    const std::string note =
+        experiments::drawFigures(directory / (stem.filename().string() + ".figure.json"));
+    if (!note.empty()) std::fprintf(stderr, "lamina: note: %s\n", note.c_str());
+    return scale;
+}
+
 void run(const CompareArgs& args) {
+    if (!args.diff.empty()) checkOutputFile(args.diff, {args.a, args.b});
     const render::RgbImage a = render::readRgbImage(args.a);
     const render::RgbImage b = render::readRgbImage(args.b);
     // Both sides are linear after reading; a display image (sRGB, tone-mapped and clipped)
@@ -51,9 +85,8 @@ void run(const CompareArgs& args) {
         std::printf("%s %.9g\n", std::string(experiments::kMetricNames.name(metric)).c_str(),
                     experiments::metricValue(m, metric));
     if (!args.diff.empty()) {
-        const double scale = args.diffScale > 0 ? args.diffScale : m.max;
-        experiments::writeDifferenceImage(args.diff, a, b, scale);
-        // Beside the metrics, in their "name value" form: the difference shown white.
+        const double scale = writeDifference(args, a, b);
+        // Beside the metrics, in their "name value" form: the top of the colour scale.
         std::printf("diff_scale %.9g\n", scale);
     }
 }

@@ -26,10 +26,13 @@ CommandDecl compareDeclaration() {
             .differsInPython("one name, whose value is returned; None (the default) returns a "
                              "dict of every metric"),
         textOption("diff",
-                   "Write a false-colour PNG of |image - reference| and beside it an SVG "
-                   "figure with its colour bar")
+                   "Write a false-colour map of |image - reference|: NAME.png is a figure, also as "
+                   "NAME.pdf (with its data NAME.figure.json, NAME.f32); another format the "
+                   "image alone")
             .commandLineOnly("a picture file; in Python |a - b| is one NumPy expression"),
-        positiveOption("diff-scale", "The difference shown white in --diff (default: the largest)")
+        positiveOption("diff-scale",
+                       "The top of --diff's colour scale (default: the difference's 99th "
+                       "percentile)")
             .commandLineOnly("the scale of --diff's picture"),
     };
     return c;

@@ -1,11 +1,11 @@
-// The report of `lamina convergence`: convergence.csv, convergence.svg, reference_MODE.exr
-// for each rendered reference, and summary.md.
+// The report of `lamina convergence`: convergence.csv, the figure convergence (png, pdf; drawn
+// by the figure module, figure_spec.h), reference_MODE.exr for each rendered reference, and
+// summary.md (with its Premises section).
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
 #include "lamina/experiments/convergence.h"
-#include "lamina/experiments/svg_plot.h"
 #include "lamina/experiments/text_format.h"
 #include "lamina/output/image_output.h"
 
@@ -70,25 +70,38 @@ void writeCsv(const ConvergenceResult& result, const Report& report) {
     report.writeTable("convergence.csv", csv, plot);
 }
 
-void writePlot(const ConvergenceResult& result, const Report& report) {
+/// relMSE against render time and against samples per pixel, log-log, each pass with the
+/// standard error of its relMSE as a band.
+void writePlot(const ConvergenceResult& result, Report& report) {
     const ConvergenceInputs& in = result.inputs;
-    SvgPlot plot("relMSE against render time: " + std::filesystem::path(in.scene).stem().string(),
-                 "render time (seconds)", "relMSE (epsilon 1e-2)");
-    plot.setLogX(true);
-    plot.setLogY(true);
-    for (const ConvergenceCurve& c : result.curves) {
-        const std::string mode = nameOf(c.mode);
-        SvgPlot::Series s;
-        s.name = nameOf(c.integrator) + (in.modes.size() > 1 ? " " + mode : "");
-        s.dashed = c.mode == render::RenderModeKind::Spectral;
-        s.markers = true;
-        for (const auto& r : c.log.rows()) {
-            s.x.push_back(r.seconds);
-            s.y.push_back(r.metrics.relmse);
+    LineFigure figure;
+    figure.title = "relMSE against render time and samples: " +
+                   std::filesystem::path(in.scene).stem().string();
+    figure.xLabel = "render time (s)";
+    figure.yLabel = "relMSE (epsilon 1e-2)";
+    figure.xScale = figure.yScale = AxisScale::Log;
+    figure.caption =
+        "Standard error of each relMSE: over the image's channel values, the pixels "
+        "taken as independent.";
+    for (const bool perSample : {false, true}) {
+        LinePanel panel{perSample ? "against samples" : "against time",
+                        {},
+                        perSample ? "samples per pixel" : ""};
+        for (const ConvergenceCurve& c : result.curves) {
+            LineSeries s;
+            s.name = nameOf(c.integrator) + (in.modes.size() > 1 ? " " + nameOf(c.mode) : "");
+            if (c.mode == render::RenderModeKind::Spectral) s.style = LineSeries::Style::Dashed;
+            s.markers = true;
+            for (const auto& r : c.log.rows()) {
+                s.x.push_back(perSample ? double(r.spp) : r.seconds);
+                s.y.push_back(r.metrics.relmse);
+                s.standardError.push_back(r.metrics.relmseStandardError);
+            }
+            panel.series.push_back(std::move(s));
         }
-        plot.add(std::move(s));
+        figure.panels.push_back(std::move(panel));
     }
-    report.writeFigure("convergence.svg", plot);
+    report.addFigure("convergence", figure);
 }
 
 /// Each check of each mode's reference and its outcome.
@@ -143,7 +156,7 @@ std::string summary(const ConvergenceResult& result, const std::string& referenc
           "bias) dominates. Where the two differ, the seconds of the passes were not in "
           "proportion to their samples (a busy machine, start-up costs); n/a: fewer than three "
           "passes after the first tenth.\n\n"
-       << "![relMSE against time](convergence.svg)\n";
+       << "![relMSE against time and samples](convergence.png)\n";
     md << premisesSection(result);
     return md.str();
 }

@@ -1,10 +1,12 @@
 #include "lamina/experiments/fresnel.h"
 #include "lamina/experiments/interrupted.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "lamina/bsdf/fresnel.h"
 #include "lamina/core/error.h"
+#include "lamina/core/hash.h"
 #include "lamina/spectral/color_difference.h"
 #include "lamina/spectral/color_space.h"
 #include "lamina/spectral/ior_spectrum.h"
@@ -106,10 +108,29 @@ FresnelMaterial analyse(const std::string& materialName) {
     return result;
 }
 
+/// CIEDE2000 of each pixel of a against b (linear Rec.709).
+std::vector<float> ciede2000Map(const render::RgbImage& a, const render::RgbImage& b) {
+    std::vector<float> map(std::size_t(a.width) * a.height);
+    for (std::size_t i = 0; i < map.size(); ++i) {
+        const Rgb<double> ca(a.pixels[3 * i], a.pixels[3 * i + 1], a.pixels[3 * i + 2]);
+        const Rgb<double> cb(b.pixels[3 * i], b.pixels[3 * i + 1], b.pixels[3 * i + 2]);
+        map[i] = float(ciede2000Rec709(ca, cb));
+    }
+    return map;
+}
+
+double mean(const std::vector<float>& values) {
+    double sum = 0;
+    for (const float v : values)
+        sum += v;
+    return values.empty() ? 0 : sum / double(values.size());
+}
+
 FresnelSceneComparison compareModes(const std::string& scenePath, int spp,
+                                    const render::RenderOptions& overrides,
                                     const ProgressSink& progress) {
     const render::SceneDesc scene = render::loadScene(scenePath);
-    render::RenderOptions o;
+    render::RenderOptions o = overrides;
     if (spp > 0) o.spp = spp;
     o.mode = render::RenderModeKind::Rgb;
     tell(progress, "rendering " + scenePath + " in RGB mode...\n");
@@ -119,19 +140,28 @@ FresnelSceneComparison compareModes(const std::string& scenePath, int spp,
     o.mode = render::RenderModeKind::Spectral;
     tell(progress, "rendering " + scenePath + " in spectral mode...\n");
     c.spectral = renderWhole(scene, o);
+    // Each mode again with an independent seed: each pair differs by its mode's noise alone.
+    // RGB against spectral carries one render's noise of each mode, a pair of one mode twice
+    // its own: the floor combines the two pairs' statistics in quadrature, sqrt((r^2 + s^2) / 2)
+    // (spectral mode's colour noise is the larger; its pair alone would overstate the floor).
+    o.seed = hashValues({o.seed.value_or(scene.settings.seed), 0x666c6f6f72});
+    tell(progress, "rendering " + scenePath + " in spectral mode again (the noise floor)...\n");
+    const render::RenderResult spectralTwin = renderWhole(scene, o);
+    o.mode = render::RenderModeKind::Rgb;
+    tell(progress, "rendering " + scenePath + " in RGB mode again (the noise floor)...\n");
+    const render::RenderResult rgbTwin = renderWhole(scene, o);
     const render::RgbImage a = filmImage(*c.rgb.film), b = filmImage(*c.spectral.film);
     c.metrics = compareImages(a, b);
-    c.ciede2000.resize(std::size_t(a.width) * a.height);
-    double sum = 0, worst = 0;
-    for (std::size_t i = 0; i < c.ciede2000.size(); ++i) {
-        const Rgb<double> ca(a.pixels[3 * i], a.pixels[3 * i + 1], a.pixels[3 * i + 2]);
-        const Rgb<double> cb(b.pixels[3 * i], b.pixels[3 * i + 1], b.pixels[3 * i + 2]);
-        c.ciede2000[i] = float(ciede2000Rec709(ca, cb));
-        sum += c.ciede2000[i];
-        worst = std::max(worst, double(c.ciede2000[i]));
-    }
-    c.meanDeltaE = sum / double(c.ciede2000.size());
-    c.maxDeltaE = worst;
+    c.ciede2000 = ciede2000Map(a, b);
+    c.meanDeltaE = mean(c.ciede2000);
+    c.maxDeltaE =
+        c.ciede2000.empty() ? 0 : double(*std::max_element(c.ciede2000.begin(), c.ciede2000.end()));
+    c.p95DeltaE = percentileOf(c.ciede2000, 95);
+    const std::vector<float> spectralPair = ciede2000Map(filmImage(*spectralTwin.film), b);
+    const std::vector<float> rgbPair = ciede2000Map(filmImage(*rgbTwin.film), a);
+    const auto combined = [](double r, double s) { return std::sqrt((r * r + s * s) / 2); };
+    c.floorMeanDeltaE = combined(mean(rgbPair), mean(spectralPair));
+    c.floorP95DeltaE = combined(percentileOf(rgbPair, 95), percentileOf(spectralPair, 95));
     return c;
 }
 
@@ -141,7 +171,7 @@ FresnelResult runFresnel(const FresnelInputs& in) {
     FresnelResult result;
     for (const std::string& m : in.materials)
         result.materials.push_back(analyse(m));
-    if (!in.scene.empty()) result.scene = compareModes(in.scene, in.spp, in.progress);
+    if (!in.scene.empty()) result.scene = compareModes(in.scene, in.spp, in.overrides, in.progress);
     return result;
 }
 

@@ -14,6 +14,7 @@ FresnelInputs fresnelInputs(const OptionValues& v, const CommandContext& context
     in.materials = v.texts("materials");
     in.scene = v.text("scene").value_or("");
     in.spp = int(v.integer("spp").value_or(0));
+    if (const auto resolution = v.resolution("resolution")) in.overrides.resolution = resolution;
     in.progress = context.progress;
     return in;
 }
@@ -82,6 +83,7 @@ CommandDecl fresnelDeclaration() {
                              "compares them"),
         integerOption("spp", "Samples per pixel of the --scene renders", 1, render::kMaxSppOverride)
             .commandLineOnly("of --scene's renders"),
+        resolutionOverrideOption().commandLineOnly("of --scene's renders"),
     };
     c.report = [](const OptionValues& v, const CommandContext& context) -> ReportWork {
         const FresnelInputs in = fresnelInputs(v, context);

@@ -1,13 +1,11 @@
-// The report of `lamina fresnel`: per material MATERIAL.csv, MATERIAL_spectral.csv,
-// MATERIAL.svg and MATERIAL_swatches.svg; with a scene, its renders and difference maps; and
-// summary.md.
+// The report of `lamina fresnel`: per material MATERIAL.csv, MATERIAL_spectral.csv, the
+// figures MATERIAL (reflectance per channel) and MATERIAL_swatches; with a scene, its renders,
+// the difference and the CIEDE2000 map; and summary.md.
 #include <cmath>
 #include <sstream>
 
 #include "lamina/experiments/fresnel.h"
-#include "lamina/experiments/svg_heat_map.h"
-#include "lamina/experiments/svg_plot.h"
-#include "lamina/experiments/svg_swatches.h"
+#include "lamina/experiments/noise_floor.h"
 #include "lamina/experiments/text_format.h"
 #include "lamina/output/image_output.h"
 #include "lamina/spectral/color_space.h"
@@ -56,34 +54,53 @@ void writeCsvs(const FresnelMaterial& m, const Report& report) {
     report.writeTable(m.stem + "_spectral.csv", spec.str(), exact);
 }
 
-/// Luminance of each model against angle, and the exact curve at three wavelengths.
-void writePlot(const FresnelMaterial& m, const Report& report) {
-    SvgPlot plot("Fresnel reflectance: " + m.name, "angle of incidence (degrees)",
-                 "reflectance (luminance)");
-    for (const FresnelModel& model : m.models) {
-        SvgPlot::Series s{model.name, {}, {}};
-        for (int a = 0; a < kFresnelAngles; ++a) {
-            s.x.push_back(a);
-            s.y.push_back(luminance(model.rgb[std::size_t(a)]));
+/// One panel per channel (R, G, B of linear Rec.709): every model's reflectance against angle,
+/// the exact colour's first, and the exact reflectance at the channel's wavelength (650, 550
+/// and 450 nm) dotted. Luminance alone would hide what the models get wrong: the colour.
+void writePlot(const FresnelMaterial& m, Report& report) {
+    LineFigure figure;
+    figure.title = "Fresnel reflectance of " + m.name + " per channel: exact and RGB models";
+    figure.xLabel = "angle of incidence (degrees)";
+    figure.yLabel = "reflectance (linear Rec.709 channel, under D65)";
+    figure.xScale = figure.yScale = AxisScale::Linear;
+    const char* channels[] = {"R", "G", "B"};
+    for (int ch = 0; ch < 3; ++ch) {
+        LinePanel panel{std::string(channels[ch]) + " channel", {}};
+        for (std::size_t k = 0; k < m.models.size(); ++k) {
+            const FresnelModel& model = m.models[k];
+            LineSeries s{model.name, {}, {}};
+            if (k == 0) s.colour = "black";
+            for (int a = 0; a < kFresnelAngles; ++a) {
+                s.x.push_back(a);
+                s.y.push_back(model.rgb[std::size_t(a)][ch]);
+            }
+            panel.series.push_back(std::move(s));
         }
-        plot.add(std::move(s));
-    }
-    for (const WavelengthCurve& c : m.plotted) {
-        SvgPlot::Series s{"exact at " + std::to_string(int(c.nm)) + " nm", {}, {}, true};
-        for (int a = 0; a < kFresnelAngles; ++a) {
-            s.x.push_back(a);
-            s.y.push_back(c.reflectance[std::size_t(a)]);
+        // m.plotted is 450, 550, 650 nm: the B, G and R channels' wavelengths.
+        if (m.plotted.size() == 3) {
+            const WavelengthCurve& c = m.plotted[std::size_t(2 - ch)];
+            LineSeries s{ch == 0 ? "exact at 650, 550, 450 nm (R, G, B)" : "", {}, {}};
+            s.style = LineSeries::Style::Dotted;
+            s.colour = "0.35";
+            for (int a = 0; a < kFresnelAngles; ++a) {
+                s.x.push_back(a);
+                s.y.push_back(c.reflectance[std::size_t(a)]);
+            }
+            panel.series.push_back(std::move(s));
         }
-        plot.add(std::move(s));
+        figure.panels.push_back(std::move(panel));
     }
-    report.writeFigure(m.stem + ".svg", plot);
+    figure.caption =
+        "The exact curve is the colour of the spectral reflectance (380-780 nm) "
+        "under D65; each RGB model is built from it as RGB mode builds it.";
+    report.addFigure(m.stem, figure);
 }
 
 /// Rows: the models (the exact spectral reflectance's colour, and the RGB-mode models built
 /// from it); columns: a few angles of incidence.
-void writeSwatches(const FresnelMaterial& m, const Report& report) {
+void writeSwatches(const FresnelMaterial& m, Report& report) {
     const int angles[] = {0, 30, 60, 75, 82, 87};
-    SvgSwatches s;
+    SwatchFigure s;
     s.title = "Fresnel reflectance of " + m.name + " seen as a colour (" + m.stem +
               ", under D65, sRGB display)";
     s.xLabel = "angle of incidence (degrees)";
@@ -96,7 +113,7 @@ void writeSwatches(const FresnelMaterial& m, const Report& report) {
         for (int a : angles)
             s.colours.push_back(m.models[row].rgb[std::size_t(a)]);
     }
-    s.write(report.file(m.stem + "_swatches.svg"));
+    report.addFigure(m.stem + "_swatches", s);
 }
 
 std::string table(const FresnelMaterial& m) {
@@ -109,30 +126,52 @@ std::string table(const FresnelMaterial& m) {
         md << formatText("| %s | %.4f | %.4f | %.2f | %.2f |\n", model.name.c_str(), model.maxError,
                          model.meanError, model.maxDeltaE, model.meanDeltaE);
     }
-    md << "\n![" << m.stem << " reflectance](" << m.stem << ".svg)\n\n![" << m.stem << " swatches]("
-       << m.stem << "_swatches.svg)\n\n";
+    md << "\n![" << m.stem << " reflectance per channel](" << m.stem << ".png)\n\n![" << m.stem
+       << " swatches](" << m.stem << "_swatches.png)\n\n";
     return md.str();
 }
 
-std::string writeScene(const FresnelSceneComparison& c, const Report& report) {
+std::string writeScene(const FresnelSceneComparison& c, Report& report) {
     render::ImageMetadata meta;
     meta.ints["spp"] = c.rgb.spp;
     render::writeExr(report.file("scene_rgb.exr"), *c.rgb.film, false, meta);
     render::writeExr(report.file("scene_spectral.exr"), *c.spectral.film, false, meta);
     const render::RgbImage a = filmImage(*c.rgb.film), b = filmImage(*c.spectral.film);
-    writeDifferenceImage(report.file("scene_difference.png"), a, b, c.metrics.max);
+    report.addFigure(
+        "scene_difference",
+        differenceFigure(a, b, "|RGB - spectral mode| of each pixel (" + c.scene + ")"));
     render::writeFloatExr(report.file("scene_ciede2000.exr"), a.width, a.height, {"Y"},
                           c.ciede2000);
-    SvgHeatMap map("CIEDE2000, RGB against spectral mode", a.width, a.height, c.ciede2000);
-    map.setScale(Palette::Diverging, -10, 10, "CIEDE2000 (saturated at 10)");
-    map.write(report.file("scene_ciede2000.svg"), report.file("scene_ciede2000.png"));
+    MapFigure map;
+    map.title = "CIEDE2000 of each pixel, RGB against spectral mode (" + c.scene + ")";
+    map.quantity = "CIEDE2000";
+    map.width = a.width;
+    map.height = a.height;
+    map.values = c.ciede2000;
+    map.fromZero = true;  // a distance: never negative, 0 is agreement
+    map.caption = "Both renders' noise included.";
+    report.addFigure("scene_ciede2000", map);
+    const int spp = c.rgb.spp;
+    const NoiseFloorReading meanReading = readAgainstFloor(c.meanDeltaE, c.floorMeanDeltaE, spp);
+    const NoiseFloorReading p95Reading = readAgainstFloor(c.p95DeltaE, c.floorP95DeltaE, spp);
     return formatText(
-        "### The scene in both modes: %s\n\n%d spp each (path integrator). RGB mode "
-        "against spectral mode: relMSE %.4g, MAE %.4g; CIEDE2000 mean %.2f, max %.2f "
-        "(noise included: both renders are noisy).\n\n"
-        "![CIEDE2000 map, red = 10](scene_ciede2000.svg) "
-        "![|RGB - spectral|](scene_difference.svg)\n\n",
-        c.scene.c_str(), c.rgb.spp, c.metrics.relmse, c.metrics.mae, c.meanDeltaE, c.maxDeltaE);
+               "### The scene in both modes: %s\n\n%d spp each (path integrator), %dx%d. RGB "
+               "mode against spectral mode: relMSE %.4g, MAE %.4g; CIEDE2000 max %.2f.\n\n"
+               "| CIEDE2000, RGB against spectral | value (noise floor) |\n|---|---|\n"
+               "| mean | %s |\n| 95th percentile | %s |\n\n",
+               c.scene.c_str(), spp, a.width, a.height, c.metrics.relmse, c.metrics.mae,
+               c.maxDeltaE, describeReading(meanReading, spp).c_str(),
+               describeReading(p95Reading, spp).c_str()) +
+           formatText(
+               "The noise floor is the same statistic between each mode's render and a second one "
+               "with another seed (noise alone), the two combined as sqrt((rgb^2 + spectral^2) / "
+               "2): the noise of one render of each mode. A "
+               "difference is resolved when it exceeds %g times its floor; the samples that "
+               "would resolve one that does not are estimated with the noise falling as "
+               "1/sqrt(spp) and adding in quadrature to the true difference.\n\n"
+               "![CIEDE2000 map](scene_ciede2000.png) "
+               "![|RGB - spectral|](scene_difference.png)\n\n",
+               kResolvedOverFloor);
 }
 
 }  // namespace

@@ -15,6 +15,7 @@ ImageMetrics compareImages(const render::RgbImage& a, const render::RgbImage& b)
                          std::to_string(a.height) + " and " + std::to_string(b.width) + "x" +
                          std::to_string(b.height));
     ImageMetrics m;
+    double relSquares = 0;  // sum of the relMSE terms squared, for its standard error
     for (std::size_t i = 0; i < a.pixels.size(); ++i) {
         const double d = double(a.pixels[i]) - double(b.pixels[i]);
         if (!std::isfinite(d)) {
@@ -22,7 +23,9 @@ ImageMetrics compareImages(const render::RgbImage& a, const render::RgbImage& b)
             continue;
         }
         m.mse += d * d;
-        m.relmse += d * d / (double(b.pixels[i]) * double(b.pixels[i]) + kRelMseEpsilon);
+        const double rel = d * d / (double(b.pixels[i]) * double(b.pixels[i]) + kRelMseEpsilon);
+        m.relmse += rel;
+        relSquares += rel * rel;
         m.mae += std::abs(d);
         m.max = std::max(m.max, std::abs(d));
         ++m.compared;
@@ -31,6 +34,11 @@ ImageMetrics compareImages(const render::RgbImage& a, const render::RgbImage& b)
         m.mse /= double(n);
         m.relmse /= double(n);
         m.mae /= double(n);
+        if (n > 1) {
+            const double variance = std::max(
+                0.0, (relSquares / double(n) - m.relmse * m.relmse) * double(n) / double(n - 1));
+            m.relmseStandardError = std::sqrt(variance / double(n));
+        }
     }
     m.rmse = std::sqrt(m.mse);
     return m;
@@ -82,8 +90,9 @@ double metricValue(const ImageMetrics& m, Metric metric) {
     return m.mse;
 }
 
-void writeDifferenceImage(const std::filesystem::path& path, const render::RgbImage& a,
-                          const render::RgbImage& b, double scale) {
+namespace {
+/// Mean over R, G, B of |a - b|, per pixel.
+std::vector<float> meanAbsoluteDifference(const render::RgbImage& a, const render::RgbImage& b) {
     std::vector<float> d(std::size_t(a.width) * a.height);
     for (std::size_t p = 0; p < d.size(); ++p) {
         double sum = 0;
@@ -91,9 +100,39 @@ void writeDifferenceImage(const std::filesystem::path& path, const render::RgbIm
             sum += std::abs(double(a.pixels[p * 3 + c]) - double(b.pixels[p * 3 + c])) / 3;
         d[p] = float(sum);
     }
-    SvgHeatMap map("|image - reference|, mean over R, G, B", a.width, a.height, std::move(d));
+    return d;
+}
+}  // namespace
+
+MapFigure differenceFigure(const render::RgbImage& a, const render::RgbImage& b,
+                           const std::string& title) {
+    MapFigure map;
+    map.title = title;
+    map.quantity = "|difference|, mean over R, G, B";
+    map.unit = "linear radiance";
+    map.width = a.width;
+    map.height = a.height;
+    map.values = meanAbsoluteDifference(a, b);
+    map.fromZero = true;
+    return map;
+}
+
+void writeDifferenceImage(const std::filesystem::path& path, const render::RgbImage& a,
+                          const render::RgbImage& b, double scale) {
+    SvgHeatMap map("|image - reference|, mean over R, G, B", a.width, a.height,
+                   meanAbsoluteDifference(a, b));
     map.setScale(Palette::Sequential, 0, scale > 0 ? scale : 1, "|difference| (linear radiance)");
     map.write(std::filesystem::path(path).replace_extension(".svg"), path);
+}
+
+double percentileOf(std::vector<float> values, double p) {
+    std::erase_if(values, [](float v) { return !std::isfinite(v); });
+    if (values.empty()) return 0;
+    std::sort(values.begin(), values.end());
+    const double rank = std::clamp(p, 0.0, 100.0) / 100 * double(values.size() - 1);
+    const std::size_t below = std::size_t(rank);
+    const std::size_t above = std::min(below + 1, values.size() - 1);
+    return double(values[below]) + (rank - double(below)) * double(values[above] - values[below]);
 }
 
 render::RgbImage filmImage(const render::Film& film) {

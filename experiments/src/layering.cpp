@@ -141,7 +141,7 @@ Geometry geometry() {
 /// spectral mode.
 std::vector<LayeringRender> renderBoth(const render::SceneDesc& scene, std::size_t index,
                                        const MaterialDesc& material, const LayeringInputs& in,
-                                       const std::string& what) {
+                                       const std::string& what, std::uint64_t seed) {
     render::SceneDesc s = scene;
     s.materials[index] = material;
     std::vector<LayeringRender> out;
@@ -149,14 +149,15 @@ std::vector<LayeringRender> renderBoth(const render::SceneDesc& scene, std::size
          {render::RenderModeKind::Rgb, render::RenderModeKind::Spectral}) {
         render::RenderOptions o;
         if (in.spp > 0) o.spp = in.spp;
-        o.seed = in.seed;
+        o.resolution = in.resolution;
+        o.seed = seed;
         o.mode = mode;
         tell(in.progress, "rendering " + what + " in " +
                               std::string(render::kRenderModeNames.name(mode)) + " mode...\n");
         render::RenderResult r = renderWhole(s, o);
         render::RgbImage image = filmImage(*r.film);
-        out.push_back(
-            {std::shared_ptr<const render::Film>(std::move(r.film)), std::move(image), r.seconds});
+        out.push_back({std::shared_ptr<const render::Film>(std::move(r.film)), std::move(image),
+                       r.seconds, r.spp});
     }
     return out;
 }
@@ -243,8 +244,14 @@ LayeringResult runLayering(const LayeringInputs& in) {
         stopIfInterrupted();
         r.walkMap = valuesOnly(walkEval(walk, g.map, in.estimates, seed + 3));
         const std::vector<LayeringTwin> twins = analyticTwins(m, r.twinNote);
-        if (scene && !twins.empty())
-            r.walkRenders = renderBoth(*scene, sceneIndex, m.desc, in, m.stem + " (walk)");
+        if (scene && !twins.empty()) {
+            r.walkRenders = renderBoth(*scene, sceneIndex, m.desc, in, m.stem + " (walk)", in.seed);
+            const std::vector<LayeringRender> again =
+                renderBoth(*scene, sceneIndex, m.desc, in, m.stem + " (walk, the noise floor)",
+                           hashValues({in.seed, 0x666c6f6f72}));
+            for (std::size_t k = 0; k < again.size(); ++k)
+                r.walkNoise.push_back(compareRenders(again[k].image, r.walkRenders[k].image));
+        }
         for (std::size_t ti = 0; ti < twins.size(); ++ti) {
             stopIfInterrupted();
             const LayeringTwin& twin = twins[ti];
@@ -259,8 +266,8 @@ LayeringResult runLayering(const LayeringInputs& in) {
                 t.lobes.push_back(compared(exactEval(*bsdf, g.lobes[li]), r.walkLobes[li]));
             t.map = compared(exactEval(*bsdf, g.map), r.walkMap);
             if (scene) {
-                t.renders =
-                    renderBoth(*scene, sceneIndex, twin.desc, in, m.stem + " (" + twin.name + ")");
+                t.renders = renderBoth(*scene, sceneIndex, twin.desc, in,
+                                       m.stem + " (" + twin.name + ")", in.seed);
                 for (std::size_t k = 0; k < t.renders.size(); ++k)
                     t.renderErrors.push_back(
                         compareRenders(t.renders[k].image, r.walkRenders[k].image));

@@ -19,6 +19,7 @@ LayeringInputs layeringInputs(const OptionValues& v, const CommandContext& conte
     in.seed = std::uint64_t(*v.integer("seed"));
     in.scene = v.text("scene").value_or("");
     in.spp = int(v.integer("spp").value_or(0));
+    in.resolution = v.resolution("resolution");
     in.progress = context.progress;
     return in;
 }
@@ -118,6 +119,7 @@ CommandDecl layeringDeclaration() {
         integerOption("spp", "Samples per pixel of every --scene render", 1,
                       render::kMaxSppOverride)
             .commandLineOnly("of --scene's renders"),
+        resolutionOverrideOption().commandLineOnly("of --scene's renders"),
     };
     c.report = [](const OptionValues& v, const CommandContext& context) -> ReportWork {
         const LayeringInputs in = layeringInputs(v, context);

@@ -1,12 +1,12 @@
-// The report of `lamina layering`: per material STEM_albedo.csv/.svg, STEM_lobes.csv and one
-// STEM_lobe_THETA.svg per theta_o, per twin STEM_TWIN_error.svg (the relative error map over
-// (theta_o, theta_i)), with a scene the renders (PNG previews) and CIEDE2000 maps; summary.md.
+// The report of `lamina layering`: per material STEM_albedo.csv and its figure, STEM_lobes.csv
+// and one figure STEM_lobe_THETA per theta_o, per twin the figure STEM_TWIN_error (the relative
+// error map over (theta_o, theta_i)), with a scene the renders (PNG previews) and CIEDE2000
+// maps; summary.md. The figures are drawn by the figure module (figure_spec.h): NAME.png, .pdf.
 #include <cmath>
 #include <sstream>
 
 #include "lamina/experiments/layering.h"
-#include "lamina/experiments/svg_heat_map.h"
-#include "lamina/experiments/svg_plot.h"
+#include "lamina/experiments/noise_floor.h"
 #include "lamina/experiments/text_format.h"
 #include "lamina/output/image_output.h"
 
@@ -23,43 +23,54 @@ std::string percent(double fraction) {
     return formatText("%.2f%%", 100.0 * fraction);
 }
 
-void writeAlbedo(const LayeringMaterialResult& m, const LayeringResult& r, const Report& report) {
+/// A series of estimates with their standard errors (the band around the line).
+LineSeries estimates(const std::string& name, const std::vector<double>& x,
+                     const std::vector<MeanEstimate>& values, LineSeries::Style style) {
+    LineSeries s{name, x, {}};
+    s.style = style;
+    for (const MeanEstimate& v : values) {
+        s.y.push_back(v.mean);
+        s.standardError.push_back(v.standardError);
+    }
+    return s;
+}
+
+void writeAlbedo(const LayeringMaterialResult& m, const LayeringResult& r, Report& report) {
     std::ostringstream csv;
     csv << "theta_o,walk,walk_se";
     for (const LayeringTwinResult& t : m.twins)
         csv << "," << fileTag(t.name) << "," << fileTag(t.name) << "_se";
     csv << "\n";
-    SvgPlot plot("Directional albedo of " + m.stem + ": walk and analytic twins",
-                 "theta_o (degrees)", "directional albedo (luminance)");
-    SvgPlot::Series walk{"random walk", {}, {}, false, true};
     for (std::size_t i = 0; i < r.albedoAngles.size(); ++i) {
         const MeanEstimate& w = m.walkAlbedo.values[i];
         csv << r.albedoAngles[i] << "," << w.mean << "," << w.standardError;
         for (const LayeringTwinResult& t : m.twins)
             csv << "," << t.albedo.values[i].mean << "," << t.albedo.values[i].standardError;
         csv << "\n";
-        walk.x.push_back(r.albedoAngles[i]);
-        walk.y.push_back(w.mean);
     }
-    plot.add(std::move(walk));
-    for (const LayeringTwinResult& t : m.twins) {
-        SvgPlot::Series s{"layered, " + t.name, {}, {}, true};
-        for (std::size_t i = 0; i < r.albedoAngles.size(); ++i) {
-            s.x.push_back(r.albedoAngles[i]);
-            s.y.push_back(t.albedo.values[i].mean);
-        }
-        plot.add(std::move(s));
-    }
+    LineFigure figure;
+    figure.title = "Directional albedo of " + m.stem + ": walk and analytic twins";
+    figure.xLabel = "theta_o (degrees)";
+    figure.yLabel = "directional albedo (luminance)";
+    figure.xScale = AxisScale::Linear;
+    LinePanel panel;
+    panel.series.push_back(
+        estimates("random walk", r.albedoAngles, m.walkAlbedo.values, LineSeries::Style::Solid));
+    panel.series.back().markers = true;
+    for (const LayeringTwinResult& t : m.twins)
+        panel.series.push_back(estimates("layered, " + t.name, r.albedoAngles, t.albedo.values,
+                                         LineSeries::Style::Dashed));
+    figure.panels.push_back(std::move(panel));
     TablePlot table;
     table.title = "Directional albedo of " + m.stem;
     table.x = "theta_o";
     table.xLabel = "theta_o (degrees)";
     table.yLabel = "directional albedo (luminance)";
     report.writeTable(m.stem + "_albedo.csv", csv.str(), table);
-    report.writeFigure(m.stem + "_albedo.svg", plot);
+    report.addFigure(m.stem + "_albedo", figure);
 }
 
-void writeLobes(const LayeringMaterialResult& m, const LayeringResult& r, const Report& report) {
+void writeLobes(const LayeringMaterialResult& m, const LayeringResult& r, Report& report) {
     std::ostringstream csv;
     csv << "theta_o,theta_i,walk,walk_se";
     for (const LayeringTwinResult& t : m.twins)
@@ -67,30 +78,28 @@ void writeLobes(const LayeringMaterialResult& m, const LayeringResult& r, const 
     csv << "\n";
     for (std::size_t l = 0; l < kLayeringLobeAngles.size(); ++l) {
         const double thetaO = kLayeringLobeAngles[l];
-        SvgPlot plot(formatText("f |cos theta_i| of %s in the plane of incidence, theta_o = %g",
-                                m.stem.c_str(), thetaO),
-                     "theta_i (degrees; positive: mirror side)",
-                     "f |cos theta_i| (luminance, 1/sr)");
-        SvgPlot::Series walk{"random walk", {}, {}, false, true};
         for (std::size_t i = 0; i < r.lobeAngles.size(); ++i) {
             const MeanEstimate& w = m.walkLobes[l].values[i];
             csv << thetaO << "," << r.lobeAngles[i] << "," << w.mean << "," << w.standardError;
             for (const LayeringTwinResult& t : m.twins)
                 csv << "," << t.lobes[l].values[i].mean;
             csv << "\n";
-            walk.x.push_back(r.lobeAngles[i]);
-            walk.y.push_back(w.mean);
         }
-        plot.add(std::move(walk));
-        for (const LayeringTwinResult& t : m.twins) {
-            SvgPlot::Series s{"layered, " + t.name, {}, {}, true};
-            for (std::size_t i = 0; i < r.lobeAngles.size(); ++i) {
-                s.x.push_back(r.lobeAngles[i]);
-                s.y.push_back(t.lobes[l].values[i].mean);
-            }
-            plot.add(std::move(s));
-        }
-        report.writeFigure(formatText("%s_lobe_%g.svg", m.stem.c_str(), thetaO), plot);
+        LineFigure figure;
+        figure.title = formatText("f |cos theta_i| of %s in the plane of incidence, theta_o = %g",
+                                  m.stem.c_str(), thetaO);
+        figure.xLabel = "theta_i (degrees; positive: mirror side)";
+        figure.yLabel = "f |cos theta_i| (luminance, 1/sr)";
+        figure.xScale = AxisScale::Linear;
+        LinePanel panel;
+        panel.series.push_back(estimates("random walk", r.lobeAngles, m.walkLobes[l].values,
+                                         LineSeries::Style::Solid));
+        panel.series.back().markers = true;
+        for (const LayeringTwinResult& t : m.twins)
+            panel.series.push_back(estimates("layered, " + t.name, r.lobeAngles, t.lobes[l].values,
+                                             LineSeries::Style::Dashed));
+        figure.panels.push_back(std::move(panel));
+        report.addFigure(formatText("%s_lobe_%g", m.stem.c_str(), thetaO), figure);
     }
     TablePlot table;
     table.title = "Lobes of " + m.stem + " in the plane of incidence";
@@ -102,19 +111,22 @@ void writeLobes(const LayeringMaterialResult& m, const LayeringResult& r, const 
 }
 
 void writeErrorMap(const LayeringMaterialResult& m, const LayeringTwinResult& t,
-                   const LayeringResult& r, const Report& report) {
+                   const LayeringResult& r, Report& report) {
     const int n = int(r.mapAngles.size());
-    std::vector<float> values;
+    MapFigure map;
+    map.title = "Error of the " + t.name + " twin of " + m.stem +
+                " against the walk (f |cos|, plane of incidence, mirror side)";
+    map.quantity = "(twin - walk) / walk";
+    map.unit = "fraction";
+    map.caption = formatText("Where the walk is below %g the error is divided by %g instead.",
+                             kAbsoluteFloor, kAbsoluteFloor);
+    map.width = map.height = n;
     for (const TwinComparison& c : t.map.comparisons)
-        values.push_back(float(c.error));
-    SvgHeatMap map("Error of the " + t.name + " twin of " + m.stem +
-                       " against the walk (f |cos|, plane of incidence, mirror side)",
-                   n, n, values);
-    map.setAxes({"theta_i (degrees)", r.mapAngles.front(), r.mapAngles.back(), {}},
-                {"theta_o (degrees)", r.mapAngles.front(), r.mapAngles.back(), {}});
-    map.setScale(Palette::Diverging, -0.2, 0.2,
-                 "(twin - walk) / walk (or / 1e-4 where the walk is below 1e-4), saturated at 20%");
-    map.write(report.file(m.stem + "_" + fileTag(t.name) + "_error.svg"));
+        map.values.push_back(float(c.error));
+    map.isSigned = true;
+    map.x = MapAxis{"theta_i (degrees)", r.mapAngles.front(), r.mapAngles.back(), {}};
+    map.y = MapAxis{"theta_o (degrees)", r.mapAngles.front(), r.mapAngles.back(), {}};
+    report.addFigure(m.stem + "_" + fileTag(t.name) + "_error", map);
 }
 
 /// "0-45" style: the theta_o from 0 up to which every albedo point is within the band.
@@ -183,11 +195,12 @@ std::string inShort(const LayeringMaterialResult& m, const LayeringResult& r) {
     return md;
 }
 
-std::string writeRenders(const LayeringMaterialResult& m, const Report& report) {
+std::string writeRenders(const LayeringMaterialResult& m, Report& report) {
     if (m.walkRenders.empty()) return "";
     const char* modes[] = {"rgb", "spectral"};
     std::ostringstream md;
-    md << "| twin | mode | mean CIEDE2000 | 95th percentile |\n|---|---|---|---|\n";
+    md << "| twin | mode | mean CIEDE2000 (noise floor) | 95th percentile (noise floor) "
+          "|\n|---|---|---|---|\n";
     std::string images;
     for (std::size_t k = 0; k < m.walkRenders.size(); ++k) {
         const std::string walkPng = m.stem + "_walk_" + modes[k] + ".png";
@@ -200,31 +213,49 @@ std::string writeRenders(const LayeringMaterialResult& m, const Report& report) 
             render::writePngPreview(report.file(stem + ".png"), *t.renders[k].film, 0.0);
             const LayeringRenderComparison& c = t.renderErrors[k];
             const render::RgbImage& image = t.renders[k].image;
-            SvgHeatMap map("CIEDE2000 of " + m.stem + ", " + t.name + " twin against the walk (" +
-                               modes[k] + " mode)",
-                           image.width, image.height, c.ciede2000);
-            map.setScale(Palette::Sequential, 0, 10, "CIEDE2000 (saturated at 10)");
-            map.write(report.file(stem + "_ciede2000.svg"), report.file(stem + "_ciede2000.png"));
-            md << formatText("| %s | %s | %.2f | %.2f |\n", t.name.c_str(), modes[k], c.meanDeltaE,
-                             c.p95DeltaE);
-            images += "![" + stem + "](" + stem + ".png) ";
+            MapFigure map;
+            map.title = "CIEDE2000 of " + m.stem + ", " + t.name + " twin against the walk (" +
+                        modes[k] + " mode)";
+            map.quantity = "CIEDE2000";
+            map.caption = "Both renders' noise included.";
+            map.width = image.width;
+            map.height = image.height;
+            map.values = c.ciede2000;
+            map.fromZero = true;  // a distance: never negative, 0 is agreement
+            report.addFigure(stem + "_ciede2000", map);
+            const LayeringRenderComparison& noise = m.walkNoise[k];
+            const int spp = t.renders[k].spp;
+            md << "| " << t.name << " | " << modes[k] << " | "
+               << describeReading(readAgainstFloor(c.meanDeltaE, noise.meanDeltaE, spp), spp)
+               << " | " << describeReading(readAgainstFloor(c.p95DeltaE, noise.p95DeltaE, spp), spp)
+               << " |\n";
+            images += "![" + stem + "](" + stem + ".png) ![" + stem + " CIEDE2000](" + stem +
+                      "_ciede2000.png) ";
         }
     }
+    md << formatText(
+        "\nThe noise floor is the same statistic between the walk's render and a second "
+        "one with another seed (the twins share the walk's seed, so their noise is partly "
+        "correlated with it: the floor bounds theirs from above). A difference is resolved "
+        "when it exceeds %g times its floor; the samples that would resolve one that does "
+        "not are estimated with the noise falling as 1/sqrt(spp) and adding in quadrature "
+        "to the true difference.\n",
+        kResolvedOverFloor);
     md << "\nRenders (walk, then each twin), and the CIEDE2000 maps " << m.stem
-       << "_TWIN_MODE_ciede2000.svg:\n\n"
+       << "_TWIN_MODE_ciede2000.png:\n\n"
        << images << "\n\n";
     return md.str();
 }
 
 std::string materialSection(const LayeringMaterialResult& m, const LayeringResult& r,
-                            const Report& report) {
+                            Report& report) {
     std::ostringstream md;
     md << "## " << m.stem << "\n\n```json\n" << m.json << "\n```\n\n";
     if (m.walkMaxDepth > 0) md << "**Not a truth: " << cappedWalkNote(m.walkMaxDepth) << ".**\n\n";
     if (!m.twinNote.empty()) md << "Note: " << m.twinNote << ".\n\n";
     writeAlbedo(m, r, report);
     writeLobes(m, r, report);
-    md << "![albedo](" << m.stem << "_albedo.svg)\n\n";
+    md << "![albedo](" << m.stem << "_albedo.png)\n\n";
     if (m.twins.empty()) {
         md << "The walk's directional albedo alone (" << m.stem << "_albedo.csv, with standard "
            << "errors) and its lobes (" << m.stem << "_lobes.csv).\n\n";
@@ -257,11 +288,11 @@ std::string materialSection(const LayeringMaterialResult& m, const LayeringResul
     md << "\n" << albedoTable(m, r) << "\n" << inShort(m, r) << "\n";
     for (const LayeringTwinResult& t : m.twins) {
         writeErrorMap(m, t, r, report);
-        md << "![" << t.name << " error](" << m.stem << "_" << fileTag(t.name) << "_error.svg) ";
+        md << "![" << t.name << " error](" << m.stem << "_" << fileTag(t.name) << "_error.png) ";
     }
     md << "\n\n";
     for (std::size_t l = 0; l < kLayeringLobeAngles.size(); ++l)
-        md << formatText("![lobe at %g](%s_lobe_%g.svg) ", kLayeringLobeAngles[l], m.stem.c_str(),
+        md << formatText("![lobe at %g](%s_lobe_%g.png) ", kLayeringLobeAngles[l], m.stem.c_str(),
                          kLayeringLobeAngles[l]);
     md << "\n\n" << writeRenders(m, report);
     return md.str();

@@ -3,8 +3,8 @@
 #include <unistd.h>
 
 #include "lamina/core/output_files.h"
+#include "lamina/experiments/figure_drawing.h"
 #include "lamina/experiments/progress.h"
-#include "lamina/experiments/svg_plot.h"
 
 namespace lamina::experiments {
 
@@ -43,11 +43,11 @@ void Report::writeTable(const std::string& name, std::string_view csv,
               tablePlotScript(name, plot));
 }
 
-void Report::writeFigure(const std::string& name, const SvgPlot& plot) const {
-    plot.write(file(name));
-}
-
 void Report::finish() const {
+    if (figures_) {
+        const std::string note = drawFigures(directory_);
+        if (!note.empty()) std::fprintf(stderr, "lamina: note: %s\n", note.c_str());
+    }
     if (summary_.empty()) return;
     writeText("summary.md", summary_);
     print(summary_);

@@ -35,7 +35,8 @@ std::string tablePlotScript(const std::string& csvName, const TablePlot& plot) {
     reader = csv.DictReader(f)
     columns = reader.fieldnames
     rows = list(reader)
-ys = Y or [c for c in columns if c != X and c not in GROUP]
+# A column NAME_se holds the standard errors of NAME: a band around it, not a series.
+ys = Y or [c for c in columns if c != X and c not in GROUP and not c.endswith("_se")]
 groups = {}
 for row in rows:
     groups.setdefault(tuple(row[g] for g in GROUP), []).append(row)
@@ -44,8 +45,15 @@ fig, ax = plt.subplots(figsize=(6.4, 4.2))
 for key, members in groups.items():
     for y in ys:
         label = " ".join(list(key) + ([y] if len(ys) > 1 or not key else []))
-        ax.plot([float(r[X]) for r in members], [float(r[y]) for r in members],
-                marker="o" if len(members) < 60 else None, markersize=3, label=label)
+        xs = [float(r[X]) for r in members]
+        values = [float(r[y]) for r in members]
+        (line,) = ax.plot(xs, values, marker="o" if len(members) < 60 else None, markersize=3,
+                          label=label)
+        if y + "_se" in columns:
+            se = [float(r[y + "_se"]) for r in members]
+            ax.fill_between(xs, [v - e for v, e in zip(values, se)],
+                            [v + e for v, e in zip(values, se)], color=line.get_color(),
+                            alpha=0.25, linewidth=0)
 if LOG_X:
     ax.set_xscale("log")
 if LOG_Y:
@@ -54,7 +62,7 @@ ax.set_xlabel(X_LABEL)
 ax.set_ylabel(Y_LABEL)
 ax.set_title(TITLE)
 ax.grid(True, which="both", alpha=0.3)
-ax.legend(fontsize="small")
+ax.legend(fontsize="small", loc="best", ncol=2 if len(ys) * len(groups) > 5 else 1)
 fig.tight_layout()
 if len(sys.argv) > 1:
     fig.savefig(sys.argv[1])

@@ -107,9 +107,28 @@ TEST_F(CliTest, CompareReportsKnownDifferences) {
     EXPECT_NEAR(m["max"], 0.1, 1e-6);
     EXPECT_NEAR(m["relmse"], 0.01 / 0.26, 1e-6);
     EXPECT_TRUE(fs::exists(diff));
-    // The scale of the false colours is printed, and the SVG beside it has its colour bar.
+    // The scale of the false colours is printed; the figure (PDF beside the PNG) is drawn from
+    // its data, also beside it.
     EXPECT_NEAR(m["diff_scale"], 0.1, 1e-6);
-    EXPECT_TRUE(fs::exists(dir_ / "diff.svg"));
+    for (const char* f : {"diff.pdf", "diff.figure.json", "diff.f32"})
+        EXPECT_TRUE(fs::exists(dir_ / f)) << f;
+    // One bright pixel (a lamp's edge) in 256 does not set the scale: the 99th percentile does.
+    {
+        std::vector<float> lit(16 * 16 * 3, 0.51f), dark(16 * 16 * 3, 0.5f);
+        lit[0] = lit[1] = lit[2] = 10.5f;
+        const std::string c = (dir_ / "c.exr").string(), d = (dir_ / "d.exr").string();
+        render::writeFloatExr(c, 16, 16, {"R", "G", "B"}, lit);
+        render::writeFloatExr(d, 16, 16, {"R", "G", "B"}, dark);
+        const CommandRun edge = runLamina("compare " + c + " " + d + " --metric max --diff " +
+                                          (dir_ / "edge.png").string());
+        ASSERT_EQ(edge.exitCode, 0) << edge.output;
+        std::map<std::string, double> e;
+        std::istringstream out(edge.output);
+        for (std::string name; out >> name;)
+            out >> e[name];
+        EXPECT_NEAR(e["max"], 10, 1e-5);
+        EXPECT_NEAR(e["diff_scale"], 0.01, 1e-6);
+    }
     const auto small = writeExr("small.exr", 2, 4, 0.5f);
     const CommandRun mismatch = runLamina("compare " + a + " " + small);
     EXPECT_EQ(mismatch.exitCode, 1);

@@ -85,7 +85,8 @@ TEST_F(ExperimentCli, ConvergenceSlopeOfAnUnbiasedEstimatorIsMinusOne) {
                                    "--sampler independent --reference " + exactReference() +
                                    " -o " + (dir_ / "conv").string() + " 2>/dev/null");
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    for (const char* f : {"convergence.csv", "convergence.py", "convergence.svg", "summary.md"})
+    for (const char* f :
+         {"convergence.csv", "convergence.py", "convergence.figure.json", "summary.md"})
         EXPECT_TRUE(fs::exists(dir_ / "conv" / f)) << f;
     // The matplotlib script beside the CSV draws it (with Debian's python3-matplotlib).
     if (std::system("/usr/bin/python3 -c 'import matplotlib' 2>/dev/null") == 0) {
@@ -123,7 +124,8 @@ TEST_F(ExperimentCli, FresnelExactCurveIsTheBsdfsConductorFresnel) {
     const CommandRun r = runLamina("fresnel Au bk7 -o " + dir_.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("Hoffman F82"), std::string::npos);
-    for (const char* f : {"Au.csv", "Au.svg", "Au_swatches.svg", "bk7_spectral.csv", "summary.md"})
+    for (const char* f :
+         {"Au.csv", "Au.figure.json", "Au_swatches.figure.json", "bk7_spectral.csv", "summary.md"})
         EXPECT_TRUE(fs::exists(dir_ / f)) << f;
     const auto rows = readCsv(dir_ / "Au_spectral.csv");  // degrees, 380, 400, ..., 780 nm
     ASSERT_EQ(rows.size(), 91u);

@@ -1,6 +1,7 @@
-// Figures that stand alone: `bsdf plot`, the fresnel swatches and `spectrum --plot`
-// are SVG figures whose title names what is drawn (material, mode), whose axes are named with
-// units and carry tick values, and whose series or rows are named.
+// Figures that stand alone: `bsdf plot` and `spectrum --plot` are SVG figures, the fresnel
+// swatches a figure spec for the figure module, whose title names what is drawn (material,
+// mode), whose axes are named with units and carry tick values, and whose series or rows are
+// named.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -62,19 +63,25 @@ TEST_F(FigureLabels, BsdfPlotRefusesAnOutputThatIsNotSvgBeforeWriting) {
 }
 
 TEST_F(FigureLabels, FresnelSwatchesNameTheMaterialTheModelsAndTheirMode) {
+    // The figure module draws the swatches from this spec (tests/python/test_figures.py checks
+    // the drawn figures); the spec holds every name the figure shows.
     const CommandRun r = runLamina("fresnel Cu -o " + dir_.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    const std::string svg = read(dir_ / "Cu_swatches.svg");
-    ASSERT_FALSE(svg.empty());
-    EXPECT_NE(svg.find("Fresnel reflectance of Cu"), std::string::npos);
-    EXPECT_TRUE(hasText(svg, "angle of incidence (degrees)"));
-    EXPECT_TRUE(hasText(svg, "model"));
-    EXPECT_TRUE(hasText(svg, "exact (spectral)"));
-    EXPECT_TRUE(hasText(svg, "Schlick (RGB mode)"));
-    EXPECT_TRUE(hasText(svg, "Hoffman F82 (RGB mode)"));
+    const std::string spec = read(dir_ / "Cu_swatches.figure.json");
+    ASSERT_FALSE(spec.empty());
+    const auto has = [&spec](const std::string& text) {
+        return spec.find("\"" + text + "\"") != std::string::npos;
+    };
+    EXPECT_NE(spec.find("Fresnel reflectance of Cu"), std::string::npos);
+    EXPECT_TRUE(has("swatches"));
+    EXPECT_TRUE(has("angle of incidence (degrees)"));
+    EXPECT_TRUE(has("model"));
+    EXPECT_TRUE(has("exact (spectral)"));
+    EXPECT_TRUE(has("Schlick (RGB mode)"));
+    EXPECT_TRUE(has("Hoffman F82 (RGB mode)"));
     for (const char* angle : {"0", "30", "60", "75", "82", "87"})
-        EXPECT_TRUE(hasText(svg, angle)) << angle;
-    EXPECT_NE(read(dir_ / "summary.md").find("Cu_swatches.svg"), std::string::npos);
+        EXPECT_TRUE(has(angle)) << angle;
+    EXPECT_NE(read(dir_ / "summary.md").find("Cu_swatches.png"), std::string::npos);
 }
 
 TEST_F(FigureLabels, SpectrumPlotIsTheSvgPlotWithAxesAndNamedCurves) {

@@ -37,11 +37,13 @@ TEST_F(LayeringCli, WritesAReportWhoseNumbersMakeSense) {
         "--scene " + scene + " --spp 2 -o " + out.string() + " 2>/dev/null");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     for (const char* f :
-         {"summary.md", "material1_albedo.csv", "material1_albedo.svg", "material1_lobes.csv",
-          "material1_lobe_0.svg", "material1_lobe_75.svg", "material1_fresnel_error.svg",
-          "material1_albedo_error.svg", "material1_walk_rgb.png", "material1_walk_spectral.png",
-          "material1_albedo_spectral.png", "material1_fresnel_rgb_ciede2000.svg",
-          "coated-gold_albedo.csv", "coated-gold_lobes.csv"})
+         {"summary.md", "material1_albedo.csv", "material1_albedo.figure.json",
+          "material1_lobes.csv", "material1_lobe_0.figure.json", "material1_lobe_75.figure.json",
+          "material1_fresnel_error.figure.json", "material1_fresnel_error.f32",
+          "material1_albedo_error.figure.json", "material1_walk_rgb.png",
+          "material1_walk_spectral.png", "material1_albedo_spectral.png",
+          "material1_fresnel_rgb_ciede2000.figure.json", "coated-gold_albedo.csv",
+          "coated-gold_lobes.csv"})
         EXPECT_TRUE(fs::exists(out / f)) << f;
     // Columns: theta_o, walk, walk_se, fresnel, fresnel_se, albedo, albedo_se.
     const auto rows = readCsv(out / "material1_albedo.csv");

@@ -1,7 +1,8 @@
 // Error against render time (`lamina convergence`): every combination of integrator and render
 // mode renders progressively for the same time; after every pass the image is compared with a
-// reference (relMSE with epsilon 1e-2, MSE, MAE). The report: convergence.csv,
-// convergence.svg (log-log relMSE against seconds), summary.md (samples per second, final
+// reference (relMSE with epsilon 1e-2, MSE, MAE). The report: convergence.csv, the figure
+// convergence.png/.pdf (log-log relMSE against seconds and against samples, figure_spec.h),
+// summary.md (samples per second, final
 // errors, the fitted slope of log relMSE against log seconds, which is -1 for an unbiased
 // Monte Carlo estimator, and the time each needs to reach given error levels). Before the
 // first render the premises of a given reference are checked (convergence_premises.h); each
@@ -135,8 +136,8 @@ ConvergenceResult runConvergence(const ConvergenceInputs& inputs);
 /// "reference_rgb.exr": the file of a rendered reference of `mode` in the report's directory.
 std::string renderedReferenceName(render::RenderModeKind mode);
 
-/// convergence.csv, convergence.svg, the references rendered (reference_MODE.exr) and the
-/// summary (with its Premises section).
+/// convergence.csv, the figure convergence, the references rendered (reference_MODE.exr) and
+/// the summary (with its Premises section).
 void writeConvergenceReport(const ConvergenceResult& result, Report& report);
 
 }  // namespace lamina::experiments

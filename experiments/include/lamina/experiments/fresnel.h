@@ -12,9 +12,12 @@
 // Reported per model: the maximum and mean absolute error of the RGB reflectance and the
 // maximum and mean CIEDE2000 difference of its colour (as a reflectance under D65). Written:
 // MATERIAL.csv (the RGB curves), MATERIAL_spectral.csv (one column per 20 nm),
-// MATERIAL.svg (luminance against angle), MATERIAL_swatches.png (rows: exact, models; columns:
-// 0, 30, 60, 75, 82, 87 degrees), summary.md. With a scene, renders it in both modes and
-// writes the difference and a CIEDE2000 map.
+// the figures (figure_spec.h) MATERIAL.png/.pdf (each model's reflectance against angle, one
+// panel per channel) and MATERIAL_swatches.png/.pdf (rows: exact, models; columns: 0, 30, 60,
+// 75, 82, 87 degrees), summary.md. With a scene, renders it in both modes and writes the
+// difference and a CIEDE2000 map (scene_ciede2000.png/.pdf), and renders each mode once more
+// with another seed: the CIEDE2000 within each pair, combined, is the noise floor every
+// difference is read against (noise_floor.h).
 #pragma once
 
 #include <optional>
@@ -34,8 +37,9 @@ inline constexpr int kFresnelAngles = 91;  ///< 0, 1, ..., 90 degrees
 struct FresnelInputs {
     /// Metals (Au, Ag, ...), glasses (bk7, diamond, ...) or n/k files (YAML or CSV).
     std::vector<std::string> materials;
-    std::string scene;  ///< optional: also rendered in both modes and compared
-    int spp = 0;        ///< of the scene renders; 0: the scene's
+    std::string scene;                ///< optional: also rendered in both modes and compared
+    int spp = 0;                      ///< of the scene renders; 0: the scene's
+    render::RenderOptions overrides;  ///< --resolution, --threads, --max-depth of the scene renders
     ProgressSink progress;
 };
 
@@ -66,7 +70,11 @@ struct FresnelSceneComparison {
     render::RenderResult rgb, spectral;
     ImageMetrics metrics;          ///< RGB against spectral
     std::vector<float> ciede2000;  ///< per pixel
-    double meanDeltaE = 0, maxDeltaE = 0;
+    double meanDeltaE = 0, maxDeltaE = 0, p95DeltaE = 0;
+    /// The noise floor, its mean and 95th percentile: the CIEDE2000 between each mode's render
+    /// and a second one with another seed (noise alone), the two pairs' statistics combined
+    /// as sqrt((rgb^2 + spectral^2) / 2).
+    double floorMeanDeltaE = 0, floorP95DeltaE = 0;
 };
 
 struct FresnelResult {

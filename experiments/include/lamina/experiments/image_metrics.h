@@ -4,12 +4,16 @@
 //   relmse = mean((a - b)^2 / (b^2 + eps)), eps = 1e-2 (b is the reference; the epsilon keeps
 //            black reference pixels from dominating, as in Rousselle et al. 2011's relMSE)
 //   mae    = mean(|a - b|)                max  = max |a - b|
+// and the standard error of relmse as the mean of its N terms, sqrt(var(terms) / N): how far
+// this image's relMSE is known, with the pixels' errors taken as independent (a pixel filter
+// wider than a pixel correlates neighbours a little).
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "lamina/core/name_table.h"
+#include "lamina/experiments/figure_spec.h"
 #include "lamina/output/image_output.h"
 #include "lamina/render/film.h"
 
@@ -21,6 +25,7 @@ inline constexpr double kRelMseEpsilon = 1e-2;
 /// unfinished render) would make every mean NaN, and would vanish from the max.
 struct ImageMetrics {
     double mse = 0, rmse = 0, relmse = 0, mae = 0, max = 0;
+    double relmseStandardError = 0;
     std::size_t compared = 0;   ///< channel values finite in both images
     std::size_t nonFinite = 0;  ///< channel values left out: NaN or infinite in either
 };
@@ -48,11 +53,21 @@ void requireComparedValues(const ImageMetrics& m, const render::RgbImage& a,
 /// empty when it left none out.
 std::string nonFiniteNote(const ImageMetrics& m);
 
-/// A false-colour PNG of the mean absolute channel difference |a - b| (black, blue, magenta,
-/// yellow, white from 0 to `scale`, Palette::Sequential), and beside it (same name, .svg) the
-/// figure with its axes and colour bar.
+/// The map of the mean absolute channel difference |a - b| per pixel (linear radiance, a
+/// sequential scale from 0: figure_spec.h), titled `title`.
+MapFigure differenceFigure(const render::RgbImage& a, const render::RgbImage& b,
+                           const std::string& title);
+
+/// The false-colour image alone of the mean absolute channel difference |a - b| in any format
+/// lamina writes (`compare --diff NAME.tif`, ...; a PNG gets the figure of differenceFigure
+/// instead): black, blue, magenta, yellow, white from 0 to `scale` (Palette::Sequential), and
+/// beside it (same name, .svg) the figure with its axes and colour bar.
 void writeDifferenceImage(const std::filesystem::path& path, const render::RgbImage& a,
                           const render::RgbImage& b, double scale);
+
+/// The p-th percentile (0-100) of the finite values, interpolated linearly between the two
+/// nearest ranks (NumPy's default, which the figure module uses); 0 when none is finite.
+double percentileOf(std::vector<float> values, double p);
 
 /// The film's current image (linear Rec.709) as an RgbImage.
 render::RgbImage filmImage(const render::Film& film);

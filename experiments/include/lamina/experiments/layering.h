@@ -50,6 +50,7 @@ struct LayeringInputs {
     std::uint64_t seed = 1;
     std::string scene;  ///< optional: a test-object scene with a material "sample"
     int spp = 0;        ///< of the scene renders (0: the scene's), equal for every render
+    std::optional<std::pair<int, int>> resolution;  ///< of the scene renders (none: the scene's)
     ProgressSink progress;
 };
 
@@ -66,6 +67,7 @@ struct LayeringRender {
     std::shared_ptr<const render::Film> film;
     render::RgbImage image;  ///< the film's image
     double seconds = 0;
+    int spp = 0;
 };
 
 /// A twin's render against the walk's in one mode.
@@ -96,6 +98,10 @@ struct LayeringMaterialResult {
     std::vector<LayeringValues> walkLobes;
     LayeringValues walkMap;
     std::vector<LayeringRender> walkRenders;  ///< rgb, spectral
+    /// rgb, spectral: the walk's render against a second one with another seed, the noise
+    /// floor of every twin's CIEDE2000 (noise_floor.h). The twins share the walk's seed, so
+    /// their noise is partly correlated with it and this floor is an upper bound of theirs.
+    std::vector<LayeringRenderComparison> walkNoise;
     std::vector<LayeringTwinResult> twins;
 };
 

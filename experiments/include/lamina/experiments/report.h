@@ -9,11 +9,10 @@
 #include <string>
 #include <string_view>
 
+#include "lamina/experiments/figure_spec.h"
 #include "lamina/experiments/table_plot_script.h"
 
 namespace lamina::experiments {
-
-class SvgPlot;
 
 class Report {
   public:
@@ -37,15 +36,23 @@ class Report {
     /// Writes a CSV table and, beside it (same stem, .py), the matplotlib script that draws
     /// it as `plot` says (table_plot_script.h).
     void writeTable(const std::string& name, std::string_view csv, const TablePlot& plot) const;
-    void writeFigure(const std::string& name, const SvgPlot& plot) const;
+    /// A figure's data, NAME.figure.json (figure_spec.h), drawn into NAME.png and NAME.pdf by
+    /// finish(); InputError if it cannot be written.
+    template <class Figure>
+    void addFigure(const std::string& name, const Figure& figure) {
+        writeFigureSpec(file(""), name, figure);
+        figures_ = true;
+    }
 
-    /// The ending: summary.md, and the summary on the console. Nothing without a summary.
+    /// The ending: the figures drawn (figure_drawing.h; one note line on stderr where they
+    /// cannot be), summary.md, and the summary on the console. Nothing without a summary.
     void finish() const;
 
   private:
     std::filesystem::path directory_;
     std::FILE* console_;
     std::string summary_;
+    bool figures_ = false;
 };
 
 }  // namespace lamina::experiments

@@ -10,7 +10,8 @@
 namespace lamina::experiments {
 
 /// What the script draws: the `y` columns against `x`, one line per distinct value of the
-/// `groupBy` columns (and per y column when there are several), with axis labels and units.
+/// `groupBy` columns (and per y column when there are several), with axis labels and units. A
+/// column NAME_se is drawn as the standard-error band around NAME, not as a line of its own.
 struct TablePlot {
     std::string title;
     std::string x;               ///< column name

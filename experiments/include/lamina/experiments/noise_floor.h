@@ -1,0 +1,32 @@
+// A difference between two noisy renders read against its noise floor: the same statistic
+// (mean or 95th-percentile CIEDE2000, ...) between two independent renders of one side, which
+// differ by noise alone. A difference within the floor says nothing about the models; it is
+// reported as not resolved at this sample count, with the count that would resolve it.
+#pragma once
+
+#include <string>
+
+namespace lamina::experiments {
+
+/// A difference is resolved when it exceeds this many times its floor.
+inline constexpr double kResolvedOverFloor = 2.0;
+
+struct NoiseFloorReading {
+    double difference = 0, floor = 0;
+    bool resolved = false;
+    /// Not resolved: the samples per pixel that would resolve it, 0 when the difference shows
+    /// nothing beyond the noise to estimate it from.
+    long long sppToResolve = 0;
+};
+
+/// Reads `difference` (measured at `spp` samples per pixel) against `floor`. The estimate of
+/// the samples that would resolve it takes the noise as adding in quadrature to the true
+/// difference, T = sqrt(difference^2 - floor^2), and the floor as falling as 1/sqrt(spp)
+/// (Monte Carlo): it is the spp at which kResolvedOverFloor x floor = T.
+NoiseFloorReading readAgainstFloor(double difference, double floor, int spp);
+
+/// "4.54 (noise floor 1.21)" or, within the floor, "0.93 (noise floor 0.88: not resolved at
+/// 8 spp; about 120 spp would resolve it)": CIEDE2000-like numbers, two decimals.
+std::string describeReading(const NoiseFloorReading& reading, int spp);
+
+}  // namespace lamina::experiments

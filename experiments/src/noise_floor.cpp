@@ -1,0 +1,36 @@
+#include "lamina/experiments/noise_floor.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "lamina/experiments/text_format.h"
+
+namespace lamina::experiments {
+
+NoiseFloorReading readAgainstFloor(double difference, double floor, int spp) {
+    NoiseFloorReading r;
+    r.difference = difference;
+    r.floor = floor;
+    r.resolved = difference > kResolvedOverFloor * floor;
+    if (r.resolved || spp <= 0) return r;
+    const double trueDifference = std::sqrt(std::max(0.0, difference * difference - floor * floor));
+    if (trueDifference <= 0) return r;
+    const double ratio = kResolvedOverFloor * floor / trueDifference;
+    r.sppToResolve = static_cast<long long>(std::ceil(double(spp) * ratio * ratio));
+    return r;
+}
+
+std::string describeReading(const NoiseFloorReading& r, int spp) {
+    const std::string value = formatText("%.2f", r.difference);
+    const std::string floor = formatText("%.2f", r.floor);
+    if (r.resolved) return value + " (noise floor " + floor + ")";
+    std::string s =
+        value + " (noise floor " + floor + ": not resolved at " + std::to_string(spp) + " spp";
+    if (r.sppToResolve > 0)
+        s += "; about " + std::to_string(r.sppToResolve) + " spp would resolve it";
+    else
+        s += "; no difference beyond the noise";
+    return s + ")";
+}
+
+}  // namespace lamina::experiments

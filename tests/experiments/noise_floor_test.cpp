@@ -1,0 +1,34 @@
+// Reading a difference against its noise floor (noise_floor.h): the threshold, and the sample
+// count that would resolve a difference, in closed form.
+#include "lamina/experiments/noise_floor.h"
+
+#include <gtest/gtest.h>
+
+namespace lamina::experiments {
+namespace {
+
+TEST(NoiseFloor, ADifferenceIsResolvedOnlyBeyondTwiceItsFloor) {
+    EXPECT_TRUE(readAgainstFloor(3.0, 1.0, 8).resolved);
+    EXPECT_FALSE(readAgainstFloor(2.0, 1.0, 8).resolved);  // at the threshold: not beyond it
+    EXPECT_FALSE(readAgainstFloor(0.5, 1.0, 8).resolved);
+    EXPECT_EQ(readAgainstFloor(3.0, 1.0, 8).sppToResolve, 0);
+}
+
+TEST(NoiseFloor, TheSamplesThatWouldResolveADifference) {
+    // 1.0 against a floor of 0.6 at 16 spp: the true difference is sqrt(1 - 0.36) = 0.8, and
+    // the floor falls to 0.4 (half of it) at 16 x (1.2 / 0.8)^2 = 36 spp.
+    const NoiseFloorReading r = readAgainstFloor(1.0, 0.6, 16);
+    EXPECT_FALSE(r.resolved);
+    EXPECT_EQ(r.sppToResolve, 36);
+    EXPECT_EQ(describeReading(r, 16),
+              "1.00 (noise floor 0.60: not resolved at 16 spp; about 36 spp would resolve it)");
+    // Nothing beyond the noise: no estimate.
+    const NoiseFloorReading none = readAgainstFloor(0.5, 0.6, 16);
+    EXPECT_EQ(none.sppToResolve, 0);
+    EXPECT_EQ(describeReading(none, 16),
+              "0.50 (noise floor 0.60: not resolved at 16 spp; no difference beyond the noise)");
+    EXPECT_EQ(describeReading(readAgainstFloor(4.54, 1.21, 8), 8), "4.54 (noise floor 1.21)");
+}
+
+}  // namespace
+}  // namespace lamina::experiments
