@@ -78,6 +78,11 @@ ConvergenceResult runConvergence(const ConvergenceInputs& in) {
         for (const render::IntegratorKind i : in.integrators)
             render::checkModeAndIntegrator(m, i);
     const render::SceneDesc scene = render::loadScene(in.scene);
+    for (const render::RenderModeKind m : in.modes) {
+        for (const render::IntegratorKind i : in.integrators)
+            render::checkMedia(scene, m, i);
+        if (in.reference.empty()) render::checkMedia(scene, m, in.referenceIntegrator);
+    }
     ConvergenceResult result{in, {}, {}, {}};
 
     // One reference per mode (the two modes converge to slightly different images), unless

@@ -69,6 +69,8 @@ ReciprocityResult runReciprocity(const ReciprocityInputs& in) {
     for (const render::IntegratorKind i : in.integrators)
         render::checkModeAndIntegrator(in.mode, i);
     const render::SceneDesc scene = render::loadScene(in.scene);
+    for (const render::IntegratorKind i : in.integrators)
+        render::checkMedia(scene, in.mode, i);
     ReciprocityResult result{in, {}, {}, {}, {}};
     render::RenderOptions o = in.overrides;
     o.mode = in.mode;

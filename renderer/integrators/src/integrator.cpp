@@ -19,6 +19,9 @@ CameraSample sampleCamera(const PixelFilter& filter, const Camera& camera, Pixel
 
 template <SpectrumType S>
 std::unique_ptr<Integrator<S>> makeIntegrator(const IntegratorSetup<S>& setup) {
+    // Every caller of the renderer checks first; this keeps a direct caller from rendering
+    // media as vacuum (the mode matters only when polarised, below).
+    checkMedia(setup.context.scene, RenderModeKind::Spectral, setup.settings.integrator);
     switch (setup.settings.integrator) {
         case IntegratorKind::Path:
             return std::make_unique<PathIntegrator<S>>(setup);
@@ -36,6 +39,7 @@ template <>
 std::unique_ptr<Integrator<PolarisedSpectrum>> makeIntegrator(
     const IntegratorSetup<PolarisedSpectrum>& setup) {
     checkModeAndIntegrator(RenderModeKind::Polarised, setup.settings.integrator);
+    checkMedia(setup.context.scene, RenderModeKind::Polarised, setup.settings.integrator);
     return std::make_unique<PathIntegrator<PolarisedSpectrum>>(setup);
 }
 

@@ -172,6 +172,18 @@ void checkModeAndIntegrator(RenderModeKind mode, IntegratorKind integrator) {
                          " is not polarised yet): use --integrator path");
 }
 
+void checkMedia(const SceneDesc& scene, RenderModeKind mode, IntegratorKind integrator) {
+    if (!scene.hasMedia()) return;
+    if (integrator != IntegratorKind::Path)
+        throw InputError(scene.file.string() +
+                         ": media: the light and bdpt integrators do not render media yet; use "
+                         "--integrator path");
+    if (mode == RenderModeKind::Polarised)
+        throw InputError(scene.file.string() +
+                         ": media: the polarised mode does not render media yet; use --mode "
+                         "spectral or rgb");
+}
+
 RenderResult renderScene(const SceneDesc& scene, const RenderOptions& options,
                          const std::function<void(const RenderProgress&)>& progress) {
     RenderSettings settings = scene.settings;
@@ -218,6 +230,7 @@ RenderResult renderScene(const SceneDesc& scene, const RenderOptions& options,
         options.resolution ? "--resolution" : scene.file.string() + ": film.resolution");
 
     checkModeAndIntegrator(options.mode, settings.integrator);
+    checkMedia(scene, options.mode, settings.integrator);
     std::optional<tbb::global_control> threads;
     if (options.threads > 0)
         threads.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(options.threads));

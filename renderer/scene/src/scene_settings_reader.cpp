@@ -24,9 +24,10 @@ void readOrthographic(const JsonReader& r, CameraDesc& c) {
 
 }  // namespace
 
-CameraDesc readCamera(const JsonReader& r) {
+CameraDesc readCamera(const JsonReader& r, const std::vector<MediumDesc>& media) {
     r.expectObject();
     CameraDesc c;
+    if (r.has("medium")) c.medium = mediumIndex(r, "medium", media);
     r.noteNames("type", kCameraKindNames.names());
     const std::string type = r.string("type", "perspective");
     const auto kind = kCameraKindNames.find(type);

@@ -80,6 +80,10 @@ std::atomic<bool>& renderInterruptFlag();
 /// mode runs the path integrator only), with the reason. The renderer calls it; experiments
 /// call it before they start work.
 void checkModeAndIntegrator(RenderModeKind mode, IntegratorKind integrator);
+/// Refuses a scene with media (SceneDesc::hasMedia) for what does not render media yet: the
+/// light and bdpt integrators and the polarised mode (docs/media.md). The renderer calls it;
+/// experiments call it before they start work.
+void checkMedia(const SceneDesc& scene, RenderModeKind mode, IntegratorKind integrator);
 
 RenderResult renderScene(const SceneDesc& scene, const RenderOptions& options,
                          const std::function<void(const RenderProgress&)>& progress = {});

@@ -51,6 +51,8 @@ struct CameraDesc {
     /// the view, [x0, x1, y0, y1] with x to the image's right and y up; unset: the shorter
     /// image axis spans [-1, 1] (pbrt-v4's default)
     std::optional<std::array<double, 4>> screenWindow;
+    /// The medium the camera sits in (into SceneDesc::media); -1: vacuum.
+    int medium = -1;
 };
 
 enum class FilterKind { Box, Gaussian, BlackmanHarris, Triangle };
@@ -157,6 +159,11 @@ struct SceneDesc {
     /// Objects defined in the file but placed by no instance: never read.
     std::vector<std::string> unusedObjectNames;
     std::vector<LightDesc> lights;
+    /// The "media" the file names (docs/media.md), in the file's order.
+    std::vector<MediumDesc> media;
+    /// True when any path can meet a medium or an interface: media are defined, the camera
+    /// sits in one, or a shape is an interface. Only the path integrator renders such scenes.
+    bool hasMedia() const;
 };
 
 /// Reads and validates a scene file (scene_loader.cpp, with the readers of scene_readers.h).
