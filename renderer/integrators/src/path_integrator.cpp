@@ -143,6 +143,7 @@ S PathIntegrator<S>::radiance(const Vec3f& rayOrigin, const Vec3f& rayDirection,
                     }
                     if (!beta.isFinite()) break;
                     specularBounce = false;
+                    crossings = 0;
                     prevPoint = p;
                     prevNormal = Vec3f(0.0f);
                     o = p;
@@ -236,6 +237,7 @@ S PathIntegrator<S>::radiance(const Vec3f& rayOrigin, const Vec3f& rayDirection,
         if (media_) {
             medium = mediumAfter(shape, medium, hit->ng, d, step.next->direction);
             rL = rU / step.sample->pdf;
+            crossings = 0;
         }
         specularBounce = step.sample->isSpecular();
         prevPdf = step.sample->pdf;
