@@ -81,6 +81,15 @@ void run(const std::string& file) {
     for (const auto& name : scene.unusedTextureNames)
         std::printf(", %s unused (never loaded)", name.c_str());
     std::printf("\n");
+    // Only a scene with media prints the line: other scenes' output is as it was.
+    if (scene.hasMedia()) {
+        std::printf("media: %zu (the path integrator only; docs/media.md)\n", scene.media.size());
+        for (const render::MediumDesc& m : scene.media)
+            std::printf("  %s: %s, sigma_a [%g, %g, %g], sigma_s [%g, %g, %g], g %g%s\n",
+                        m.name.c_str(), std::string(render::kMediumKindNames.name(m.kind)).c_str(),
+                        m.sigmaA[0], m.sigmaA[1], m.sigmaA[2], m.sigmaS[0], m.sigmaS[1],
+                        m.sigmaS[2], m.g, m.emits() ? ", emits" : "");
+    }
     std::printf("spectral data: %s\n", s.spectralData.empty() ? "none" : "");
     for (const auto& data : s.spectralData)
         std::printf("  %s\n", data.c_str());

@@ -167,6 +167,11 @@ ConvergenceResult runConvergence(const ConvergenceInputs& in) {
     if (in.resume && in.keepDirectory.empty())
         throw std::logic_error("runConvergence: resume without a keepDirectory");
     const render::SceneDesc scene = render::loadScene(in.scene);
+    for (const render::RenderModeKind m : in.modes) {
+        for (const render::IntegratorKind i : in.integrators)
+            render::checkMedia(scene, m, i);
+        if (in.reference.empty()) render::checkMedia(scene, m, in.referenceIntegrator);
+    }
     ConvergenceResult result{in, {}, {}, {}, {}};
 
     // The premises of every reference read from a file, before any render: one mode's

@@ -67,6 +67,8 @@ void checkMaterials(const render::SceneDesc& scene, const SpectrumContext<S>& co
 
 ReciprocityResult runReciprocity(const ReciprocityInputs& in) {
     const render::SceneDesc scene = render::loadScene(in.scene);
+    for (const render::IntegratorKind i : in.integrators)
+        render::checkMedia(scene, in.mode, i);
     ReciprocityResult result{in, {}, {}, {}, {}};
     render::RenderOptions o = in.overrides;
     o.mode = in.mode;

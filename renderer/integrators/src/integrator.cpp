@@ -19,6 +19,9 @@ CameraSample sampleCamera(const PixelFilter& filter, const Camera& camera, Pixel
 
 template <SpectrumType S>
 std::unique_ptr<Integrator<S>> makeIntegrator(const IntegratorSetup<S>& setup) {
+    // Every caller of the renderer checks first (with its mode: renderScene refuses media in
+    // the polarised mode); this keeps a direct caller from rendering media as vacuum.
+    checkMedia(setup.context.scene, RenderModeKind::Spectral, setup.settings.integrator);
     switch (setup.settings.integrator) {
         case IntegratorKind::Path:
             return std::make_unique<PathIntegrator<S>>(setup);

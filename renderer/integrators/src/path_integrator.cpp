@@ -1,5 +1,10 @@
 #include "lamina/integrators/path_integrator.h"
 
+#include <limits>
+
+#include "lamina/bsdf/henyey_greenstein.h"
+#include "lamina/integrators/medium_transport.h"
+
 namespace lamina::render {
 
 namespace {
@@ -11,6 +16,10 @@ float powerHeuristic(float a, float b) {
     return a2 + b2 > 0.0f ? a2 / (a2 + b2) : 0.0f;
 }
 
+/// Index-matched interfaces a path may cross between two scattering events before it is
+/// given up: only coincident interfaces that the ray offset cannot separate get near it.
+constexpr int kMaxInterfaceCrossings = 1024;
+
 }  // namespace
 
 template <SpectrumType S>
@@ -19,7 +28,8 @@ PathIntegrator<S>::PathIntegrator(const IntegratorSetup<S>& setup)
       mode_(setup.mode),
       settings_(setup.settings),
       filter_(setup.filter),
-      aovs_(setup.aovs) {}
+      aovs_(setup.aovs),
+      media_(Mode::kRendersMedia && setup.context.scene.hasMedia()) {}
 
 template <SpectrumType S>
 std::optional<CameraEstimate<S>> PathIntegrator<S>::sample(const PixelSample<S>& ps) const {
@@ -44,21 +54,117 @@ S PathIntegrator<S>::radiance(const Vec3f& rayOrigin, const Vec3f& rayDirection,
     bool specularBounce = true;
     float prevPdf = 0.0f;
     Vec3f prevPoint(0.0f), prevNormal(0.0f);  // where the last light was chosen
+    // With media (medium_transport.h): the medium the path is in, its hero channel, and the
+    // densities of the path per channel relative to the hero's, unidirectional (rU) and, for
+    // an emitter the path hits, by light sampling at the last vertex (rL, times the light's
+    // density there).
+    int medium = -1, hero = 0, crossings = 0;
+    S rU(1.0f), rL(1.0f);
+    if constexpr (Mode::kRendersMedia) {
+        if (media_) {
+            medium = c_.scene.camera.medium;
+            hero = heroChannel<S>(sampler.get1D());
+        }
+    }
+    // Emission Le reached by the path, weighted against light sampling (lightPdf: the density
+    // of the light sample that would have found it).
+    const auto reached = [&](const S& Le, float lightPdf) -> S {
+        if constexpr (Mode::kRendersMedia) {
+            if (media_) {
+                if (specularBounce || !nextEvent) return beta * Le / rU.average();
+                return beta * Le / (rU + rL * lightPdf).average();
+            }
+        }
+        const float w = specularBounce || !nextEvent ? 1.0f : powerHeuristic(prevPdf, lightPdf);
+        return beta * Le * w;
+    };
     Vec3f o = rayOrigin, d = rayDirection;
-    for (int depth = 0;; ++depth) {
+    for (int depth = 0;;) {
         ++stats.rays;
         const auto hit = c_.geometry.intersect(o, d);
+        if constexpr (Mode::kRendersMedia) {
+            if (medium >= 0) {
+                const MediumCoefficients<S> m = mode_.medium(medium, path);
+                const S sigmaT = m.sigmaT();
+                const float t = freeFlightDistance(sigmaT[hero], sampler.get1D());
+                const float tMax = hit ? hit->t : std::numeric_limits<float>::infinity();
+                if (!(t < tMax)) {
+                    // The flight passes (to the surface, or out of the scene where the hero's
+                    // extinction is 0): it had probability T_hero of doing so, channel i
+                    // T_i. A light sample's shadow ray has no density of its own (its
+                    // transmittance is exact): rL gets the hero's normalisation only.
+                    const S T = transmittance(sigmaT, tMax);
+                    if (!(T[hero] > 0.0f)) break;
+                    beta *= T / T[hero];
+                    rU *= T / T[hero];
+                    rL /= T[hero];
+                } else {
+                    // A scattering event at t, of density sigma_t T(t) per channel.
+                    const S T = transmittance(sigmaT, t);
+                    const float pdf = sigmaT[hero] * T[hero];
+                    if (!(pdf > 0.0f)) break;
+                    if (m.emits) {
+                        // The medium's emission along the flight, by the collision estimator.
+                        const S rE = rU * sigmaT * T / pdf;
+                        L += beta * T * m.sigmaA * m.emission / (pdf * rE.average());
+                    }
+                    beta *= T * m.sigmaS / pdf;
+                    rU *= sigmaT * T / pdf;
+                    if (depth >= settings_.maxDepth || !(beta.maxValue() > 0.0f)) break;
+                    const Vec3f p = o + d * t;
+                    const auto phase = [&](const Vec3f& wi) {
+                        return henyeyGreenstein(glm::dot(d, wi), m.g);
+                    };
+                    // The same dimensions as at a surface: the light's two, the lobe choice
+                    // (none here), the direction's two, the roulette's.
+                    if (nextEvent && c_.lights.nextEventChooses()) {
+                        const float uLight = sampler.get1DIfUsed(c_.lights.choiceReadsNumber());
+                        const Vec2f uLightPoint = sampler.get2D();
+                        L += beta * directLight(
+                                        {p, Vec3f(0.0f), Vec3f(0.0f), nullptr, medium, d},
+                                        [&](const Vec3f& wi) { return S(phase(wi)); }, phase, rU,
+                                        uLight, uLightPoint, path, stats);
+                    } else {
+                        sampler.skip();
+                        sampler.skip();
+                    }
+                    sampler.skip();
+                    const Vec3f wi = sampleHenyeyGreenstein(d, m.g, sampler.get2D());
+                    // The phase function is its own density: the throughput keeps sigma_s.
+                    prevPdf = phase(wi);
+                    rL = rU / prevPdf;
+                    const float rrBeta = (beta / rU.average()).maxValue() * etaScale;
+                    if (rouletteApplies(rrBeta, depth + 1, settings_.russianRouletteDepth)) {
+                        if (!russianRoulette(beta, rrBeta, depth + 1,
+                                             settings_.russianRouletteDepth, sampler.get1D()))
+                            break;
+                    } else {
+                        sampler.skip();
+                    }
+                    if (!beta.isFinite()) break;
+                    specularBounce = false;
+                    crossings = 0;
+                    prevPoint = p;
+                    prevNormal = Vec3f(0.0f);
+                    o = p;
+                    d = wi;
+                    ++depth;
+                    continue;
+                }
+            } else if (media_) {
+                sampler.skip();  // the free flight's number, so dimensions keep their meaning
+            }
+        }
         if (!hit) {
             for (std::size_t i : c_.lights.infiniteLights()) {
                 const Light& light = c_.lights.light(i);
                 const Emission Le = light.environment(-d);
                 if (Le.isZero()) continue;
-                const float w =
-                    specularBounce || !nextEvent
-                        ? 1.0f
-                        : powerHeuristic(prevPdf, c_.lights.probability(i, prevPoint, prevNormal) *
-                                                      light.environmentPdf(-d));
-                L += beta * mode_.emission(Le, path) * w;
+                const float lightPdf = specularBounce || !nextEvent
+                                           ? 0.0f
+                                           : c_.lights.probability(i, prevPoint, prevNormal) *
+                                                 light.environmentPdf(-d);
+                L += reached(mode_.emission(Le, path), lightPdf);
             }
             break;
         }
@@ -66,18 +172,26 @@ S PathIntegrator<S>::radiance(const Vec3f& rayOrigin, const Vec3f& rayDirection,
             const Light& light = c_.lights.light(std::size_t(li));
             const Emission Le = light.radiance(*hit, -d);
             if (!Le.isZero()) {
-                const float w =
+                const float lightPdf =
                     specularBounce || !nextEvent
-                        ? 1.0f
-                        : powerHeuristic(prevPdf, c_.lights.probability(std::size_t(li), prevPoint,
-                                                                        prevNormal) *
-                                                      light.pdf(prevPoint, *hit));
-                L += beta * mode_.emission(Le, path) * w;
+                        ? 0.0f
+                        : c_.lights.probability(std::size_t(li), prevPoint, prevNormal) *
+                              light.pdf(prevPoint, *hit);
+                L += reached(mode_.emission(Le, path), lightPdf);
             }
+        }
+
+        const ShapeInfo& shape = c_.geometry.shapes()[std::size_t(hit->shape)];
+        if (media_ && surface(*shape.desc).isInterface()) {
+            // An index-matched boundary: the path goes straight on into the other medium; no
+            // scattering event, so the depth and the MIS state stay as they were.
+            if (++crossings > kMaxInterfaceCrossings) break;
+            medium = mediumAfter(shape, medium, hit->ng, d, d);
+            o = offsetRayOrigin(hit->p, facing(hit->ng, d), c_.geometry.rayOffsetScale());
+            continue;
         }
         if (depth >= settings_.maxDepth) break;
 
-        const ShapeInfo& shape = c_.geometry.shapes()[std::size_t(hit->shape)];
         const ShadingPoint at(hit->p, hit->ng, hit->ns, -d, c_.geometry.rayOffsetScale());
         const Bxdf<S>& bsdf = mode_.bsdf(shape.material, hit->uv, at.frame, path);
 
@@ -88,18 +202,30 @@ S PathIntegrator<S>::radiance(const Vec3f& rayOrigin, const Vec3f& rayDirection,
         if (nextEvent && smooth && c_.lights.nextEventChooses()) {
             const float uLight = sampler.get1DIfUsed(c_.lights.choiceReadsNumber());
             const Vec2f uLightPoint = sampler.get2D();
-            L += beta * directLight(*hit, at, bsdf, uLight, uLightPoint, path, stats);
+            const auto f = [&](const Vec3f& wi) {
+                // A direction on the wrong side of the geometric surface for its lobe would
+                // leak light through it (shading_normals.h).
+                if (!sidesAgree(at.frame.toWorld(at.wo), wi, hit->ng, hit->ns)) return S(0.0f);
+                return bsdf.eval(at.wo, at.frame.toLocal(wi), TransportMode::Radiance);
+            };
+            const auto pdf = [&](const Vec3f& wi) { return bsdf.pdf(at.wo, at.frame.toLocal(wi)); };
+            L += beta * directLight({hit->p, hit->ng, hit->ns, &shape, medium, d}, f, pdf, rU,
+                                    uLight, uLightPoint, path, stats);
         } else {
             sampler.skip();
             sampler.skip();
         }
 
-        // Russian roulette on the throughput without the radiance eta^2 factors (pbrt-v4).
+        // Russian roulette on the throughput without the radiance eta^2 factors (pbrt-v4),
+        // relative to the path's density (its average over the channels, with media).
         const auto step =
             scatter(bsdf, at, TransportMode::Radiance, depth + 1, settings_.russianRouletteDepth,
                     sampler, beta, [&](S& b, const BsdfSample<S>& s, const Vec3f&) {
                         b *= s.weight;
                         if (s.isTransmission()) etaScale *= sqr(s.eta);
+                        if constexpr (Mode::kRendersMedia) {
+                            if (media_) return (b / rU.average()).maxValue() * etaScale;
+                        }
                         return b.maxValue() * etaScale;
                     });
         if (aovs && depth == 0) {
@@ -108,38 +234,78 @@ S PathIntegrator<S>::radiance(const Vec3f& rayOrigin, const Vec3f& rayDirection,
             if (step.sample) aovs->albedo = mode_.filmValue(step.sample->weight, path);
         }
         if (!step.next) break;
+        if (media_) {
+            medium = mediumAfter(shape, medium, hit->ng, d, step.next->direction);
+            rL = rU / step.sample->pdf;
+            crossings = 0;
+        }
         specularBounce = step.sample->isSpecular();
         prevPdf = step.sample->pdf;
         prevPoint = hit->p;
         prevNormal = hit->ns;
         o = step.next->origin;
         d = step.next->direction;
+        ++depth;
     }
     return L;
 }
 
 template <SpectrumType S>
-S PathIntegrator<S>::directLight(const SurfaceHit& hit, const ShadingPoint& at, const Bxdf<S>& bsdf,
-                                 float uLight, const Vec2f& uPoint, typename Mode::Path& path,
+template <typename Value, typename Density>
+S PathIntegrator<S>::directLight(const Vertex& v, Value&& value, Density&& density,
+                                 [[maybe_unused]] const S& pathRatios, float uLight,
+                                 const Vec2f& uPoint, typename Mode::Path& path,
                                  PathStatistics& stats) const {
-    const auto choice = c_.lights.choose(hit.p, hit.ns, uLight);
+    const auto choice = c_.lights.choose(v.p, v.ns, uLight);
     if (!choice) return S(0.0f);
     const float pmf = choice->probability;
     const Light& light = c_.lights.light(choice->index);
-    const auto ls = light.sample(hit.p, uPoint);
+    const auto ls = light.sample(v.p, uPoint);
     if (!ls || !(ls->pdf > 0.0f) || ls->radiance.isZero()) return S(0.0f);
-    if (!sidesAgree(at.frame.toWorld(at.wo), ls->wi, hit.ng, hit.ns)) return S(0.0f);
-    const Vec3f wi = at.frame.toLocal(ls->wi);
-    const S f = bsdf.eval(at.wo, wi, TransportMode::Radiance);
+    const S f = value(ls->wi);
     if (f.maxValue() <= 0.0f) return S(0.0f);
-    const bool visible =
-        std::isinf(ls->distance)
-            ? directionUnoccluded(c_.geometry, hit.p, hit.ng, ls->wi, stats)
-            : segmentUnoccluded(c_.geometry, hit.p, hit.ng, ls->point, ls->normal, stats);
-    if (!visible) return S(0.0f);
     const float lightPdf = pmf * ls->pdf;
-    const float w = ls->delta ? 1.0f : powerHeuristic(lightPdf, bsdf.pdf(at.wo, wi));
-    return f * mode_.emission(ls->radiance, path) * (w / lightPdf);
+    if (!media_) {
+        const bool visible =
+            std::isinf(ls->distance)
+                ? directionUnoccluded(c_.geometry, v.p, v.ng, ls->wi, stats)
+                : segmentUnoccluded(c_.geometry, v.p, v.ng, ls->point, ls->normal, stats);
+        if (!visible) return S(0.0f);
+        const float w = ls->delta ? 1.0f : powerHeuristic(lightPdf, density(ls->wi));
+        return f * mode_.emission(ls->radiance, path) * (w / lightPdf);
+    }
+    if constexpr (Mode::kRendersMedia) {
+        // The shadow ray leaves in the medium of the side it goes to, through every
+        // interface on its way; its end points are moved off their surfaces as
+        // segmentUnoccluded moves them (visibility.h).
+        const int medium =
+            v.shape ? mediumAfter(*v.shape, v.medium, v.ng, v.arrival, ls->wi) : v.medium;
+        const float scale = c_.geometry.rayOffsetScale();
+        const Vec3f from =
+            v.ng == Vec3f(0.0f) ? v.p : offsetRayOrigin(v.p, facing(v.ng, ls->wi), scale);
+        Vec3f direction = ls->wi;
+        float distance = std::numeric_limits<float>::infinity();
+        if (!std::isinf(ls->distance)) {
+            const Vec3f to = ls->normal == Vec3f(0.0f)
+                                 ? ls->point
+                                 : offsetRayOrigin(ls->point, facing(ls->normal, -ls->wi), scale);
+            const float length = glm::length(to - from);
+            if (!(length > 0.0f)) return S(0.0f);
+            direction = (to - from) / length;
+            distance = length * (1.0f - 1e-4f);
+        }
+        const auto T =
+            shadowTransmittance(c_.geometry, mode_, path, from, direction, distance, medium, stats);
+        if (!T) return S(0.0f);
+        // The balance heuristic over the two strategies and the channels: the light sample's
+        // density per channel, and the density with which scattering and free flights would
+        // have reached the same point (a channel passes the shadow ray's media with
+        // probability T). Relative to the hero's, as pathRatios are.
+        const S rLight = pathRatios * lightPdf;
+        const S denominator = ls->delta ? rLight : rLight + pathRatios * density(ls->wi) * *T;
+        return f * *T * mode_.emission(ls->radiance, path) / denominator.average();
+    }
+    return S(0.0f);
 }
 
 template class PathIntegrator<Rgb<float>>;

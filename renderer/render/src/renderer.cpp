@@ -172,6 +172,18 @@ RenderOptions withCrop(const RenderOptions& options, const PixelBounds& crop) {
 
 }  // namespace
 
+void checkMedia(const SceneDesc& scene, RenderModeKind mode, IntegratorKind integrator) {
+    if (!scene.hasMedia()) return;
+    if (integrator != IntegratorKind::Path)
+        throw InputError(scene.file.string() +
+                         ": media: the light and bdpt integrators do not render media yet; use "
+                         "--integrator path");
+    if (mode == RenderModeKind::Polarised)
+        throw InputError(scene.file.string() +
+                         ": media: the polarised mode does not render media yet; use --mode "
+                         "spectral or rgb");
+}
+
 RenderResult renderScene(const SceneDesc& scene, const RenderOptions& options,
                          const std::function<void(const RenderProgress&)>& progress) {
     RenderSettings settings = scene.settings;
@@ -217,6 +229,7 @@ RenderResult renderScene(const SceneDesc& scene, const RenderOptions& options,
         width, height,
         options.resolution ? "--resolution" : scene.file.string() + ": film.resolution");
 
+    checkMedia(scene, options.mode, settings.integrator);
     if (scene.camera.analyserDegrees && options.mode != RenderModeKind::Polarised)
         throw InputError(scene.file.string() +
                          ": camera.analyser: a polariser in front of the lens needs --mode "

@@ -24,7 +24,7 @@ SceneStatistics sceneStatistics(const SceneDesc& scene) {
     std::vector<bool> used(scene.materials.size(), false);
     for (const auto& shape : scene.shapes) {
         const SurfaceDesc& surface = render::surface(shape);
-        used[std::size_t(surface.material)] = true;
+        if (!surface.isInterface()) used[std::size_t(surface.material)] = true;
         if (const auto* m = std::get_if<MeshDesc>(&shape)) {
             s.triangles += m->triangles.size();
             s.vertices += m->positions.size();
@@ -43,7 +43,8 @@ SceneStatistics sceneStatistics(const SceneDesc& scene) {
     for (std::size_t o = 0; o < scene.objects.size(); ++o) {
         const ObjectDesc& object = scene.objects[o];
         for (const auto& shape : object.shapes) {
-            used[std::size_t(render::surface(shape).material)] = true;
+            if (!render::surface(shape).isInterface())
+                used[std::size_t(render::surface(shape).material)] = true;
             if (const auto* m = std::get_if<MeshDesc>(&shape)) {
                 trianglesOf[o] += m->triangles.size();
                 s.geometryBytes += meshBytes(*m);

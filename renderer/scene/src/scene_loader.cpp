@@ -15,7 +15,9 @@ SceneDesc readScene(const Json& json, const JsonSource& source) {
     root.expectObject();
     SceneDesc scene;
     scene.file = source.name;
-    if (const auto c = root.optionalChild("camera")) scene.camera = readCamera(*c);
+    // Media first: the camera and the shapes name them.
+    if (const auto m = root.optionalChild("media")) readMedia(*m, scene);
+    if (const auto c = root.optionalChild("camera")) scene.camera = readCamera(*c, scene.media);
     if (const auto f = root.optionalChild("film")) scene.film = readFilm(*f);
     if (const auto i = root.optionalChild("integrator")) readIntegrator(*i, scene.settings);
     if (const auto s = root.optionalChild("sampler")) readSampler(*s, scene.settings);

@@ -6,8 +6,13 @@ namespace lamina::render {
 
 void SceneMaterials::define(const JsonReader& materials) {
     materials.expectObject();
-    for (const auto& [name, value] : materials.value().items())
+    for (const auto& [name, value] : materials.value().items()) {
+        if (name == kInterfaceMaterialName)
+            materials.failAt(name,
+                             "\"interface\" names the index-matched boundary of media "
+                             "(docs/media.md); choose another name");
         materials_.emplace_back(name, materials.child(name));
+    }
     materials.finish();
 }
 
@@ -23,6 +28,7 @@ int SceneMaterials::materialOf(const JsonReader& shape) {
     const JsonReader m = shape.child("material");
     if (m.value().is_string()) {
         const std::string name = m.value().get<std::string>();
+        if (name == kInterfaceMaterialName) return kInterfaceMaterial;
         for (std::size_t i = 0; i < scene_.materialNames.size(); ++i)
             if (scene_.materialNames[i] == name) return int(i);
         for (const auto& [definedName, reader] : materials_)

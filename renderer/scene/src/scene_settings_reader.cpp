@@ -24,11 +24,12 @@ void readOrthographic(const JsonReader& r, CameraDesc& c) {
 
 }  // namespace
 
-CameraDesc readCamera(const JsonReader& r) {
+CameraDesc readCamera(const JsonReader& r, const std::vector<MediumDesc>& media) {
     r.expectObject();
     CameraDesc c;
     // Any angle is an axis; [-180, 180] keeps typing errors (radians times 100) out.
     c.analyserDegrees = r.optionalNumber("analyser", {-180.0, 180.0});
+    if (r.has("medium")) c.medium = mediumIndex(r, "medium", media);
     r.noteNames("type", kCameraKindNames.names());
     const std::string type = r.string("type", "perspective");
     const auto kind = kCameraKindNames.find(type);

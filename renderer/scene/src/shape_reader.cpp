@@ -129,12 +129,27 @@ void readShapeInto(const JsonReader& r, SceneMaterials& materials, const ShapeDe
         r.failAt("emission",
                  "an emitting shape inside an object is refused: instanced area lights are not "
                  "supported (place the emitter in \"shapes\")");
+    // Read before the shape's own reader finishes (and refuses keys it did not read).
+    const auto media = readMediumInterface(r, materials.scene().media);
+    const std::size_t first = to.shapes.size();
     if (*kind == ShapeKind::Sphere)
         to.shapes.push_back(readSphere(r, name, materials));
     else if (*kind == ShapeKind::Disk)
         to.shapes.push_back(readDisk(r, name, materials));
     else
         readMeshShape(r, *kind, name, materials, to);
+    for (std::size_t i = first; i < to.shapes.size(); ++i) {
+        SurfaceDesc& surface = render::surface(to.shapes[i]);
+        surface.media = media;
+        if (!surface.isInterface()) continue;
+        // An interface only changes the medium: light sampling knows nothing of it.
+        if (surface.emission)
+            r.failAt("emission", "an \"interface\" shape does not emit (give it a material)");
+        if (!media)
+            r.failAt("material",
+                     "an \"interface\" shape needs \"interior\" or \"exterior\" (the media it "
+                     "separates; docs/media.md)");
+    }
 }
 
 }  // namespace

@@ -23,6 +23,7 @@
 #include "lamina/bsdf/material_kind.h"
 #include "lamina/lights/emitter_color.h"
 #include "lamina/render/film.h"
+#include "lamina/render/medium_coefficients.h"
 #include "lamina/render/polarised_bxdf.h"
 #include "lamina/render/sampler.h"
 #include "lamina/spectral/cie_xyz_table.h"
@@ -43,9 +44,17 @@ class RenderMode<Rgb<float>> {
         const SpectrumContext<Spectrum> context;
         for (const MaterialDesc& m : scene.materials)
             bsdfs_.push_back(buildBxdf(m, context, seed));
+        for (const MediumDesc& m : scene.media) {
+            // A medium's emission spectrum, if given, is reduced to RGB as an emitter's is.
+            const EmitterColor le(m.emission, m.emissionSpectrum);
+            media_.push_back(
+                {Spectrum(m.sigmaA), Spectrum(m.sigmaS), le.rgb(), float(m.g), m.emits()});
+        }
     }
 
     static constexpr FilmSpace kFilmSpace = FilmSpace::Rec709;
+    /// The path integrator renders media in this mode (docs/media.md).
+    static constexpr bool kRendersMedia = true;
 
     Path startPath(PixelSampler&) const { return {}; }
     Spectrum emission(const Emission& e, Path&) const { return e.rgb(); }
@@ -65,11 +74,16 @@ class RenderMode<Rgb<float>> {
         return bsdf(material, uv, path);
     }
     Rgb<double> filmValue(const Spectrum& L, const Path&) const { return Rgb<double>(L); }
+    /// The coefficients of SceneDesc::media[index].
+    const MediumCoefficients<Spectrum>& medium(int index, Path&) const {
+        return media_[std::size_t(index)];
+    }
 
   private:
     const SceneDesc& scene_;
     std::uint64_t seed_;
     std::vector<std::unique_ptr<Bxdf<Spectrum>>> bsdfs_;
+    std::vector<MediumCoefficients<Spectrum>> media_;
 };
 
 /// Spectral mode: four hero wavelengths per path (Wilkie et al. 2014), colours upsampled
@@ -109,9 +123,15 @@ class RenderMode<SampledSpectrum<float>> {
                 SpectrumContext<Spectrum>{lambda, nullptr, &colors_[m], &readsWavelengths}, seed_);
             if (!readsWavelengths) shared_[m] = std::move(bsdf);
         }
+        for (const MediumDesc& m : scene.media)
+            media_.push_back(SpectralMedium{
+                UnboundedSpectrum(m.sigmaA), UnboundedSpectrum(m.sigmaS),
+                EmitterColor(m.emission, m.emissionSpectrum), float(m.g), m.emits()});
     }
 
     static constexpr FilmSpace kFilmSpace = FilmSpace::Xyz;
+    /// The path integrator renders media in this mode (docs/media.md).
+    static constexpr bool kRendersMedia = true;
 
     Path startPath(PixelSampler& sampler) const {
         const auto lambda = SampledWavelengths<float>::sample(double(sampler.get1D()));
@@ -175,7 +195,45 @@ class RenderMode<SampledSpectrum<float>> {
         return {double(xyz[0]) * kInverseN, double(xyz[1]) * kInverseN, double(xyz[2]) * kInverseN};
     }
 
+    /// The coefficients of SceneDesc::media[index] at the path's wavelengths: the RGB
+    /// coefficients as unbounded spectra, the emission as an emitter's (an illuminant).
+    MediumCoefficients<Spectrum> medium(int index, Path& path) const {
+        const SpectralMedium& m = media_[std::size_t(index)];
+        MediumCoefficients<Spectrum> out;
+        out.sigmaA = m.sigmaA(path.lambda);
+        out.sigmaS = m.sigmaS(path.lambda);
+        out.emission = m.emission.spectral(path.at);
+        out.g = m.g;
+        out.emits = m.emits;
+        return out;
+    }
+
   private:
+    /// An RGB coefficient upsampled once (RgbSpectrumKind::Unbounded, as SpectrumContext's
+    /// unbounded() does for materials); a grey one is exactly its constant.
+    struct UnboundedSpectrum {
+        explicit UnboundedSpectrum(const Rgb<double>& c)
+            : grey(c[0] == c[1] && c[1] == c[2]),
+              constant(float(c[0])),
+              spectrum(c, RgbSpectrumKind::Unbounded) {}
+        Spectrum operator()(const SampledWavelengths<float>& lambda) const {
+            if (grey) return Spectrum(constant);
+            Spectrum s;
+            for (int i = 0; i < Spectrum::kSize; ++i)
+                s[i] = float(spectrum(double(lambda[i])));
+            return s;
+        }
+        bool grey;
+        float constant;
+        RgbSpectrum spectrum;
+    };
+    struct SpectralMedium {
+        UnboundedSpectrum sigmaA, sigmaS;
+        EmitterColor emission;
+        float g;
+        bool emits;
+    };
+
     struct BsdfCache {
         std::uint64_t pathId = 0, nextPathId = 0;
         std::vector<std::unique_ptr<Bxdf<Spectrum>>> bsdfs;
@@ -192,6 +250,7 @@ class RenderMode<SampledSpectrum<float>> {
     /// per material: its BSDF if it does not depend on the wavelengths, else null
     std::vector<std::unique_ptr<Bxdf<Spectrum>>> shared_;
     const CieXyzTable& cmf_ = CieXyzTable::normalized();
+    std::vector<SpectralMedium> media_;
 };
 
 /// Polarised mode (docs/polarisation.md): the spectral mode's wavelengths, colours, emission and
@@ -216,6 +275,8 @@ class RenderMode<PolarisedSpectrum> {
     }
 
     static constexpr FilmSpace kFilmSpace = FilmSpace::Xyz;
+    /// Not yet (docs/media.md): the renderer refuses a scene with media in this mode.
+    static constexpr bool kRendersMedia = false;
 
     Path startPath(PixelSampler& sampler) const { return spectral_.startPath(sampler); }
     Spectrum emission(const Emission& e, Path& path) const {

@@ -76,6 +76,10 @@ struct RenderResult {
 std::atomic<bool>& renderInterruptFlag();
 
 /// Renders the scene. `progress` is called from the calling thread now and then.
+/// Refuses a scene with media (SceneDesc::hasMedia) for what does not render media yet: the
+/// light and bdpt integrators and the polarised mode (docs/media.md). The renderer calls it;
+/// experiments call it before they start work.
+void checkMedia(const SceneDesc& scene, RenderModeKind mode, IntegratorKind integrator);
 
 RenderResult renderScene(const SceneDesc& scene, const RenderOptions& options,
                          const std::function<void(const RenderProgress&)>& progress = {});

@@ -55,6 +55,8 @@ struct CameraDesc {
     /// its transmission axis in degrees from the image's right towards its up
     /// (docs/polarisation.md, "Stokes images"); unset: none.
     std::optional<double> analyserDegrees;
+    /// The medium the camera sits in (into SceneDesc::media); -1: vacuum.
+    int medium = -1;
 };
 
 enum class FilterKind { Box, Gaussian, BlackmanHarris, Triangle };
@@ -161,6 +163,11 @@ struct SceneDesc {
     /// Objects defined in the file but placed by no instance: never read.
     std::vector<std::string> unusedObjectNames;
     std::vector<LightDesc> lights;
+    /// The "media" the file names (docs/media.md), in the file's order.
+    std::vector<MediumDesc> media;
+    /// True when any path can meet a medium or an interface: media are defined, the camera
+    /// sits in one, or a shape is an interface. Only the path integrator renders such scenes.
+    bool hasMedia() const;
 };
 
 /// Reads and validates a scene file (scene_loader.cpp, with the readers of scene_readers.h).

@@ -75,7 +75,8 @@ inline void checkEmitterArea(const JsonReader& shape, double area) {
 }
 
 // scene_settings_reader.cpp
-CameraDesc readCamera(const JsonReader& r);
+/// The camera; its "medium" names one of `media` (read before it).
+CameraDesc readCamera(const JsonReader& r, const std::vector<MediumDesc>& media);
 FilmDesc readFilm(const JsonReader& r);
 void readIntegrator(const JsonReader& r, RenderSettings& settings);
 void readSampler(const JsonReader& r, RenderSettings& settings);
@@ -92,7 +93,7 @@ class SceneMaterials {
     /// "textures": {"name": texture, ...}
     void defineTextures(const JsonReader& textures);
     /// The index of a shape's "material" (a name, or a material written in place), loading it
-    /// and its textures on first use.
+    /// and its textures on first use; kInterfaceMaterial for "interface".
     int materialOf(const JsonReader& shape);
     /// The index of the texture `name` (a shape's alpha, a material's parameter, a texture
     /// operation's operand), loading it on first use; fails at `at`'s `key` when it is not
@@ -107,6 +108,8 @@ class SceneMaterials {
                   const std::vector<std::pair<std::string, Json>>& textures = {});
     /// Lists the materials and textures defined but never used in the scene.
     void recordUnused();
+    /// The scene being read (the shape readers look up its media).
+    const SceneDesc& scene() const { return scene_; }
 
   private:
     int add(const JsonReader& material);
@@ -139,6 +142,18 @@ class SceneObjects {
 /// Reads one entry of "shapes" into `scene` (shape_reader.cpp).
 void readShape(const JsonReader& r, SceneMaterials& materials, SceneObjects& objects,
                SceneDesc& scene);
+
+// medium_reader.cpp
+/// The name that means "no medium" wherever a medium is named.
+inline constexpr const char* kVacuumMediumName = "vacuum";
+/// "media": {"name": medium, ...} into scene.media.
+void readMedia(const JsonReader& media, SceneDesc& scene);
+/// The index of the medium named at `at`'s `key` (-1 for "vacuum"); fails on an unknown name.
+int mediumIndex(const JsonReader& at, const std::string& key, const std::vector<MediumDesc>& media);
+/// A shape's "interior" and "exterior" (an absent one is vacuum), or nothing when it has
+/// neither.
+std::optional<MediumInterfaceDesc> readMediumInterface(const JsonReader& shape,
+                                                       const std::vector<MediumDesc>& media);
 
 // light_reader.cpp
 /// A radiance or intensity at `key`: a number or [r, g, b] (linear Rec.709), or a spectrum:

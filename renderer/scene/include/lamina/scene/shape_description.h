@@ -16,6 +16,7 @@
 
 #include "lamina/core/name_table.h"
 #include "lamina/core/vector.h"
+#include "lamina/scene/medium_description.h"
 #include "lamina/spectral/emission_spectrum.h"
 
 namespace lamina::render {
@@ -47,12 +48,21 @@ struct AlphaDesc {
     bool cutsOut() const { return texture >= 0 || value < 1; }
 };
 
+/// A shape's "material": "interface" (docs/media.md): an index-matched boundary between two
+/// media, which a path crosses without scattering. Its material index is kInterfaceMaterial.
+inline constexpr const char* kInterfaceMaterialName = "interface";
+inline constexpr int kInterfaceMaterial = -2;
+
 /// What every kind of shape has.
 struct SurfaceDesc {
-    std::string name;  ///< for messages and `lamina info`
-    int material = -1;
+    std::string name;   ///< for messages and `lamina info`
+    int material = -1;  ///< into SceneDesc::materials, or kInterfaceMaterial
+    /// Set when the shape names an "interior" or "exterior" medium: a path that crosses the
+    /// surface enters the medium of the side it goes to. Unset: crossing keeps the medium.
+    std::optional<MediumInterfaceDesc> media;
     std::optional<EmissionDesc> emission;
     AlphaDesc alpha;
+    bool isInterface() const { return material == kInterfaceMaterial; }
 };
 
 /// A triangle mesh in world space (or in its object's space, ObjectDesc). Quads and polygons

@@ -1,0 +1,64 @@
+// Transport through homogeneous media (docs/media.md): which medium a path is in after it
+// crosses a surface, free-flight distances, and the transmittance of a shadow ray through
+// every medium and index-matched interface on its way.
+//
+// Spectral MIS (Miller, Georgiev and Jarosz 2019, "A null-scattering path integral
+// formulation of light transport", section 5.2; pbrt-v4's VolPathIntegrator): a path samples
+// every free flight with the extinction of one channel, its hero, chosen uniformly once per
+// path, and its estimate is divided by the average over the channels of the densities with
+// which each channel would have sampled the same path: the one-sample balance heuristic over
+// the channel strategies, applied to whole paths. The integrator carries those densities as
+// ratios to the hero's (pbrt-v4's r_u and r_l), so a channel whose extinction differs from the
+// hero's gets no firefly: its weight is at most the number of channels. (Averaging per flight
+// instead would multiply a factor of up to N at every scattering event: heavy-tailed in a
+// dense chromatic medium.) The hero is drawn explicitly: spectral mode's wavelengths are a
+// random rotation, but RGB mode's channels are fixed, and always sampling with red would not
+// be the balance heuristic's estimator. A homogeneous medium's transmittance exp(-sigma_t d)
+// is exact: no tracking.
+#pragma once
+
+#include <optional>
+
+#include "lamina/geometry/geometry.h"
+#include "lamina/integrators/integrator.h"
+
+namespace lamina::render {
+
+/// The medium a path is in after it leaves `shape`'s surface along `direction`, having
+/// arrived along `arrival` (geometric normal `ng`): the medium of the side it goes to when
+/// it crosses a shape that bounds media, else `current` (a reflection, or a shape that names
+/// no media).
+inline int mediumAfter(const ShapeInfo& shape, int current, const Vec3f& ng, const Vec3f& arrival,
+                       const Vec3f& direction) {
+    const auto& media = surface(*shape.desc).media;
+    if (!media) return current;
+    const float before = glm::dot(arrival, ng), after = glm::dot(direction, ng);
+    // Crossing keeps the sign of the cosine with the normal; a reflection flips it.
+    if ((before > 0.0f) != (after > 0.0f)) return current;
+    return media->sideOf(after);
+}
+
+/// The path's hero channel for distance sampling, uniform over the channels.
+template <SpectrumType S>
+int heroChannel(float u) {
+    return std::min(int(u * float(S::kSize)), S::kSize - 1);
+}
+
+/// A free-flight distance with density sigma exp(-sigma t) (infinity for sigma = 0).
+float freeFlightDistance(float sigma, float u);
+
+/// exp(-sigma_t d) per channel; d may be infinite (then 0 where sigma_t > 0, 1 where it is 0).
+template <SpectrumType S>
+S transmittance(const S& sigmaT, float d);
+
+/// The transmittance from `from` (already off its surface) along the unit `direction` for
+/// `distance` (infinity: out of the scene), starting in `medium`, through every index-matched
+/// interface it crosses (the product of exp(-sigma_t d) over its segments); nothing when
+/// another surface blocks it or no channel gets through.
+template <SpectrumType S>
+std::optional<S> shadowTransmittance(const Geometry& geometry, const RenderMode<S>& mode,
+                                     typename RenderMode<S>::Path& path, Vec3f from,
+                                     const Vec3f& direction, float distance, int medium,
+                                     PathStatistics& stats);
+
+}  // namespace lamina::render

@@ -1,0 +1,51 @@
+// The participating media of a scene (docs/media.md): the top-level "media" object names
+// them, shapes bound them ("interior", "exterior") and the camera may sit in one ("medium").
+// Plain data as the reader leaves it; the renderer turns the coefficients into the render
+// mode's spectra (render_mode.h).
+#pragma once
+
+#include <array>
+#include <memory>
+#include <string>
+
+#include "lamina/core/name_table.h"
+#include "lamina/core/spectrum.h"
+#include "lamina/spectral/emission_spectrum.h"
+
+namespace lamina::render {
+
+/// The `type` of a medium. Only homogeneous media exist yet (docs/media.md, "not yet").
+enum class MediumKind { Homogeneous };
+inline constexpr NameTable kMediumKindNames{
+    std::array{NameEntry{MediumKind::Homogeneous, "homogeneous"}}};
+
+/// A medium of constant coefficients, in 1 / scene unit, already multiplied by the file's
+/// `scale`. RGB coefficients are linear Rec.709 values; spectral mode upsamples them as
+/// unbounded spectra (pbrt-v4's RGBUnboundedSpectrum), as it does a material's unbounded
+/// parameters, so a grey coefficient is the same constant at every wavelength.
+struct MediumDesc {
+    std::string name;
+    MediumKind kind = MediumKind::Homogeneous;
+    Rgb<double> sigmaA{0.0};  ///< absorption
+    Rgb<double> sigmaS{0.0};  ///< scattering
+    /// Henyey-Greenstein asymmetry in (-1, 1): > 0 scatters forward.
+    double g = 0;
+    /// Emitted radiance per unit length of absorption (the source term sigma_a Le of the
+    /// radiative transfer equation): RGB upsampled as an illuminant, or a spectrum.
+    Rgb<double> emission{0.0};
+    std::shared_ptr<const EmissionSpectrum> emissionSpectrum;
+    bool emits() const { return emissionSpectrum || emission.maxValue() > 0; }
+};
+
+/// What crossing a shape's surface does to the medium a path is in: entering against the
+/// geometric normal leads into `interior`, leaving along it into `exterior` (indices into
+/// SceneDesc::media; -1 is vacuum).
+struct MediumInterfaceDesc {
+    int interior = -1, exterior = -1;
+    /// The medium on the side a direction leaves the surface to (dot(direction, ng)).
+    int sideOf(float directionDotNormal) const {
+        return directionDotNormal > 0.0f ? exterior : interior;
+    }
+};
+
+}  // namespace lamina::render
