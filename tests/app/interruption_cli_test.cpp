@@ -241,7 +241,7 @@ TEST_F(Interruption, ARestartedShardResumesFromItsPartialOutput) {
   "lights": [{"type": "environment", "radiance": 1}]
 })");
     const auto shard = dir_ / "shard.exr";
-    const std::vector<std::string> args = {"render", s,    "--samples",   "8:3000",
+    const std::vector<std::string> args = {"render", s,    "--samples",   "8:12000",
                                            "-q",     "-o", shard.string()};
     const pid_t pid = start(args);
     std::this_thread::sleep_for(1500ms);
@@ -256,15 +256,15 @@ TEST_F(Interruption, ARestartedShardResumesFromItsPartialOutput) {
     EXPECT_EQ(wait(again), 0) << stderrText();
     EXPECT_THAT(stderrText(),
                 ::testing::HasSubstr("lamina: resuming " + shard.string() + ": " +
-                                     std::to_string(kept) + " of its 3000 samples kept"));
+                                     std::to_string(kept) + " of its 12000 samples kept"));
     const render::FloatImage resumed = render::readFloatImage(shard);
     EXPECT_EQ(resumed.metadata.ints.at("partial"), 0);
     EXPECT_EQ(resumed.metadata.ints.at("sample_first"), 8);
-    EXPECT_EQ(resumed.metadata.ints.at("sample_count"), 3000);
-    EXPECT_EQ(resumed.metadata.ints.at("samples_done"), 3000);
+    EXPECT_EQ(resumed.metadata.ints.at("sample_count"), 12000);
+    EXPECT_EQ(resumed.metadata.ints.at("samples_done"), 12000);
 
     const auto whole = dir_ / "whole.exr";
-    const CommandRun r = runLamina("render " + s + " --samples 8:3000 -q -o " + whole.string());
+    const CommandRun r = runLamina("render " + s + " --samples 8:12000 -q -o " + whole.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     const render::FloatImage uninterrupted = render::readFloatImage(whole);
     ASSERT_EQ(resumed.channels, uninterrupted.channels);

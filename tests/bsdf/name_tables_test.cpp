@@ -112,13 +112,15 @@ TEST(NameTables, TheUnknownTypeMessageListsEveryMaterialType) {
     for (const auto& name : materialTypeNames()) {
         list += (list.empty() ? "" : ", ") + name;
         // these need more keys
-        if (name != "conductor" && name != "layered" && name != "mix" && name != "coated") {
+        if (name != "conductor" && name != "layered" && name != "mix" && name != "coated" &&
+            name != "polariser" && name != "retarder") {
             EXPECT_EQ(parse(R"({"type":")" + name + "\"}").type, name);
         }
     }
     EXPECT_EQ(list,
               "standard, lambert, oren_nayar, burley, frostbite, conductor, "
-              "diffuse_transmission, dielectric, thin_dielectric, phong, layered, mix, coated");
+              "diffuse_transmission, dielectric, thin_dielectric, phong, layered, mix, coated, "
+              "polariser, retarder");
     try {
         parse(R"({"type":"plastic"})");
         FAIL() << "accepted an unknown material type";

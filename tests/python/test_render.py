@@ -178,7 +178,8 @@ def test_a_polarised_render_returns_its_stokes_layers():
     s = img.stokes
     assert s.dtype == np.float32 and s.shape == (4, 4, 4, 3)
     np.testing.assert_array_equal(s[0], img.rgb)
-    np.testing.assert_allclose(s[0], 0.5, atol=1e-4)
-    np.testing.assert_allclose(s[1:3], 0.0, atol=1e-4)
-    np.testing.assert_allclose(s[3], -0.5, atol=1e-4)
+    # Half the lamp's radiance 1 (spectral colour noise of 2 spp aside), all of it circular.
+    assert 0.3 < s[0].mean() < 0.7
+    np.testing.assert_allclose(s[3], -s[0], rtol=1e-3, atol=1e-6)
+    assert np.abs(s[1:3]).max() < 1e-3 * s[0].max()
     assert lamina.render(scene, spp=1, mode="spectral").stokes is None
