@@ -56,14 +56,18 @@ bool Film::addSample(int x, int y, const Rgb<double>& value, double weight) {
     return accumulate(x, y, v, weight);
 }
 
-bool Film::addPolarisedSample(int x, int y, const std::array<Rgb<double>, 4>& stokes,
-                              double weight) {
-    if (!window_.contains(x, y)) return false;
-    for (int i = 1; i < 4; ++i)
-        if (!stokes[std::size_t(i)].isFinite()) {
+bool Film::polarisationFinite(const std::array<Rgb<double>, 4>& stokes) {
+    for (std::size_t i = 1; i < 4; ++i)
+        if (!stokes[i].isFinite()) {
             rejected_.fetch_add(1, std::memory_order_relaxed);
             return false;
         }
+    return true;
+}
+
+bool Film::addPolarisedSample(int x, int y, const std::array<Rgb<double>, 4>& stokes,
+                              double weight) {
+    if (!window_.contains(x, y) || !polarisationFinite(stokes)) return false;
     if (!addSample(x, y, stokes[0], weight)) return false;
     StokesSums& sums = stokes_[std::size_t(y - window_.y0) * width_ + std::size_t(x - window_.x0)];
     for (std::size_t i = 0; i < 3; ++i)
@@ -73,12 +77,7 @@ bool Film::addPolarisedSample(int x, int y, const std::array<Rgb<double>, 4>& st
 
 bool Film::addPolarisedSplat(int x, int y, const std::array<Rgb<double>, 4>& stokes,
                              double weight) {
-    if (!window_.contains(x, y)) return false;
-    for (int i = 1; i < 4; ++i)
-        if (!stokes[std::size_t(i)].isFinite()) {
-            rejected_.fetch_add(1, std::memory_order_relaxed);
-            return false;
-        }
+    if (!window_.contains(x, y) || !polarisationFinite(stokes)) return false;
     if (!addSplat(x, y, stokes[0], weight)) return false;
     StokesSums& target =
         stokesSplatIteration_[std::size_t(y - window_.y0) * width_ + std::size_t(x - window_.x0)];

@@ -135,6 +135,8 @@ class Film {
     Pixel& at(int x, int y) { return pixels_[std::size_t(y) * width_ + x]; }
     Rgb<double> toRec709(const Rgb<double>& v) const;
     bool accumulate(int x, int y, const Rgb<double>& value, double weight);
+    /// Whether S1..S3 are finite; counts a rejection if not (S0 is checked as a sample's value).
+    bool polarisationFinite(const std::array<Rgb<double>, 4>& stokes);
 
     int width_, height_;
     int fullWidth_, fullHeight_;
