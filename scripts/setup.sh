@@ -15,6 +15,7 @@ packages=(
   python3-dev pybind11-dev python3-pybind11 python3-pytest
   clang libclang-rt-14-dev
   slurm-wlm munge
+  chromium
 )
 
 missing=()

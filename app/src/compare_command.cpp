@@ -1,6 +1,7 @@
 // `lamina compare A.exr B.exr`: error metrics of A against the reference B (image_metrics.h)
 // and, optionally, a false-colour map of |A - B| (a figure of the figure module: NAME.png,
-// NAME.pdf, with its data NAME.figure.json and NAME.f32; docs/figures.md).
+// NAME.pdf, with its data NAME.figure.json and NAME.f32; docs/figures.md) and a page with a
+// viewer of the two images (--html; python/lamina/report_page.py).
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
@@ -10,6 +11,7 @@
 #include "lamina/core/error.h"
 #include "lamina/core/output_files.h"
 #include "lamina/experiments/figure_drawing.h"
+#include "lamina/experiments/figure_spec.h"
 #include "lamina/experiments/image_metrics.h"
 
 namespace lamina::app {
@@ -19,7 +21,7 @@ namespace {
 struct CompareArgs {
     std::string a, b;
     std::vector<experiments::Metric> metrics;
-    std::string diff;
+    std::string diff, html;
     double diffScale = 0;  ///< 0: the 99th percentile of the difference
 
     explicit CompareArgs(const experiments::OptionValues& v)
@@ -27,6 +29,7 @@ struct CompareArgs {
           b(*v.text("reference")),
           metrics(v.choices(experiments::kMetricNames, "metric")),
           diff(v.text("diff").value_or("")),
+          html(v.text("html").value_or("")),
           diffScale(v.number("diff-scale").value_or(0)) {}
 };
 
@@ -59,8 +62,33 @@ double writeDifference(const CompareArgs& args, const render::RgbImage& a,
     return scale;
 }
 
+/// The viewer page of a and b at args.html: the pair's spec and data in a temporary directory
+/// beside it, which goes when the page is written (or not).
+void writeViewer(const CompareArgs& args, const render::RgbImage& a, const render::RgbImage& b) {
+    const std::filesystem::path page = args.html;
+    const std::filesystem::path work =
+        (page.has_parent_path() ? page.parent_path() : std::filesystem::path(".")) /
+        (page.filename().string() + ".pair.tmp");
+    const std::string labelA = std::filesystem::path(args.a).filename().string();
+    const std::string labelB = std::filesystem::path(args.b).filename().string();
+    const experiments::ImagePair pair =
+        experiments::imagePair(a, labelA, b, labelB, labelA + " against " + labelB);
+    struct RemovedAtTheEnd {
+        std::filesystem::path path;
+        ~RemovedAtTheEnd() {
+            std::error_code ignored;
+            std::filesystem::remove_all(path, ignored);
+        }
+    } cleanup{work};
+    std::filesystem::create_directories(work);
+    experiments::writeImagePairSpec(work, "pair", pair);
+    const std::string note = experiments::writePairPage(work / "pair.pair.json", page);
+    if (!note.empty()) std::fprintf(stderr, "lamina: note: %s\n", note.c_str());
+}
+
 void run(const CompareArgs& args) {
     if (!args.diff.empty()) checkOutputFile(args.diff, {args.a, args.b});
+    if (!args.html.empty()) checkOutputFile(args.html, {args.a, args.b});
     const render::RgbImage a = render::readRgbImage(args.a);
     const render::RgbImage b = render::readRgbImage(args.b);
     // Both sides are linear after reading; a display image (sRGB, tone-mapped and clipped)
@@ -89,6 +117,7 @@ void run(const CompareArgs& args) {
         // Beside the metrics, in their "name value" form: the top of the colour scale.
         std::printf("diff_scale %.9g\n", scale);
     }
+    if (!args.html.empty()) writeViewer(args, a, b);
 }
 
 }  // namespace

@@ -34,6 +34,11 @@ CommandDecl compareDeclaration() {
                        "The top of --diff's colour scale (default: the difference's 99th "
                        "percentile)")
             .commandLineOnly("the scale of --diff's picture"),
+        textOption("html",
+                   "Write a self-contained page (NAME.html) with a viewer of the two images: A/B, "
+                   "exposure, zoom to pixels, the difference, the relative error, the values "
+                   "under the cursor")
+            .commandLineOnly("a web page; in Python the arrays are already at hand"),
     };
     return c;
 }

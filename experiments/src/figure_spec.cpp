@@ -16,6 +16,8 @@ using nlohmann::json;
 
 // The module's spec version (figures.py SPEC_VERSION).
 constexpr int kSpecVersion = 1;
+// The page's pair spec version (report_page.py PAIR_VERSION).
+constexpr int kPairVersion = 1;
 
 /// A number of a series; JSON has no NaN: null, which the module reads as a missing point.
 json number(double v) {
@@ -65,6 +67,18 @@ void writeSpec(const std::filesystem::path& directory, const std::string& name, 
     writeTextFile(directory / (name + ".figure.json"), j.dump(1) + "\n");
 }
 
+/// Little-endian float32 values, whole or not at all (NAME.f32 of a map, the images of a pair).
+void writeFloat32(const std::filesystem::path& path, const std::vector<float>& values) {
+    static_assert(std::endian::native == std::endian::little, "the .f32 files are little-endian");
+    TemporaryFile tmp(path);
+    std::ofstream out(tmp.path(), std::ios::binary);
+    out.write(reinterpret_cast<const char*>(values.data()),
+              std::streamsize(values.size() * sizeof(float)));
+    out.close();
+    if (!out) throw InputError(path.string() + ": cannot be written");
+    tmp.commit();
+}
+
 }  // namespace
 
 void writeFigureSpec(const std::filesystem::path& directory, const std::string& name,
@@ -93,17 +107,8 @@ void writeFigureSpec(const std::filesystem::path& directory, const std::string& 
     if (figure.width <= 0 || figure.height <= 0 ||
         figure.values.size() != std::size_t(figure.width) * std::size_t(figure.height))
         throw std::logic_error("MapFigure " + name + ": values do not fill width x height");
-    static_assert(std::endian::native == std::endian::little, "the .f32 files are little-endian");
     const std::filesystem::path data = directory / (name + ".f32");
-    {
-        TemporaryFile tmp(data);
-        std::ofstream out(tmp.path(), std::ios::binary);
-        out.write(reinterpret_cast<const char*>(figure.values.data()),
-                  std::streamsize(figure.values.size() * sizeof(float)));
-        out.close();
-        if (!out) throw InputError(data.string() + ": cannot be written");
-        tmp.commit();
-    }
+    writeFloat32(data, figure.values);
     json j = header("map", figure.title);
     j["data"] = data.filename().string();
     j["width"] = figure.width;
@@ -133,6 +138,20 @@ void writeFigureSpec(const std::filesystem::path& directory, const std::string& 
         colours.push_back({number(c[0]), number(c[1]), number(c[2])});
     j["colours"] = colours;
     writeSpec(directory, name, j);
+}
+
+void writeImagePairSpec(const std::filesystem::path& directory, const std::string& name,
+                        const ImagePair& pair) {
+    const std::size_t values = std::size_t(pair.width) * std::size_t(pair.height) * 3;
+    if (pair.width <= 0 || pair.height <= 0 || pair.a.size() != values || pair.b.size() != values)
+        throw std::logic_error("ImagePair " + name + ": the images do not fill width x height");
+    writeFloat32(directory / (name + ".a.f32"), pair.a);
+    writeFloat32(directory / (name + ".b.f32"), pair.b);
+    const json j = {
+        {"lamina_pair", kPairVersion}, {"title", pair.title},    {"caption", pair.caption},
+        {"label_a", pair.labelA},      {"label_b", pair.labelB}, {"width", pair.width},
+        {"height", pair.height},       {"a", name + ".a.f32"},   {"b", name + ".b.f32"}};
+    writeTextFile(directory / (name + ".pair.json"), j.dump(1) + "\n");
 }
 
 }  // namespace lamina::experiments

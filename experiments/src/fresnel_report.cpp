@@ -137,6 +137,9 @@ std::string writeScene(const FresnelSceneComparison& c, Report& report) {
     render::writeExr(report.file("scene_rgb.exr"), *c.rgb.film, false, meta);
     render::writeExr(report.file("scene_spectral.exr"), *c.spectral.film, false, meta);
     const render::RgbImage a = filmImage(*c.rgb.film), b = filmImage(*c.spectral.film);
+    report.addImagePair("scene",
+                        imagePair(a, "RGB mode", b, "spectral mode",
+                                  "The scene in RGB and in spectral mode (" + c.scene + ")"));
     report.addFigure(
         "scene_difference",
         differenceFigure(a, b, "|RGB - spectral mode| of each pixel (" + c.scene + ")"));

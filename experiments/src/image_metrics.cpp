@@ -117,6 +117,19 @@ MapFigure differenceFigure(const render::RgbImage& a, const render::RgbImage& b,
     return map;
 }
 
+ImagePair imagePair(const render::RgbImage& a, const std::string& labelA, const render::RgbImage& b,
+                    const std::string& labelB, const std::string& title) {
+    ImagePair pair;
+    pair.title = title;
+    pair.labelA = labelA;
+    pair.labelB = labelB;
+    pair.width = a.width;
+    pair.height = a.height;
+    pair.a = a.pixels;
+    pair.b = b.pixels;
+    return pair;
+}
+
 void writeDifferenceImage(const std::filesystem::path& path, const render::RgbImage& a,
                           const render::RgbImage& b, double scale) {
     SvgHeatMap map("|image - reference|, mean over R, G, B", a.width, a.height,

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "lamina/experiments/image_metrics.h"
 #include "lamina/experiments/layering.h"
 #include "lamina/experiments/noise_floor.h"
 #include "lamina/experiments/text_format.h"
@@ -223,6 +224,10 @@ std::string writeRenders(const LayeringMaterialResult& m, Report& report) {
             map.values = c.ciede2000;
             map.fromZero = true;  // a distance: never negative, 0 is agreement
             report.addFigure(stem + "_ciede2000", map);
+            report.addImagePair(
+                stem, imagePair(image, t.name + " twin", m.walkRenders[k].image, "random walk",
+                                m.stem + ": the " + t.name + " twin against the walk (" + modes[k] +
+                                    " mode)"));
             const LayeringRenderComparison& noise = m.walkNoise[k];
             const int spp = t.renders[k].spp;
             md << "| " << t.name << " | " << modes[k] << " | "

@@ -1,5 +1,6 @@
 // The report of `lamina reciprocity`: summary.md (the pairs, the BSDFs and the verdict, echoed
 // on the console), the mean image of every integrator and the t-statistic maps of every pair.
+#include "lamina/experiments/image_metrics.h"
 #include "lamina/experiments/reciprocity.h"
 #include "lamina/experiments/svg_heat_map.h"
 #include "lamina/experiments/text_format.h"
@@ -9,14 +10,16 @@ namespace lamina::experiments {
 
 namespace {
 
-void writeMean(const std::filesystem::path& path, const BatchImages& images,
-               const render::ImageMetadata& meta) {
-    std::vector<float> data;
-    data.reserve(images.meanImage().size() * 3);
+/// The batches' mean as an image (linear RGB).
+render::RgbImage meanImage(const BatchImages& images) {
+    render::RgbImage image;
+    image.width = images.width();
+    image.height = images.height();
+    image.pixels.reserve(images.meanImage().size() * 3);
     for (const Rgb<double>& v : images.meanImage())
         for (int c = 0; c < 3; ++c)
-            data.push_back(float(v[c]));
-    render::writeFloatExr(path, images.width(), images.height(), {"R", "G", "B"}, data, meta);
+            image.pixels.push_back(float(v[c]));
+    return image;
 }
 
 // The pair's row of the summary's table; its EXR of t statistics and their figures.
@@ -105,7 +108,9 @@ void writeReciprocityReport(const ReciprocityResult& result, Report& report) {
         meta.strings["mode"] = mode;
         meta.ints["spp"] = in.spp;
         meta.ints["batches"] = in.batches;
-        writeMean(report.file(name + ".exr"), r.images, meta);
+        const render::RgbImage mean = meanImage(r.images);
+        render::writeFloatExr(report.file(name + ".exr"), mean.width, mean.height, {"R", "G", "B"},
+                              mean.pixels, meta);
         images +=
             formatText("%s`%s.exr` (%.1f s)", images.empty() ? "" : ", ", name.c_str(), r.seconds);
     }
@@ -115,6 +120,16 @@ void writeReciprocityReport(const ReciprocityResult& result, Report& report) {
     std::string maps;
     for (const PairAgreement& p : result.pairs) {
         md += writePair(p, in.test.alpha, report);
+        const auto meanOf = [&](const std::string& integrator) {
+            if (integrator == "reference") return render::readLinearRgbImage(in.reference);
+            for (const IntegratorBatches& r : result.renders)
+                if (render::kIntegratorNames.name(r.integrator) == integrator)
+                    return meanImage(r.images);
+            throw std::logic_error("reciprocity: no render of " + integrator);
+        };
+        report.addImagePair(p.nameA + "_vs_" + p.nameB,
+                            imagePair(meanOf(p.nameA), p.nameA, meanOf(p.nameB), p.nameB,
+                                      "Mean images: " + p.nameA + " against " + p.nameB));
         maps += formatText("![%s vs %s, blocks](t_%s_vs_%s_blocks.svg) ", p.nameA.c_str(),
                            p.nameB.c_str(), p.nameA.c_str(), p.nameB.c_str());
     }

@@ -50,6 +50,8 @@ void Report::finish() const {
     }
     if (summary_.empty()) return;
     writeText("summary.md", summary_);
+    if (const std::string note = writeReportPage(directory_); !note.empty())
+        std::fprintf(stderr, "lamina: note: %s\n", note.c_str());
     print(summary_);
 }
 

@@ -3,6 +3,8 @@
 // (little-endian float32, row-major from the top row). The experiments say what a figure
 // shows (its quantity, unit, whether it is signed); the module chooses the scale from the data
 // (a sequential or diverging colour map, limits at a percentile, log where values span decades).
+// Beside them, the pairs of images an experiment compared, for its report page's viewer
+// (python/lamina/report_page.py): NAME.pair.json with NAME.a.f32 and NAME.b.f32.
 #pragma once
 
 #include <filesystem>
@@ -73,6 +75,15 @@ struct SwatchFigure {
     std::vector<Rgb<double>> colours;  ///< linear Rec.709, row-major from the top row
 };
 
+/// Two images an experiment compared, shown in its report page's viewer (A/B, exposure,
+/// zoom, difference, relative error, values under the cursor).
+struct ImagePair {
+    std::string title, caption;
+    std::string labelA, labelB;  ///< what each image is ("RGB mode", "reference", ...)
+    int width = 0, height = 0;
+    std::vector<float> a, b;  ///< linear Rec.709 RGB interleaved, row-major from the top row
+};
+
 /// Writes DIRECTORY/NAME.figure.json (and NAME.f32 for a map); InputError if it cannot.
 void writeFigureSpec(const std::filesystem::path& directory, const std::string& name,
                      const LineFigure& figure);
@@ -80,5 +91,8 @@ void writeFigureSpec(const std::filesystem::path& directory, const std::string& 
                      const MapFigure& figure);
 void writeFigureSpec(const std::filesystem::path& directory, const std::string& name,
                      const SwatchFigure& figure);
+/// Writes DIRECTORY/NAME.pair.json with NAME.a.f32 and NAME.b.f32; InputError if it cannot.
+void writeImagePairSpec(const std::filesystem::path& directory, const std::string& name,
+                        const ImagePair& pair);
 
 }  // namespace lamina::experiments

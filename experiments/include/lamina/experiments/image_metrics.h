@@ -58,6 +58,10 @@ std::string nonFiniteNote(const ImageMetrics& m);
 MapFigure differenceFigure(const render::RgbImage& a, const render::RgbImage& b,
                            const std::string& title);
 
+/// The two images as a pair for a report page's viewer (figure_spec.h), A named `labelA`.
+ImagePair imagePair(const render::RgbImage& a, const std::string& labelA, const render::RgbImage& b,
+                    const std::string& labelB, const std::string& title);
+
 /// The false-colour image alone of the mean absolute channel difference |a - b| in any format
 /// lamina writes (`compare --diff NAME.tif`, ...; a PNG gets the figure of differenceFigure
 /// instead): black, blue, magenta, yellow, white from 0 to `scale` (Palette::Sequential), and

@@ -1,7 +1,8 @@
 // Where an experiment's report goes: one output directory with summary.md, CSV tables,
-// figures and images, and the console (stdout) that echoes the summary. Every experiment
-// writes its report through one of these, so they share one ending: finish() writes
-// summary.md and prints it.
+// figures and images, index.html (the same report as a page, with a viewer for every pair of
+// images compared), and the console (stdout) that echoes the summary. Every experiment writes
+// its report through one of these, so they share one ending: finish() writes summary.md and
+// the page and prints the summary.
 #pragma once
 
 #include <cstdio>
@@ -44,8 +45,14 @@ class Report {
         figures_ = true;
     }
 
+    /// Two images the experiment compared, for the page's viewer (figure_spec.h).
+    void addImagePair(const std::string& name, const ImagePair& pair) {
+        writeImagePairSpec(file(""), name, pair);
+    }
+
     /// The ending: the figures drawn (figure_drawing.h; one note line on stderr where they
-    /// cannot be), summary.md, and the summary on the console. Nothing without a summary.
+    /// cannot be), summary.md, index.html, and the summary on the console. Nothing without a
+    /// summary.
     void finish() const;
 
   private:
