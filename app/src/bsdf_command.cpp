@@ -3,7 +3,7 @@
 //   sample  draws wi for one wo           -> one line per sample (JSON Lines or CSV)
 //   albedo  directional albedo for cos theta_o = 0.05 ... 1, reflection and transmission
 //   chi2    the chi-square goodness-of-fit test of sample() against pdf()
-//   plot    SVG figures: the lobe in the plane of incidence, and a map over the hemisphere
+//   plot    figures: the lobe in the plane of incidence, and a map over the hemisphere
 // Directions are in the local frame (z = normal) and are normalised by the tool.
 #include <CLI/CLI.hpp>
 #include <cmath>
@@ -35,7 +35,7 @@ struct BsdfArgs {
     std::uint64_t seed = 0;
     std::string format = "jsonl";
     std::size_t samples = 1000000;
-    std::string output = "lobe.svg";
+    std::string output = "lobe.png";
 };
 
 std::vector<double> parseNumbers(const std::string& text, const std::string& what) {
@@ -72,12 +72,15 @@ std::string materialLabel(const BsdfArgs& a) {
            ")";
 }
 
-// `bsdf plot -o NAME.svg`: the figures' files, checked before anything is computed.
+// `bsdf plot -o NAME.png`: the figures' files, checked before anything is computed.
 experiments::BsdfPlotFiles plotFiles(const std::string& output) {
-    if (std::filesystem::path(output).extension() != ".svg")
-        throw CLI::ValidationError("--output", "expected a .svg file name, got \"" + output + "\"");
+    if (std::filesystem::path(output).extension() != ".png")
+        throw CLI::ValidationError("--output",
+                                   "expected a .png file name (the figures are drawn as NAME.png "
+                                   "and NAME-hemisphere.png, each also as PDF), got \"" +
+                                       output + "\"");
     const experiments::BsdfPlotFiles files = experiments::bsdfPlotFiles(output);
-    for (const auto& f : {files.plane, files.hemisphere, files.hemispherePng})
+    for (const auto& f : files.all())
         checkOutputFile(f);
     return files;
 }
@@ -194,12 +197,14 @@ class BsdfTool {
                 return std::max(0.0, double(bxdf_->eval(wo, wi, mode_).average()));
             },
             wo, materialLabel(a_));
-        experiments::writeBsdfPlot(plot, files);
+        const std::string note = experiments::writeBsdfPlot(plot, files);
+        if (!note.empty()) std::fprintf(stderr, "lamina: note: %s\n", note.c_str());
         std::fprintf(stderr,
                      "%s: f cos theta_i in the plane of incidence (the normal and (%.3g, %.3g, "
                      "0); peak %.4g); %s: over the upper hemisphere (peak %.4g)\n",
-                     files.plane.c_str(), plot.tangent.x, plot.tangent.y, plot.planePeak,
-                     files.hemisphere.c_str(), plot.hemispherePeak);
+                     (files.directory / (files.plane + ".png")).c_str(), plot.tangent.x,
+                     plot.tangent.y, plot.planePeak,
+                     (files.directory / (files.hemisphere + ".png")).c_str(), plot.hemispherePeak);
     }
 
   private:
@@ -302,11 +307,11 @@ void registerBsdfCommand(CLI::App& app) {
     chi2->callback([a] { withTool(*a, [](auto& t) { t.chi2(); }); });
 
     CLI::App* plot = bsdf->add_subcommand(
-        "plot", "Figures of the lobe (SVG): the plane of incidence, the upper hemisphere");
+        "plot", "Figures of the lobe (PNG and PDF): the plane of incidence, the upper hemisphere");
     addCommon(plot, *a);
     plot->add_option("--wo", a->wo, "Outgoing direction x,y,z (local frame)")->required();
     plot->add_option("-o,--output", a->output,
-                     "Output NAME.svg (also NAME-hemisphere.svg and .png)")
+                     "Output NAME.png (also NAME.pdf, NAME-hemisphere.png and .pdf)")
         ->capture_default_str();
     plot->callback([a] { withTool(*a, [](auto& t) { t.plot(); }); });
 }

@@ -9,7 +9,8 @@
 #include "json_lines.h"
 #include "lamina/core/error.h"
 #include "lamina/core/output_files.h"
-#include "lamina/experiments/svg_plot.h"
+#include "lamina/experiments/figure_drawing.h"
+#include "lamina/experiments/figure_spec.h"
 #include "lamina/spectral/blackbody.h"
 #include "lamina/spectral/cie.h"
 #include "lamina/spectral/color_space.h"
@@ -84,25 +85,43 @@ Curves resolve(const std::string& name) {
                      names);
 }
 
+// --plot NAME.png: a figure of the figure module (NAME.png and NAME.pdf, its data beside).
 void checkPlotFile(const std::string& plot) {
     if (plot.empty()) return;
-    if (std::filesystem::path(plot).extension() != ".svg")
-        throw CLI::ValidationError("--plot", "expected a .svg file name, got \"" + plot + "\"");
-    checkOutputFile(plot);
+    const std::filesystem::path p(plot);
+    if (p.extension() != ".png")
+        throw CLI::ValidationError("--plot",
+                                   "expected a .png file name (the figure is drawn as "
+                                   "NAME.png and NAME.pdf), got \"" +
+                                       plot + "\"");
+    for (const char* suffix : {".png", ".pdf", ".figure.json"})
+        checkOutputFile(std::filesystem::path(p).replace_extension(suffix));
 }
 
-// The curves over 360-830 nm in 1 nm steps, through the experiments' plot writer.
+// The curves over 360-830 nm in 1 nm steps, as a figure (figure_spec.h).
 void writePlot(const std::filesystem::path& path, const Curves& c) {
-    experiments::SvgPlot plot(c.title, "wavelength (nm)", c.yLabel);
+    experiments::LineFigure plot;
+    plot.title = c.title;
+    plot.xLabel = "wavelength (nm)";
+    plot.yLabel = c.yLabel;
+    plot.xScale = experiments::AxisScale::Linear;
+    experiments::LinePanel panel;
     for (std::size_t i = 0; i < c.f.size(); ++i) {
-        experiments::SvgPlot::Series s{c.labels[i], {}, {}};
+        experiments::LineSeries s;
+        s.name = c.labels[i];
         for (double nm = kLambdaMin; nm <= kLambdaMax; nm += 1) {
             s.x.push_back(nm);
             s.y.push_back(c.f[i](nm));
         }
-        plot.add(std::move(s));
+        panel.series.push_back(std::move(s));
     }
-    plot.write(path);
+    plot.panels.push_back(std::move(panel));
+    const std::filesystem::path directory =
+        path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+    const std::string stem = path.stem().string();
+    experiments::writeFigureSpec(directory, stem, plot);
+    const std::string note = experiments::drawFigures(directory / (stem + ".figure.json"));
+    if (!note.empty()) std::fprintf(stderr, "lamina: note: %s\n", note.c_str());
     std::fprintf(stderr, "%s: %s over %g-%g nm\n", path.c_str(), c.title.c_str(), kLambdaMin,
                  kLambdaMax);
 }
@@ -174,7 +193,7 @@ void registerSpectrumCommand(CLI::App& app) {
     cmd->add_flag("--rgb", a->rgb,
                   "Also print what RGB mode uses: F0/F82 (metals), the d-line ior (glasses), "
                   "the colour (illuminants)");
-    cmd->add_option("--plot", a->plot, "Write an SVG plot of the curve(s)");
+    cmd->add_option("--plot", a->plot, "Draw the curve(s) as NAME.png (and NAME.pdf)");
     cmd->callback([a] { run(*a); });
 }
 

@@ -9,6 +9,8 @@
 #include <utility>
 #include <vector>
 
+#include "lamina/experiments/figure_drawing.h"
+
 namespace lamina::experiments {
 
 namespace {
@@ -26,10 +28,20 @@ constexpr int kHemisphereCells = 200;
 
 }  // namespace
 
-BsdfPlotFiles bsdfPlotFiles(const std::filesystem::path& plane) {
-    std::filesystem::path hemisphere = plane;
-    hemisphere.replace_filename(plane.stem().string() + "-hemisphere.svg");
-    return {plane, hemisphere, std::filesystem::path(hemisphere).replace_extension(".png")};
+BsdfPlotFiles bsdfPlotFiles(const std::filesystem::path& output) {
+    const std::filesystem::path directory =
+        output.has_parent_path() ? output.parent_path() : std::filesystem::path(".");
+    const std::string stem = output.stem().string();
+    return {directory, stem, stem + "-hemisphere"};
+}
+
+std::vector<std::filesystem::path> BsdfPlotFiles::all() const {
+    std::vector<std::filesystem::path> files;
+    for (const std::string& stem : {plane, hemisphere})
+        for (const char* suffix : {".figure.json", ".png", ".pdf"})
+            files.push_back(directory / (stem + suffix));
+    files.push_back(directory / (hemisphere + ".f32"));
+    return files;
 }
 
 BsdfPlot plotBsdf(const std::function<double(const Vec3d& wi)>& value, const Vec3d& wo,
@@ -39,7 +51,8 @@ BsdfPlot plotBsdf(const std::function<double(const Vec3d& wi)>& value, const Vec
     const double tangential = std::hypot(wo.x, wo.y);
     const Vec3d u =
         tangential > 0 ? Vec3d(wo.x / tangential, wo.y / tangential, 0.0) : Vec3d(1.0, 0.0, 0.0);
-    SvgPlot::Series lobe{"f cos theta_i", {}, {}};
+    LineSeries lobe;
+    lobe.name = "f cos theta_i";
     double peak = 0;
     for (int k = 0; k <= 720; ++k) {
         const double degrees = -180.0 + 0.5 * k, t = glm::radians(degrees);
@@ -48,13 +61,27 @@ BsdfPlot plotBsdf(const std::function<double(const Vec3d& wi)>& value, const Vec
         peak = std::max(peak, lobe.y.back());
     }
     const double thetaO = glm::degrees(std::atan2(tangential, wo.z));
-    SvgPlot plane("Plane of incidence: " + what,
-                  "theta_i from the normal, towards (" + rounded(u.x) + ", " + rounded(u.y) +
-                      ", 0) (degrees)",
-                  "f cos theta_i (1/sr)");
-    plane.add(std::move(lobe));
-    plane.add({"wo (theta_o = " + rounded(thetaO) + " deg)", {thetaO, thetaO}, {0.0, peak}, true});
-    plane.add({"mirror direction", {-thetaO, -thetaO}, {0.0, peak}, true});
+    const auto marker = [&](std::string name, double degrees, const char* colour) {
+        LineSeries s;
+        s.name = std::move(name);
+        s.x = {degrees, degrees};
+        s.y = {0.0, peak};
+        s.style = LineSeries::Style::Dashed;
+        s.colour = colour;
+        return s;
+    };
+    LineFigure plane;
+    plane.title = "Plane of incidence: " + what;
+    plane.xLabel = "theta_i from the normal, towards (" + rounded(u.x) + ", " + rounded(u.y) +
+                   ", 0) (degrees)";
+    plane.yLabel = "f cos theta_i (1/sr)";
+    // The lobe spans decades only where it is sharp; a linear axis shows its shape as drawn.
+    plane.xScale = plane.yScale = AxisScale::Linear;
+    plane.panels.push_back(
+        {"",
+         {lobe, marker("wo (theta_o = " + rounded(thetaO) + " deg)", thetaO, "grey"),
+          marker("mirror direction", -thetaO, "black")},
+         ""});
 
     constexpr int n = kHemisphereCells;
     std::vector<float> heat(std::size_t(n) * n, std::nanf(""));
@@ -69,17 +96,30 @@ BsdfPlot plotBsdf(const std::function<double(const Vec3d& wi)>& value, const Vec
             hemispherePeak = std::max(hemispherePeak, v);
         }
     const double edge = 1.0 - 1.0 / n;  // the centres of the outermost cells
-    SvgHeatMap hemisphere("Upper hemisphere: " + what, n, n, std::move(heat));
-    hemisphere.setAxes({"wi.x (direction cosine)", -edge, edge},
-                       {"wi.y (direction cosine)", edge, -edge});
-    hemisphere.setScale(Palette::Sequential, 0, hemispherePeak > 0 ? hemispherePeak : 1,
-                        "f cos theta_i (1/sr)");
+    MapFigure hemisphere;
+    hemisphere.title = "Upper hemisphere: " + what;
+    hemisphere.quantity = "f cos theta_i";
+    hemisphere.unit = "1/sr";
+    hemisphere.width = hemisphere.height = n;
+    hemisphere.values = std::move(heat);
+    hemisphere.fromZero = true;
+    // The peak as the map stores it (float): nothing lies beyond.
+    hemisphere.upper = hemispherePeak > 0 ? double(float(hemispherePeak)) : 1.0;
+    hemisphere.equalAspect = true;  // the disk stays round
+    hemisphere.x = MapAxis{"wi.x (direction cosine)", -edge, edge, {}};
+    hemisphere.y = MapAxis{"wi.y (direction cosine)", edge, -edge, {}};
+    hemisphere.caption = "Cells outside the unit disk (below the horizon) are grey.";
     return {u, peak, hemispherePeak, std::move(plane), std::move(hemisphere)};
 }
 
-void writeBsdfPlot(const BsdfPlot& plot, const BsdfPlotFiles& files) {
-    plot.plane.write(files.plane);
-    plot.hemisphere.write(files.hemisphere, files.hemispherePng);
+std::string writeBsdfPlot(const BsdfPlot& plot, const BsdfPlotFiles& files) {
+    writeFigureSpec(files.directory, files.plane, plot.plane);
+    writeFigureSpec(files.directory, files.hemisphere, plot.hemisphere);
+    for (const std::string& stem : {files.plane, files.hemisphere})
+        if (std::string note = drawFigures(files.directory / (stem + ".figure.json"));
+            !note.empty())
+            return note;
+    return "";
 }
 
 }  // namespace lamina::experiments

@@ -121,6 +121,7 @@ void writeFigureSpec(const std::filesystem::path& directory, const std::string& 
     if (figure.upper) j["upper"] = number(*figure.upper);
     if (figure.x) j["x_axis"] = axis(*figure.x);
     if (figure.y) j["y_axis"] = axis(*figure.y);
+    if (figure.equalAspect) j["equal_aspect"] = true;
     if (!figure.caption.empty()) j["caption"] = figure.caption;
     if (!figure.clipReason.empty()) j["clip_reason"] = figure.clipReason;
     writeSpec(directory, name, j);

@@ -5,7 +5,6 @@
 #include <cstdio>
 
 #include "lamina/core/error.h"
-#include "lamina/experiments/svg_heat_map.h"
 
 namespace lamina::experiments {
 
@@ -132,10 +131,21 @@ ImagePair imagePair(const render::RgbImage& a, const std::string& labelA, const 
 
 void writeDifferenceImage(const std::filesystem::path& path, const render::RgbImage& a,
                           const render::RgbImage& b, double scale) {
-    SvgHeatMap map("|image - reference|, mean over R, G, B", a.width, a.height,
-                   meanAbsoluteDifference(a, b));
-    map.setScale(Palette::Sequential, 0, scale > 0 ? scale : 1, "|difference| (linear radiance)");
-    map.write(std::filesystem::path(path).replace_extension(".svg"), path);
+    const std::vector<float> difference = meanAbsoluteDifference(a, b);
+    std::vector<float> rgb;
+    rgb.reserve(difference.size() * 3);
+    for (const float v : difference) {
+        if (!std::isfinite(v)) {
+            rgb.insert(rgb.end(), {0.5f, 0.5f, 0.5f});
+            continue;
+        }
+        // A ramp whose brightness rises monotonically, readable in grey print too.
+        const double t = std::clamp(double(v) / (scale > 0 ? scale : 1), 0.0, 1.0);
+        rgb.insert(rgb.end(),
+                   {float(std::clamp(2 * t - 0.5, 0.0, 1.0)),
+                    float(std::clamp(2 * t - 1.0, 0.0, 1.0)), float(t < 0.5 ? 2 * t : 2 - 2 * t)});
+    }
+    render::writeRgb8(path, a.width, a.height, rgb);
 }
 
 double percentileOf(std::vector<float> values, double p) {

@@ -2,7 +2,6 @@
 // on the console), the mean image of every integrator and the t-statistic maps of every pair.
 #include "lamina/experiments/image_metrics.h"
 #include "lamina/experiments/reciprocity.h"
-#include "lamina/experiments/svg_heat_map.h"
 #include "lamina/experiments/text_format.h"
 #include "lamina/output/image_output.h"
 
@@ -23,7 +22,7 @@ render::RgbImage meanImage(const BatchImages& images) {
 }
 
 // The pair's row of the summary's table; its EXR of t statistics and their figures.
-std::string writePair(const PairAgreement& p, double alpha, const Report& report) {
+std::string writePair(const PairAgreement& p, double alpha, Report& report) {
     const bool pixelTestTrusted = p.pixelTest.trustworthy;
     const AgreementResult& r = p.result;
     const int width = p.width, height = p.height;
@@ -49,13 +48,20 @@ std::string writePair(const PairAgreement& p, double alpha, const Report& report
     render::writeFloatExr(report.file(stem + ".exr"), width, height, {"T.pixel", "T.block"}, data,
                           meta);
     for (const bool pixels : {true, false}) {
-        SvgHeatMap map(
+        MapFigure map;
+        map.title =
             formatText("Welch t per %s, %s vs %s (red: %s brighter)", pixels ? "pixel" : "block",
-                       p.nameA.c_str(), p.nameB.c_str(), p.nameA.c_str()),
-            width, height, pixels ? r.pixelT : r.blockT);
-        map.setScale(Palette::Diverging, -4, 4, "t (saturated at |t| = 4)");
-        const std::string name = stem + (pixels ? "_pixels" : "_blocks");
-        map.write(report.file(name + ".svg"), report.file(name + ".png"));
+                       p.nameA.c_str(), p.nameB.c_str(), p.nameA.c_str());
+        map.quantity = "Welch t";
+        map.unit = "dimensionless";
+        map.width = width;
+        map.height = height;
+        map.values = pixels ? r.pixelT : r.blockT;
+        map.isSigned = true;  // diverging, symmetric about 0 (agreement)
+        map.caption =
+            "Under agreement t is about Student-t distributed with (batches - 1) degrees of "
+            "freedom; a region of one colour is where the images differ.";
+        report.addFigure(stem + (pixels ? "_pixels" : "_blocks"), map);
     }
     return row;
 }
@@ -130,7 +136,7 @@ void writeReciprocityReport(const ReciprocityResult& result, Report& report) {
         report.addImagePair(p.nameA + "_vs_" + p.nameB,
                             imagePair(meanOf(p.nameA), p.nameA, meanOf(p.nameB), p.nameB,
                                       "Mean images: " + p.nameA + " against " + p.nameB));
-        maps += formatText("![%s vs %s, blocks](t_%s_vs_%s_blocks.svg) ", p.nameA.c_str(),
+        maps += formatText("![%s vs %s, blocks](t_%s_vs_%s_blocks.png) ", p.nameA.c_str(),
                            p.nameB.c_str(), p.nameA.c_str(), p.nameB.c_str());
     }
     md += formatText("\nBSDFs (max relative error over %d direction pairs):\n\n",
@@ -143,7 +149,7 @@ void writeReciprocityReport(const ReciprocityResult& result, Report& report) {
                      pixelTestNote(result).c_str(), report.directory().string().c_str());
     md += "Mean images: " + images +
           "; per pair, its t statistics per pixel and per block (`t_A_vs_B.exr`, "
-          "`t_A_vs_B_pixels.svg`):\n\n" +
+          "`t_A_vs_B_pixels.png`, `t_A_vs_B_blocks.png`, each also as PDF):\n\n" +
           maps + "\n";
     report.addSummary(md);
 }

@@ -6,7 +6,6 @@
 
 #include "lamina/core/json_reader.h"
 #include "lamina/experiments/stability.h"
-#include "lamina/experiments/svg_heat_map.h"
 #include "lamina/experiments/text_format.h"
 #include "lamina/output/image_output.h"
 
@@ -31,37 +30,51 @@ std::string modelStem(std::size_t index, const std::string& json) {
 
 /// Two figures per model over (alpha, cos theta_o), each cell one audited pair of parameters:
 /// the number of issues and the worst float-against-double error, both on log scales.
-void writeHeatMaps(const Report& report, const std::string& stem, const std::string& json,
-                   const StabilityReport& r) {
+void addHeatMaps(Report& report, const std::string& stem, const std::string& json,
+                 const StabilityReport& r) {
     const int w = int(r.cosines.size()), h = int(r.alphas.size());
     std::vector<float> issues(std::size_t(w) * h), error(std::size_t(w) * h);
+    double most = 1;
     for (std::size_t a = 0; a < r.alphas.size(); ++a)
         for (std::size_t c = 0; c < r.cosines.size(); ++c) {
             const StabilityCell& cell = r.at(a, c);
             issues[a * std::size_t(w) + c] = float(std::log10(1.0 + double(cell.issues())));
             error[a * std::size_t(w) + c] = float(std::log10(std::max(cell.worstFloatError, 1e-8)));
+            most = std::max(most, double(issues[a * std::size_t(w) + c]));
         }
-    SvgHeatMap::Axis x{"cos(theta_o)", 0, 0, {}}, y{"alpha (GGX roughness)", 0, 0, {}};
+    MapAxis x{"cos(theta_o)", 0, 0, {}}, y{"alpha (GGX roughness)", 0, 0, {}};
     for (double c : r.cosines)
         x.categories.push_back(formatText("%g", c));
     for (double a : r.alphas)
         y.categories.push_back(formatText("%g", a));
-    SvgHeatMap issueMap("Issues (NaN, Inf, negative, energy gain, weight != eval/pdf): " + json, w,
-                        h, std::move(issues));
-    issueMap.setAxes(x, y);
-    double most = 1;
-    for (const StabilityCell& cell : r.cells)
-        most = std::max(most, std::log10(1.0 + double(cell.issues())));
-    issueMap.setScale(Palette::Sequential, 0, most, "log10(1 + issues per cell)");
-    issueMap.write(report.file(stem + "_issues.svg"));
-    SvgHeatMap errorMap("Worst relative error of float against double: " + json, w, h,
-                        std::move(error));
-    errorMap.setAxes(x, y);
-    errorMap.setScale(Palette::Sequential, -8, 0, "log10(relative error)");
-    errorMap.write(report.file(stem + "_float_error.svg"));
+    MapFigure issueMap;
+    issueMap.title = "Issues (NaN, Inf, negative, energy gain, weight != eval/pdf): " + json;
+    issueMap.quantity = "log10(1 + issues per cell)";
+    issueMap.unit = "count, log scale";
+    issueMap.width = w;
+    issueMap.height = h;
+    issueMap.values = std::move(issues);
+    issueMap.fromZero = true;  // 0: no issue
+    issueMap.upper = most;     // the worst cell: nothing lies beyond
+    issueMap.x = x;
+    issueMap.y = y;
+    report.addFigure(stem + "_issues", issueMap);
+    MapFigure errorMap;
+    errorMap.title = "Worst relative error of float against double: " + json;
+    errorMap.quantity = "log10(relative error)";
+    errorMap.unit = "floored at -8";
+    errorMap.width = w;
+    errorMap.height = h;
+    errorMap.values = std::move(error);
+    // The whole range, from the smallest value (at most the floor, -8) to 0 (an error of 100%).
+    errorMap.percentile = 100;
+    errorMap.upper = 0;
+    errorMap.x = x;
+    errorMap.y = y;
+    report.addFigure(stem + "_float_error", errorMap);
 }
 
-std::string modelsSection(const StabilityResult& result, const Report& report) {
+std::string modelsSection(const StabilityResult& result, Report& report) {
     std::ostringstream md;
     md << "## BSDF models on extreme inputs\n\nalpha in {";
     for (double a : kStabilityAlphas)
@@ -73,15 +86,20 @@ std::string modelsSection(const StabilityResult& result, const Report& report) {
        << " samples and 71 evaluation directions in both transport modes, float and double.\n\n"
           "| model | NaN | Inf | negative | energy gain | weight != eval/pdf | worst float/double "
           "error |\n|---|---|---|---|---|---|---|\n";
+    std::string maps;
     for (std::size_t i = 0; i < result.models.size(); ++i) {
         const AuditedModel& m = result.models[i];
-        writeHeatMaps(report, modelStem(i, m.json), m.json, m.audit);
+        const std::string stem = modelStem(i, m.json);
+        addHeatMaps(report, stem, m.json, m.audit);
         md << "| `" << m.json << "` | " << cellText(m.audit.total()) << " |\n";
+        maps += "![" + stem + " issues](" + stem + "_issues.png) ![" + stem + " float error](" +
+                stem + "_float_error.png)\n\n";
     }
     md << "\nHeat maps per model, named by its number and material type "
-          "(`modelN_TYPE_issues.svg`: issues per (alpha, cos theta_o) cell; "
-          "`modelN_TYPE_float_error.svg`: the worst float error against double), each with "
-          "its parameter values on the axes and a colour bar.\n\n";
+          "(`modelN_TYPE_issues.png`: issues per (alpha, cos theta_o) cell; "
+          "`modelN_TYPE_float_error.png`: the worst float error against double; each also as "
+          "PDF), each with its parameter values on the axes and a colour bar.\n\n"
+       << maps;
     return md.str();
 }
 

@@ -119,7 +119,7 @@ def map_scale(values, signed, from_zero=False, percentile=99.0, scale="auto", up
     lo_p = 100.0 - percentile
     if signed:
         mag = np.abs(v)
-        limit = float(upper) if upper else float(np.percentile(mag, percentile))
+        limit = float(upper) if upper is not None else float(np.percentile(mag, percentile))
         if limit <= 0:
             limit = float(mag.max()) or 1.0
         small = float(np.percentile(mag[mag > 0], 50)) if np.any(mag > 0) else limit
@@ -133,27 +133,27 @@ def map_scale(values, signed, from_zero=False, percentile=99.0, scale="auto", up
             norm = colors.Normalize(-limit, limit)
             how = f"limits +-{limit:.3g}"
         source = ("fixed (the 99th percentile of |value| is "
-                  f"{np.percentile(mag, 99):.3g})" if upper
+                  f"{np.percentile(mag, 99):.3g})" if upper is not None
                   else f"the {percentile:g}th percentile of |value|")
         return norm, "RdBu_r", f"Diverging colour scale, {how}: {source}"
     positive = v[v > 0]
     log = not from_zero and (scale == "log" or (scale == "auto" and spans_decades(v)))
     if log and positive.size:
         lo = float(np.percentile(positive, lo_p))
-        hi = float(upper) if upper else float(np.percentile(positive, percentile))
+        hi = float(upper) if upper is not None else float(np.percentile(positive, percentile))
         if hi <= lo:
             hi = lo * 10
-        top = "fixed" if upper else f"the {percentile:g}th percentile"
+        top = "fixed" if upper is not None else f"the {percentile:g}th percentile"
         return colors.LogNorm(lo, hi), "viridis", (
             f"Log colour scale from {lo:.3g} (the {lo_p:g}th percentile of the values) to "
             f"{hi:.3g} ({top})")
     lo = 0.0 if from_zero else float(np.percentile(v, lo_p))
-    hi = float(upper) if upper else float(np.percentile(v, percentile))
+    hi = float(upper) if upper is not None else float(np.percentile(v, percentile))
     if hi <= lo:
         hi = lo + (abs(lo) if lo else 1.0)
     where = "0" if from_zero else f"the {lo_p:g}th percentile ({lo:.3g})"
     to = (f"{hi:.3g} (fixed; the values' 99th percentile is {np.percentile(v, 99):.3g})"
-          if upper else f"the {percentile:g}th percentile of the values ({hi:.3g})")
+          if upper is not None else f"the {percentile:g}th percentile of the values ({hi:.3g})")
     return colors.Normalize(lo, hi), "viridis", f"Colour scale from {where} to {to}"
 
 
@@ -309,14 +309,16 @@ def draw_map(spec):
                                      float(spec.get("percentile", 99.0)),
                                      spec.get("scale", "auto"), spec.get("upper"))
     extent, pixels = _map_extent(spec, w, h)
-    aspect_ratio = h / w if pixels else 0.75
+    # Pixels, and axes of one quantity (direction cosines), keep their shape; others fill.
+    equal = pixels or bool(spec.get("equal_aspect", False))
+    aspect_ratio = h / w if equal else 0.75
     fig = Figure(figsize=(_WIDTH_IN, min(7.5, max(3.4, _WIDTH_IN * 0.78 * aspect_ratio + 1.4))))
     FigureCanvasAgg(fig)
     ax = fig.add_subplot()
     cmap = matplotlib.colormaps[cmap_name].copy()
     cmap.set_bad("0.6")
     im = ax.imshow(np.ma.masked_invalid(values), cmap=cmap, norm=norm, interpolation="nearest",
-                   extent=extent, aspect="equal" if pixels else "auto")
+                   extent=extent, aspect="equal" if equal else "auto")
     clipped = clipped_fraction(values, norm)
     v = values[np.isfinite(values)]
     below = v.size and np.any(v < norm.vmin)
@@ -335,9 +337,10 @@ def draw_map(spec):
                                        (spec["y_axis"], ax.set_ylabel, ax.set_yticks, h)):
             setter(axis["label"])
             if axis.get("categories"):
-                ticks(range(n), axis["categories"],
-                      rotation=30 if axis is spec["x_axis"] and n > 4 else 0,
-                      ha="right" if axis is spec["x_axis"] and n > 4 else "center",
+                is_x = axis is spec["x_axis"]
+                # x labels: slanted when many, ending under their tick; y labels end at theirs.
+                ticks(range(n), axis["categories"], rotation=30 if is_x and n > 4 else 0,
+                      ha=("right" if n > 4 else "center") if is_x else "right",
                       fontsize="small")
     nan = int(np.sum(~np.isfinite(values)))
     caption = how + f"; {100 * clipped:.1f}% of the values lie beyond the limits."
@@ -443,6 +446,17 @@ def problems(fig):
         shared = getattr(ax, "lamina_shares_y_label", False)
         if not ax.get_xlabel().strip() or not (shared or ax.get_ylabel().strip()):
             found.append(f"{name}: axes without a label on x or y")
+
+    # A tick label over its own axes' plot area hides data and reads as part of it.
+    _, drawn = _tick_labels(fig)
+    drawn = {id(t) for t in drawn}
+    for ax in fig.axes:
+        for label in ax.get_xticklabels() + ax.get_yticklabels():
+            if id(label) not in drawn or not label.get_visible() or not label.get_text().strip():
+                continue
+            if _overlap(label.get_window_extent(renderer), ax.bbox, slack=2.0):
+                found.append(f"{name}: the tick label \"{label.get_text()[:40]}\" lies over "
+                             f"its axes' plot")
 
     texts = list(_texts(fig))
     boxes = [t.get_window_extent(renderer) for t in texts]

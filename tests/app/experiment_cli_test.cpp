@@ -158,9 +158,9 @@ TEST_F(ExperimentCli, StabilityReportsAHealthyModelCleanAndRendersStressScenes) 
         << r.output;
     EXPECT_NE(r.output.find("| ior-4.json | 0 |"), std::string::npos) << r.output;
     // The material in the name; the parameter values on the axes.
-    EXPECT_TRUE(fs::exists(dir_ / "model1_lambert_float_error.svg"));
-    std::ifstream svg(dir_ / "model1_lambert_issues.svg");
-    const std::string figure((std::istreambuf_iterator<char>(svg)), {});
+    EXPECT_TRUE(fs::exists(dir_ / "model1_lambert_float_error.figure.json"));
+    std::ifstream spec(dir_ / "model1_lambert_issues.figure.json");
+    const std::string figure((std::istreambuf_iterator<char>(spec)), {});
     EXPECT_NE(figure.find("cos(theta_o)"), std::string::npos);
     EXPECT_NE(figure.find("log10(1 + issues per cell)"), std::string::npos);
 }

@@ -164,9 +164,9 @@ TEST_F(ProvenanceCli, BsdfPlotDrawsThePlaneThatContainsWo) {
     // An isotropic glossy lobe: its plane of incidence looks the same for any azimuth of wo,
     // and it peaks near the mirror direction, which lies in that plane.
     const std::string material = R"('{"type":"conductor","material":"Au","alpha":0.1}')";
-    const std::string svg = (dir_ / "plot.svg").string();
-    const CommandRun x = runLamina("bsdf plot " + material + " --wo 0.6,0,0.8 -o " + svg);
-    const CommandRun y = runLamina("bsdf plot " + material + " --wo 0,0.6,0.8 -o " + svg);
+    const std::string png = (dir_ / "plot.png").string();
+    const CommandRun x = runLamina("bsdf plot " + material + " --wo 0.6,0,0.8 -o " + png);
+    const CommandRun y = runLamina("bsdf plot " + material + " --wo 0,0.6,0.8 -o " + png);
     ASSERT_EQ(x.exitCode, 0) << x.output;
     ASSERT_EQ(y.exitCode, 0) << y.output;
     const double px = plotPeak(x.output), py = plotPeak(y.output);

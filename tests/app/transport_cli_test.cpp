@@ -78,8 +78,9 @@ TEST_F(CliTest, ReciprocityVerdictSaysWhenThePerPixelTestCannotBeTrusted) {
         << r.output;
     EXPECT_NE(r.output.find("it needs at least about"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("(not meaningful: see the verdict)"), std::string::npos);
-    // Every t map has its figure with a colour bar.
-    EXPECT_TRUE(fs::exists(dir_ / "t_light_vs_bdpt_pixels.svg"));
+    // Every t map has its figure (a spec for the figure module, drawn where it can be).
+    EXPECT_TRUE(fs::exists(dir_ / "t_light_vs_bdpt_pixels.figure.json"));
+    EXPECT_TRUE(fs::exists(dir_ / "t_light_vs_bdpt_blocks.figure.json"));
 }
 
 TEST_F(CliTest, ReciprocityExitsWithTwoWhenAnAblationBreaksLightTracing) {

@@ -130,6 +130,20 @@ def test_overlapping_text_and_a_legend_outside_are_problems(figures, tmp_path):
     assert any("without a label" in p for p in figures.problems(fig))
 
 
+def test_category_labels_beside_a_map_not_over_it(figures, tmp_path):
+    # The stability maps' y labels were once centred on their ticks, half over the map.
+    axis = lambda label, names: {"label": label, "first": 0, "last": 0, "categories": names}
+    spec = figures.load(write_map(
+        str(tmp_path), "c", np.arange(12.0).reshape(3, 4), from_zero=True, upper=11.0,
+        x_axis=axis("cos", ["1", "0.5", "0.1", "0.01"]),
+        y_axis=axis("alpha", ["0.0001", "0.001", "0.5"])))
+    fig = figures.draw(spec)
+    assert figures.problems(fig) == []
+    for label in fig.axes[0].get_yticklabels():
+        label.set_horizontalalignment("center")
+    assert any("lies over its axes' plot" in p for p in figures.problems(fig))
+
+
 # ----------------------------------------------------------------- the script
 
 def test_the_script_writes_png_and_pdf_and_refuses_a_bad_spec(source_dir, tmp_path):
@@ -278,3 +292,37 @@ def test_convergence_figures(figures, lamina_exe, source_dir, tmp_path):
     for panel in spec["panels"]:
         (path,) = panel["series"]
         assert len(path["se"]) == len(path["y"]) and all(e > 0 for e in path["se"])
+
+
+def test_stability_and_reciprocity_figures(figures, lamina_exe, source_dir, tmp_path):
+    out = tmp_path / "stability"
+    code, _, err = run_cli(lamina_exe, "stability", '{"type":"conductor","material":"Au"}',
+                           "--samples", "64", "-o", str(out))
+    assert code == 0, err
+    assert "lamina: note" not in err, err
+    specs = assert_drawn_without_problems(figures, str(out))
+    assert {"model1_conductor_issues.figure.json",
+            "model1_conductor_float_error.figure.json"} <= set(specs)
+    scene = os.path.join(source_dir, "scenes", "reciprocity", "rough-conductor.json")
+    out = tmp_path / "reciprocity"
+    code, _, err = run_cli(lamina_exe, "reciprocity", scene, "--integrators", "path,light",
+                           "--spp", "16", "--batches", "4", "--resolution", "32x24",
+                           "-o", str(out))
+    assert code in (0, 2), err
+    assert "lamina: note" not in err, err
+    specs = assert_drawn_without_problems(figures, str(out))
+    assert {"t_path_vs_light_pixels.figure.json", "t_path_vs_light_blocks.figure.json"} <= set(specs)
+    spec = figures.load(str(out / "t_path_vs_light_pixels.figure.json"))
+    assert spec["signed"]  # diverging, symmetric about 0
+
+
+def test_bsdf_plot_and_spectrum_figures(figures, lamina_exe, tmp_path):
+    code, _, err = run_cli(lamina_exe, "bsdf", "plot", '{"type":"standard","roughness":0.3}',
+                           "--wo", "0.7,0,0.7", "-o", str(tmp_path / "lobe.png"))
+    assert code == 0, err
+    assert "lamina: note" not in err, err
+    code, _, err = run_cli(lamina_exe, "spectrum", "Cu", "--plot", str(tmp_path / "cu.png"))
+    assert code == 0, err
+    assert "lamina: note" not in err, err
+    assert set(assert_drawn_without_problems(figures, str(tmp_path))) == {
+        "lobe.figure.json", "lobe-hemisphere.figure.json", "cu.figure.json"}

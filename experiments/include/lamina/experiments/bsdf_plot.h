@@ -1,8 +1,8 @@
 // The figures of `lamina bsdf plot`: a BSDF's f cos theta_i for one outgoing direction wo,
 // along the plane of incidence (the normal and wo's tangential direction u; x when wo is the
 // normal) and as a false-colour map over the upper hemisphere with its colour bar. Two figures
-// that stand alone: NAME.svg and NAME-hemisphere.svg with the map's pixels in
-// NAME-hemisphere.png.
+// of the figure module (figure_spec.h, docs/figures.md): NAME.png and NAME-hemisphere.png,
+// each also as PDF, with their data beside them.
 #pragma once
 
 #include <filesystem>
@@ -10,23 +10,25 @@
 #include <string>
 
 #include "lamina/core/vector.h"
-#include "lamina/experiments/svg_heat_map.h"
-#include "lamina/experiments/svg_plot.h"
+#include "lamina/experiments/figure_spec.h"
 
 namespace lamina::experiments {
 
+/// The figures' stems in their directory: NAME and NAME-hemisphere of `output` (NAME.png).
 struct BsdfPlotFiles {
-    std::filesystem::path plane, hemisphere, hemispherePng;
+    std::filesystem::path directory;
+    std::string plane, hemisphere;
+    /// Every file the figures write (the specs, the map's data, the PNGs and PDFs).
+    std::vector<std::filesystem::path> all() const;
 };
 
-/// NAME.svg's figures: NAME.svg, NAME-hemisphere.svg, NAME-hemisphere.png.
-BsdfPlotFiles bsdfPlotFiles(const std::filesystem::path& plane);
+BsdfPlotFiles bsdfPlotFiles(const std::filesystem::path& output);
 
 struct BsdfPlot {
     Vec3d tangent;  ///< u, the plane's direction along the surface
     double planePeak = 0, hemispherePeak = 0;
-    SvgPlot plane;
-    SvgHeatMap hemisphere;
+    LineFigure plane;
+    MapFigure hemisphere;
 };
 
 /// `value(wi)`: what is drawn, f(wo, wi) |cos theta_i| as one number per direction (wi in the
@@ -37,6 +39,7 @@ struct BsdfPlot {
 BsdfPlot plotBsdf(const std::function<double(const Vec3d& wi)>& value, const Vec3d& wo,
                   const std::string& material);
 
-void writeBsdfPlot(const BsdfPlot& plot, const BsdfPlotFiles& files);
+/// Writes both figures' specs and draws them; returns "" or the note why they were not drawn.
+std::string writeBsdfPlot(const BsdfPlot& plot, const BsdfPlotFiles& files);
 
 }  // namespace lamina::experiments

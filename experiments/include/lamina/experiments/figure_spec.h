@@ -65,6 +65,7 @@ struct MapFigure {
     double percentile = 99;       ///< the upper limit (and 100 - it the lower)
     std::optional<double> upper;  ///< a fixed upper limit instead (the caption says so)
     std::optional<MapAxis> x, y;  ///< none: the axes are the image's pixels
+    bool equalAspect = false;     ///< x and y in one unit: drawn with equal scales
     std::string clipReason;       ///< why more than 5% of the values may lie beyond the limits
 };
 

@@ -64,8 +64,8 @@ ImagePair imagePair(const render::RgbImage& a, const std::string& labelA, const 
 
 /// The false-colour image alone of the mean absolute channel difference |a - b| in any format
 /// lamina writes (`compare --diff NAME.tif`, ...; a PNG gets the figure of differenceFigure
-/// instead): black, blue, magenta, yellow, white from 0 to `scale` (Palette::Sequential), and
-/// beside it (same name, .svg) the figure with its axes and colour bar.
+/// instead): black, blue, magenta, yellow, white from 0 to `scale`, one pixel per pixel, grey
+/// where the difference is not finite.
 void writeDifferenceImage(const std::filesystem::path& path, const render::RgbImage& a,
                           const render::RgbImage& b, double scale);
 

@@ -1,6 +1,6 @@
 // A small matplotlib script written beside each CSV table an experiment writes, so a user
 // can turn the table into a publication figure (PDF, PGF, PNG, with their own styling)
-// without parsing lamina's SVGs: `python3 convergence.py [out.pdf]`. The script reads the
+// with their own choices: `python3 convergence.py [out.pdf]`. The script reads the
 // CSV next to it by name, so the two can be moved together.
 #pragma once
 
