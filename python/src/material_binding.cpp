@@ -16,6 +16,7 @@
 #include "lamina/bsdf/material_kind.h"
 #include "lamina/core/error.h"
 #include "lamina/core/json_reader.h"
+#include "lamina/core/mueller_matrix.h"
 #include "lamina/render/renderer.h"
 
 namespace lamina::python {
@@ -122,32 +123,47 @@ class Material {
             }
             return out;
         }
-        const DoubleArray nm = wavelengths ? *wavelengths : defaultWavelengths();
-        if (nm.ndim() < 1 || nm.ndim() > 2 || nm.shape(nm.ndim() - 1) < 1)
-            throw py::value_error("wavelengths: expected shape (k,) or (N, k)");
-        const std::size_t k = std::size_t(nm.shape(nm.ndim() - 1));
-        const Rows l = rowsOf(nm, k, "wavelengths");
-        const std::size_t n = commonCount({{&o, "wo"}, {&i, "wi"}, {&l, "wavelengths"}});
-        const auto vo = directions(o, n, "wo"), vi = directions(i, n, "wi");
-        checkWavelengths(l);
-        auto out = newDoubles({py::ssize_t(n), py::ssize_t(k)});
-        double* f = out.mutable_data();
-        py::gil_scoped_release release;
-        // One set of BSDFs for shared wavelengths, else one per row.
-        std::vector<std::pair<std::size_t, std::unique_ptr<SpectralBsdf>>> bsdfs;
-        for (std::size_t row = 0; row < (l.shared ? 1 : n); ++row) {
-            bsdfs = bsdfsAt(l.row(row), k);
-            const std::size_t first = l.shared ? 0 : row, last = l.shared ? n : row + 1;
-            for (std::size_t r = first; r < last; ++r)
-                for (const auto& [offset, b] : bsdfs) {
-                    const SpectralD v = b->bxdf->eval(at(vo, r), at(vi, r), t);
-                    for (int c = 0; c < kHero && offset + std::size_t(c) < k; ++c) {
-                        if (b->lambda.secondaryTerminated() && c > 0) break;
-                        f[r * k + offset + std::size_t(c)] = v[c];
-                    }
+        std::size_t n = 0, k = 0;
+        return overWavelengths(o, i, wavelengths, n, k, {}, [&](auto& array) {
+            double* f = array.mutable_data();
+            return [f, k, t](std::size_t r, const Vec3d& out, const Vec3d& in, std::size_t offset,
+                             const SpectralBsdf& b) {
+                const SpectralD v = b.bxdf->eval(out, in, t);
+                for (int c = 0; c < kHero && offset + std::size_t(c) < k; ++c) {
+                    if (b.lambda.secondaryTerminated() && c > 0) break;
+                    f[r * k + offset + std::size_t(c)] = v[c];
                 }
-        }
-        return out;
+            };
+        });
+    }
+
+    /// The polarised mode's Mueller matrices (docs/polarisation.md): (N, k, 4, 4), each
+    /// mapping the Stokes vector of light arriving along -wi (in the canonical frame of wi) to
+    /// that leaving along wo (in wo's); [..., 0, 0] is eval()'s value.
+    py::array_t<double> mueller(const DoubleArray& wo, const DoubleArray& wi,
+                                const std::optional<DoubleArray>& wavelengths,
+                                const std::string& transport) const {
+        const TransportMode t = transportMode(transport);
+        if (!spectral())
+            throw py::value_error(
+                "mueller: a Material in spectral mode (the polarised mode's matrices are "
+                "per wavelength): Material(..., mode=\"spectral\")");
+        const Rows o = rowsOf(wo, 3, "wo"), i = rowsOf(wi, 3, "wi");
+        std::size_t n = 0, k = 0;
+        return overWavelengths(o, i, wavelengths, n, k, {4, 4}, [&](auto& array) {
+            double* f = array.mutable_data();
+            return [f, k, t](std::size_t r, const Vec3d& out, const Vec3d& in, std::size_t offset,
+                             const SpectralBsdf& b) {
+                const MuellerMatrix<SpectralD> m = b.bxdf->evalMueller(out, in, t);
+                for (int c = 0; c < kHero && offset + std::size_t(c) < k; ++c) {
+                    if (b.lambda.secondaryTerminated() && c > 0) break;
+                    double* cell = f + (r * k + offset + std::size_t(c)) * 16;
+                    for (int row = 0; row < 4; ++row)
+                        for (int column = 0; column < 4; ++column)
+                            cell[row * 4 + column] = m(row, column)[c];
+                }
+            };
+        });
     }
 
     py::array_t<double> pdf(const DoubleArray& wo, const DoubleArray& wi,
@@ -276,6 +292,40 @@ class Material {
     }
 
   private:
+    /// A spectral evaluation over N direction pairs at k wavelengths (shape (k,), shared, or
+    /// (N, k)): an array of shape (N, k, *trailing), filled by the writer that `bind(array)`
+    /// returns, called per row r with its directions, each BSDF and the offset of its first
+    /// wavelength. n and k are set. The GIL is released while it runs.
+    template <typename Bind>
+    py::array_t<double> overWavelengths(const Rows& o, const Rows& i,
+                                        const std::optional<DoubleArray>& wavelengths,
+                                        std::size_t& n, std::size_t& k,
+                                        const std::vector<py::ssize_t>& trailing, Bind bind) const {
+        const DoubleArray nm = wavelengths ? *wavelengths : defaultWavelengths();
+        if (nm.ndim() < 1 || nm.ndim() > 2 || nm.shape(nm.ndim() - 1) < 1)
+            throw py::value_error("wavelengths: expected shape (k,) or (N, k)");
+        k = std::size_t(nm.shape(nm.ndim() - 1));
+        const Rows l = rowsOf(nm, k, "wavelengths");
+        n = commonCount({{&o, "wo"}, {&i, "wi"}, {&l, "wavelengths"}});
+        const auto vo = directions(o, n, "wo"), vi = directions(i, n, "wi");
+        checkWavelengths(l);
+        std::vector<py::ssize_t> shape{py::ssize_t(n), py::ssize_t(k)};
+        shape.insert(shape.end(), trailing.begin(), trailing.end());
+        auto out = newDoubles(shape);
+        const auto write = bind(out);
+        py::gil_scoped_release release;
+        // One set of BSDFs for shared wavelengths, else one per row.
+        std::vector<std::pair<std::size_t, std::unique_ptr<SpectralBsdf>>> bsdfs;
+        for (std::size_t row = 0; row < (l.shared ? 1 : n); ++row) {
+            bsdfs = bsdfsAt(l.row(row), k);
+            const std::size_t first = l.shared ? 0 : row, last = l.shared ? n : row + 1;
+            for (std::size_t r = first; r < last; ++r)
+                for (const auto& [offset, b] : bsdfs)
+                    write(r, at(vo, r), at(vi, r), offset, *b);
+        }
+        return out;
+    }
+
     static DoubleArray defaultWavelengths() {
         DoubleArray a(3);
         double* p = a.mutable_data();
@@ -391,6 +441,11 @@ void bindMaterial(py::module_& m) {
         .def("eval", &Material::eval, py::arg("wo"), py::arg("wi"),
              py::arg("wavelengths") = py::none(), py::arg("transport") = "radiance",
              "f(wo, wi) |cos theta_i|: (N, 3) in RGB mode, (N, k) at the wavelengths")
+        .def("mueller", &Material::mueller, py::arg("wo"), py::arg("wi"),
+             py::arg("wavelengths") = py::none(), py::arg("transport") = "radiance",
+             "The polarised mode's Mueller matrices (N, k, 4, 4) at the wavelengths, in the "
+             "canonical frames of wi (in) and wo (out); [..., 0, 0] equals eval(). Spectral "
+             "mode only")
         .def("pdf", &Material::pdf, py::arg("wo"), py::arg("wi"),
              py::arg("wavelengths") = py::none(), "Solid-angle density of sample(wo) at wi, (N,)")
         .def(

@@ -214,3 +214,62 @@ def test_material_kinds_are_the_readers_types_with_their_schema():
         assert set(kind["texturable"].values()) <= {"color", "roughness"}
         for example in kind["schema"]["examples"]:
             assert lamina.Material(example).info()["type"] == kind["name"]
+
+
+# ----------------------------------------------------------------- Mueller matrices
+
+def _hemisphere(n, seed):
+    rng = np.random.default_rng(seed)
+    v = rng.normal(size=(n, 3))
+    v[:, 2] = np.abs(v[:, 2]) + 0.05
+    return v / np.linalg.norm(v, axis=1, keepdims=True)
+
+
+@pytest.mark.parametrize("material", [
+    {"type": "conductor", "material": "Au", "roughness": 0.3},
+    {"type": "dielectric", "ior": 1.5, "roughness": 0.2},
+    {"type": "standard", "roughness": 0.4},
+    {"type": "lambert", "reflectance": 0.7},
+])
+def test_mueller_first_element_is_eval(material):
+    m = lamina.Material(material, mode="spectral")
+    wo, wi = _hemisphere(64, 1), _hemisphere(64, 2)
+    nm = np.array([420.0, 510.0, 600.0, 700.0, 780.0])
+    mueller = m.mueller(wo, wi, wavelengths=nm)
+    assert mueller.shape == (64, 5, 4, 4)
+    assert np.all(np.isfinite(mueller))
+    np.testing.assert_allclose(mueller[..., 0, 0], m.eval(wo, wi, wavelengths=nm),
+                               rtol=1e-12, atol=1e-15)
+
+
+def test_a_lambertian_surface_depolarises():
+    m = lamina.Material({"type": "lambert", "reflectance": 0.7}, mode="spectral")
+    mueller = m.mueller(_hemisphere(16, 3), _hemisphere(16, 4))
+    rest = mueller.copy()
+    rest[..., 0, 0] = 0
+    assert np.all(mueller[..., 0, 0] > 0) and np.all(rest == 0)
+
+
+def diattenuation(mueller):
+    # sqrt(M01^2 + M02^2 + M03^2) / M00: unchanged by a rotation of either Stokes frame, so
+    # the test does not depend on the frames' convention.
+    return np.linalg.norm(mueller[..., 0, 1:], axis=-1) / mueller[..., 0, 0]
+
+
+def test_near_specular_dielectric_reflection_polarises_at_brewster_and_not_at_normal():
+    # Rough glass of ior 1.5 in the mirror configuration, where the half vector is the normal:
+    # at Brewster's angle (56.3 degrees) it reflects s light only (diattenuation 1: Rp = 0);
+    # at normal incidence Rs = Rp (diattenuation 0; the 0.01 tilt keeps it a little above 0).
+    m = lamina.Material({"type": "dielectric", "ior": 1.5, "roughness": 0.1}, mode="spectral")
+    brewster = math.atan(1.5)
+    wo = np.array([[math.sin(brewster), 0.0, math.cos(brewster)]])
+    wi = wo * np.array([-1.0, -1.0, 1.0])  # the mirror direction
+    assert diattenuation(m.mueller(wo, wi))[0] == pytest.approx([1, 1, 1], abs=1e-9)
+    normal = np.array([[0.0, 0.0, 1.0]])
+    tilted = np.array([[0.01, 0.0, 1.0]])
+    assert np.all(diattenuation(m.mueller(normal, tilted))[0] < 0.01)
+
+
+def test_mueller_needs_spectral_mode():
+    with pytest.raises(ValueError, match="spectral mode"):
+        lamina.Material({"type": "lambert"}).mueller([0, 0, 1], [0, 0, 1])
