@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Spectral / RGB cost of every shipped scene (docs/performance.md, "Spectral overhead"): CPU
+# Spectral / RGB cost of every shipped scene (docs/performance.md, "Spectral overhead"), or of
+# any mode against another (BASE=spectral MODE=polarised: "Polarised overhead"): CPU
 # seconds of the whole process (/usr/bin/time %U), one thread, the fastest of REPEATS runs
 # per scene, mode and binary, at SPP and at 8 x SPP samples per pixel. The ratio is that of
 # the differences, the cost of 7 x SPP samples: a process spends about 0.4 s before its
@@ -7,12 +8,15 @@
 # process times would pull every short render towards 1. Given several binaries (before and
 # after a change), each scene is rendered by all of them in turn, so all are measured in the
 # same conditions.
-#   SPP=16 REPEATS=3 bash benchmarks/spectral_overhead.sh [LAMINA...]
+#   SPP=16 REPEATS=3 [BASE=rgb MODE=spectral] [SCENES="a.json b.json"] \
+#     bash benchmarks/spectral_overhead.sh [LAMINA...]
 # A benchmark, not a test: its numbers depend on the machine and what else runs on it (the
 # ratio, measured in one run, is the stable figure).
 set -euo pipefail
 spp=${SPP:-16}
 repeats=${REPEATS:-3}
+base=${BASE:-rgb}
+mode=${MODE:-spectral}
 root=$(cd "$(dirname "$0")/.." && pwd)
 [ $# -gt 0 ] || set -- "$root/build/app/lamina"
 work=$(mktemp -d)
@@ -30,14 +34,14 @@ fastest() {
 }
 
 echo "CPU seconds, --threads 1, --spp $spp and $((8 * spp)), fastest of $repeats; load average $(cut -d' ' -f1-3 /proc/loadavg)"
-printf '%-28s %-3s %15s %15s %8s\n' scene bin "RGB s" "spectral s" ratio
-for file in "$root"/scenes/*.json; do
+printf '%-28s %-3s %15s %15s %8s\n' scene bin "$base s" "$mode s" ratio
+for file in ${SCENES:-"$root"/scenes/*.json}; do
     for b in $(seq $#); do
         lamina=${!b}
-        rgb=$(fastest "$lamina" "$file" rgb "$spp")
-        rgb8=$(fastest "$lamina" "$file" rgb $((8 * spp)))
-        spectral=$(fastest "$lamina" "$file" spectral "$spp")
-        spectral8=$(fastest "$lamina" "$file" spectral $((8 * spp)))
+        rgb=$(fastest "$lamina" "$file" "$base" "$spp")
+        rgb8=$(fastest "$lamina" "$file" "$base" $((8 * spp)))
+        spectral=$(fastest "$lamina" "$file" "$mode" "$spp")
+        spectral8=$(fastest "$lamina" "$file" "$mode" $((8 * spp)))
         # A difference at or below 0 (noise larger than the work) has no ratio: say so.
         awk -v n="$(basename "$file")" -v b="$b" -v r="$rgb" -v r8="$rgb8" -v s="$spectral" \
             -v s8="$spectral8" 'BEGIN {

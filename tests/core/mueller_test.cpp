@@ -62,6 +62,28 @@ TYPED_TEST(MuellerTest, TurningTheFrameByPlusMinus45DegreesMovesXLightToMinusPlu
                            {T(1), T(0), T(1), T(0)});
 }
 
+TYPED_TEST(MuellerTest, TheDoubledTurnWithoutTrigonometryIsTheTurnsDoubleAngle) {
+    // doubledFrameTurn is the hot path's frameTurn: the same cos(2 phi), sin(2 phi) for new x
+    // axes all round the direction, of any length and not quite perpendicular to it (as the
+    // frames of two vertices meet), and no turn for an axis with no projection at all.
+    using T = TypeParam;
+    const Vec3<T> d = glm::normalize(Vec3<T>(T(0.3), T(-0.5), T(0.8)));
+    const StokesFrame<T> frame{d, stokesAxis(d)};
+    for (int degrees = -180; degrees < 180; degrees += 7) {
+        const T phi = T(degrees) * this->kPi / 180;
+        const Vec3<T> x = std::cos(phi) * frame.x + std::sin(phi) * frame.y();
+        const Vec3<T> toX = T(2.5) * x + T(1e-3) * d;
+        const DoubledTurn<T> turn = doubledFrameTurn(frame, toX);
+        const T angle = frameTurn(frame, toX);
+        EXPECT_NEAR(turn.c, std::cos(2 * angle), this->kTolerance * 4) << degrees;
+        EXPECT_NEAR(turn.s, std::sin(2 * angle), this->kTolerance * 4) << degrees;
+        EXPECT_NEAR(turn.c, std::cos(2 * phi), this->kTolerance * 8) << degrees;
+    }
+    const DoubledTurn<T> none = doubledFrameTurn(frame, Vec3<T>(0));
+    EXPECT_EQ(none.c, T(1));
+    EXPECT_EQ(none.s, T(0));
+}
+
 TYPED_TEST(MuellerTest, MalussLawThroughTwoPolarisers) {
     using T = TypeParam;
     for (int degrees = 0; degrees <= 180; degrees += 15) {

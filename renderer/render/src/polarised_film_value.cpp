@@ -20,10 +20,9 @@ std::array<Rgb<double>, 4> RenderMode<PolarisedSpectrum>::filmStokes(const Spect
     // A ray along the image's right (a field of view near 180 degrees) has no image frame to
     // speak of: it keeps the canonical one.
     if (glm::dot(right, right) > 1e-12f) {
-        const float phi =
-            frameTurn(StokesFrame<float>{d, stokesAxis(d)}, Vec3f(glm::normalize(right)));
-        const float c = std::cos(2.0f * phi), sn = std::sin(2.0f * phi);
-        const Element s1 = s[1] * c + s[2] * sn, s2 = s[2] * c - s[1] * sn;
+        const DoubledTurn<float> turn =
+            doubledFrameTurn(StokesFrame<float>{d, stokesAxis(d)}, right);
+        const Element s1 = s[1] * turn.c + s[2] * turn.s, s2 = s[2] * turn.c - s[1] * turn.s;
         s[1] = s1;
         s[2] = s2;
     }

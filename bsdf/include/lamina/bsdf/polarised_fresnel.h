@@ -70,8 +70,8 @@ MuellerMatrix<S> inCanonicalFrames(MuellerMatrix<S> shape, const Vec3<typename S
     using F = typename S::Float;
     const Vec3<F> inAxis = stokesAxis(dIn);
     const Vec3<F> s = planeOfIncidenceNormal(dIn, m, inAxis);
-    turnInputFrame(shape, frameTurn(StokesFrame<F>{dIn, inAxis}, s));
-    turnOutputFrame(shape, frameTurn(StokesFrame<F>{dOut, s}, stokesAxis(dOut)));
+    turnInputFrame(shape, doubledFrameTurn(StokesFrame<F>{dIn, inAxis}, s));
+    turnOutputFrame(shape, doubledFrameTurn(StokesFrame<F>{dOut, s}, stokesAxis(dOut)));
     return shape;
 }
 

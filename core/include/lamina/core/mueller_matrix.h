@@ -119,28 +119,34 @@ MuellerMatrix<T> stokesRotation(const StokesFrame<T>& from, const Vec3<T>& toX) 
     return stokesRotation(frameTurn(from, toX));
 }
 
-/// m followed by a frame turn of `phi` on its output side: stokesRotation(phi) * m, touching
-/// only rows 1 and 2.
+/// m followed by a frame turn on its output side: stokesRotation(phi) * m, touching only rows 1
+/// and 2 (the turn given as its doubled angle, doubledFrameTurn, or as phi).
 template <typename E, std::floating_point T>
-void turnOutputFrame(MuellerMatrix<E>& m, T phi) {
-    const T c = std::cos(T(2) * phi), s = std::sin(T(2) * phi);
+void turnOutputFrame(MuellerMatrix<E>& m, const DoubledTurn<T>& turn) {
     for (int j = 0; j < 4; ++j) {
         const E r1 = m(1, j), r2 = m(2, j);
-        m(1, j) = r1 * c + r2 * s;
-        m(2, j) = r2 * c - r1 * s;
+        m(1, j) = r1 * turn.c + r2 * turn.s;
+        m(2, j) = r2 * turn.c - r1 * turn.s;
     }
 }
-
-/// m preceded by a frame turn of `phi` on its input side: m * stokesRotation(phi), touching
-/// only columns 1 and 2.
 template <typename E, std::floating_point T>
-void turnInputFrame(MuellerMatrix<E>& m, T phi) {
-    const T c = std::cos(T(2) * phi), s = std::sin(T(2) * phi);
+void turnOutputFrame(MuellerMatrix<E>& m, T phi) {
+    turnOutputFrame(m, DoubledTurn<T>::of(phi));
+}
+
+/// m preceded by a frame turn on its input side: m * stokesRotation(phi), touching only columns
+/// 1 and 2.
+template <typename E, std::floating_point T>
+void turnInputFrame(MuellerMatrix<E>& m, const DoubledTurn<T>& turn) {
     for (int i = 0; i < 4; ++i) {
         const E c1 = m(i, 1), c2 = m(i, 2);
-        m(i, 1) = c1 * c - c2 * s;
-        m(i, 2) = c1 * s + c2 * c;
+        m(i, 1) = c1 * turn.c - c2 * turn.s;
+        m(i, 2) = c1 * turn.s + c2 * turn.c;
     }
+}
+template <typename E, std::floating_point T>
+void turnInputFrame(MuellerMatrix<E>& m, T phi) {
+    turnInputFrame(m, DoubledTurn<T>::of(phi));
 }
 
 /// An element `m` expressed in frames turned by `theta` from the ones it is written in: an

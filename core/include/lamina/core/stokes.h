@@ -88,6 +88,26 @@ T frameTurn(const StokesFrame<T>& from, const Vec3<T>& toX) {
     return std::atan2(glm::dot(toX, from.y()), glm::dot(toX, from.x));
 }
 
+/// cos(2 phi) and sin(2 phi) of a frame turn phi: what a Stokes vector's S1, S2 rotate by.
+template <std::floating_point T>
+struct DoubledTurn {
+    T c = T(1), s = T(0);
+
+    static DoubledTurn of(T phi) { return {std::cos(T(2) * phi), std::sin(T(2) * phi)}; }
+};
+
+/// frameTurn's doubled angle without trigonometry (the hot path of every polarised event):
+/// with a = cos(phi) |toX'|, b = sin(phi) |toX'| the projections of toX on from's axes,
+/// cos(2 phi) = (a^2 - b^2) / (a^2 + b^2) and sin(2 phi) = 2ab / (a^2 + b^2), the double-angle
+/// identities; a toX without a projection (zero) turns by 0 as atan2(0, 0) does.
+template <std::floating_point T>
+DoubledTurn<T> doubledFrameTurn(const StokesFrame<T>& from, const Vec3<T>& toX) {
+    const T a = glm::dot(toX, from.x), b = glm::dot(toX, from.y());
+    const T r = a * a + b * b;
+    if (!(r > T(0))) return {};
+    return {(a * a - b * b) / r, T(2) * a * b / r};
+}
+
 /// The s axis of an interaction: the unit normal of the plane of incidence spanned by the
 /// direction d and the (micro)surface normal n, as d x n normalised. When d is parallel to n
 /// every plane contains both and any perpendicular axis serves: `fallback` (perpendicular to

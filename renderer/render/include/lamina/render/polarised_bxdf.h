@@ -78,10 +78,10 @@ class PolarisedBxdf final : public Bxdf<PolarisedSpectrum> {
     PolarisedSpectrum inWorldFrames(PolarisedSpectrum::Base m, const Vec3f& wo,
                                     const Vec3f& wi) const {
         const Vec3f in = frame_.toWorld(-wi), out = frame_.toWorld(wo);
-        turnInputFrame(
-            m, frameTurn(StokesFrame<float>{in, stokesAxis(in)}, frame_.toWorld(stokesAxis(-wi))));
-        turnOutputFrame(
-            m, frameTurn(StokesFrame<float>{out, frame_.toWorld(stokesAxis(wo))}, stokesAxis(out)));
+        turnInputFrame(m, doubledFrameTurn(StokesFrame<float>{in, stokesAxis(in)},
+                                           frame_.toWorld(stokesAxis(-wi))));
+        turnOutputFrame(m, doubledFrameTurn(StokesFrame<float>{out, frame_.toWorld(stokesAxis(wo))},
+                                            stokesAxis(out)));
         return m;
     }
 
