@@ -150,6 +150,25 @@ TEST_F(PbrtCorpusConstructs, EmittingShapesOfAlphaZeroOrOne) {
               at(2) + ": alpha on an emitting shape is not supported");
 }
 
+// pbrt-v4's coateddiffuse takes a textured reflectance (CoatedDiffuseMaterial, materials.h):
+// lamina's coated takes it through its base (MaterialKind::texturedThrough), the published
+// scenes' most common refusal before.
+TEST_F(PbrtCorpusConstructs, CoatedDiffuseTakesATexturedReflectance) {
+    const ImportedScene s = import(
+        "Texture \"checks\" \"spectrum\" \"checkerboard\" \"rgb tex1\" [0.8 0.8 0.8]\n"
+        "    \"rgb tex2\" [0.2 0.2 0.2]\n"
+        "Material \"coateddiffuse\" \"texture reflectance\" \"checks\" \"float roughness\" 0.1\n"
+        "Shape \"sphere\"\n");
+    const Json& material =
+        s.scene["materials"][s.scene["shapes"][0]["material"].get<std::string>()];
+    EXPECT_EQ(material["type"], "coated");
+    const Json& reflectance = material["base"]["reflectance"];
+    ASSERT_TRUE(reflectance.contains("texture"));
+    EXPECT_EQ(s.scene["textures"][reflectance["texture"].get<std::string>()]["type"],
+              "checkerboard");
+    EXPECT_NO_THROW(loadScene(file_)) << errorOf([&] { loadScene(file_); });
+}
+
 // pbrt-v3 files (Film "image", "color" textures) are refused by pbrt-v4 as well; the error
 // says how pbrt-v4 converts them.
 TEST_F(PbrtCorpusConstructs, PbrtV3FilesAreRefusedWithTheWayToConvertThem) {

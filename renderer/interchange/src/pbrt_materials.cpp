@@ -192,8 +192,10 @@ Json translateMaterial(TranslationContext& ctx, const MaterialDef& def, int dept
     } else if (e.type == "coateddiffuse") {
         double ior = 1.5;
         m = coated(ctx, e, "", "eta", ior);
+        // A textured reflectance textures the base (lamina's coated takes textures through
+        // its base, material_kind.h's texturedThrough).
         m["base"] = {{"type", "lambert"},
-                     {"reflectance", colour(ctx, e, "reflectance", 0.5, false)}};
+                     {"reflectance", colour(ctx, e, "reflectance", 0.5, true)}};
     } else if (e.type == "coatedconductor") {
         double ior = 1.5;
         m = coated(ctx, e, "interface.", "interface.eta", ior);
