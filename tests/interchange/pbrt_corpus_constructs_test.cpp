@@ -169,6 +169,37 @@ TEST_F(PbrtCorpusConstructs, CoatedDiffuseTakesATexturedReflectance) {
     EXPECT_NO_THROW(loadScene(file_)) << errorOf([&] { loadScene(file_); });
 }
 
+// pbrt-v4's constant texture is its value everywhere; scale and mix take textures or constants
+// for each operand (textures.h: ScaleTexture, MixTexture; tex1 0, tex2 1, amount 0.5). A float
+// constant used as a scale is folded into the number; a scale by another texture is a mix of 0
+// and tex at that amount (exact for amounts in [0, 1], warned about).
+TEST_F(PbrtCorpusConstructs, ConstantTexturesAndConstantOperands) {
+    write("h.png", "not read by the importer");
+    const ImportedScene s = import(
+        "Texture \"c\" \"spectrum\" \"constant\" \"rgb value\" [0.5 0.25 0.125]\n"
+        "Texture \"k\" \"float\" \"constant\" \"float value\" 0.002\n"
+        "Texture \"h\" \"float\" \"imagemap\" \"string filename\" \"h.png\"\n"
+        "Texture \"bump\" \"float\" \"scale\" \"texture tex\" \"h\" \"texture scale\" \"k\"\n"
+        "Texture \"m\" \"spectrum\" \"mix\" \"rgb tex1\" [0.1 0.2 0.3] \"texture tex2\" \"c\"\n"
+        "    \"texture amount\" \"h\"\n"
+        "Texture \"s\" \"spectrum\" \"scale\" \"rgb tex\" [0.5 0.5 0.5] \"texture scale\" \"h\"\n"
+        "Material \"diffuse\" \"texture reflectance\" \"m\" \"texture displacement\" \"bump\"\n"
+        "Shape \"sphere\"\n"
+        "Material \"diffuse\" \"texture reflectance\" \"s\"\n"
+        "Shape \"disk\"\n");
+    const Json& textures = s.scene["textures"];
+    EXPECT_EQ(textures["c"], Json::parse(R"j({"type": "mix", "a": [0.5, 0.25, 0.125],
+        "b": [0.5, 0.25, 0.125], "amount": 0})j"));
+    EXPECT_EQ(textures["bump (float)"],
+              Json::parse(R"j({"type": "scale", "texture": "h (float)", "scale": 0.002})j"));
+    EXPECT_EQ(textures["m"], Json::parse(R"j({"type": "mix", "a": [0.1, 0.2, 0.3], "b": "c",
+        "amount": "h (float)"})j"));
+    EXPECT_EQ(textures["s"], Json::parse(R"j({"type": "mix", "a": 0, "b": [0.5, 0.5, 0.5],
+        "amount": "h (float)"})j"));
+    EXPECT_THAT(s.warnings, ::testing::Contains(HasSubstr(
+                                at(7) + ": texture \"scale\" by a texture became a mix of 0")));
+}
+
 // pbrt-v3 files (Film "image", "color" textures) are refused by pbrt-v4 as well; the error
 // says how pbrt-v4 converts them.
 TEST_F(PbrtCorpusConstructs, PbrtV3FilesAreRefusedWithTheWayToConvertThem) {
