@@ -200,6 +200,21 @@ TEST_F(PbrtCorpusConstructs, ConstantTexturesAndConstantOperands) {
                                 at(7) + ": texture \"scale\" by a texture became a mix of 0")));
 }
 
+// pbrt-v4's UVMapping looks an image up at (uscale u + udelta, vscale v + vdelta): lamina's
+// image texture with that scale and offset. Other textures' offsets stay refused.
+TEST_F(PbrtCorpusConstructs, ImageMapOffsetsBecomeTheImagesOffset) {
+    write("a.png", "not read by the importer");
+    const ImportedScene s = import(
+        "Texture \"t\" \"spectrum\" \"imagemap\" \"string filename\" \"a.png\"\n"
+        "    \"float uscale\" 2 \"float udelta\" -0.5 \"float vdelta\" 0.25\n"
+        "Material \"diffuse\" \"texture reflectance\" \"t\"\nShape \"sphere\"\n");
+    EXPECT_EQ(s.scene["textures"]["t"], Json::parse(R"({"type": "image", "file": "a.png",
+        "color_space": "srgb", "scale": [2, 1], "offset": [-0.5, 0.25]})"));
+    EXPECT_EQ(importError("Texture \"c\" \"spectrum\" \"checkerboard\" \"float udelta\" 1\n"
+                          "Material \"diffuse\" \"texture reflectance\" \"c\"\nShape \"sphere\"\n"),
+              at(1) + ": udelta and vdelta (uv offsets) are not supported");
+}
+
 // pbrt-v3 files (Film "image", "color" textures) are refused by pbrt-v4 as well; the error
 // says how pbrt-v4 converts them.
 TEST_F(PbrtCorpusConstructs, PbrtV3FilesAreRefusedWithTheWayToConvertThem) {

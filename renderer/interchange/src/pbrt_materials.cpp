@@ -330,8 +330,9 @@ std::string useTexture(TranslationContext& ctx, const std::string& name,
     auto uvScale = [&]() {
         const double su = constantNumber(params, "uscale", 1.0);
         const double sv = constantNumber(params, "vscale", 1.0);
-        if (constantNumber(params, "udelta", 0.0) != 0 ||
-            constantNumber(params, "vdelta", 0.0) != 0)
+        if ((constantNumber(params, "udelta", 0.0) != 0 ||
+             constantNumber(params, "vdelta", 0.0) != 0) &&
+            e.type != "imagemap")
             ctx.fail(e.location, "udelta and vdelta (uv offsets) are not supported");
         if (params.string("mapping", "uv") != "uv")
             ctx.fail(e.location, "only the \"uv\" texture mapping is supported");
@@ -353,6 +354,9 @@ std::string useTexture(TranslationContext& ctx, const std::string& name,
              {"file", ctx.filePath(params, *file)},
              {"color_space", encoding == "sRGB" ? "srgb" : "linear"},
              {"scale", uvScale()}};
+        // pbrt-v4's UVMapping: (uscale u + udelta, vscale v + vdelta), lamina's offset.
+        const double du = params.number("udelta", 0.0), dv = params.number("vdelta", 0.0);
+        if (du != 0 || dv != 0) t["offset"] = Json::array({du, dv});
         const std::string filter = params.string("filter", "bilinear");
         if (filter != "bilinear")
             ctx.warn(e.location,

@@ -111,8 +111,13 @@ std::shared_ptr<const Texture> readTexture(
             const bool srgb = t.choice("color_space", TextureColorSpace::Srgb,
                                        kTextureColorSpaceNames) == TextureColorSpace::Srgb;
             const bool invert = t.boolean("invert", false);
+            Vec2<float> offset(0.0f);
+            if (t.has("offset")) {
+                const auto o = t.requiredArray<2>("offset", {-1e6, 1e6});
+                offset = Vec2<float>(float(o[0]), float(o[1]));
+            }
             try {
-                texture = std::make_shared<ImageTexture>(file, scale, srgb, invert);
+                texture = std::make_shared<ImageTexture>(file, scale, srgb, invert, offset);
             } catch (const InputError& e) {
                 t.failAt("file", e.what());
             }
