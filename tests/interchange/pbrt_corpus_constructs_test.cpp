@@ -213,6 +213,12 @@ TEST_F(PbrtCorpusConstructs, ImageMapOffsetsBecomeTheImagesOffset) {
     EXPECT_EQ(importError("Texture \"c\" \"spectrum\" \"checkerboard\" \"float udelta\" 1\n"
                           "Material \"diffuse\" \"texture reflectance\" \"c\"\nShape \"sphere\"\n"),
               at(1) + ": udelta and vdelta (uv offsets) are not supported");
+    // A mirrored pattern (exporters write vscale -1) is refused at its line, not in the
+    // translated document.
+    EXPECT_EQ(importError("Texture \"m\" \"spectrum\" \"imagemap\" \"string filename\" \"a.png\"\n"
+                          "    \"float vscale\" -1\n"
+                          "Material \"diffuse\" \"texture reflectance\" \"m\"\nShape \"sphere\"\n"),
+              at(1) + ": a negative or zero uscale / vscale (a mirrored texture) is not supported");
 }
 
 // pbrt-v3 files (Film "image", "color" textures) are refused by pbrt-v4 as well; the error

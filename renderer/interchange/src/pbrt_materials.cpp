@@ -330,6 +330,11 @@ std::string useTexture(TranslationContext& ctx, const std::string& name,
     auto uvScale = [&]() {
         const double su = constantNumber(params, "uscale", 1.0);
         const double sv = constantNumber(params, "vscale", 1.0);
+        // pbrt-v4 mirrors the pattern for a negative scale; lamina's scale is positive.
+        if (!(su > 0) || !(sv > 0))
+            ctx.fail(e.location,
+                     "a negative or zero uscale / vscale (a mirrored texture) is not "
+                     "supported");
         if ((constantNumber(params, "udelta", 0.0) != 0 ||
              constantNumber(params, "vdelta", 0.0) != 0) &&
             e.type != "imagemap")
