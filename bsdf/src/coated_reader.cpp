@@ -75,10 +75,20 @@ std::vector<const MaterialDesc*> coatedNested(const MaterialModel& model) {
     return {std::get<CoatedMaterial>(model).base.get()};
 }
 
+// A coat takes no texture itself; the textures of its base set the base (texturedThrough): a
+// copy of the base with them, so that the scene's material stays as it was read.
+void texturedCoated(MaterialModel& model, const TexturedValues& t) {
+    auto& c = std::get<CoatedMaterial>(model);
+    auto base = std::make_shared<MaterialDesc>(*c.base);
+    findMaterialKind(base->type)->applyTextures(base->model, t);
+    c.base = std::move(base);
+}
+
 }  // namespace
 
-extern const MaterialKind kCoatedMaterial{"coated", readCoated,
-                                          R"json({
+extern const MaterialKind kCoatedMaterial{.name = "coated",
+                                          .read = readCoated,
+                                          .schema = R"json({
   "type": "object",
   "description": "A dielectric coat (smooth or rough) over a base without transmission, with an optional homogeneous Henyey-Greenstein medium between them, evaluated by a random walk (docs/bsdf.md, \"coated\").",
   "required": ["type", "base"],
@@ -118,6 +128,9 @@ extern const MaterialKind kCoatedMaterial{"coated", readCoated,
       "base": {"type": "conductor", "material": "Au", "roughness": 0.3}
     }
   ]
-})json", {},         nullptr, nullptr, coatedNested};
+})json",
+                                          .applyTextures = texturedCoated,
+                                          .nested = coatedNested,
+                                          .texturedThrough = "base"};
 
 }  // namespace lamina

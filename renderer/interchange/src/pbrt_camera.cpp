@@ -79,6 +79,10 @@ Json translateFilm(TranslationContext& ctx, const Entity& e, const Entity& camer
                    int& height) {
     const ParamList& p = e.params;
     if (e.type != "rgb") {
+        if (e.type == "image")
+            ctx.fail(e.location,
+                     "Film \"image\" is pbrt-v3's film: this is a pbrt-v3 file, which pbrt-v4 "
+                     "refuses too; convert it with pbrt-v4's `pbrt --upgrade FILE > NEW.pbrt`");
         if (e.type != "gbuffer" && e.type != "spectral")
             ctx.fail(e.location, "Film \"" + e.type + "\" is not supported (rgb)");
         ctx.warn(e.location, "Film \"" + e.type + "\" became lamina's RGB film (linear Rec.709)");

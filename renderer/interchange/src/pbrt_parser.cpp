@@ -15,6 +15,13 @@ namespace lamina::render::pbrt {
 
 namespace {
 
+// A scene file's text: pbrt-v4 reads a gzip-compressed file (.pbrt.gz), the one it was started
+// on or an included one, as the text it holds (Tokenizer::CreateFromFile, parser.cpp).
+std::string readSceneText(const std::filesystem::path& file) {
+    if (isGzipPath(file)) return readGzipFile(file, kMaxTextFileBytes, kMaxTextFileBytes, "scene");
+    return readInputFile(file, kMaxTextFileBytes);
+}
+
 // Include and Import may nest, but not without end (a file including itself).
 constexpr int kMaxIncludeDepth = 32;
 
@@ -140,16 +147,13 @@ class Parser {
         const std::string why = notARegularFile(path);
         if (!why.empty()) tokens.fail(directive.line, directive.text + " \"" + name + "\": " + why);
         scene_.files.push_back(path);
-        // pbrt-v4 reads gzip-compressed scene files (.pbrt.gz) as they are.
         std::string text;
-        if (isGzipPath(path)) {
-            try {
-                text = readGzipFile(path, kMaxTextFileBytes, kMaxTextFileBytes, "scene");
-            } catch (const InputError& e) {
-                tokens.fail(directive.line, directive.text + " \"" + name + "\": " + e.what());
-            }
-        } else {
-            text = readInputFile(path, kMaxTextFileBytes);
+        try {
+            text = readSceneText(path);
+        } catch (const InputError& e) {
+            // A broken gzip stream's error names no line: the directive that read it does.
+            if (!isGzipPath(path)) throw;
+            tokens.fail(directive.line, directive.text + " \"" + name + "\": " + e.what());
         }
         Tokenizer inner(std::move(text), path.string());
         parse(inner, depth + 1);
@@ -279,9 +283,14 @@ class Parser {
             const std::string textureName = string(tokens, d);
             const std::string valueType = string(tokens, d);
             if (valueType != "float" && valueType != "spectrum")
-                tokens.fail(d.line, "Texture \"" + textureName +
-                                        "\": expected the type \"float\" or \"spectrum\", got \"" +
-                                        valueType + "\"");
+                tokens.fail(d.line,
+                            "Texture \"" + textureName +
+                                "\": expected the type \"float\" or \"spectrum\", got \"" +
+                                valueType + "\"" +
+                                (valueType == "color" || valueType == "rgb"
+                                     ? " (pbrt-v3's name: convert the file with pbrt-v4's `pbrt "
+                                       "--upgrade FILE > NEW.pbrt`)"
+                                     : ""));
             Entity e = entity(tokens, d, string(tokens, d));
             for (const TextureDef& t : scene_.textures)
                 if (t.name == textureName && t.valueType == valueType)
@@ -386,7 +395,7 @@ ParsedScene parseText(const std::string& text, const std::string& fileName,
 }
 
 ParsedScene parseFile(const std::filesystem::path& file) {
-    const std::string text = readInputFile(file, kMaxTextFileBytes);
+    const std::string text = readSceneText(file);
     ParsedScene scene = parseText(text, file.string(), file.parent_path());
     scene.files.insert(scene.files.begin(), file);
     return scene;

@@ -1,5 +1,6 @@
 // pbrt-v4 shapes and their area lights -> lamina shapes (pbrt-v4 shapes.cpp for the parameters
 // and their defaults, lights.cpp for DiffuseAreaLight).
+#include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -7,6 +8,7 @@
 
 #include "lamina/core/error.h"
 #include "pbrt_shapes.h"
+#include "rounded_rotation.h"
 
 namespace lamina::render::pbrt {
 
@@ -18,18 +20,19 @@ bool isIdentity(const glm::dmat4& m) {
     return m == glm::dmat4(1.0);
 }
 
-// The uniform scale of a similarity transform (rotation, mirror, uniform scale, translation),
-// or 0 when it shears or scales unevenly.
-double similarityScale(const glm::dmat4& m) {
-    const glm::dvec3 x(m[0]), y(m[1]), z(m[2]);
-    const double s = glm::length(x);
-    const double tol = 1e-9 * s * s;
-    if (!(s > 0) || std::abs(glm::dot(x, y)) > tol || std::abs(glm::dot(y, z)) > tol ||
-        std::abs(glm::dot(x, z)) > tol)
-        return 0;
-    if (std::abs(glm::length(y) - s) > 1e-9 * s || std::abs(glm::length(z) - s) > 1e-9 * s)
-        return 0;
-    return s;
+// The uniform scale of a similarity transform (a rotation or reflection times a uniform scale,
+// with any translation), 0 if `m` is not one. Exported files round rotations to 6-8 digits: a
+// matrix within kRoundedRotationTolerance of a similarity is taken as that similarity
+// (`rounded` says by how much it deviated, for a warning).
+double similarityScale(const glm::dmat4& m, double& rounded) {
+    const glm::dmat3 a(m);
+    const double s = std::cbrt(std::abs(glm::determinant(a)));
+    if (!(s > 0)) return 0;
+    rounded = std::max(columnSkew(a), columnScaleError(a / s));
+    if (rounded > kRoundedRotationTolerance) return 0;
+    // An exact similarity keeps the length of its x column, the scale written before rounded
+    // transforms were taken (the same number to the last digit for shipped scenes).
+    return rounded > 1e-9 ? s : glm::length(a[0]);
 }
 
 Json point(const glm::dvec3& p) {
@@ -184,11 +187,18 @@ std::optional<Json> translateShape(TranslationContext& ctx, const ShapeDef& s) {
     Json shape;
     std::vector<double> areas;  // for an area light's power
     auto similarity = [&]() {
-        const double scale = similarityScale(m);
+        double rounded = 0;
+        const double scale = similarityScale(m, rounded);
         if (scale == 0)
             ctx.fail(e.location, "Shape \"" + e.type +
                                      "\" under a shear or an uneven scale is "
                                      "not supported (lamina's analytic shapes stay round)");
+        if (rounded > 1e-9)
+            ctx.warn(e.location,
+                     "Shape \"" + e.type +
+                         "\": its transform is a rotation and uniform scale to within " +
+                         deviationText(rounded) +
+                         " (rounded digits): the shape stays round, of the mean scale");
         return scale;
     };
     if (e.type == "sphere") {
@@ -259,7 +269,22 @@ std::optional<Json> translateShape(TranslationContext& ctx, const ShapeDef& s) {
     // Alpha cut-outs ("float alpha" or a float texture; pbrt-v4 shapes.cpp).
     if (const Param* alpha = params.find("alpha")) {
         params.expectType(*alpha, {"float", "texture"});
-        if (s.areaLight) ctx.fail(alpha->location, "alpha on an emitting shape is not supported");
+        if (s.areaLight) {
+            // pbrt-v4 emits only where its stochastic alpha test keeps the surface
+            // (DiffuseAreaLight::AlphaMasked, lights.h): everywhere for alpha 1, nowhere for 0.
+            const bool constant = canonicalParamType(alpha->type) == "float";
+            const double a = constant ? params.number("alpha", 1.0) : 0.5;
+            if (a > 0 && a < 1)  // 0 and 1 are taken below
+                ctx.fail(alpha->location, "alpha on an emitting shape is not supported");
+            if (a <= 0) {
+                ctx.warn(alpha->location,
+                         "an emitting Shape \"" + e.type +
+                             "\" of alpha 0 omitted: pbrt-v4 neither sees it nor lets it emit");
+                areaEmission(ctx, *s.areaLight, areas);  // its parameters are still checked
+                params.refuseUnused();
+                return std::nullopt;
+            }
+        }
         if (canonicalParamType(alpha->type) == "texture")
             shape["alpha"] = {
                 {"texture", useTexture(ctx, alpha->strings.at(0), "float", alpha->location)}};

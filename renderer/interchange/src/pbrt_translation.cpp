@@ -129,7 +129,20 @@ Json translateIntegrator(TranslationContext& ctx, const Entity& e) {
     if (depth < 1 || depth > 1024)
         ctx.fail(e.location, "maxdepth " + std::to_string(depth) +
                                  " is not supported (lamina's max_depth is 1 to 1024)");
-    if (p.boolean("regularize", false)) ctx.fail(e.location, "regularize is not supported");
+    // pbrt-v4's regularize (integrators.cpp, PathIntegrator::Li) roughens near-specular BSDFs
+    // after the path's first non-specular bounce: a biased image with less caustic noise.
+    if (p.boolean("regularize", false))
+        ctx.warn(e.location,
+                 "regularize ignored: lamina renders the unregularised image (pbrt-v4 roughens "
+                 "near-specular surfaces after a diffuse bounce, which dims and blurs caustics)");
+    // pbrt-v3's Russian roulette threshold; pbrt-v4 reads none (its --upgrade removes it).
+    // Roulette changes the noise, not the expected image.
+    if (const Param* rr = p.find("rrthreshold")) {
+        p.expectType(*rr, {"float"});
+        ctx.warn(rr->location,
+                 "rrthreshold ignored (a pbrt-v3 parameter that pbrt-v4 does not read; Russian "
+                 "roulette changes the noise, not the image)");
+    }
     Json integrator{{"type", type}, {"max_depth", depth}};
     if (p.has("lightsampler")) {
         const std::string s = p.string("lightsampler", "bvh");
@@ -179,9 +192,25 @@ Json translateLight(TranslationContext& ctx, const Entity& e) {
                  {"direction", vec(glm::normalize(d))},
                  {"irradiance", emissionValue(ctx, p, "L", scale)}};
     } else if (e.type == "infinite") {
-        if (p.has("portal")) ctx.fail(e.location, "infinite: portals are not supported");
         const double illuminance = p.number("illuminance", -1);
-        if (const Param* file = p.find("filename")) {
+        const Param* file = p.find("filename");
+        if (const Param* portal = p.find("portal")) {
+            // pbrt-v4's PortalImageInfiniteLight (lights.cpp) shows the same environment but
+            // only through the portal quadrilateral (Le is 0 for rays that miss it); lamina's
+            // environment shines from every direction. Inside a room closed but for the portal
+            // (what portals are for) no other direction reaches the environment.
+            if (p.numbers("portal", {"point3"}, 3)->size() != 12)
+                p.fail(*portal, "expected the portal's four corners");
+            if (!file)
+                ctx.fail(portal->location,
+                         "infinite: a portal on a uniform \"L\" is not supported (pbrt-v4 "
+                         "turns L into an unnormalised RGB image there): remove the portal");
+            ctx.warn(portal->location,
+                     "infinite: the portal ignored: lamina's environment light shines from every "
+                     "direction, pbrt-v4's only through the portal (the same image where walls "
+                     "close the scene around it)");
+        }
+        if (file) {
             p.expectType(*file, {"string"});
             if (p.has("L")) ctx.fail(e.location, "infinite: give either L or filename");
             if (illuminance > 0)

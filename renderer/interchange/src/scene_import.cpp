@@ -41,6 +41,7 @@ SceneFormat detectSceneFormat(const std::filesystem::path& file) {
     const std::string extension = file.extension().string();
     if (extension == ".json") return SceneFormat::Lamina;
     if (extension == ".pbrt") return SceneFormat::Pbrt;
+    if (extension == ".gz" && file.stem().extension() == ".pbrt") return SceneFormat::Pbrt;
     if (extension == ".xml") return SceneFormat::Mitsuba;
     std::ifstream in(file, std::ios::binary);
     if (!in) throw InputError(file.string() + ": cannot open the scene file");

@@ -42,6 +42,41 @@ std::string texturableKeysMessage(const MaterialKind& kind, const std::string& k
            (own.empty() ? "" : " (it can: " + own + ")") + "; textured parameters: " + all;
 }
 
+// Replaces the texture named by `key` of `r` (a key of a material of type `kind`) in `copy` by
+// a constant the material parser accepts, and records which parameter it sets in `tex`.
+void patchTexturedKey(const JsonReader& r, const MaterialKind& kind, const std::string& key,
+                      Json& copy, MaterialTextures& tex, const TextureLookup& textureIndex) {
+    const auto parameter = kind.texturedParameter(key);
+    if (!parameter) r.failAt(key, texturableKeysMessage(kind, key));
+    const JsonReader t(r.value()[key], r.childPath(key), r.source());
+    const std::string name = t.requiredString("texture");
+    t.finish();
+    (*parameter == TexturedParameter::Roughness ? tex.roughness : tex.color) =
+        textureIndex(t, "texture", name);
+    copy[key] = 0.5;
+}
+
+// The textures of a material nested in another (coated's base: MaterialKind::texturedThrough),
+// patched in `copy` as patchTexturedKey does. The shading-normal maps belong to the outer
+// material (docs/scene-format.md). Returns whether the nested material's roughness is textured.
+bool patchNestedTextures(const JsonReader& r, Json& copy, MaterialTextures& tex,
+                         const TextureLookup& textureIndex) {
+    const Json& type = r.value().value("type", Json());
+    const MaterialKind* kind =
+        type.is_string() ? findMaterialKind(type.get<std::string>()) : nullptr;
+    if (!kind) return false;  // the parser names what is wrong with the type
+    for (const char* map : {"displacement", "normal_map"})
+        if (r.value().contains(map))
+            r.failAt(map,
+                     "a nested material takes no bump or normal map: give it to the "
+                     "outer material");
+    const int roughnessBefore = tex.roughness;
+    for (const auto& [key, value] : r.value().items())
+        if (value.is_object() && value.contains("texture"))
+            patchTexturedKey(r, *kind, key, copy, tex, textureIndex);
+    return tex.roughness != roughnessBefore;
+}
+
 }  // namespace
 
 std::shared_ptr<const Texture> readTexture(
@@ -76,8 +111,13 @@ std::shared_ptr<const Texture> readTexture(
             const bool srgb = t.choice("color_space", TextureColorSpace::Srgb,
                                        kTextureColorSpaceNames) == TextureColorSpace::Srgb;
             const bool invert = t.boolean("invert", false);
+            Vec2<float> offset(0.0f);
+            if (t.has("offset")) {
+                const auto o = t.requiredArray<2>("offset", {-1e6, 1e6});
+                offset = Vec2<float>(float(o[0]), float(o[1]));
+            }
             try {
-                texture = std::make_shared<ImageTexture>(file, scale, srgb, invert);
+                texture = std::make_shared<ImageTexture>(file, scale, srgb, invert, offset);
             } catch (const InputError& e) {
                 t.failAt("file", e.what());
             }
@@ -135,18 +175,20 @@ std::pair<MaterialDesc, MaterialTextures> readTexturedMaterial(const JsonReader&
     if (tex.displacement >= 0 && tex.normalMap >= 0)
         r.failAt("normal_map",
                  "a material takes a displacement (a bump map) or a normal_map, not both");
+    bool nestedRoughness = false;
     for (const auto& [key, value] : r.value().items()) {
         if (!copy.contains(key)) continue;  // a shading-normal map, read above
+        if (!kind->texturedThrough.empty() && key == kind->texturedThrough && value.is_object()) {
+            nestedRoughness = patchNestedTextures(r.child(key), copy[key], tex, textureIndex);
+            continue;
+        }
         if (!value.is_object() || !value.contains("texture")) continue;
-        const auto parameter = kind->texturedParameter(key);
-        if (!parameter) r.failAt(key, texturableKeysMessage(*kind, key));
-        const JsonReader t(value, r.childPath(key), r.source());
-        const std::string name = t.requiredString("texture");
-        t.finish();
-        (*parameter == TexturedParameter::Roughness ? tex.roughness : tex.color) =
-            textureIndex(t, "texture", name);
-        copy[key] = 0.5;
+        patchTexturedKey(r, *kind, key, copy, tex, textureIndex);
     }
+    if (nestedRoughness)
+        r.failAt(std::string(kind->texturedThrough),
+                 "a textured roughness inside a " + std::string(kind->name) +
+                     " material is not supported (its colour may be textured)");
     const JsonReader patched(copy, r.path(), r.source());
     MaterialDesc desc = parseMaterial(patched);
     if (tex.roughness >= 0) {
@@ -179,7 +221,8 @@ MaterialDesc texturedMaterial(const SceneDesc& scene, int material, const Vec2<f
     if (t.roughness >= 0)
         values.roughness =
             std::clamp(double(scene.textures[std::size_t(t.roughness)]->evaluate(uv)[0]), 0.0, 1.0);
-    // Only a type with texturable keys has textures (readTexturedMaterial).
+    // Only a type with texturable keys, or a material nested through texturedThrough, has
+    // textures (readTexturedMaterial).
     findMaterialKind(desc.type)->applyTextures(desc.model, values);
     return desc;
 }

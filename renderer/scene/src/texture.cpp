@@ -8,8 +8,8 @@
 namespace lamina::render {
 
 ImageTexture::ImageTexture(const std::filesystem::path& file, const Vec2<float>& scale, bool srgb,
-                           bool invert)
-    : scale_(scale), invert_(invert) {
+                           bool invert, const Vec2<float>& offset)
+    : scale_(scale), invert_(invert), offset_(offset) {
     InputImage image = readInputImage(file, "texture");
     width_ = image.width;
     height_ = image.height;
@@ -35,8 +35,9 @@ Rgb<float> ImageTexture::texel(int x, int y) const {
 
 Rgb<float> ImageTexture::evaluate(const Vec2<float>& uv) const {
     // v = 0 at the bottom row of the image; bilinear between texel centres, repeating.
-    const float x = uv.x * scale_.x * float(width_) - 0.5f;
-    const float y = (1.0f - uv.y * scale_.y) * float(height_) - 0.5f;
+    // An offset of 0 adds exactly nothing: without one the lookup is what it was.
+    const float x = (uv.x * scale_.x + offset_.x) * float(width_) - 0.5f;
+    const float y = (1.0f - (uv.y * scale_.y + offset_.y)) * float(height_) - 0.5f;
     const int x0 = int(std::floor(x)), y0 = int(std::floor(y));
     const float fx = x - float(x0), fy = y - float(y0);
     const Rgb<float> value =

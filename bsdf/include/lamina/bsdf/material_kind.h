@@ -62,6 +62,10 @@ struct MaterialKind {
     /// What the polarised mode makes of this type, as `lamina info` says it
     /// (docs/polarisation.md, "What each material does").
     std::string_view polarisation = "an ideal depolariser";
+    /// The key of a material nested in this type whose texturable keys a scene may texture
+    /// (coated: "base", pbrt-v4's coateddiffuse with a textured reflectance); its textures set
+    /// the nested material's parameters, through this type's applyTextures. Empty: none.
+    std::string_view texturedThrough = {};
 
     /// The parameter `key` takes from a texture, if it may be textured.
     std::optional<TexturedParameter> texturedParameter(std::string_view key) const;

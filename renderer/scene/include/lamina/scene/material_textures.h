@@ -18,7 +18,7 @@ struct SceneDesc;
 
 /// Which parameters of a material come from textures (indices into SceneDesc::textures).
 struct MaterialTextures {
-    int color = -1;      ///< base_color (standard) or reflectance (diffuse, phong)
+    int color = -1;      ///< base_color (standard) or reflectance (diffuse, phong; a coat's base's)
     int roughness = -1;  ///< perceptual roughness, from the texture's first channel
     /// The shading-normal maps (shading_normal_maps.h), at most one of the two: a height in
     /// scene units (the texture's first channel), or a tangent-space normal map.

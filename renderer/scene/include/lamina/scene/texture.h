@@ -52,8 +52,10 @@ class ImageTexture final : public Texture {
   public:
     /// `srgb`: decode 8- and 16-bit integer images with the sRGB transfer function.
     /// `invert`: max(0, 1 - value) per channel after decoding (pbrt-v4's imagemap `invert`).
+    /// The image is looked up at scale * uv + offset (pbrt-v4's UVMapping: uscale, vscale,
+    /// udelta, vdelta).
     ImageTexture(const std::filesystem::path& file, const Vec2<float>& scale, bool srgb,
-                 bool invert);
+                 bool invert, const Vec2<float>& offset = Vec2<float>(0.0f));
     Rgb<float> evaluate(const Vec2<float>& uv) const override;
     /// Its texels were decoded from sRGB (an integer image not declared linear).
     bool decodedSrgb() const { return decodedSrgb_; }
@@ -64,6 +66,7 @@ class ImageTexture final : public Texture {
     std::vector<Rgb<float>> pixels_;
     Vec2<float> scale_;
     bool invert_;
+    Vec2<float> offset_;
     bool decodedSrgb_ = false;
 };
 
