@@ -79,10 +79,12 @@ void linearPolarisation(const render::Film& film, const std::vector<bool>& lit,
         }
 }
 
-FlooredStatistic floored(double value, double polarisedPair, double spectralPair) {
+FlooredStatistic floored(double value, double polarisedPair, double spectralPair,
+                         double otherSeed) {
     // One render of each mode against each other carries one render's noise of each; a pair of
     // renders of one mode carries twice its own: combined in quadrature, as fresnel --scene.
-    return {value, std::sqrt((polarisedPair * polarisedPair + spectralPair * spectralPair) / 2)};
+    return {value, std::sqrt((polarisedPair * polarisedPair + spectralPair * spectralPair) / 2),
+            otherSeed};
 }
 
 }  // namespace
@@ -123,16 +125,18 @@ PolarisationResult runPolarisation(const PolarisationInputs& in) {
                                                  [](float v) { return std::isfinite(v); }));
     const std::vector<float> relP = relativeDifferenceMap(pTwin, p);
     const std::vector<float> relS = relativeDifferenceMap(sTwin, s);
-    r.meanRelative = floored(meanOf(r.relative), meanOf(relP), meanOf(relS));
-    r.p95Relative =
-        floored(percentileOf(r.relative, 95), percentileOf(relP, 95), percentileOf(relS, 95));
+    const std::vector<float> relTwins = relativeDifferenceMap(sTwin, pTwin);
+    r.meanRelative = floored(meanOf(r.relative), meanOf(relP), meanOf(relS), meanOf(relTwins));
+    r.p95Relative = floored(percentileOf(r.relative, 95), percentileOf(relP, 95),
+                            percentileOf(relS, 95), percentileOf(relTwins, 95));
 
     r.ciede2000 = ciede2000Map(s, p);
     const std::vector<float> deP = ciede2000Map(pTwin, p);
     const std::vector<float> deS = ciede2000Map(sTwin, s);
-    r.meanDeltaE = floored(meanOf(r.ciede2000), meanOf(deP), meanOf(deS));
-    r.p95DeltaE =
-        floored(percentileOf(r.ciede2000, 95), percentileOf(deP, 95), percentileOf(deS, 95));
+    const std::vector<float> deTwins = ciede2000Map(sTwin, pTwin);
+    r.meanDeltaE = floored(meanOf(r.ciede2000), meanOf(deP), meanOf(deS), meanOf(deTwins));
+    r.p95DeltaE = floored(percentileOf(r.ciede2000, 95), percentileOf(deP, 95),
+                          percentileOf(deS, 95), percentileOf(deTwins, 95));
 
     r.lit = litPixels(p);
     std::vector<float> twinDolp, twinAolp;

@@ -30,6 +30,7 @@ Data flooredData(const FlooredStatistic& s, int spp) {
     d.set("value", s.value);
     d.set("noise_floor", s.floor);
     d.set("resolved", reading.resolved);
+    d.set("other_seed", s.otherSeed);
     return d;
 }
 
@@ -74,7 +75,8 @@ CommandDecl polarisationDeclaration() {
         "relative and CIEDE2000 differences against the noise floor, DoLP and AoLP maps";
     c.returns =
         "a dict: spp; mean_relative_difference, p95_relative_difference, mean_delta_e, "
-        "p95_delta_e (each value, noise_floor, resolved); compared_pixels; the polarised "
+        "p95_delta_e (each value, noise_floor, resolved, other_seed: between the renders of the "
+        "floor's seed); compared_pixels; the polarised "
         "render's dolp and aolp (degrees) as (H, W) arrays (0 where there is no light), "
         "mean_dolp, max_dolp, dolp_noise; the per-pixel relative_difference and delta_e";
     c.options = {

@@ -43,6 +43,12 @@ struct PolarisationInputs {
 /// A statistic of a per-pixel difference and its noise floor.
 struct FlooredStatistic {
     double value = 0, floor = 0;
+    /// The same statistic between the polarised and the spectral render of the second seed. The
+    /// two compared renders share their seed (common random numbers: the same paths and
+    /// wavelengths), so their difference carries much less noise than two independent renders
+    /// do: where `value` is far below `floor`, its agreement with `otherSeed` says whether it
+    /// is reproducible.
+    double otherSeed = 0;
 };
 
 struct PolarisationResult {
