@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates the reports in docs/experiments/ (about 13 minutes on 2 cores). Run from the
+# Regenerates the reports in docs/experiments/ (about 16 minutes on 2 cores). Run from the
 # repository root after building: bash scripts/regenerate-experiments.sh [build/app/lamina]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -27,3 +27,11 @@ rm -rf "$out/stability"
 rm -rf "$out/layering"
 "$lamina" layering clear-paint varnished-wood coated-gold tinted-coat --estimates 1024 \
   --albedo-samples 32768 --scene scenes/layering/test-object.json -o "$out/layering"
+
+# What ignoring polarisation costs: the two mirror pairs at Brewster's angle (closed forms) and
+# the metal and glass spheres.
+rm -rf "$out/polarisation/two-mirrors" "$out/polarisation/fresnel-spheres"
+"$lamina" polarisation scenes/polarisation/two-mirrors.json --spp 64 \
+  -o "$out/polarisation/two-mirrors"
+"$lamina" polarisation scenes/fresnel-spheres.json --resolution 240x120 --spp 256 \
+  -o "$out/polarisation/fresnel-spheres"

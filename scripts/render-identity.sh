@@ -45,5 +45,23 @@ for scene in scenes/media/*.json; do
     fi
   done
 done
+# Scenes of the polarised mode: every integrator in it, beside the spectral path tracer.
+for scene in scenes/polarisation/*.json; do
+  name=$(echo "${scene#scenes/}" | tr / _); name=${name%.json}
+  for variant in "path polarised" "light polarised" "bdpt polarised" "path spectral"; do
+    set -- $variant
+    integrator=$1 mode=$2; shift 2
+    image="$out/$name-$integrator-$mode.exr"
+    "$lamina" render "$scene" -o "$image" --integrator "$integrator" --mode "$mode" --spp 4 \
+      --seed 7 --threads 1 -q "$@"
+    if [ -n "$baseline" ]; then
+      if [ ! -e "$baseline/$(basename "$image")" ]; then
+        echo "render-identity: $image is new (no image of it in $baseline)"
+      elif ! idiff -q -fail 0 -failpercent 0 -warn 0 "$baseline/$(basename "$image")" "$image" >/dev/null; then
+        echo "render-identity: $image differs from $baseline"; status=1
+      fi
+    fi
+  done
+done
 [ -n "$baseline" ] && [ $status -eq 0 ] && echo "render-identity: every image is bit-identical to $baseline"
 exit $status

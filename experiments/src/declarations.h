@@ -7,12 +7,13 @@
 
 namespace lamina::experiments {
 
-CommandDecl renderDeclaration();       // render_declaration.cpp
-CommandDecl compareDeclaration();      // compare_declaration.cpp
-CommandDecl reciprocityDeclaration();  // reciprocity_declaration.cpp
-CommandDecl convergenceDeclaration();  // convergence_declaration.cpp
-CommandDecl fresnelDeclaration();      // fresnel_declaration.cpp
-CommandDecl stabilityDeclaration();    // stability_declaration.cpp
-CommandDecl layeringDeclaration();     // layering_declaration.cpp
+CommandDecl renderDeclaration();        // render_declaration.cpp
+CommandDecl compareDeclaration();       // compare_declaration.cpp
+CommandDecl reciprocityDeclaration();   // reciprocity_declaration.cpp
+CommandDecl convergenceDeclaration();   // convergence_declaration.cpp
+CommandDecl fresnelDeclaration();       // fresnel_declaration.cpp
+CommandDecl stabilityDeclaration();     // stability_declaration.cpp
+CommandDecl layeringDeclaration();      // layering_declaration.cpp
+CommandDecl polarisationDeclaration();  // polarisation_declaration.cpp
 
 }  // namespace lamina::experiments

@@ -119,6 +119,7 @@ void writeFigureSpec(const std::filesystem::path& directory, const std::string& 
     j["from_zero"] = figure.fromZero;
     j["percentile"] = figure.percentile;
     if (figure.upper) j["upper"] = number(*figure.upper);
+    if (figure.cycle) j["cycle"] = {number(figure.cycle->first), number(figure.cycle->second)};
     if (figure.x) j["x_axis"] = axis(*figure.x);
     if (figure.y) j["y_axis"] = axis(*figure.y);
     if (figure.equalAspect) j["equal_aspect"] = true;

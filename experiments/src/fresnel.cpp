@@ -108,17 +108,6 @@ FresnelMaterial analyse(const std::string& materialName) {
     return result;
 }
 
-/// CIEDE2000 of each pixel of a against b (linear Rec.709).
-std::vector<float> ciede2000Map(const render::RgbImage& a, const render::RgbImage& b) {
-    std::vector<float> map(std::size_t(a.width) * a.height);
-    for (std::size_t i = 0; i < map.size(); ++i) {
-        const Rgb<double> ca(a.pixels[3 * i], a.pixels[3 * i + 1], a.pixels[3 * i + 2]);
-        const Rgb<double> cb(b.pixels[3 * i], b.pixels[3 * i + 1], b.pixels[3 * i + 2]);
-        map[i] = float(ciede2000Rec709(ca, cb));
-    }
-    return map;
-}
-
 double mean(const std::vector<float>& values) {
     double sum = 0;
     for (const float v : values)

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "lamina/core/error.h"
+#include "lamina/spectral/color_difference.h"
 
 namespace lamina::experiments {
 
@@ -146,6 +147,16 @@ void writeDifferenceImage(const std::filesystem::path& path, const render::RgbIm
                     float(std::clamp(2 * t - 1.0, 0.0, 1.0)), float(t < 0.5 ? 2 * t : 2 - 2 * t)});
     }
     render::writeRgb8(path, a.width, a.height, rgb);
+}
+
+std::vector<float> ciede2000Map(const render::RgbImage& a, const render::RgbImage& b) {
+    std::vector<float> map(std::size_t(a.width) * a.height);
+    for (std::size_t i = 0; i < map.size(); ++i) {
+        const Rgb<double> ca(a.pixels[3 * i], a.pixels[3 * i + 1], a.pixels[3 * i + 2]);
+        const Rgb<double> cb(b.pixels[3 * i], b.pixels[3 * i + 1], b.pixels[3 * i + 2]);
+        map[i] = float(ciede2000Rec709(ca, cb));
+    }
+    return map;
 }
 
 double percentileOf(std::vector<float> values, double p) {

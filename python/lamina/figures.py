@@ -13,7 +13,8 @@ Three kinds of figure:
 - ``map``: a false-colour map. Unsigned quantities use a sequential perceptual map (viridis),
   signed ones a diverging map with limits symmetric about zero; a logarithmic colour scale
   where the values span decades. The limits come from the data's percentiles and the caption
-  printed under the map says which, and how many pixels lie beyond them.
+  printed under the map says which, and how many pixels lie beyond them. A cyclic quantity (an
+  angle) uses a cyclic map (twilight) over its whole period.
 - ``swatches``: a grid of true colours (what models look like side by side).
 
 ``problems(figure)`` lists what a reader of a drawn figure could be misled by (too many
@@ -105,8 +106,12 @@ def _axis_is_log(setting, values):
     return setting in ("log", True)
 
 
-def map_scale(values, signed, from_zero=False, percentile=99.0, scale="auto", upper=None):
+def map_scale(values, signed, from_zero=False, percentile=99.0, scale="auto", upper=None,
+              cycle=None):
     """The colour scale of a map: (norm, colour map name, caption sentence).
+
+    Cyclic (`cycle`, the quantity's period [lo, hi], an angle): twilight over the whole period,
+    whose ends meet in one colour, as the quantity's do.
 
     Unsigned: viridis from 0 (`from_zero`) or the data's (100 - percentile)th percentile to its
     `percentile`th; logarithmic when `scale` is "log", or "auto" and the values are positive
@@ -117,6 +122,12 @@ def map_scale(values, signed, from_zero=False, percentile=99.0, scale="auto", up
     if v.size == 0:
         return colors.Normalize(0, 1), "viridis", "No finite values."
     lo_p = 100.0 - percentile
+    if cycle is not None:
+        lo, hi = float(cycle[0]), float(cycle[1])
+        p1, p99 = np.percentile(v, [1, 99])
+        return colors.Normalize(lo, hi), "twilight", (
+            f"Cyclic colour scale (twilight) over the whole period {lo:g} to {hi:g}, whose ends "
+            f"are one colour (the values' 1st-99th percentiles: {p1:.3g} to {p99:.3g})")
     if signed:
         mag = np.abs(v)
         limit = float(upper) if upper is not None else float(np.percentile(mag, percentile))
@@ -307,7 +318,8 @@ def draw_map(spec):
     signed = bool(spec.get("signed", False))
     norm, cmap_name, how = map_scale(values, signed, bool(spec.get("from_zero", False)),
                                      float(spec.get("percentile", 99.0)),
-                                     spec.get("scale", "auto"), spec.get("upper"))
+                                     spec.get("scale", "auto"), spec.get("upper"),
+                                     spec.get("cycle"))
     extent, pixels = _map_extent(spec, w, h)
     # Pixels, and axes of one quantity (direction cosines), keep their shape; others fill.
     equal = pixels or bool(spec.get("equal_aspect", False))

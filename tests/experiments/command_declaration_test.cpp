@@ -22,7 +22,7 @@ TEST(CommandDeclarations, NameEveryCommandBothFrontEndsHave) {
     for (const CommandDecl& c : commandDeclarations())
         names.push_back(c.name);
     EXPECT_THAT(names, ::testing::ElementsAre("render", "compare", "reciprocity", "convergence",
-                                              "fresnel", "stability", "layering"));
+                                              "fresnel", "stability", "layering", "polarisation"));
     // The experiments run from both front ends; render and compare have front ends of their
     // own.
     for (const CommandDecl& c : commandDeclarations())

@@ -66,6 +66,20 @@ def test_signed_scale_is_symmetric_and_diverging(figures):
     assert norm.vmax == pytest.approx(np.percentile(np.abs(v), 99))
 
 
+def test_a_cyclic_angle_uses_a_cyclic_map_over_its_whole_period(figures, tmp_path):
+    v = np.random.default_rng(4).uniform(-30.0, 60.0, (20, 30))
+    norm, cmap, caption = figures.map_scale(v, signed=False, cycle=[-90, 90])
+    assert cmap == "twilight" and (norm.vmin, norm.vmax) == (-90, 90)
+    # -90 and +90 degrees are one line: the map's two ends are one colour (within 2%).
+    colours = figures.matplotlib.colormaps[cmap]
+    assert np.allclose(colours(0.0), colours(1.0), atol=0.02)
+    assert "percentile" in caption
+    path = write_map(str(tmp_path), "aolp", v, cycle=[-90, 90])
+    fig = figures.draw(figures.load(path))
+    assert figures.problems(fig) == []
+    assert fig.axes[0].images[0].get_cmap().name == "twilight"
+
+
 def test_log_scale_only_where_values_span_decades(figures):
     rng = np.random.default_rng(3)
     wide = 10 ** rng.uniform(-3, 1, (40, 40))
@@ -326,3 +340,29 @@ def test_bsdf_plot_and_spectrum_figures(figures, lamina_exe, tmp_path):
     assert "lamina: note" not in err, err
     assert set(assert_drawn_without_problems(figures, str(tmp_path))) == {
         "lobe.figure.json", "lobe-hemisphere.figure.json", "cu.figure.json"}
+
+
+def test_polarisation_figures(figures, lamina_exe, source_dir, tmp_path):
+    scene = os.path.join(source_dir, "scenes", "polarisation", "two-mirrors.json")
+    out = tmp_path / "report"
+    code, _, err = run_cli(lamina_exe, "polarisation", scene, "--spp", "4", "-o", str(out))
+    assert code == 0, err
+    specs = assert_drawn_without_problems(figures, str(out))
+    assert {"dolp.figure.json", "aolp.figure.json", "ciede2000.figure.json",
+            "relative_difference.figure.json"} <= set(specs)
+    # DoLP: sequential over its whole range 0..1, grey (NaN) where there is no light.
+    dolp = figures.load(str(out / "dolp.figure.json"))
+    norm = figures.draw(dolp).axes[0].images[0].norm
+    assert (norm.vmin, norm.vmax) == (0, 1)
+    # The parallel pair at Brewster's angle passes s light alone (DoLP 1); the crossed pair
+    # passes nothing: no value, as the background (64x12 film; the pairs' mirror pixels).
+    assert np.allclose(dolp["values"][2:10, 45:59], 1.0, atol=1e-4)
+    assert np.all(np.isnan(dolp["values"][2:10, 5:19]))
+    # AoLP: cyclic over -90..90, masked where DoLP is below the threshold; the parallel pair's
+    # s axis is the image's x: AoLP 0.
+    aolp = figures.load(str(out / "aolp.figure.json"))
+    assert aolp["cycle"] == [-90, 90]
+    assert np.allclose(aolp["values"][2:10, 45:59], 0.0, atol=0.5)
+    assert np.all(np.isnan(aolp["values"]) == np.isnan(dolp["values"]))
+    summary = (out / "summary.md").read_text()
+    assert summary.count("(noise floor ") == 4, summary

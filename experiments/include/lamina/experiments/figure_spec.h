@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "lamina/core/spectrum.h"
@@ -64,6 +65,9 @@ struct MapFigure {
     bool fromZero = false;
     double percentile = 99;       ///< the upper limit (and 100 - it the lower)
     std::optional<double> upper;  ///< a fixed upper limit instead (the caption says so)
+    /// A cyclic quantity (an angle) of this period [lo, hi]: a cyclic map (twilight) over it,
+    /// whose ends are one colour, as the quantity's are; no percentiles.
+    std::optional<std::pair<double, double>> cycle;
     std::optional<MapAxis> x, y;  ///< none: the axes are the image's pixels
     bool equalAspect = false;     ///< x and y in one unit: drawn with equal scales
     std::string clipReason;       ///< why more than 5% of the values may lie beyond the limits

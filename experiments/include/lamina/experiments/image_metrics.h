@@ -69,6 +69,10 @@ ImagePair imagePair(const render::RgbImage& a, const std::string& labelA, const 
 void writeDifferenceImage(const std::filesystem::path& path, const render::RgbImage& a,
                           const render::RgbImage& b, double scale);
 
+/// The CIEDE2000 of each pixel of a against b (linear Rec.709, the same size), row-major from
+/// the top row: the colour difference maps of `fresnel --scene` and `polarisation`.
+std::vector<float> ciede2000Map(const render::RgbImage& a, const render::RgbImage& b);
+
 /// The p-th percentile (0-100) of the finite values, interpolated linearly between the two
 /// nearest ranks (NumPy's default, which the figure module uses); 0 when none is finite.
 double percentileOf(std::vector<float> values, double p);

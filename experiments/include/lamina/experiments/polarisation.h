@@ -1,0 +1,80 @@
+// What ignoring polarisation costs in a scene (`lamina polarisation`): the scene rendered in the
+// polarised mode (Stokes vectors and Mueller matrices, docs/polarisation.md) and in the spectral
+// mode (s and p averaged at every event), with the same seed, samples and settings, so that the
+// two differ by polarisation and by noise alone.
+//
+// Reported: per pixel the relative difference of the luminance, |Y_spectral - Y_polarised| /
+// ((Y_spectral + Y_polarised) / 2) (symmetric, in [0, 2]; pixels black in both left out, black
+// being at most 1e-6 of the brightest pixel: light cancelled to float rounding), and
+// the CIEDE2000 of the spectral render against the polarised one; the mean and 95th percentile
+// of each, read against their noise floors (noise_floor.h): the same statistic between each
+// mode's render and a second one with another seed, the two pairs combined in quadrature,
+// sqrt((polarised^2 + spectral^2) / 2), as `fresnel --scene` does. And the polarisation of the
+// light reaching the camera, from the polarised render's Stokes layers (luminance of each
+// component, in the image frame): the degree of linear polarisation DoLP = sqrt(S1^2 + S2^2) /
+// S0 and its angle AoLP = atan2(S2, S1) / 2 (degrees counter-clockwise from the image's right),
+// which means something only where the light is polarised: the AoLP figure masks pixels whose
+// DoLP is below `dolpThreshold`. DoLP of a noisy pixel is biased upwards (a norm of noisy S1,
+// S2), which the polarised render's twin bounds: its mean DoLP difference is reported too.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "lamina/experiments/image_metrics.h"
+#include "lamina/experiments/progress.h"
+#include "lamina/experiments/report.h"
+#include "lamina/render/renderer.h"
+
+namespace lamina::experiments {
+
+/// The AoLP figure's mask by default: light less than 5% linearly polarised has no angle worth
+/// drawing (its AoLP is mostly the noise of S1 and S2).
+inline constexpr double kDefaultDolpThreshold = 0.05;
+
+struct PolarisationInputs {
+    std::string scene;
+    int spp = 0;                      ///< of every render; 0: the scene's
+    render::RenderOptions overrides;  ///< --resolution, --threads, --max-depth, --seed
+    double dolpThreshold = kDefaultDolpThreshold;
+    ProgressSink progress;
+};
+
+/// A statistic of a per-pixel difference and its noise floor.
+struct FlooredStatistic {
+    double value = 0, floor = 0;
+    /// The same statistic between the polarised and the spectral render of the second seed. The
+    /// two compared renders share their seed (common random numbers: the same paths and
+    /// wavelengths), so their difference carries much less noise than two independent renders
+    /// do: where `value` is far below `floor`, its agreement with `otherSeed` says whether it
+    /// is reproducible.
+    double otherSeed = 0;
+};
+
+struct PolarisationResult {
+    std::string scene;
+    double dolpThreshold = kDefaultDolpThreshold;
+    render::RenderResult polarised, spectral;
+    ImageMetrics metrics;  ///< the spectral render against the polarised one (the reference)
+    int width = 0, height = 0;
+    /// Per pixel, row-major from the top row. `relative`: NaN where both renders are black.
+    std::vector<float> relative, ciede2000;
+    FlooredStatistic meanRelative, p95Relative, meanDeltaE, p95DeltaE;
+    std::size_t comparedPixels = 0;  ///< pixels not black in both renders (`relative`'s)
+    /// The pixels with light in the polarised render: S0 above 1e-6 of the brightest pixel's
+    /// (a light that cancels to float rounding, crossed mirrors at Brewster's angle, is none).
+    std::vector<bool> lit;
+    /// The polarised render's DoLP and AoLP in degrees, 0 where there is no light.
+    std::vector<float> dolp, aolp;
+    double meanDolp = 0, maxDolp = 0;  ///< over the lit pixels
+    /// The mean |DoLP - DoLP of the twin render| over the lit pixels: DoLP's noise.
+    double dolpNoise = 0;
+};
+
+PolarisationResult runPolarisation(const PolarisationInputs& inputs);
+
+/// The renders (EXR: the polarised one with its Stokes layers), the difference, CIEDE2000,
+/// DoLP and AoLP figures, and summary.md.
+void writePolarisationReport(const PolarisationResult& result, Report& report);
+
+}  // namespace lamina::experiments
