@@ -140,9 +140,10 @@ TEST_F(PbrtTranslation, MirroredCameraIsRightHanded) {
         importError("Scale 1 1 0\nCamera \"perspective\"\n", false),
         (dir_ / "s.pbrt").string() + ":2: the camera transform is singular (it flattens the view)");
     EXPECT_EQ(importError("Camera \"spherical\"\n", false),
-              at(1, false) + ": Camera \"spherical\" is not supported (perspective, "
-                             "orthographic); the realistic and spherical cameras have no lamina "
-                             "equivalent");
+              at(1, false) +
+                  ": Camera \"spherical\" is not supported (perspective, "
+                  "orthographic); the realistic and spherical cameras have no lamina "
+                  "equivalent");
 }
 
 // Exported camera matrices are rotations rounded to 6-8 digits: they load, with one warning,
@@ -544,7 +545,7 @@ TEST_F(PbrtTranslation, Textures) {
     EXPECT_EQ(importError("Texture \"n\" \"spectrum\" \"marble\"\nMaterial \"diffuse\" "
                           "\"texture reflectance\" \"n\"\nShape \"sphere\"\n"),
               at(1) +
-                  ": texture \"marble\" is not supported (lamina reads imagemap, "
+                  ": texture \"marble\" is not supported (lamina reads imagemap, constant, "
                   "checkerboard, scale and mix)");
     EXPECT_EQ(importError("Material \"diffuse\" \"texture reflectance\" \"none\"\n"
                           "Shape \"sphere\"\n"),

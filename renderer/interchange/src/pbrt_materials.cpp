@@ -424,7 +424,7 @@ std::string useTexture(TranslationContext& ctx, const std::string& name,
              {"amount", operand(ctx, e, "amount", "float", 0.5)}};
     } else {
         ctx.fail(e.location, "texture \"" + e.type +
-                                 "\" is not supported (lamina reads imagemap, "
+                                 "\" is not supported (lamina reads imagemap, constant, "
                                  "checkerboard, scale and mix)");
     }
     params.refuseUnused();
