@@ -8,6 +8,9 @@
 // rejected and the image means within three standard errors (two-sided p >= 0.0027).
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <sstream>
+
 #include "lamina/experiments/estimator_agreement.h"
 #include "render_helpers.h"
 #include "source_files.h"
@@ -78,6 +81,30 @@ INSTANTIATE_TEST_SUITE_P(
         MediaCase{"CameraInFogSpectral", "scenes/media/camera-in-fog.json",
                   RenderModeKind::Spectral}),
     [](const ::testing::TestParamInfo<MediaCase>& p) { return std::string(p.param.name); });
+
+// Spectral MIS (medium_transport.h) matters for bias, not only noise, when a channel has no
+// extinction: a particle whose hero is that channel never scatters in the medium, so the
+// single-hero estimator misses the other channels' scattered light. The chromatic sphere with
+// red passing unattenuated (RGB mode: an RGB zero is not zero at every wavelength of an
+// upsampled spectrum).
+TEST(MediaIntegratorsAgree, ChromaticSphereWithAClearChannel) {
+    std::ifstream in(testing::sourceFile("scenes/media/chromatic-sphere.json"));
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string json = text.str();
+    const std::string coefficients = R"("sigma_a": [0.1, 0.6, 1.5], "sigma_s": [2.5, 1.0, 0.3])";
+    const auto at = json.find(coefficients);
+    ASSERT_NE(at, std::string::npos);
+    json.replace(at, coefficients.size(), R"("sigma_a": [0, 0.6, 0.2], "sigma_s": [0, 1.5, 2.5])");
+    const SceneDesc scene = testing::sceneFromText(json);
+    const BatchImages path = render(scene, IntegratorKind::Path, RenderModeKind::Rgb, 11);
+    const BatchImages light = render(scene, IntegratorKind::Light, RenderModeKind::Rgb, 22);
+    ASSERT_GT(path.region(0, 0, 32, 32).mean, 0.0) << "the scene renders black";
+    const AgreementResult r = compare(path, light);
+    std::printf("  path vs light: blocks %.2f%% rejected; mean rel. diff %+.4f +- %.4f\n",
+                100 * r.blockRejectionRate(), r.relativeDifference, r.standardError);
+    EXPECT_TRUE(agrees(r)) << "blocks " << r.blockRejectionRate() << ", mean p " << r.meanPValue;
+}
 
 // A point light at the centre of a sphere of chromatic absorber (the camera outside, in
 // vacuum): light tracing finds the medium its particles start in by walking from the camera
