@@ -6,6 +6,10 @@
 // tailed), compared by Welch's t-test on 2x2-pixel blocks of the luminance at alpha = 0.01
 // (256 blocks, as the integrator agreement tests compare them). Pass: at most 3% of the blocks
 // rejected and the image means within three standard errors (two-sided p >= 0.0027).
+// Broken once on purpose each (docs/media.md, "Tests"): without the camera connection's
+// transmittance the fog slab fails (light 23% brighter), without the spectral MIS weight the
+// clear-channel sphere fails (light 12% darker), and with particles started in the camera's
+// medium the point light inside the absorber fails (light 46% brighter).
 #include <gtest/gtest.h>
 
 #include <fstream>
