@@ -1,6 +1,6 @@
-// The experiments that render with light tracing or BDPT refuse a scene with media before they
-// render anything (docs/media.md, "not yet"), with the renderer's one line, rather than render
-// the media as vacuum.
+// The experiments that render with BDPT refuse a scene with media before they render anything
+// (docs/media.md, "not yet"), with the renderer's one line, rather than render the media as
+// vacuum; path and light tracing render media.
 #include <gtest/gtest.h>
 
 #include "lamina/core/error.h"
@@ -22,13 +22,13 @@ std::string messageOf(const std::function<void()>& run) {
     return "(accepted)";
 }
 
-TEST(MediaRefusal, ReciprocityRefusesLightAndBdptThroughMedia) {
+TEST(MediaRefusal, ReciprocityRefusesBdptThroughMedia) {
     ReciprocityInputs in;
     in.scene = kFogSlab;
     EXPECT_EQ(messageOf([&] { runReciprocity(in); }),
               kFogSlab +
-                  ": media: the light and bdpt integrators do not render media yet; use "
-                  "--integrator path");
+                  ": media: the bdpt integrator does not render media yet; use --integrator "
+                  "path or light");
 }
 
 TEST(MediaRefusal, ConvergenceRefusesABdptReferenceThroughMedia) {
@@ -38,8 +38,7 @@ TEST(MediaRefusal, ConvergenceRefusesABdptReferenceThroughMedia) {
     in.referenceIntegrator = render::IntegratorKind::Bdpt;
     in.seconds = 0.01;
     const std::string m = messageOf([&] { runConvergence(in); });
-    EXPECT_NE(m.find(": media: the light and bdpt integrators do not render media yet"),
-              std::string::npos)
+    EXPECT_NE(m.find(": media: the bdpt integrator does not render media yet"), std::string::npos)
         << m;
 }
 

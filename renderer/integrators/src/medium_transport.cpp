@@ -51,11 +51,52 @@ std::optional<S> shadowTransmittance(const Geometry& geometry, const RenderMode<
     }
 }
 
-#define LAMINA_MEDIUM_TRANSPORT(S)                                                       \
-    template S transmittance(const S&, float);                                           \
-    template std::optional<S> shadowTransmittance(const Geometry&, const RenderMode<S>&, \
-                                                  typename RenderMode<S>::Path&, Vec3f,  \
-                                                  const Vec3f&, float, int, PathStatistics&);
+template <SpectrumType S>
+std::optional<S> segmentTransmittance(const Geometry& geometry, const RenderMode<S>& mode,
+                                      typename RenderMode<S>::Path& path, const Vec3f& a,
+                                      const Vec3f& na, const Vec3f& b, const Vec3f& nb, int medium,
+                                      PathStatistics& stats) {
+    const Vec3f ab = b - a;
+    const float scale = geometry.rayOffsetScale();
+    const Vec3f from = na == Vec3f(0.0f) ? a : offsetRayOrigin(a, facing(na, ab), scale);
+    const Vec3f to = nb == Vec3f(0.0f) ? b : offsetRayOrigin(b, facing(nb, -ab), scale);
+    const float length = glm::length(to - from);
+    if (!(length > 0.0f)) return S(1.0f);
+    return shadowTransmittance(geometry, mode, path, from, (to - from) / length,
+                               length * (1.0f - 1e-4f), medium, stats);
+}
+
+int mediumAt(const Geometry& geometry, int cameraMedium, const Vec3f& cameraPosition,
+             const Vec3f& point, PathStatistics& stats) {
+    // As many boundaries as a path may cross between two scattering events
+    // (path_integrator.cpp): only coincident surfaces the offset cannot separate get near it.
+    constexpr int kMaxCrossings = 1024;
+    int medium = cameraMedium;
+    Vec3f from = cameraPosition;
+    for (int crossings = 0; crossings < kMaxCrossings; ++crossings) {
+        const Vec3f toPoint = point - from;
+        const float remaining = glm::length(toPoint);
+        if (!(remaining > 0.0f)) break;
+        const Vec3f direction = toPoint / remaining;
+        ++stats.rays;
+        const auto hit = geometry.intersect(from, direction, remaining);
+        if (!hit) break;
+        const ShapeInfo& shape = geometry.shapes()[std::size_t(hit->shape)];
+        medium = mediumAfter(shape, medium, hit->ng, direction, direction);
+        from = offsetRayOrigin(hit->p, facing(hit->ng, direction), geometry.rayOffsetScale());
+        if (!(glm::dot(point - from, direction) > 0.0f)) break;
+    }
+    return medium;
+}
+
+#define LAMINA_MEDIUM_TRANSPORT(S)                                                            \
+    template S transmittance(const S&, float);                                                \
+    template std::optional<S> shadowTransmittance(const Geometry&, const RenderMode<S>&,      \
+                                                  typename RenderMode<S>::Path&, Vec3f,       \
+                                                  const Vec3f&, float, int, PathStatistics&); \
+    template std::optional<S> segmentTransmittance(                                           \
+        const Geometry&, const RenderMode<S>&, typename RenderMode<S>::Path&, const Vec3f&,   \
+        const Vec3f&, const Vec3f&, const Vec3f&, int, PathStatistics&);
 LAMINA_MEDIUM_TRANSPORT(Rgb<float>)
 LAMINA_MEDIUM_TRANSPORT(SampledSpectrum<float>)
 #undef LAMINA_MEDIUM_TRANSPORT

@@ -86,22 +86,23 @@ S PathIntegrator<S>::radiance(const Vec3f& rayOrigin, const Vec3f& rayDirection,
             if (medium >= 0) {
                 const MediumCoefficients<S> m = mode_.medium(medium, path);
                 const S sigmaT = m.sigmaT();
-                const float t = freeFlightDistance(sigmaT[hero], sampler.get1D());
-                const float tMax = hit ? hit->t : std::numeric_limits<float>::infinity();
-                if (!(t < tMax)) {
+                const FreeFlight<S> flight =
+                    sampleFreeFlight(sigmaT, hero, sampler.get1D(),
+                                     hit ? hit->t : std::numeric_limits<float>::infinity());
+                if (!flight.scatters) {
                     // The flight passes (to the surface, or out of the scene where the hero's
                     // extinction is 0): it had probability T_hero of doing so, channel i
                     // T_i. A light sample's shadow ray has no density of its own (its
                     // transmittance is exact): rL gets the hero's normalisation only.
-                    const S T = transmittance(sigmaT, tMax);
-                    if (!(T[hero] > 0.0f)) break;
-                    beta *= T / T[hero];
-                    rU *= T / T[hero];
-                    rL /= T[hero];
+                    const S& T = flight.T;
+                    if (!(flight.pdf > 0.0f)) break;
+                    beta *= T / flight.pdf;
+                    rU *= T / flight.pdf;
+                    rL /= flight.pdf;
                 } else {
                     // A scattering event at t, of density sigma_t T(t) per channel.
-                    const S T = transmittance(sigmaT, t);
-                    const float pdf = sigmaT[hero] * T[hero];
+                    const S& T = flight.T;
+                    const float t = flight.t, pdf = flight.pdf;
                     if (!(pdf > 0.0f)) break;
                     if (m.emits) {
                         // The medium's emission along the flight, by the collision estimator.

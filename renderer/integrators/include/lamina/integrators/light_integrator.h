@@ -5,6 +5,10 @@
 // film (Veach 1997, sections 10.2 and 10.8). Delta lobes cannot be connected; delta lights are
 // sampled like the others. Infinite lights seen directly cannot be reached by a particle (the
 // lens has no area facing infinity); they are missing from this integrator's images.
+// Through homogeneous media (docs/media.md) a particle samples free flights with the path
+// integrator's spectral MIS (medium_transport.h), scatters by the Henyey-Greenstein phase
+// function at medium vertices and connects every vertex, surface or medium, to the camera with
+// the exact transmittance of the connection.
 #pragma once
 
 #include "lamina/integrators/integrator.h"
@@ -31,6 +35,7 @@ class LightIntegrator final : public Integrator<S> {
     RenderSettings settings_;
     const PixelFilter& filter_;
     TransportAblations ablations_;
+    bool media_;  ///< the scene has media (SceneDesc::hasMedia) and the mode renders them
 };
 
 }  // namespace lamina::render

@@ -51,6 +51,29 @@ float freeFlightDistance(float sigma, float u);
 template <SpectrumType S>
 S transmittance(const S& sigmaT, float d);
 
+/// One free flight towards a surface at `tMax` (infinity: none) in a medium of extinction
+/// `sigmaT`, sampled with the hero channel's density sigma_t,h exp(-sigma_t,h t).
+template <SpectrumType S>
+struct FreeFlight {
+    bool scatters;  ///< a medium vertex at `t` before the surface; else the flight passes
+    float t;        ///< the distance flown (tMax when it passes)
+    S T;            ///< exp(-sigma_t t) per channel
+    /// The hero's density of this outcome: sigma_t,h T_h(t) at a medium vertex, the
+    /// probability T_h(tMax) of passing; 0 (the path ends) when the outcome had none.
+    float pdf;
+};
+
+template <SpectrumType S>
+FreeFlight<S> sampleFreeFlight(const S& sigmaT, int hero, float u, float tMax) {
+    const float t = freeFlightDistance(sigmaT[hero], u);
+    if (!(t < tMax)) {
+        const S T = transmittance(sigmaT, tMax);
+        return {false, tMax, T, T[hero]};
+    }
+    const S T = transmittance(sigmaT, t);
+    return {true, t, T, sigmaT[hero] * T[hero]};
+}
+
 /// The transmittance from `from` (already off its surface) along the unit `direction` for
 /// `distance` (infinity: out of the scene), starting in `medium`, through every index-matched
 /// interface it crosses (the product of exp(-sigma_t d) over its segments); nothing when
@@ -60,5 +83,21 @@ std::optional<S> shadowTransmittance(const Geometry& geometry, const RenderMode<
                                      typename RenderMode<S>::Path& path, Vec3f from,
                                      const Vec3f& direction, float distance, int medium,
                                      PathStatistics& stats);
+
+/// The transmittance of the segment between two points, each moved off its surface along its
+/// normal on the side facing the other as segmentUnoccluded moves them (a zero normal: a point
+/// not on a surface, such as a lens or a medium vertex), starting in `medium` at `a`: a
+/// camera connection of a light path (shadowTransmittance).
+template <SpectrumType S>
+std::optional<S> segmentTransmittance(const Geometry& geometry, const RenderMode<S>& mode,
+                                      typename RenderMode<S>::Path& path, const Vec3f& a,
+                                      const Vec3f& na, const Vec3f& b, const Vec3f& nb, int medium,
+                                      PathStatistics& stats);
+
+/// The medium at `point`, found by following the segment from the camera (at `cameraPosition`,
+/// in `cameraMedium`) to it and switching medium at every boundary it crosses (mediumAfter):
+/// where a light particle that does not leave a surface bounding media starts.
+int mediumAt(const Geometry& geometry, int cameraMedium, const Vec3f& cameraPosition,
+             const Vec3f& point, PathStatistics& stats);
 
 }  // namespace lamina::render

@@ -77,7 +77,8 @@ std::atomic<bool>& renderInterruptFlag();
 
 /// Renders the scene. `progress` is called from the calling thread now and then.
 /// Refuses a scene with media (SceneDesc::hasMedia) for what does not render media yet: the
-/// light and bdpt integrators and the polarised mode (docs/media.md). The renderer calls it;
+/// bdpt integrator, the light integrator with an emitting medium, and the polarised mode
+/// (docs/media.md). The renderer calls it;
 /// experiments call it before they start work.
 void checkMedia(const SceneDesc& scene, RenderModeKind mode, IntegratorKind integrator);
 
