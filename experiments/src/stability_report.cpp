@@ -47,30 +47,31 @@ void addHeatMaps(Report& report, const std::string& stem, const std::string& jso
         x.categories.push_back(formatText("%g", c));
     for (double a : r.alphas)
         y.categories.push_back(formatText("%g", a));
-    MapFigure issueMap;
-    issueMap.title = "Issues (NaN, Inf, negative, energy gain, weight != eval/pdf): " + json;
-    issueMap.quantity = "log10(1 + issues per cell)";
-    issueMap.unit = "count, log scale";
-    issueMap.width = w;
-    issueMap.height = h;
-    issueMap.values = std::move(issues);
+    // One map over the sweep's grid: what is common to both figures.
+    const auto gridMap = [&](std::string title, std::string quantity, std::string unit,
+                             std::vector<float> values) {
+        MapFigure map;
+        map.title = std::move(title) + ": " + json;
+        map.quantity = std::move(quantity);
+        map.unit = std::move(unit);
+        map.width = w;
+        map.height = h;
+        map.values = std::move(values);
+        map.x = x;
+        map.y = y;
+        return map;
+    };
+    MapFigure issueMap =
+        gridMap("Issues (NaN, Inf, negative, energy gain, weight != eval/pdf)",
+                "log10(1 + issues per cell)", "count, log scale", std::move(issues));
     issueMap.fromZero = true;  // 0: no issue
     issueMap.upper = most;     // the worst cell: nothing lies beyond
-    issueMap.x = x;
-    issueMap.y = y;
     report.addFigure(stem + "_issues", issueMap);
-    MapFigure errorMap;
-    errorMap.title = "Worst relative error of float against double: " + json;
-    errorMap.quantity = "log10(relative error)";
-    errorMap.unit = "floored at -8";
-    errorMap.width = w;
-    errorMap.height = h;
-    errorMap.values = std::move(error);
+    MapFigure errorMap = gridMap("Worst relative error of float against double",
+                                 "log10(relative error)", "floored at -8", std::move(error));
     // The whole range, from the smallest value (at most the floor, -8) to 0 (an error of 100%).
     errorMap.percentile = 100;
     errorMap.upper = 0;
-    errorMap.x = x;
-    errorMap.y = y;
     report.addFigure(stem + "_float_error", errorMap);
 }
 
