@@ -199,14 +199,44 @@ TEST(PbrtParser, DirectiveErrorsNameFileAndLine) {
               "s.pbrt:1: AttributeBegin is not closed before the end of s.pbrt (line 3)");
     EXPECT_EQ(parseError("CoordSysTransform \"nowhere\""),
               "s.pbrt:1: CoordSysTransform: no coordinate system \"nowhere\" was defined");
-    EXPECT_EQ(parseError("MakeNamedMedium \"fog\" \"string type\" \"homogeneous\""),
-              "s.pbrt:1: MakeNamedMedium: participating media are not supported");
+    EXPECT_EQ(parseError("MakeNamedMedium \"fog\" \"float g\" 0.5"),
+              "s.pbrt:1: MakeNamedMedium \"fog\": no \"string type\" parameter");
+    EXPECT_EQ(parseError("MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\n"
+                         "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\""),
+              "s.pbrt:2: MakeNamedMedium \"fog\": defined again (first at s.pbrt:1)");
     EXPECT_EQ(parseError("ActiveTransform StartTime"),
               "s.pbrt:1: ActiveTransform StartTime: motion blur is not supported (only "
               "ActiveTransform All)");
     EXPECT_EQ(parseError("ColorSpace \"aces2065-1\""),
               "s.pbrt:1: ColorSpace \"aces2065-1\" is not supported (lamina's colours are sRGB / "
               "Rec.709, pbrt-v4's default \"srgb\")");
+}
+
+// MediumInterface is an attribute (saved by AttributeBegin); one name is both sides; the
+// camera sits in the outside medium in effect when Camera is read.
+TEST(PbrtParser, MediumInterfaceIsAnAttribute) {
+    const ParsedScene s = parse(
+        "MediumInterface \"\" \"fog\"\nCamera \"perspective\"\nWorldBegin\n"
+        "MakeNamedMedium \"ink\" \"string type\" \"homogeneous\" \"float g\" 0.3\n"
+        "AttributeBegin\nMediumInterface \"ink\" \"fog\"\nShape \"sphere\"\nAttributeEnd\n"
+        "Shape \"disk\"\nMediumInterface \"ink\"\nShape \"disk\"\n");
+    EXPECT_EQ(s.cameraMedia.outside, "fog");
+    EXPECT_EQ(s.cameraMedia.inside, "");
+    ASSERT_EQ(s.media.size(), 1u);
+    EXPECT_EQ(s.media[0].name, "ink");
+    EXPECT_EQ(s.media[0].entity.type, "homogeneous");
+    EXPECT_EQ(s.media[0].entity.location.line, 4);
+    ASSERT_EQ(s.shapes.size(), 3u);
+    EXPECT_EQ(s.shapes[0].media.inside, "ink");
+    EXPECT_EQ(s.shapes[0].media.outside, "fog");
+    EXPECT_EQ(s.shapes[0].media.location.line, 6);
+    EXPECT_TRUE(s.shapes[0].media.isTransition());
+    // Restored by AttributeEnd: the state before it, vacuum inside and fog outside.
+    EXPECT_EQ(s.shapes[1].media.inside, "");
+    EXPECT_EQ(s.shapes[1].media.outside, "fog");
+    EXPECT_EQ(s.shapes[2].media.inside, "ink");
+    EXPECT_EQ(s.shapes[2].media.outside, "ink");
+    EXPECT_FALSE(s.shapes[2].media.isTransition());
 }
 
 TEST(PbrtParser, ObjectsAndInstances) {

@@ -94,9 +94,11 @@ TEST_F(PbrtTranslation, OptionsBlock) {
               Json::parse(R"({"type": "gaussian", "radius": 1.5, "sigma": 0.3})"));
     EXPECT_EQ(b.scene["sampler"]["spp"], 6);
     EXPECT_EQ(b.scene["integrator"]["type"], "path");
+    // volpath is lamina's path tracer, which renders media as volpath does: no warning.
     EXPECT_EQ(b.warnings.back(), file_.string() +
-                                     ":3: Integrator \"volpath\" became lamina's "
-                                     "path tracer (the scene has no media)");
+                                     ":2: Sampler \"stratified\" became lamina's Owen-scrambled "
+                                     "Sobol sampler with xsamples x ysamples = 6 samples per "
+                                     "pixel");
     EXPECT_EQ(b.warnings[0], file_.string() +
                                  ":4: PixelFilter given again: this one replaces "
                                  "the one of line 1");
@@ -504,13 +506,107 @@ TEST_F(PbrtTranslation, MaterialErrors) {
                   "glass-* spectrum)");
 }
 
-TEST_F(PbrtTranslation, InterfaceShapesAreOmittedWithAWarning) {
+TEST_F(PbrtTranslation, InterfaceShapesThatSeparateNoMediaAreOmittedWithAWarning) {
     const ImportedScene s = import("Material \"interface\"\nShape \"sphere\"\n");
     EXPECT_TRUE(s.scene["shapes"].empty());
     ASSERT_EQ(s.warnings.size(), 1u);
     EXPECT_EQ(s.warnings[0], at(2) +
-                                 ": Shape \"sphere\" with the \"interface\" material (a media "
-                                 "boundary) omitted: lamina has no participating media");
+                                 ": Shape \"sphere\" with the \"interface\" material separates "
+                                 "no media: omitted (pbrt-v4's rays pass through it)");
+}
+
+// MakeNamedMedium "homogeneous" becomes a lamina medium with pbrt-v4's defaults (sigma_a and
+// sigma_s 1, scale 1, g 0); MediumInterface makes a shape a boundary ("interior" the inside,
+// "exterior" the outside, "" vacuum), an interface material the lamina "interface"; the
+// camera sits in the outside medium of its time.
+TEST_F(PbrtTranslation, HomogeneousMediaAndTheirBoundaries) {
+    const ImportedScene s = import(
+        "MediumInterface \"\" \"fog\"\n"
+        "LookAt 0 0 0  0 0 1  0 1 0\nCamera \"perspective\"\nWorldBegin\n"
+        "LightSource \"point\" \"rgb I\" [1 1 1]\n"
+        "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\n"
+        "MakeNamedMedium \"ruby\" \"string type\" \"homogeneous\" \"rgb sigma_a\" [.01 .2 .5]\n"
+        "  \"spectrum sigma_s\" [300 0.25 800 0.25] \"float scale\" 2 \"float g\" -0.3\n"
+        "  \"rgb Le\" [1 0.5 0.25] \"float Lescale\" 4\n"
+        "MakeNamedMedium \"milk\" \"string type\" \"homogeneous\" \"string preset\" "
+        "\"Wholemilk\"\n"
+        "MakeNamedMedium \"unused\" \"string type\" \"nanovdb\"\n"
+        "AttributeBegin\nMediumInterface \"ruby\" \"fog\"\nMaterial \"dielectric\"\n"
+        "Shape \"sphere\"\nAttributeEnd\n"
+        "AttributeBegin\nMediumInterface \"milk\" \"fog\"\nMaterial \"\"\n"
+        "Shape \"disk\"\nAttributeEnd\n",
+        false);
+    EXPECT_EQ(s.scene["media"], Json::parse(R"({
+        "fog": {"type": "homogeneous", "sigma_a": 1.0, "sigma_s": 1.0, "scale": 1.0, "g": 0.0},
+        "ruby": {"type": "homogeneous", "sigma_a": [0.01, 0.2, 0.5], "sigma_s": 0.25,
+                 "scale": 2.0, "g": -0.3, "Le": [4.0, 2.0, 1.0]},
+        "milk": {"type": "homogeneous", "sigma_a": [0.0011, 0.0024, 0.014],
+                 "sigma_s": [2.55, 3.21, 3.77], "scale": 1.0, "g": 0.0}})"));
+    EXPECT_EQ(s.scene["camera"]["medium"], "fog");
+    ASSERT_EQ(s.scene["shapes"].size(), 2u);
+    EXPECT_EQ(s.scene["shapes"][0]["interior"], "ruby");
+    EXPECT_EQ(s.scene["shapes"][0]["exterior"], "fog");
+    EXPECT_NE(s.scene["shapes"][0]["material"], "interface");
+    EXPECT_EQ(s.scene["shapes"][1]["material"], "interface");
+    EXPECT_EQ(s.scene["shapes"][1]["interior"], "milk");
+    ASSERT_EQ(s.warnings.size(), 1u);
+    EXPECT_EQ(s.warnings[0], at(11, false) +
+                                 ": medium \"unused\" bounds no shape and holds no camera: not "
+                                 "translated");
+    expectLoads();
+}
+
+// pbrt-v4's path integrator renders a scene as if it had no media; lamina's path tracer renders
+// them, as volpath does: a warning says so (volpath itself maps to lamina's path silently).
+TEST_F(PbrtTranslation, ThePathIntegratorOfASceneWithMediaWarns) {
+    const ImportedScene s = import(
+        "Integrator \"path\"\nMediumInterface \"\" \"fog\"\nCamera \"perspective\"\n"
+        "WorldBegin\nMakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\n"
+        "LightSource \"point\"\n",
+        false);
+    ASSERT_EQ(s.warnings.size(), 1u);
+    EXPECT_EQ(s.warnings[0], at(1, false) +
+                                 ": Integrator \"path\" of a scene with media: pbrt-v4's path "
+                                 "integrator renders it as if there were none, lamina's path "
+                                 "tracer with them (as volpath)");
+}
+
+TEST_F(PbrtTranslation, MediaErrorsNameFileAndLine) {
+    const std::string box =
+        "AttributeBegin\nMediumInterface \"m\" \"\"\nMaterial \"interface\"\n"
+        "Shape \"sphere\"\nAttributeEnd\n";
+    EXPECT_EQ(importError("MakeNamedMedium \"m\" \"string type\" \"nanovdb\"\n" + box),
+              at(1) +
+                  ": MakeNamedMedium \"m\": \"nanovdb\" media are not supported (lamina "
+                  "renders homogeneous media; grids, clouds and NanoVDB files are not read "
+                  "yet)");
+    EXPECT_EQ(importError(box), at(2) +
+                                    ": MediumInterface: no medium \"m\" (MakeNamedMedium "
+                                    "defines one; \"\" is vacuum)");
+    EXPECT_EQ(
+        importError("MakeNamedMedium \"m\" \"string type\" \"homogeneous\" \"float g\" 1\n" + box),
+        at(1) +
+            ": MakeNamedMedium \"m\": parameter \"float g\" must lie in "
+            "(-1, 1): lamina's Henyey-Greenstein phase function has no delta limit");
+    EXPECT_EQ(importError("MakeNamedMedium \"m\" \"string type\" \"homogeneous\" "
+                          "\"spectrum sigma_a\" [400 0.1 700 0.2]\n" +
+                          box),
+              at(1) +
+                  ": MakeNamedMedium \"m\": parameter \"spectrum sigma_a\" "
+                  "varies with wavelength: lamina's media take a number or an rgb triple "
+                  "(give \"rgb sigma_a\")");
+    EXPECT_EQ(importError("MakeNamedMedium \"m\" \"string type\" \"homogeneous\" "
+                          "\"rgb sigma_s\" [1 -1 1]\n" +
+                          box),
+              at(1) +
+                  ": MakeNamedMedium \"m\": parameter \"rgb sigma_s\" must be "
+                  "finite and >= 0");
+    EXPECT_EQ(importError("MakeNamedMedium \"m\" \"string type\" \"homogeneous\" "
+                          "\"float density\" 2\n" +
+                          box),
+              at(1) +
+                  ": MakeNamedMedium \"m\": parameter \"float density\" is not "
+                  "supported");
 }
 
 TEST_F(PbrtTranslation, Textures) {
@@ -619,11 +715,13 @@ TEST_F(PbrtTranslation, GzipCompressedIncludesAreRead) {
 TEST_F(PbrtTranslation, ParserWarningsComeFirstAndInOrder) {
     const ImportedScene s = import(
         "Option \"bool wavefront\" true\nAccelerator \"bvh\"\n"
-        "Integrator \"volpath\"\nShape \"sphere\"\n");
+        "Integrator \"volpath\"\nMaterial \"interface\"\nShape \"sphere\"\n");
     const std::vector<std::string> expected = {
         at(1) + ": Option ignored: pbrt's rendering options do not change lamina's scene",
         at(2) + ": Accelerator ignored: lamina always uses Embree's BVH",
-        at(3) + ": Integrator \"volpath\" became lamina's path tracer (the scene has no media)"};
+        at(5) +
+            ": Shape \"sphere\" with the \"interface\" material separates no media: omitted "
+            "(pbrt-v4's rays pass through it)"};
     EXPECT_EQ(s.warnings, expected);
 }
 

@@ -12,22 +12,9 @@
 namespace lamina::render {
 namespace {
 
+using testing::channelMean;
 using testing::ImageMean;
 using testing::sceneFromText;
-
-// The image mean of one channel with its standard error from that channel's own per-pixel
-// variances (Film::varianceOfMeanRgb): the luminance's variance (testing::imageMean) understates
-// the red and blue channels', most in spectral mode, where sampled wavelengths add colour noise.
-ImageMean channelMean(const Film& film, int channel) {
-    double sum = 0, var = 0;
-    const double n = double(film.width()) * film.height();
-    for (int y = 0; y < film.height(); ++y)
-        for (int x = 0; x < film.width(); ++x) {
-            sum += film.pixel(x, y)[channel];
-            var += film.varianceOfMeanRgb(x, y)[channel];
-        }
-    return {sum / n, std::sqrt(var) / n};
-}
 
 constexpr double kZ = 3.29;  // two-sided significance 0.001
 

@@ -308,6 +308,10 @@ TranslatedBsdf translateBsdf(const Element& bsdf, const MitsubaDocument& documen
         out = translateBsdf(*nested[0], document, diagnostics, insideTwoSided, depth + 1);
         if (out.alpha) p.fail("a mask inside a mask is not supported");
         if (alpha < 1) out.alpha = alpha;
+    } else if (type == "null") {
+        p.fail(
+            "a null BSDF is only supported as a shape's own BSDF (an index-matched "
+            "boundary), not inside another BSDF");
     } else if (type == "bumpmap" || type == "normalmap") {
         out = shadingNormalMap(p, document, diagnostics, insideTwoSided, depth);
     } else {

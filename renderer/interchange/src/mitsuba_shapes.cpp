@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "document_names.h"
 #include "lamina/core/error.h"
 #include "mitsuba_bsdfs.h"
 #include "mitsuba_translation.h"
@@ -50,6 +51,11 @@ Json shapeMaterial(Translation& t, Plugin& p, std::optional<double>& alpha) {
     if (bsdfs.size() > 1) p.fail("a shape takes one BSDF, got " + std::to_string(bsdfs.size()));
     if (bsdfs.empty()) return {{"type", "lambert"}, {"reflectance", 0.5}};
     const Element& bsdf = *bsdfs[0];
+    // Mitsuba's null BSDF is an index-matched boundary: lamina's reserved "interface".
+    if (const std::string* type = bsdf.attribute("type"); type && *type == "null") {
+        Plugin(bsdf, t.document, t.diagnostics).finish();
+        return kDocumentInterfaceMaterial;
+    }
     if (const auto it = t.namedBsdfs.find(&bsdf); it != t.namedBsdfs.end()) {
         alpha = it->second;
         return *bsdf.attribute("id");
@@ -184,6 +190,15 @@ void translateShape(Translation& t, const Element& e, Json& out, bool inGroup) {
     if (type != "instance") {
         std::optional<double> alpha;
         s["material"] = shapeMaterial(t, p, alpha);
+        shapeMedia(t, p, s);
+        if (s["material"] == kDocumentInterfaceMaterial && !s.contains("interior") &&
+            !s.contains("exterior")) {
+            // An interface between no media: Mitsuba's rays pass through it.
+            p.objects("emitter");
+            p.warn("a shape with the null BSDF and no medium omitted: it is invisible");
+            p.finish();
+            return;
+        }
         const auto emitters = p.objects("emitter");
         if (emitters.size() > 1) p.fail("a shape takes one emitter");
         if (!emitters.empty()) {
@@ -273,6 +288,10 @@ void translateEmitter(Translation& t, const Element& e) {
         p.fail("the emitter plugin \"" + type +
                "\" is not supported (area, point, spot, directional, constant, envmap)");
     }
+    if (endpointMedium(t, p))
+        p.warn(
+            "the emitter's medium is not written: lamina finds the medium a light sits in "
+            "from the boundaries around it");
     p.finish();
     t.scene["lights"].push_back(light);
 }

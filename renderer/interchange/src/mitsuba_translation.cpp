@@ -187,6 +187,7 @@ void translateSensor(Translation& t, const Element& sensor) {
     p.ignore("srf", "lamina's film uses the CIE 1931 observer");
     for (const char* name : {"principal_point_offset_x", "principal_point_offset_y"})
         if (p.number(name, 0.0) != 0) p.fail(std::string(name) + " is not supported");
+    if (const auto medium = endpointMedium(t, p)) camera["medium"] = *medium;
     p.finish();
     t.scene["camera"] = camera;
 }
@@ -207,9 +208,8 @@ void translateIntegrator(Translation& t, const Element& integrator) {
     const std::string& type = p.type();
     Json out = Json::object();
     if (type == "path" || type == "volpath" || type == "volpathmis") {
+        // lamina's path tracer renders media with spectral MIS, as volpathmis does.
         out["type"] = "path";
-        if (type != "path")
-            p.warn(type + " became lamina's path (no participating media in lamina)");
     } else if (type == "ptracer") {
         out["type"] = "light";
         p.ignore("samples_per_pass", "lamina schedules its own passes");
@@ -262,6 +262,8 @@ ImportedScene importMitsubaScene(const std::filesystem::path& file,
     // Named BSDFs first: shapes anywhere in the file refer to them by id.
     for (const Element& e : scene.children) {
         if (e.tag != "bsdf") continue;
+        // A null BSDF becomes the shapes' "interface" where they use it (shapeMaterial).
+        if (const std::string* type = e.attribute("type"); type && *type == "null") continue;
         const std::string* id = e.attribute("id");
         if (!id) {
             diagnostics.warn(e, e.describe() + " without an id is used by no shape: not imported");
@@ -296,12 +298,14 @@ ImportedScene importMitsubaScene(const std::filesystem::path& file,
                 translateShape(t, e, t.scene["shapes"], false);
         } else if (e.tag == "emitter") {
             translateEmitter(t, e);
+        } else if (e.tag == "medium" && e.attribute("id")) {
+            continue;  // translated where a shape or the sensor refers to it
         } else if (e.tag == "texture" || e.tag == "medium" || e.tag == "phase" ||
                    e.tag == "volume" || e.tag == "film" || e.tag == "sampler" ||
                    e.tag == "rfilter") {
             throw InputError(e.where() + ": " + e.describe() +
                              " at the top level is not supported" +
-                             (e.tag == "medium" ? " (lamina has no participating media)" : ""));
+                             (e.tag == "medium" ? " without an id (nothing can refer to it)" : ""));
         } else {
             throw InputError(e.where() + ": unknown element <" + e.tag + "> in <scene>");
         }
@@ -320,6 +324,16 @@ ImportedScene importMitsubaScene(const std::filesystem::path& file,
         diagnostics.warn(scene, "no <integrator>: Mitsuba's default path tracer");
         translateIntegrator(t, defaultElement(scene, "integrator", "path"));
     }
+    for (const Element& e : scene.children)
+        if (e.tag == "medium" && e.attribute("id") && !t.media.count(&e))
+            diagnostics.warn(e, e.describe() + " \"" + *e.attribute("id") +
+                                    "\" is used by no shape or sensor: not imported");
+    // Mitsuba 3's path integrator ignores media (volpath and volpathmis render them).
+    if (t.scene.contains("media") && integrator && integrator->attribute("type") &&
+        *integrator->attribute("type") == "path")
+        diagnostics.warn(*integrator,
+                         "the path integrator of a scene with media: Mitsuba's renders it as if "
+                         "there were none, lamina's path tracer with them (as volpath)");
     ImportedScene out;
     out.format = SceneFormat::Mitsuba;
     out.scene = std::move(t.scene);

@@ -23,6 +23,8 @@ struct Translation {
     /// Top-level BSDFs with an id, translated once: the lamina material name (the id) and
     /// the alpha a `mask` gives the shapes that use it.
     std::map<const Element*, std::optional<double>> namedBsdfs;
+    /// Media translated so far (each once, wherever it is referred to): their lamina names.
+    std::map<const Element*, std::string> media;
 };
 
 /// Writes the textures a translated BSDF names into the document's `textures` (their files
@@ -34,6 +36,15 @@ void translateShape(Translation& t, const Element& shape, Json& out, bool inGrou
 void translateShapeGroup(Translation& t, const Element& group);
 /// A top-level `<emitter>` -> a lamina light.
 void translateEmitter(Translation& t, const Element& emitter);
+
+// Media (mitsuba_media.cpp).
+
+/// The lamina name of a `<medium>`, written into the document's `media` on first use.
+std::string useMedium(Translation& t, const Element& medium);
+/// A shape's `interior` and `exterior` media (nested or `<ref>`s) as the lamina shape's keys.
+void shapeMedia(Translation& t, Plugin& p, Json& shape);
+/// The medium nested in a sensor or an emitter (Mitsuba's Endpoint takes one), if any.
+std::optional<std::string> endpointMedium(Translation& t, Plugin& p);
 
 /// The importer's entry in scene_import.cpp's table.
 ImportedScene importMitsubaScene(const std::filesystem::path& file,

@@ -238,7 +238,8 @@ Json translateMaterial(TranslationContext& ctx, const MaterialDef& def, int dept
                          "mix: a material with a bump or normal map cannot be mixed (lamina's "
                          "maps belong to the material a shape uses)");
         m = {{"type", "mix"}, {"a", a}, {"b", b}, {"weight", std::clamp(amount, 0.0, 1.0)}};
-    } else if (e.type == "interface") {
+    } else if (e.type == "interface" || e.type == "" || e.type == "none") {
+        // pbrt-v4 reads Material "" and "none" as "interface" (Material::Create).
         params.refuseUnused();
         return nullptr;
     } else {

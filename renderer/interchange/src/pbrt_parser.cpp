@@ -31,6 +31,7 @@ struct GraphicsState {
     std::string material;
     Location materialLocation;
     std::optional<Entity> areaLight;
+    MediumSides media;
 };
 
 // The part of the graphics state that TransformBegin/End saves (deprecated in pbrt-v4, still
@@ -123,6 +124,7 @@ class Parser {
         s.materialLocation = state_.materialLocation;
         s.areaLight = state_.areaLight;
         s.reverseOrientation = state_.reverseOrientation;
+        s.media = state_.media;
         if (currentObject_) {
             if (s.areaLight)
                 throw InputError(s.entity.location.str() +
@@ -230,6 +232,8 @@ class Parser {
             Entity e = entity(tokens, d, string(tokens, d));
             // pbrt-v4 names the camera's frame "camera" (scene.cpp, BasicSceneBuilder::Camera).
             coordinateSystems_["camera"] = glm::inverse(e.transform);
+            // The camera sits in the current outside medium (BasicSceneBuilder::Camera).
+            scene_.cameraMedia = state_.media;
             setOnce(scene_.camera, std::move(e), "Camera");
         } else if (name == "Film") {
             setOnce(scene_.film, entity(tokens, d, string(tokens, d)), "Film");
@@ -332,15 +336,29 @@ class Parser {
                 tokens.fail(d.line, "ObjectInstance inside ObjectBegin is not supported");
             scene_.instances.push_back({objectName, at, ctm});
         } else if (name == "MakeNamedMedium") {
-            tokens.fail(d.line, "MakeNamedMedium: participating media are not supported");
+            const std::string mediumName = string(tokens, d);
+            Entity e;
+            e.location = at;
+            e.transform = ctm;
+            e.params = readParamList(tokens, "MakeNamedMedium \"" + mediumName + "\"");
+            if (!e.params.has("type"))
+                tokens.fail(d.line,
+                            "MakeNamedMedium \"" + mediumName + "\": no \"string type\" parameter");
+            e.type = e.params.string("type", "");
+            for (const MediumDef& m : scene_.media)
+                if (m.name == mediumName)
+                    tokens.fail(d.line, "MakeNamedMedium \"" + mediumName +
+                                            "\": defined again (first at " +
+                                            m.entity.location.str() + ")");
+            scene_.media.push_back({mediumName, std::move(e)});
         } else if (name == "MediumInterface") {
-            const std::string inside = string(tokens, d);
-            std::string outside = inside;
+            // One name is both sides (pbrt-v4's parser); the state is an attribute, saved by
+            // AttributeBegin.
+            state_.media.inside = string(tokens, d);
+            state_.media.outside = state_.media.inside;
             if (tokens.peek() && tokens.peek()->kind == Token::Kind::String)
-                outside = tokens.next()->text;
-            if (!inside.empty() || !outside.empty())
-                tokens.fail(d.line, "MediumInterface \"" + inside + "\" \"" + outside +
-                                        "\": participating media are not supported");
+                state_.media.outside = tokens.next()->text;
+            state_.media.location = at;
         } else if (name == "Attribute") {
             tokens.fail(d.line,
                         "Attribute (default parameters for a kind of directive) is "

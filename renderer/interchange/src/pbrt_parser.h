@@ -37,6 +37,14 @@ struct MaterialDef {
     Entity entity;     ///< its type is the material type
 };
 
+/// The media on the two sides of a surface (pbrt-v4's MediumInterface: `inside` is the side
+/// the surface normal points away from); empty names are vacuum.
+struct MediumSides {
+    std::string inside, outside;
+    Location location;  ///< where MediumInterface set them
+    bool isTransition() const { return inside != outside; }
+};
+
 struct ShapeDef {
     Entity entity;
     /// The name of the material in effect: a MaterialDef's, or empty for pbrt's default
@@ -45,6 +53,13 @@ struct ShapeDef {
     Location materialLocation;  ///< where NamedMaterial named it (for an unknown name)
     std::optional<Entity> areaLight;
     bool reverseOrientation = false;
+    MediumSides media;
+};
+
+/// MakeNamedMedium: its name and parameters (the entity's type is the medium's "string type").
+struct MediumDef {
+    std::string name;
+    Entity entity;
 };
 
 struct ObjectDef {
@@ -65,6 +80,9 @@ struct ParsedScene {
     std::optional<Entity> camera, film, sampler, integrator, filter;
     std::vector<TextureDef> textures;
     std::vector<MaterialDef> materials;
+    std::vector<MediumDef> media;
+    /// The medium the camera sits in: pbrt-v4's outside medium when Camera was read.
+    MediumSides cameraMedia;
     std::vector<ShapeDef> shapes;
     std::vector<Entity> lights;
     std::vector<ObjectDef> objects;

@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include "document_names.h"
 #include "lamina/core/error.h"
 #include "pbrt_shapes.h"
 #include "rounded_rotation.h"
@@ -177,13 +178,24 @@ std::optional<Json> translateShape(TranslationContext& ctx, const ShapeDef& s) {
     const ParamList& params = e.params;
     const glm::dmat4& m = e.transform;
     const std::string material = useMaterial(ctx, s.material, s.materialLocation);
-    if (material.empty()) {
+    // pbrt-v4 gives a shape a MediumInterface only where the two sides differ (scene.cpp);
+    // elsewhere the shape leaves the medium a path is in alone, as a lamina shape without
+    // "interior" and "exterior" does.
+    const bool boundary = s.media.isTransition();
+    if (material.empty() && !boundary) {
         ctx.warn(e.location, "Shape \"" + e.type +
-                                 "\" with the \"interface\" material (a media "
-                                 "boundary) omitted: lamina has no participating media");
+                                 "\" with the \"interface\" material separates no media: "
+                                 "omitted (pbrt-v4's rays pass through it)");
         return std::nullopt;
     }
-    const Json& materialJson = ctx.document["materials"][material];
+    if (material.empty() && s.areaLight)
+        ctx.fail(e.location, "an emitting Shape \"" + e.type +
+                                 "\" with the \"interface\" material is not supported "
+                                 "(give the emitter a material)");
+    // An interface (the lamina material "interface") has no material entry: transmits().
+    const Json interfaceMaterial{{"type", "dielectric"}};
+    const Json& materialJson =
+        material.empty() ? interfaceMaterial : ctx.document["materials"][material];
     Json shape;
     std::vector<double> areas;  // for an area light's power
     auto similarity = [&]() {
@@ -263,7 +275,11 @@ std::optional<Json> translateShape(TranslationContext& ctx, const ShapeDef& s) {
                                  "\" is not supported (lamina reads sphere, "
                                  "disk, trianglemesh, plymesh and bilinearmesh)");
     }
-    shape["material"] = material;
+    shape["material"] = material.empty() ? kDocumentInterfaceMaterial : material;
+    if (boundary) {
+        shape["interior"] = useMedium(ctx, s.media.inside, s.media.location);
+        shape["exterior"] = useMedium(ctx, s.media.outside, s.media.location);
+    }
     if (!shape.contains("center") && !isIdentity(m))
         shape["transform"] = Json::array({Json{{"matrix", rowMajor(m)}}});
     // Alpha cut-outs ("float alpha" or a float texture; pbrt-v4 shapes.cpp).

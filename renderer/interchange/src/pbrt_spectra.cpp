@@ -111,7 +111,17 @@ Json pairsJson(const std::vector<double>& v, double divisor) {
     return list;
 }
 
-// A parameter given as a float, an rgb triple or spectrum pairs, divided by `divisor`.
+std::string namedMetal(const Param* p, const std::string& suffix) {
+    if (!p || p->strings.size() != 1) return "";
+    const std::string& s = p->strings[0];
+    if (s.rfind("metal-", 0) != 0 || s.size() <= 6 + suffix.size() ||
+        s.compare(s.size() - suffix.size(), suffix.size(), suffix) != 0)
+        return "";
+    return s.substr(6, s.size() - 6 - suffix.size());
+}
+
+}  // namespace
+
 Json numericSpectrum(TranslationContext& ctx, const ParamList& params, const Param& p,
                      double divisor) {
     const std::string type = canonicalParamType(p.type);
@@ -128,17 +138,6 @@ Json numericSpectrum(TranslationContext& ctx, const ParamList& params, const Par
     params.expectType(p, {"float", "rgb", "spectrum"});
     return nullptr;
 }
-
-std::string namedMetal(const Param* p, const std::string& suffix) {
-    if (!p || p->strings.size() != 1) return "";
-    const std::string& s = p->strings[0];
-    if (s.rfind("metal-", 0) != 0 || s.size() <= 6 + suffix.size() ||
-        s.compare(s.size() - suffix.size(), suffix.size(), suffix) != 0)
-        return "";
-    return s.substr(6, s.size() - 6 - suffix.size());
-}
-
-}  // namespace
 
 Json emissionValue(TranslationContext& ctx, const ParamList& params, const std::string& name,
                    double scale) {

@@ -108,10 +108,8 @@ Json translateIntegrator(TranslationContext& ctx, const Entity& e) {
     if (e.type == "path") {
         type = "path";
     } else if (e.type == "volpath") {
+        // lamina's path tracer renders media as volpath does (spectral MIS free flights).
         type = "path";
-        ctx.warn(e.location,
-                 "Integrator \"volpath\" became lamina's path tracer (the scene has "
-                 "no media)");
     } else if (e.type == "bdpt") {
         type = "bdpt";
         if (p.boolean("visualizestrategies", false) || p.boolean("visualizeweights", false))
@@ -280,6 +278,9 @@ Json translate(TranslationContext& ctx) {
     doc["film"]["filter"] =
         translateFilter(ctx, scene.filter ? *scene.filter : defaultEntity("gaussian"));
     doc["camera"] = translateCamera(ctx, camera, width, height);
+    if (!scene.cameraMedia.outside.empty())
+        doc["camera"]["medium"] =
+            useMedium(ctx, scene.cameraMedia.outside, scene.cameraMedia.location);
     // pbrt-v4's default sampler is zsobol with 16 samples per pixel, its default integrator
     // volpath with maxdepth 5 (scene.cpp): lamina's Sobol sampler and path tracer.
     doc["sampler"] = scene.sampler ? translateSampler(ctx, *scene.sampler)
@@ -313,6 +314,13 @@ Json translate(TranslationContext& ctx) {
     doc["lights"] = Json::array();
     for (const Entity& l : scene.lights)
         doc["lights"].push_back(translateLight(ctx, l));
+    warnUnusedMedia(ctx);
+    // pbrt-v4's PathIntegrator ignores media (only volpath and bdpt render them); lamina's
+    // path tracer renders them.
+    if (doc.contains("media") && scene.integrator && scene.integrator->type == "path")
+        ctx.warn(scene.integrator->location,
+                 "Integrator \"path\" of a scene with media: pbrt-v4's path integrator "
+                 "renders it as if there were none, lamina's path tracer with them (as volpath)");
     for (const MaterialDef& m : scene.materials)
         if (!ctx.writtenMaterials.count(m.name) && m.name.rfind("pbrt_material_", 0) != 0)
             ctx.warn(m.entity.location, "material \"" + m.name +

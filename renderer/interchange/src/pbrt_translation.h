@@ -22,7 +22,7 @@ struct TranslationContext {
     Json document = Json::object();
     std::vector<std::string> warnings;
     /// The lamina names of the materials and textures written so far (translated on first use).
-    std::set<std::string> writtenMaterials, writtenTextures;
+    std::set<std::string> writtenMaterials, writtenTextures, writtenMedia;
     /// Each pbrt material translated once (a mix refers to others by name), null for
     /// "interface".
     std::map<std::string, Json> translatedMaterials;
@@ -61,6 +61,14 @@ std::string useMaterial(TranslationContext& context, const std::string& name,
 std::string useTexture(TranslationContext& context, const std::string& name,
                        const std::string& valueType, const Location& usedAt);
 
+// Media (pbrt_media.cpp).
+
+/// The lamina name of the medium a MediumInterface (at `usedAt`) names, written into the
+/// document's `media` on first use; "" (pbrt's vacuum) is "vacuum".
+std::string useMedium(TranslationContext& context, const std::string& name, const Location& usedAt);
+/// Warns of each MakeNamedMedium no shape or camera used (it is not translated).
+void warnUnusedMedia(TranslationContext& context);
+
 // Spectra (pbrt_spectra.cpp).
 
 /// An emission value for an illuminant parameter (`L` or `I`): rgb, blackbody, spectrum
@@ -69,6 +77,10 @@ std::string useTexture(TranslationContext& context, const std::string& name,
 /// multiplied by `scale`.
 Json emissionValue(TranslationContext& context, const ParamList& params, const std::string& name,
                    double scale);
+/// A parameter given as a float, an rgb triple or spectrum (nm, value) pairs, each value
+/// divided by `divisor`: a number, [r, g, b] or [[nm, value], ...].
+Json numericSpectrum(TranslationContext& context, const ParamList& params, const Param& p,
+                     double divisor);
 /// The conductor optics for pbrt's eta and k parameters (`prefix` "" or "conductor."),
 /// divided by `outsideIor` (a coat's index; 1 in air).
 void conductorOptics(TranslationContext& context, const Entity& e, const std::string& prefix,
