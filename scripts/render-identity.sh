@@ -26,12 +26,12 @@ for scene in scenes/*.json scenes/reciprocity/*.json scenes/stress/*.json; do
     fi
   done
 done
-# Scenes with media: the path and light integrators render them, bdpt not yet (docs/media.md).
-# A baseline older than a scene or an integrator's media has no image of it: that is
-# reported, not failed.
+# Scenes with media: every integrator renders them (docs/media.md). A baseline older than a
+# scene or an integrator's media has no image of it: that is reported, not failed.
 for scene in scenes/media/*.json; do
   name=$(echo "${scene#scenes/}" | tr / _); name=${name%.json}
-  for variant in "path rgb --aovs" "path spectral" "light rgb" "light spectral"; do
+  for variant in "path rgb --aovs" "path spectral" "light rgb" "light spectral" "bdpt rgb" \
+                 "bdpt spectral"; do
     set -- $variant
     integrator=$1 mode=$2; shift 2
     image="$out/$name-$integrator-$mode.exr"

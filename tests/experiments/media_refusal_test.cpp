@@ -1,44 +1,48 @@
-// The experiments that render with BDPT refuse a scene with media before they render anything
-// (docs/media.md, "not yet"), with the renderer's one line, rather than render the media as
-// vacuum; path and light tracing render media.
+// The experiments that render with BDPT refuse a scene with an emitting medium before they
+// render anything (docs/media.md, "not yet"), with the renderer's one line, rather than render
+// it without its glow.
 #include <gtest/gtest.h>
 
 #include "lamina/core/error.h"
 #include "lamina/experiments/convergence.h"
 #include "lamina/experiments/reciprocity.h"
-#include "source_files.h"
+#include "scratch_directory.h"
 
 namespace lamina::experiments {
 namespace {
 
-const std::string kFogSlab = testing::sourceFile("scenes/media/fog-slab.json").string();
+using testing::errorOf;
 
-std::string messageOf(const std::function<void()>& run) {
-    try {
-        run();
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "(accepted)";
-}
+/// A sphere of glowing gas over an emitter.
+constexpr const char* kGlowScene = R"({
+  "camera": {"position": [0, 0, -4], "look_at": [0, 0, 0]},
+  "media": {"glow": {"type": "homogeneous", "sigma_a": 0.5, "Le": 1}},
+  "materials": {"m": {"type": "lambert"}},
+  "shapes": [{"type": "sphere", "material": "interface", "interior": "glow"},
+             {"type": "sphere", "center": [0, 3, 0], "radius": 0.5, "material": "m",
+              "emission": {"radiance": 1}}]})";
 
-TEST(MediaRefusal, ReciprocityRefusesBdptThroughMedia) {
+class MediaRefusal : public testing::ScratchDirectoryTest {};
+
+TEST_F(MediaRefusal, ReciprocityRefusesBdptThroughAnEmittingMedium) {
     ReciprocityInputs in;
-    in.scene = kFogSlab;
-    EXPECT_EQ(messageOf([&] { runReciprocity(in); }),
-              kFogSlab +
-                  ": media: the bdpt integrator does not render media yet; use --integrator "
-                  "path or light");
+    in.scene = write("glow.json", kGlowScene).string();
+    in.integrators = {render::IntegratorKind::Path, render::IntegratorKind::Bdpt};
+    EXPECT_EQ(errorOf([&] { runReciprocity(in); }),
+              in.scene +
+                  ": media.glow.Le: the bdpt integrator does not render emitting media yet; use "
+                  "--integrator path");
 }
 
-TEST(MediaRefusal, ConvergenceRefusesABdptReferenceThroughMedia) {
+TEST_F(MediaRefusal, ConvergenceRefusesABdptReferenceThroughAnEmittingMedium) {
     ConvergenceInputs in;
-    in.scene = kFogSlab;
+    in.scene = write("glow.json", kGlowScene).string();
     in.integrators = {render::IntegratorKind::Path};
     in.referenceIntegrator = render::IntegratorKind::Bdpt;
     in.seconds = 0.01;
-    const std::string m = messageOf([&] { runConvergence(in); });
-    EXPECT_NE(m.find(": media: the bdpt integrator does not render media yet"), std::string::npos)
+    const std::string m = errorOf([&] { runConvergence(in); });
+    EXPECT_NE(m.find(": media.glow.Le: the bdpt integrator does not render emitting media yet"),
+              std::string::npos)
         << m;
 }
 

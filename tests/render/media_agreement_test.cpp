@@ -1,15 +1,23 @@
-// Camera path tracing and light tracing converge to the same image through homogeneous media
-// (docs/media.md): the light integrator's free flights, medium vertices and camera
-// connections with transmittance against the path integrator's. Each integrator renders a
-// scene of scenes/media/ as 32 independent batches at 32x32 pixels (fixed seeds; 256 samples
-// per pixel in all for path, 1024 particles per pixel for light, whose splats are heavier-
-// tailed), compared by Welch's t-test on 2x2-pixel blocks of the luminance at alpha = 0.01
-// (256 blocks, as the integrator agreement tests compare them). Pass: at most 3% of the blocks
-// rejected and the image means within three standard errors (two-sided p >= 0.0027).
+// Camera path tracing, light tracing and BDPT converge to the same image through homogeneous
+// media (docs/media.md): the light integrator's free flights, medium vertices and camera
+// connections with transmittance, and BDPT's medium vertices, connections through media and
+// MIS weights, against the path integrator's. Each integrator renders a scene of scenes/media/
+// as 32 independent batches at 32x32 pixels (fixed seeds; 256 samples per pixel in all for
+// path, 1024 particles per pixel for light, whose splats are heavier-tailed, 128 for bdpt, whose
+// samples cost more), compared pair by pair by Welch's t-test on 2x2-pixel blocks of the
+// luminance at alpha = 0.01 (256 blocks, as the integrator agreement tests compare them).
+// Pass: at most 3% of the blocks rejected and the image means within three standard errors
+// (two-sided p >= 0.0027).
 // Broken once on purpose each (docs/media.md, "Tests"): without the camera connection's
 // transmittance the fog slab fails (light 23% brighter), without the spectral MIS weight the
 // clear-channel sphere fails (light 12% darker), and with particles started in the camera's
 // medium the point light inside the absorber fails (light 46% brighter).
+// BDPT, broken once each: without the connections' transmittance the fog slab fails (bdpt 43%
+// brighter, 73% of the blocks rejected); without the spectral MIS weight the clear-channel
+// sphere fails (bdpt 11% darker, 42%); with light subpaths started in the camera's medium the
+// point light inside the absorber fails (bdpt 33% brighter, 80%); with a medium vertex's
+// phase-function density left in solid angle in the MIS weights (not converted to area) all
+// six scene cases fail (bdpt 9% to 18% off, 10% to 46% of the blocks).
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -37,7 +45,10 @@ BatchImages render(const SceneDesc& scene, IntegratorKind integrator, RenderMode
     o.mode = mode;
     o.seed = seed;
     o.resolution = std::make_pair(32, 32);
-    return renderBatches(scene, o, integrator == IntegratorKind::Light ? 1024 : 256, 32);
+    const int spp = integrator == IntegratorKind::Light  ? 1024
+                    : integrator == IntegratorKind::Bdpt ? 128
+                                                         : 256;
+    return renderBatches(scene, o, spp, 32);
 }
 
 constexpr double kMaxBlockRejection = 0.03;
@@ -54,23 +65,32 @@ bool agrees(const AgreementResult& r) {
     return r.blockRejectionRate() <= kMaxBlockRejection && r.meanPValue >= kMeanPValue;
 }
 
+/// Compares two integrators' images, prints the numbers and expects agreement.
+void expectAgreement(const BatchImages& a, const BatchImages& b, const std::string& pair,
+                     int minBlocks = 0) {
+    const AgreementResult r = compare(a, b);
+    std::printf("  %-14s blocks %.2f%% rejected; mean rel. diff %+.4f +- %.4f\n", pair.c_str(),
+                100 * r.blockRejectionRate(), r.relativeDifference, r.standardError);
+    // Blocks that are black in both images (the background) are not tested.
+    EXPECT_GT(r.blocksTested, minBlocks) << pair;
+    EXPECT_TRUE(agrees(r)) << pair << ": blocks " << r.blockRejectionRate() << ", mean p "
+                           << r.meanPValue << ", relative difference " << r.relativeDifference
+                           << " +- " << r.standardError;
+}
+
 class MediaIntegratorsAgree : public ::testing::TestWithParam<MediaCase> {};
 
-TEST_P(MediaIntegratorsAgree, PathAndLightConvergeToTheSameImage) {
+TEST_P(MediaIntegratorsAgree, PathLightAndBdptConvergeToTheSameImage) {
     const MediaCase& c = GetParam();
     const SceneDesc scene = loadScene(testing::sourceFile(c.scene).string());
     ASSERT_TRUE(scene.hasMedia());
     const BatchImages path = render(scene, IntegratorKind::Path, c.mode, 11);
     const BatchImages light = render(scene, IntegratorKind::Light, c.mode, 22);
+    const BatchImages bdpt = render(scene, IntegratorKind::Bdpt, c.mode, 33);
     ASSERT_GT(path.region(0, 0, 32, 32).mean, 0.0) << "the scene renders black";
-    const AgreementResult r = compare(path, light);
-    std::printf("  path vs light: blocks %.2f%% rejected; mean rel. diff %+.4f +- %.4f\n",
-                100 * r.blockRejectionRate(), r.relativeDifference, r.standardError);
-    // Blocks that are black in both images (the background) are not tested.
-    EXPECT_GT(r.blocksTested, 150);
-    EXPECT_TRUE(agrees(r)) << "blocks " << r.blockRejectionRate() << ", mean p " << r.meanPValue
-                           << ", relative difference " << r.relativeDifference << " +- "
-                           << r.standardError;
+    expectAgreement(path, light, "path vs light", 150);
+    expectAgreement(path, bdpt, "path vs bdpt", 150);
+    expectAgreement(light, bdpt, "light vs bdpt", 150);
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -87,8 +107,8 @@ INSTANTIATE_TEST_SUITE_P(
     [](const ::testing::TestParamInfo<MediaCase>& p) { return std::string(p.param.name); });
 
 // Spectral MIS (medium_transport.h) matters for bias, not only noise, when a channel has no
-// extinction: a particle whose hero is that channel never scatters in the medium, so the
-// single-hero estimator misses the other channels' scattered light. The chromatic sphere with
+// extinction: a particle (or a BDPT sample) whose hero is that channel never scatters in the
+// medium, so the single-hero estimator misses the other channels' scattered light. The chromatic sphere with
 // red passing unattenuated (RGB mode: an RGB zero is not zero at every wavelength of an
 // upsampled spectrum).
 TEST(MediaIntegratorsAgree, ChromaticSphereWithAClearChannel) {
@@ -103,16 +123,16 @@ TEST(MediaIntegratorsAgree, ChromaticSphereWithAClearChannel) {
     const SceneDesc scene = testing::sceneFromText(json);
     const BatchImages path = render(scene, IntegratorKind::Path, RenderModeKind::Rgb, 11);
     const BatchImages light = render(scene, IntegratorKind::Light, RenderModeKind::Rgb, 22);
+    const BatchImages bdpt = render(scene, IntegratorKind::Bdpt, RenderModeKind::Rgb, 33);
     ASSERT_GT(path.region(0, 0, 32, 32).mean, 0.0) << "the scene renders black";
-    const AgreementResult r = compare(path, light);
-    std::printf("  path vs light: blocks %.2f%% rejected; mean rel. diff %+.4f +- %.4f\n",
-                100 * r.blockRejectionRate(), r.relativeDifference, r.standardError);
-    EXPECT_TRUE(agrees(r)) << "blocks " << r.blockRejectionRate() << ", mean p " << r.meanPValue;
+    expectAgreement(path, light, "path vs light");
+    expectAgreement(path, bdpt, "path vs bdpt");
 }
 
 // A point light at the centre of a sphere of chromatic absorber (the camera outside, in
 // vacuum): light tracing finds the medium its particles start in by walking from the camera
-// through the sphere's boundary (mediumAt), the path integrator's shadow rays by crossing it.
+// through the sphere's boundary (mediumAt), as BDPT's light subpaths do, the path
+// integrator's shadow rays by crossing it.
 // The medium only absorbs: a scattering medium around a point light gives next-event
 // estimation infinite variance (a medium vertex at distance r from the light contributes
 // 1 / r^2, with density r^2 dr), which a t-test cannot tolerate.
@@ -131,11 +151,10 @@ TEST(MediaIntegratorsAgree, PointLightInsideAMediumSphere) {
       "lights": [{"type": "point", "position": [0, 0.5, 0], "intensity": 4}]})");
     const BatchImages path = render(scene, IntegratorKind::Path, RenderModeKind::Rgb, 11);
     const BatchImages light = render(scene, IntegratorKind::Light, RenderModeKind::Rgb, 22);
+    const BatchImages bdpt = render(scene, IntegratorKind::Bdpt, RenderModeKind::Rgb, 33);
     ASSERT_GT(path.region(0, 0, 32, 32).mean, 0.0) << "the scene renders black";
-    const AgreementResult r = compare(path, light);
-    std::printf("  path vs light: blocks %.2f%% rejected; mean rel. diff %+.4f +- %.4f\n",
-                100 * r.blockRejectionRate(), r.relativeDifference, r.standardError);
-    EXPECT_TRUE(agrees(r)) << "blocks " << r.blockRejectionRate() << ", mean p " << r.meanPValue;
+    expectAgreement(path, light, "path vs light");
+    expectAgreement(path, bdpt, "path vs bdpt");
 }
 
 }  // namespace

@@ -1,16 +1,23 @@
 #include "lamina/integrators/bdpt_connection.h"
 
+#include <limits>
+
+#include "lamina/bsdf/henyey_greenstein.h"
+#include "lamina/integrators/medium_transport.h"
 #include "lamina/integrators/visibility.h"
 
 namespace lamina::render {
 
 /// The BSDF of surface vertex `v` for light arriving from `from` (a point, or a direction
 /// when infinite) and leaving to `to`, in the subpath's transport mode, with the sides rule
-/// and (light subpaths) the adjoint correction. `wPrev` points to the subpath's previous
-/// vertex.
+/// and (light subpaths) the adjoint correction; the phase function of a medium vertex.
+/// `wPrev` points to the subpath's previous vertex.
 template <SpectrumType S>
 S BdptConnector<S>::evalAt(const Vertex& v, const Vec3f& wPrev, const Vec3f& wNext,
                            bool lightSubpath, typename Mode::Path& path) const {
+    // Light crosses a medium vertex from -wPrev to wNext (or from -wNext to wPrev: the same
+    // angle); its sigma_s is in the vertex's throughput.
+    if (v.type == BdptVertexType::Medium) return S(henyeyGreenstein(-glm::dot(wPrev, wNext), v.g));
     if (!sidesAgree(wPrev, wNext, v.ng, v.ns)) return S(0.0f);
     const Frame<float> frame = Frame<float>::fromNormal(v.ns);
     const Bxdf<S>& bsdf = mode_.bsdf(v.material, v.uv, frame, path);
@@ -38,8 +45,42 @@ S BdptConnector<S>::emitted(const Vertex& v, const Vec3f& w, typename Mode::Path
 }
 
 template <SpectrumType S>
-bool BdptConnector<S>::unoccluded(const Vertex& a, const Vertex& b, PathStatistics& stats) const {
-    return segmentUnoccluded(c_.geometry, a.p, a.ng, b.p, b.ng, stats);
+std::optional<S> BdptConnector<S>::passes(const Vertex& from, const Vertex* before,
+                                          const Vertex& to, typename Mode::Path& path,
+                                          PathStatistics& stats) const {
+    if constexpr (Mode::kRendersMedia) {
+        if (media_) {
+            const Vec3f w = directionTo(from, to);
+            int medium = from.medium;
+            if (from.type == BdptVertexType::Surface)
+                medium = mediumAfter(c_.geometry.shapes()[std::size_t(from.shape)], from.medium,
+                                     from.ng, directionTo(*before, from), w);
+            if (!to.infinite)
+                return segmentTransmittance(c_.geometry, mode_, path, from.p, from.ng, to.p, to.ng,
+                                            medium, stats);
+            const Vec3f origin =
+                from.ng == Vec3f(0.0f)
+                    ? from.p
+                    : offsetRayOrigin(from.p, facing(from.ng, w), c_.geometry.rayOffsetScale());
+            return shadowTransmittance(c_.geometry, mode_, path, origin, w,
+                                       std::numeric_limits<float>::infinity(), medium, stats);
+        }
+    }
+    const bool visible = to.infinite
+                             ? directionUnoccluded(c_.geometry, from.p, from.ng, to.p, stats)
+                             : segmentUnoccluded(c_.geometry, from.p, from.ng, to.p, to.ng, stats);
+    if (!visible) return std::nullopt;
+    return S(1.0f);
+}
+
+template <SpectrumType S>
+S BdptConnector<S>::throughMedia(const S& value, [[maybe_unused]] const S& T,
+                                 [[maybe_unused]] const S& rUCamera,
+                                 [[maybe_unused]] const S& rULight) const {
+    if constexpr (Mode::kRendersMedia) {
+        if (media_) return value * T / (rUCamera * rULight).average();
+    }
+    return value;
 }
 
 template <SpectrumType S>
@@ -55,9 +96,12 @@ BdptConnection<S> BdptConnector<S>::connect(const std::vector<Vertex>& lightPath
         // The camera subpath's end is an emitter.
         if (!(cv.infinite || (cv.type == BdptVertexType::Surface && cv.light >= 0))) return result;
         const Vertex& prev = cameraPath[std::size_t(t - 2)];
-        value = cv.beta * emitted(cv, cv.infinite ? -cv.p : directionTo(cv, prev), path);
+        value =
+            throughMedia(cv.beta * emitted(cv, cv.infinite ? -cv.p : directionTo(cv, prev), path),
+                         S(1.0f), cv.rU, S(1.0f));
     } else if (t == 1) {
-        // Light vertex s-1 (a surface: s >= 2, since (1, 1) is skipped) seen by the camera.
+        // Light vertex s-1 (a surface or medium vertex: s >= 2, since (1, 1) is skipped)
+        // seen by the camera.
         const Vertex& lv = lightPath[std::size_t(s - 1)];
         if (lv.delta) return result;
         const auto cc =
@@ -67,17 +111,19 @@ BdptConnection<S> BdptConnector<S>::connect(const std::vector<Vertex>& lightPath
         sampled.p = cc->lensPoint;
         sampled.beta = S(cc->importance / cc->pdf);
         result.splatAt = cc->raster;
-        const Vec3f wPrev = directionTo(lv, lightPath[std::size_t(s - 2)]);
-        const S f = evalAt(lv, wPrev, cc->wi, true, path);
+        const Vertex& before = lightPath[std::size_t(s - 2)];
+        const S f = evalAt(lv, directionTo(lv, before), cc->wi, true, path);
         if (f.maxValue() <= 0.0f) return result;
         // f before the light prefix: in the polarised mode a light subpath's matrices act in
         // the order light meets them (docs/polarisation.md, "Light paths").
         value = f * lv.beta * sampled.beta;
         result.toLens = cc->wi;
-        if (!unoccluded(lv, sampled, stats)) return BdptConnection<S>{};
+        const auto T = passes(lv, &before, sampled, path, stats);
+        if (!T) return BdptConnection<S>{};
+        value = throughMedia(value, *T, S(1.0f), lv.rU);
     } else if (s == 1) {
         // Next-event estimation: a fresh point on a light.
-        if (cv.type != BdptVertexType::Surface || cv.delta) return result;
+        if (!cv.scatters() || cv.delta) return result;
         // Without a light choose() can return (no lights, or only constant environments, which
         // next-event estimation leaves to the other strategies) both numbers are skipped, not
         // drawn, as the path integrator does: later dimensions keep their values.
@@ -102,31 +148,32 @@ BdptConnection<S> BdptConnector<S>::connect(const std::vector<Vertex>& lightPath
         sampled.p = sampled.infinite ? ls->wi : ls->point;
         sampled.ng = sampled.ns = (light.isDelta() || sampled.infinite) ? Vec3f(0.0f) : ls->normal;
         sampled.pdfFwd = mis_.pdfLightOrigin(sampled);
-        const Vec3f wPrev = directionTo(cv, cameraPath[std::size_t(t - 2)]);
-        const S f = evalAt(cv, wPrev, ls->wi, false, path);
+        const Vertex& before = cameraPath[std::size_t(t - 2)];
+        const S f = evalAt(cv, directionTo(cv, before), ls->wi, false, path);
         if (f.maxValue() <= 0.0f) return result;
         sampled.beta = mode_.emission(ls->radiance, path) / (pmf * ls->pdf);
         value = cv.beta * f * sampled.beta;
-        const bool visible = sampled.infinite
-                                 ? directionUnoccluded(c_.geometry, cv.p, cv.ng, ls->wi, stats)
-                                 : unoccluded(cv, sampled, stats);
-        if (!visible) return BdptConnection<S>{};
+        const auto T = passes(cv, &before, sampled, path, stats);
+        if (!T) return BdptConnection<S>{};
+        value = throughMedia(value, *T, cv.rU, S(1.0f));
     } else {
-        // Both ends are surface vertices: connect them.
+        // Both ends scatter (surface or medium vertices): connect them.
         const Vertex& lv = lightPath[std::size_t(s - 1)];
-        if (cv.type != BdptVertexType::Surface || lv.type != BdptVertexType::Surface || cv.delta ||
-            lv.delta)
-            return result;
+        if (!cv.scatters() || !lv.scatters() || cv.delta || lv.delta) return result;
         const Vec3f d = lv.p - cv.p;
         const float dist2 = glm::dot(d, d);
         if (!(dist2 > 0.0f)) return result;
         const Vec3f w = d / std::sqrt(dist2);
-        const S fc = evalAt(cv, directionTo(cv, cameraPath[std::size_t(t - 2)]), w, false, path);
+        const Vertex& before = cameraPath[std::size_t(t - 2)];
+        const S fc = evalAt(cv, directionTo(cv, before), w, false, path);
         if (fc.maxValue() <= 0.0f) return result;
         const S fl = evalAt(lv, directionTo(lv, lightPath[std::size_t(s - 2)]), -w, true, path);
         if (fl.maxValue() <= 0.0f) return result;
+        // The geometry term: the cosines are in f (a medium vertex has none), 1/d^2 here.
         value = cv.beta * fc * fl * lv.beta * (1.0f / dist2);
-        if (!unoccluded(cv, lv, stats)) return BdptConnection<S>{};
+        const auto T = passes(cv, &before, lv, path, stats);
+        if (!T) return BdptConnection<S>{};
+        value = throughMedia(value, *T, cv.rU, lv.rU);
     }
     if (value.maxValue() <= 0.0f) return result;
     result.misWeight = mis_.weight(lightPath, s, cameraPath, t, sampled, path);

@@ -1,5 +1,9 @@
 #include "lamina/integrators/bdpt_integrator.h"
 
+#include <limits>
+
+#include "lamina/bsdf/henyey_greenstein.h"
+#include "lamina/integrators/medium_transport.h"
 #include "lamina/integrators/particle_start.h"
 #include "lamina/integrators/scatter.h"
 #include "lamina/integrators/splat.h"
@@ -14,6 +18,7 @@ BdptIntegrator<S>::BdptIntegrator(const IntegratorSetup<S>& setup)
       filter_(setup.filter),
       ablations_(setup.ablations),
       strategies_(setup.strategies),
+      media_(Mode::kRendersMedia && setup.context.scene.hasMedia()),
       mis_(c_, mode_, setup.settings.mis),
       connector_(c_, mode_, ablations_, mis_) {}
 
@@ -23,8 +28,15 @@ std::optional<CameraEstimate<S>> BdptIntegrator<S>::sample(const PixelSample<S>&
     thread_local std::vector<Vertex> cameraPath, lightPath;
     cameraPath.clear();
     lightPath.clear();
-    const Vec3f rayDirection = generateCameraSubpath(cs, ps.sampler, ps.path, cameraPath, ps.stats);
-    generateLightSubpath(ps.sampler, ps.path, lightPath, ps.stats);
+    // With media: the hero channel of both subpaths' free flights (medium_transport.h), drawn
+    // only then, so that a scene without media draws the numbers it drew before.
+    int hero = 0;
+    if constexpr (Mode::kRendersMedia) {
+        if (media_) hero = heroChannel<S>(ps.sampler.get1D());
+    }
+    const Vec3f rayDirection =
+        generateCameraSubpath(cs, ps.sampler, ps.path, hero, cameraPath, ps.stats);
+    generateLightSubpath(ps.sampler, ps.path, hero, lightPath, ps.stats);
 
     S L(0.0f);
     const int nc = int(cameraPath.size()), nl = int(lightPath.size());
@@ -70,16 +82,18 @@ void BdptIntegrator<S>::recordStrategy(int s, int t, const Rgb<double>& weighted
 
 template <SpectrumType S>
 Vec3f BdptIntegrator<S>::generateCameraSubpath(const CameraSample& cs, PixelSampler& sampler,
-                                               typename Mode::Path& path, std::vector<Vertex>& out,
+                                               typename Mode::Path& path, int hero,
+                                               std::vector<Vertex>& out,
                                                PathStatistics& stats) const {
     const auto ray = c_.camera.generateRay(cs.raster.x, cs.raster.y, cs.lens);
     Vertex v;
     v.type = BdptVertexType::Camera;
     v.p = ray.origin;
     v.beta = S(1.0f);
+    v.medium = media_ ? c_.scene.camera.medium : -1;
     out.push_back(v);
     const float pdfDir = c_.camera.rayPdf(ray.direction).direction;
-    randomWalk(ray.origin, ray.direction, S(1.0f), pdfDir, settings_.maxDepth + 1,
+    randomWalk({ray.origin, ray.direction, S(1.0f), pdfDir, v.medium, hero}, settings_.maxDepth + 1,
                TransportMode::Radiance, sampler, path, out, stats);
     // Parallel rays (orthographic): the first vertex's density is the film's, projected.
     if (c_.camera.parallel() && out.size() > 1 && !out[1].infinite)
@@ -89,7 +103,7 @@ Vec3f BdptIntegrator<S>::generateCameraSubpath(const CameraSample& cs, PixelSamp
 
 template <SpectrumType S>
 void BdptIntegrator<S>::generateLightSubpath(PixelSampler& sampler, typename Mode::Path& path,
-                                             std::vector<Vertex>& out,
+                                             int hero, std::vector<Vertex>& out,
                                              PathStatistics& stats) const {
     const auto particle = startParticle(c_.lights, c_.geometry, mode_, sampler, path);
     if (!particle) return;
@@ -106,30 +120,97 @@ void BdptIntegrator<S>::generateLightSubpath(PixelSampler& sampler, typename Mod
     v.pdfFwd = mis_.pdfLightOrigin(v);
     out.push_back(v);
 
+    S beta = particle->beta;
+    int medium = -1;
+    if constexpr (Mode::kRendersMedia) {
+        if (media_) {
+            // The medium of the particle's first ray, as light tracing finds it (docs/media.md):
+            // walking from the camera to the ray's origin; light from infinity through a medium
+            // that reaches infinity is exp(-sigma_t infinity).
+            medium = mediumAt(c_.geometry, c_.scene.camera.medium, Vec3f(c_.scene.camera.position),
+                              particle->origin, stats);
+            if (v.infinite && medium >= 0)
+                beta *= transmittance(mode_.medium(medium, path).sigmaT(),
+                                      std::numeric_limits<float>::infinity());
+        }
+    }
     const std::size_t first = out.size();
-    randomWalk(particle->origin, e.direction, particle->beta, e.pdfDirection, settings_.maxDepth,
-               TransportMode::Importance, sampler, path, out, stats);
-    // From infinity the first vertex's density is the disk's, projected (not 1/d^2).
+    randomWalk({particle->origin, e.direction, beta, e.pdfDirection, medium, hero},
+               settings_.maxDepth, TransportMode::Importance, sampler, path, out, stats);
+    // From infinity the first vertex's density is the disk's, projected on a surface (not
+    // 1/d^2).
     if (v.infinite && out.size() > first) {
         Vertex& v1 = out[first];
-        v1.pdfFwd = e.pdfPosition * std::abs(glm::dot(v1.ng, e.direction));
+        v1.pdfFwd =
+            e.pdfPosition * (v1.onSurface() ? std::abs(glm::dot(v1.ng, e.direction)) : 1.0f);
     }
 }
 
-/// Extends a subpath from its last vertex along (o, d) with throughput `beta` and the
-/// solid-angle density `pdfDir` of d, until `maxSurfaces` surface vertices are added.
+/// Extends a subpath from its last vertex along start's ray until `maxVertices` vertices
+/// (surface or medium) are added. Index-matched interfaces are crossed, not vertices.
 template <SpectrumType S>
-void BdptIntegrator<S>::randomWalk(Vec3f o, Vec3f d, S beta, float pdfDir, int maxSurfaces,
-                                   TransportMode mode, PixelSampler& sampler,
-                                   typename Mode::Path& path, std::vector<Vertex>& out,
-                                   PathStatistics& stats) const {
+void BdptIntegrator<S>::randomWalk(WalkStart start, int maxVertices, TransportMode mode,
+                                   PixelSampler& sampler, typename Mode::Path& path,
+                                   std::vector<Vertex>& out, PathStatistics& stats) const {
+    Vec3f o = start.o, d = start.d;
+    S beta = start.beta;
+    float pdfDir = start.pdfDir;
+    int medium = start.medium;
     const float beta0 = beta.maxValue();
     if (!(beta0 > 0.0f)) return;
     const bool lightPath = mode == TransportMode::Importance;
     const TransportMode bsdfMode = lightPath ? ablations_.lightPathMode() : mode;
-    for (int surfaces = 0; surfaces < maxSurfaces; ++surfaces) {
+    // With media: the subpath's densities per channel relative to the hero's
+    // (medium_transport.h); Russian roulette compares the throughput over their average.
+    S rU(1.0f);
+    int crossings = 0;
+    for (int vertices = 0; vertices < maxVertices;) {
         ++stats.rays;
         const auto hit = c_.geometry.intersect(o, d);
+        if constexpr (Mode::kRendersMedia) {
+            const auto mf = media_
+                                ? sampleMediumFlight(mode_, path, medium, start.hero, sampler, hit)
+                                : std::nullopt;
+            if (mf) {
+                if (!(mf->flight.pdf > 0.0f)) return;
+                mf->weigh(beta, rU);
+                if (mf->flight.scatters) {
+                    if (!(beta.maxValue() > 0.0f)) return;
+                    Vertex v;
+                    v.type = BdptVertexType::Medium;
+                    v.p = o + d * mf->flight.t;
+                    v.medium = medium;
+                    v.g = mf->coefficients.g;
+                    v.beta = beta;
+                    v.rU = rU;
+                    v.pdfFwd = toArea(pdfDir, out.back(), v);
+                    out.push_back(v);
+                    if (++vertices >= maxVertices) return;
+                    Vertex& cur = out.back();
+                    Vertex& before = out[out.size() - 2];
+                    // The dimensions of a surface's scattering: the lobe choice (none here),
+                    // the direction, the roulette.
+                    sampler.skip();
+                    const Vec3f wi = sampleHenyeyGreenstein(d, cur.g, sampler.get2D());
+                    // The phase function is its own density, the same both ways.
+                    pdfDir = henyeyGreenstein(glm::dot(d, wi), cur.g);
+                    before.pdfRev = toArea(pdfDir, cur, before);
+                    const float rrBeta = (beta / rU.average()).maxValue() / beta0;
+                    if (rouletteApplies(rrBeta, vertices, settings_.russianRouletteDepth)) {
+                        if (!russianRoulette(beta, rrBeta, vertices, settings_.russianRouletteDepth,
+                                             sampler.get1D()))
+                            return;
+                    } else {
+                        sampler.skip();
+                    }
+                    if (!beta.isFinite()) return;
+                    crossings = 0;
+                    o = cur.p;
+                    d = wi;
+                    continue;
+                }
+            }
+        }
         if (!hit) {
             if (!lightPath && !c_.lights.infiniteLights().empty()) {
                 Vertex v;
@@ -138,28 +219,41 @@ void BdptIntegrator<S>::randomWalk(Vec3f o, Vec3f d, S beta, float pdfDir, int m
                 v.p = d;
                 v.beta = beta;
                 v.pdfFwd = pdfDir;
+                v.rU = rU;
                 out.push_back(v);
             }
             return;
+        }
+        const ShapeInfo& shape = c_.geometry.shapes()[std::size_t(hit->shape)];
+        if (media_ && surface(*shape.desc).isInterface()) {
+            // An index-matched boundary: the subpath goes straight on into the other medium;
+            // not a vertex (the densities of the vertices on either side see through it).
+            if (++crossings > kMaxInterfaceCrossings) return;
+            medium = mediumAfter(shape, medium, hit->ng, d, d);
+            o = offsetRayOrigin(hit->p, facing(hit->ng, d), c_.geometry.rayOffsetScale());
+            continue;
         }
         Vertex v;
         v.p = hit->p;
         v.ng = hit->ng;
         v.ns = hit->ns;
         v.uv = hit->uv;
-        v.material = c_.geometry.shapes()[std::size_t(hit->shape)].material;
+        v.material = shape.material;
         v.light = c_.lights.lightAt(*hit);
+        v.shape = hit->shape;
+        v.medium = medium;
         v.beta = beta;
+        v.rU = rU;
         v.pdfFwd = toArea(pdfDir, out.back(), v);
         out.push_back(v);
         Vertex& cur = out.back();
         Vertex& before = out[out.size() - 2];
-        if (surfaces + 1 >= maxSurfaces) return;
+        if (++vertices >= maxVertices) return;
 
         const ShadingPoint at(cur.p, cur.ng, cur.ns, -d, c_.geometry.rayOffsetScale());
         const Bxdf<S>& bsdf = mode_.bsdf(cur.material, cur.uv, at.frame, path);
         const auto step =
-            scatter(bsdf, at, bsdfMode, surfaces + 1, settings_.russianRouletteDepth, sampler, beta,
+            scatter(bsdf, at, bsdfMode, vertices, settings_.russianRouletteDepth, sampler, beta,
                     [&](S& b, const BsdfSample<S>& s, const Vec3f& wi) {
                         // A light subpath's matrices act in the order light meets them (the
                         // same product for the other modes' spectra, bit for bit).
@@ -179,9 +273,16 @@ void BdptIntegrator<S>::randomWalk(Vec3f o, Vec3f d, S beta, float pdfDir, int m
                             pdfRev = bsdf.pdf(s.wi, at.wo);
                         }
                         before.pdfRev = toArea(pdfRev, cur, before);
+                        if constexpr (Mode::kRendersMedia) {
+                            if (media_) return (b / rU.average()).maxValue() / beta0;
+                        }
                         return b.maxValue() / beta0;
                     });
         if (!step.next) return;
+        if (media_) {
+            medium = mediumAfter(shape, medium, hit->ng, d, step.next->direction);
+            crossings = 0;
+        }
         o = step.next->origin;
         d = step.next->direction;
     }

@@ -1,5 +1,7 @@
 #include "lamina/integrators/bdpt_mis.h"
 
+#include "lamina/bsdf/henyey_greenstein.h"
+
 namespace lamina::render {
 
 /// Density (area measure at `next`) with which a light subpath starting at light vertex `v`
@@ -66,8 +68,12 @@ float BdptMisWeights<S>::pdf(const Vertex& v, const Vertex* prev, const Vertex& 
     if (v.type == BdptVertexType::Camera)
         return c_.camera.parallel() ? c_.camera.parallelPdf(next.ng, next.onSurface())
                                     : toArea(c_.camera.rayPdf(wn).direction, v, next);
-    const Frame<float> frame = Frame<float>::fromNormal(v.ns);
     const Vec3f wp = directionTo(v, *prev);
+    // A medium vertex samples its phase function, a density over directions of propagation
+    // (from -wp to wn).
+    if (v.type == BdptVertexType::Medium)
+        return toArea(henyeyGreenstein(-glm::dot(wp, wn), v.g), v, next);
+    const Frame<float> frame = Frame<float>::fromNormal(v.ns);
     const Bxdf<S>& bsdf = mode_.bsdf(v.material, v.uv, frame, path);
     return toArea(bsdf.pdf(frame.toLocal(wp), frame.toLocal(wn)), v, next);
 }
@@ -129,11 +135,12 @@ float BdptMisWeights<S>::weight(const std::vector<Vertex>& lightPath, int s,
     };
     // The densities above choose the light vertex x0 as a particle does (emitterProbability);
     // next-event estimation (s = 1) chooses it from the surface vertex x1 next to it
-    // (LightSet::probability). The term of strategy s = 1 is scaled by the ratio of the two.
+    // (LightSet::probability; with no normal at a medium vertex). The term of strategy s = 1 is
+    // scaled by the ratio of the two.
     const Vertex& x0 = s == 0 ? pt : s == 1 ? sampled : lightPath[0];
     const Vertex* x1 = s == 0 ? ptMinus : s == 1 ? &pt : &lightPath[1];
     float nextEvent = 1.0f;
-    if (x1 && x1->type == BdptVertexType::Surface) {
+    if (x1 && x1->scatters()) {
         const float q = selectionRatio(x0, *x1);
         nextEvent = heuristic_ == MisHeuristic::Power ? q * q : q;
     }

@@ -10,14 +10,6 @@
 
 namespace lamina::render {
 
-namespace {
-
-/// Index-matched interfaces a particle may cross between two scattering events before it is
-/// given up (as in path_integrator.cpp).
-constexpr int kMaxInterfaceCrossings = 1024;
-
-}  // namespace
-
 template <SpectrumType S>
 LightIntegrator<S>::LightIntegrator(const IntegratorSetup<S>& setup)
     : c_(setup.context),
@@ -115,21 +107,15 @@ void LightIntegrator<S>::traceParticle(PixelSampler& sampler, typename Mode::Pat
         ++stats.rays;
         const auto hit = c_.geometry.intersect(o, d);
         if constexpr (Mode::kRendersMedia) {
-            if (medium >= 0) {
-                const MediumCoefficients<S> m = mode_.medium(medium, path);
-                const S sigmaT = m.sigmaT();
-                const FreeFlight<S> flight =
-                    sampleFreeFlight(sigmaT, hero, sampler.get1D(),
-                                     hit ? hit->t : std::numeric_limits<float>::infinity());
+            const auto mf =
+                media_ ? sampleMediumFlight(mode_, path, medium, hero, sampler, hit) : std::nullopt;
+            if (mf) {
+                const MediumCoefficients<S>& m = mf->coefficients;
+                const FreeFlight<S>& flight = mf->flight;
                 if (!(flight.pdf > 0.0f)) break;
-                if (!flight.scatters) {
-                    beta *= flight.T / flight.pdf;
-                    rU *= flight.T / flight.pdf;
-                } else {
-                    // A medium vertex: the throughput keeps sigma_s (the phase function is
-                    // its own density), the ratios get every channel's density of the flight.
-                    beta *= flight.T * m.sigmaS / flight.pdf;
-                    rU *= sigmaT * flight.T / flight.pdf;
+                mf->weigh(beta, rU);
+                if (flight.scatters) {
+                    // A medium vertex (its sigma_s is in beta already).
                     if (!(beta.maxValue() > 0.0f)) break;
                     const Vec3f p = o + d * flight.t;
                     // Connection to the camera: the light leaves along d, reaches the lens
@@ -162,8 +148,6 @@ void LightIntegrator<S>::traceParticle(PixelSampler& sampler, typename Mode::Pat
                     ++bounces;
                     continue;
                 }
-            } else if (media_) {
-                sampler.skip();  // the free flight's number, so dimensions keep their meaning
             }
         }
         if (!hit) break;

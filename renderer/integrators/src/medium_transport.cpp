@@ -68,12 +68,9 @@ std::optional<S> segmentTransmittance(const Geometry& geometry, const RenderMode
 
 int mediumAt(const Geometry& geometry, int cameraMedium, const Vec3f& cameraPosition,
              const Vec3f& point, PathStatistics& stats) {
-    // As many boundaries as a path may cross between two scattering events
-    // (path_integrator.cpp): only coincident surfaces the offset cannot separate get near it.
-    constexpr int kMaxCrossings = 1024;
     int medium = cameraMedium;
     Vec3f from = cameraPosition;
-    for (int crossings = 0; crossings < kMaxCrossings; ++crossings) {
+    for (int crossings = 0; crossings < kMaxInterfaceCrossings; ++crossings) {
         const Vec3f toPoint = point - from;
         const float remaining = glm::length(toPoint);
         if (!(remaining > 0.0f)) break;

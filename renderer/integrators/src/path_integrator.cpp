@@ -16,10 +16,6 @@ float powerHeuristic(float a, float b) {
     return a2 + b2 > 0.0f ? a2 / (a2 + b2) : 0.0f;
 }
 
-/// Index-matched interfaces a path may cross between two scattering events before it is
-/// given up: only coincident interfaces that the ray offset cannot separate get near it.
-constexpr int kMaxInterfaceCrossings = 1024;
-
 }  // namespace
 
 template <SpectrumType S>
@@ -83,34 +79,29 @@ S PathIntegrator<S>::radiance(const Vec3f& rayOrigin, const Vec3f& rayDirection,
         ++stats.rays;
         const auto hit = c_.geometry.intersect(o, d);
         if constexpr (Mode::kRendersMedia) {
-            if (medium >= 0) {
-                const MediumCoefficients<S> m = mode_.medium(medium, path);
-                const S sigmaT = m.sigmaT();
-                const FreeFlight<S> flight =
-                    sampleFreeFlight(sigmaT, hero, sampler.get1D(),
-                                     hit ? hit->t : std::numeric_limits<float>::infinity());
+            const auto mf =
+                media_ ? sampleMediumFlight(mode_, path, medium, hero, sampler, hit) : std::nullopt;
+            if (mf) {
+                const MediumCoefficients<S>& m = mf->coefficients;
+                const FreeFlight<S>& flight = mf->flight;
+                if (!(flight.pdf > 0.0f)) break;
                 if (!flight.scatters) {
                     // The flight passes (to the surface, or out of the scene where the hero's
                     // extinction is 0): it had probability T_hero of doing so, channel i
                     // T_i. A light sample's shadow ray has no density of its own (its
                     // transmittance is exact): rL gets the hero's normalisation only.
-                    const S& T = flight.T;
-                    if (!(flight.pdf > 0.0f)) break;
-                    beta *= T / flight.pdf;
-                    rU *= T / flight.pdf;
+                    mf->weigh(beta, rU);
                     rL /= flight.pdf;
                 } else {
                     // A scattering event at t, of density sigma_t T(t) per channel.
                     const S& T = flight.T;
                     const float t = flight.t, pdf = flight.pdf;
-                    if (!(pdf > 0.0f)) break;
                     if (m.emits) {
                         // The medium's emission along the flight, by the collision estimator.
-                        const S rE = rU * sigmaT * T / pdf;
+                        const S rE = rU * mf->sigmaT * T / pdf;
                         L += beta * T * m.sigmaA * m.emission / (pdf * rE.average());
                     }
-                    beta *= T * m.sigmaS / pdf;
-                    rU *= sigmaT * T / pdf;
+                    mf->weigh(beta, rU);
                     if (depth >= settings_.maxDepth || !(beta.maxValue() > 0.0f)) break;
                     const Vec3f p = o + d * t;
                     const auto phase = [&](const Vec3f& wi) {
@@ -152,8 +143,6 @@ S PathIntegrator<S>::radiance(const Vec3f& rayOrigin, const Vec3f& rayDirection,
                     ++depth;
                     continue;
                 }
-            } else if (media_) {
-                sampler.skip();  // the free flight's number, so dimensions keep their meaning
             }
         }
         if (!hit) {

@@ -174,16 +174,13 @@ RenderOptions withCrop(const RenderOptions& options, const PixelBounds& crop) {
 
 void checkMedia(const SceneDesc& scene, RenderModeKind mode, IntegratorKind integrator) {
     if (!scene.hasMedia()) return;
-    if (integrator == IntegratorKind::Bdpt)
-        throw InputError(scene.file.string() +
-                         ": media: the bdpt integrator does not render media yet; use "
-                         "--integrator path or light");
-    if (integrator == IntegratorKind::Light)
+    if (integrator == IntegratorKind::Light || integrator == IntegratorKind::Bdpt)
         for (const MediumDesc& m : scene.media)
             if (m.emits())
-                throw InputError(scene.file.string() + ": media." + m.name +
-                                 ".Le: the light integrator does not render emitting media yet; "
-                                 "use --integrator path");
+                throw InputError(scene.file.string() + ": media." + m.name + ".Le: the " +
+                                 std::string(kIntegratorNames.name(integrator)) +
+                                 " integrator does not render emitting media yet; use "
+                                 "--integrator path");
     if (mode == RenderModeKind::Polarised)
         throw InputError(scene.file.string() +
                          ": media: the polarised mode does not render media yet; use --mode "

@@ -8,8 +8,13 @@
 // (transport_ablations.h), camera-subpath vertices the BSDF. A contribution is the camera
 // prefix, the connection and the light prefix multiplied in that order, which the polarised
 // mode's matrices need (docs/polarisation.md, "Light paths").
+// Through media (docs/media.md) either end may be a medium vertex, which scatters by its
+// phase function; a connection's segment carries its exact transmittance, traced through
+// every index-matched interface on its way, and a contribution is divided by the average over
+// the channels of its two subpaths' density ratios (the spectral MIS of medium_transport.h).
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "lamina/integrators/bdpt_mis.h"
@@ -33,7 +38,11 @@ class BdptConnector {
 
     BdptConnector(const SceneContext& context, const Mode& mode,
                   const TransportAblations& ablations, const BdptMisWeights<S>& mis)
-        : c_(context), mode_(mode), ablations_(ablations), mis_(mis) {}
+        : c_(context),
+          mode_(mode),
+          ablations_(ablations),
+          mis_(mis),
+          media_(Mode::kRendersMedia && context.scene.hasMedia()) {}
 
     /// Strategy (s, t) of the two subpaths; s = 1 and t = 1 draw their fresh vertex from
     /// `sampler` (a light point: 1D + 2D; a lens point: 2D).
@@ -45,12 +54,22 @@ class BdptConnector {
     S evalAt(const Vertex& v, const Vec3f& wPrev, const Vec3f& wNext, bool lightSubpath,
              typename Mode::Path& path) const;
     S emitted(const Vertex& v, const Vec3f& w, typename Mode::Path& path) const;
-    bool unoccluded(const Vertex& a, const Vertex& b, PathStatistics& stats) const;
+    /// Whether light passes between `from` and `to` (a point, or a direction when infinite),
+    /// and with media the transmittance of the segment, which starts in the medium on the side
+    /// of `from` it leaves to (`before`: the vertex its subpath came to `from` from; none for
+    /// a lens); without media 1 when nothing blocks it.
+    std::optional<S> passes(const Vertex& from, const Vertex* before, const Vertex& to,
+                            typename Mode::Path& path, PathStatistics& stats) const;
+    /// With media: `value` times the connection's transmittance `T`, over the average of the
+    /// product of the density ratios of the two subpaths' last vertices (the balance heuristic
+    /// over the channels); without, `value`.
+    S throughMedia(const S& value, const S& T, const S& rUCamera, const S& rULight) const;
 
     SceneContext c_;
     const Mode& mode_;
     TransportAblations ablations_;
     const BdptMisWeights<S>& mis_;
+    bool media_;  ///< the scene has media and the mode renders them
 };
 
 }  // namespace lamina::render

@@ -5,6 +5,11 @@
 // could have produced the same path (bdpt_mis.h). The t >= 2 strategies give the camera
 // sample's value, the t = 1 strategies are splatted. Light subpaths use the adjoint BSDF with
 // the shading-normal correction (shading_normals.h), camera subpaths the BSDF.
+// Through homogeneous media (docs/media.md) both subpaths sample free flights with one hero
+// channel per camera sample and scatter at medium vertices by the Henyey-Greenstein phase
+// function; connections carry the exact transmittance of their segment; a contribution is
+// divided by the average over the channels of its subpaths' densities relative to the hero's
+// (the spectral MIS of medium_transport.h), the strategies weighted as without media.
 #pragma once
 
 #include <vector>
@@ -27,12 +32,22 @@ class BdptIntegrator final : public Integrator<S> {
   private:
     /// Returns the camera ray's direction.
     Vec3f generateCameraSubpath(const CameraSample& cs, PixelSampler& sampler,
-                                typename Mode::Path& path, std::vector<Vertex>& out,
+                                typename Mode::Path& path, int hero, std::vector<Vertex>& out,
                                 PathStatistics& stats) const;
-    void generateLightSubpath(PixelSampler& sampler, typename Mode::Path& path,
+    void generateLightSubpath(PixelSampler& sampler, typename Mode::Path& path, int hero,
                               std::vector<Vertex>& out, PathStatistics& stats) const;
-    void randomWalk(Vec3f o, Vec3f d, S beta, float pdfDir, int maxSurfaces, TransportMode mode,
-                    PixelSampler& sampler, typename Mode::Path& path, std::vector<Vertex>& out,
+    /// Where a subpath's walk starts: its ray, throughput and the solid-angle density of the
+    /// ray's direction, the medium the ray starts in (-1: vacuum) and the hero channel of the
+    /// camera sample's free flights.
+    struct WalkStart {
+        Vec3f o, d;
+        S beta;
+        float pdfDir;
+        int medium, hero;
+    };
+    /// Extends a subpath from its last vertex until `maxVertices` vertices are added.
+    void randomWalk(WalkStart start, int maxVertices, TransportMode mode, PixelSampler& sampler,
+                    typename Mode::Path& path, std::vector<Vertex>& out,
                     PathStatistics& stats) const;
     /// Records a contribution of strategy (s, t) in the strategy images, if they are kept.
     void recordStrategy(int s, int t, const Rgb<double>& weighted, const Rgb<double>& unweighted,
@@ -44,6 +59,7 @@ class BdptIntegrator final : public Integrator<S> {
     const PixelFilter& filter_;
     TransportAblations ablations_;
     StrategyImages* strategies_;
+    bool media_;  ///< the scene has media (SceneDesc::hasMedia) and the mode renders them
     BdptMisWeights<S> mis_;
     BdptConnector<S> connector_;
 };

@@ -1,6 +1,8 @@
 // A vertex of a BDPT subpath (Veach 1997, section 10.2): where it is, what it scatters or
 // emits with, its throughput from the subpath's start, and the forward and reverse area
 // densities the MIS weights are computed from; and the two geometric helpers on vertices.
+// A medium vertex (a scattering event in a homogeneous medium, docs/media.md) has no normal:
+// its area density is Veach's with |cos| = 1 (pbrt-v4's BDPT converts densities the same way).
 #pragma once
 
 #include <cmath>
@@ -10,7 +12,7 @@
 
 namespace lamina::render {
 
-enum class BdptVertexType { Camera, Light, Surface };
+enum class BdptVertexType { Camera, Light, Surface, Medium };
 
 template <SpectrumType S>
 struct BdptVertex {
@@ -24,9 +26,20 @@ struct BdptVertex {
     bool delta = false;       ///< scattered by a delta lobe
     S beta{0.0f};
     float pdfFwd = 0, pdfRev = 0;  ///< area densities (solid angle for infinite vertices)
+    // With media (medium_transport.h):
+    int shape = -1;   ///< the shape of a Surface vertex (its boundary's media)
+    int medium = -1;  ///< the medium the subpath arrived in (a Medium vertex's own)
+    float g = 0;      ///< a Medium vertex's Henyey-Greenstein asymmetry
+    /// The subpath's densities per channel up to this vertex relative to its hero's (the
+    /// spectral MIS ratios rU of medium_transport.h); 1 without media.
+    S rU{1.0f};
 
-    /// Surfaces and area-light points (not lenses, point lights or infinity).
+    /// Surfaces and area-light points (not lenses, point lights, medium vertices or infinity).
     bool onSurface() const { return !infinite && ng != Vec3f(0.0f); }
+    /// A vertex that scatters: what a connection can join (neither end of the path).
+    bool scatters() const {
+        return type == BdptVertexType::Surface || type == BdptVertexType::Medium;
+    }
 };
 
 /// Converts a solid-angle density at `from` towards `to` into an area density at `to`.

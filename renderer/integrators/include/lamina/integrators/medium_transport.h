@@ -17,6 +17,7 @@
 // is exact: no tracking.
 #pragma once
 
+#include <limits>
 #include <optional>
 
 #include "lamina/geometry/geometry.h"
@@ -37,6 +38,11 @@ inline int mediumAfter(const ShapeInfo& shape, int current, const Vec3f& ng, con
     if ((before > 0.0f) != (after > 0.0f)) return current;
     return media->sideOf(after);
 }
+
+/// Index-matched interfaces a path may cross between two scattering events (or a walk from the
+/// camera to a point, mediumAt) before it is given up: only coincident interfaces that the ray
+/// offset cannot separate get near it.
+inline constexpr int kMaxInterfaceCrossings = 1024;
 
 /// The path's hero channel for distance sampling, uniform over the channels.
 template <SpectrumType S>
@@ -72,6 +78,47 @@ FreeFlight<S> sampleFreeFlight(const S& sigmaT, int hero, float u, float tMax) {
     }
     const S T = transmittance(sigmaT, t);
     return {true, t, T, sigmaT[hero] * T[hero]};
+}
+
+/// A free flight of a path through the medium it is in: the medium's coefficients, its
+/// extinction, and the flight sampled towards the surface the path's ray hit.
+template <SpectrumType S>
+struct MediumFlight {
+    MediumCoefficients<S> coefficients;
+    S sigmaT;
+    FreeFlight<S> flight;
+
+    /// The flight's factors on a path's throughput `beta` and its densities per channel
+    /// relative to the hero's `rU`: T / p_h when it passes, T sigma_s / p_h (the phase function
+    /// is its own density) and sigma_t T / p_h at a medium vertex. Only for flight.pdf > 0.
+    void weigh(S& beta, S& rU) const {
+        if (!flight.scatters) {
+            beta *= flight.T / flight.pdf;
+            rU *= flight.T / flight.pdf;
+        } else {
+            beta *= flight.T * coefficients.sigmaS / flight.pdf;
+            rU *= sigmaT * flight.T / flight.pdf;
+        }
+    }
+};
+
+/// The free flight of a path in `medium` (-1: vacuum) along a ray that hit `hit` (none: it
+/// leaves the scene), sampled with the path's `hero` channel. In vacuum there is none, and the
+/// flight's number is skipped so that the sampler's dimensions keep their meaning.
+template <SpectrumType S>
+std::optional<MediumFlight<S>> sampleMediumFlight(const RenderMode<S>& mode,
+                                                  typename RenderMode<S>::Path& path, int medium,
+                                                  int hero, PixelSampler& sampler,
+                                                  const std::optional<SurfaceHit>& hit) {
+    if (medium < 0) {
+        sampler.skip();
+        return std::nullopt;
+    }
+    const MediumCoefficients<S> m = mode.medium(medium, path);
+    const S sigmaT = m.sigmaT();
+    return MediumFlight<S>{m, sigmaT,
+                           sampleFreeFlight(sigmaT, hero, sampler.get1D(),
+                                            hit ? hit->t : std::numeric_limits<float>::infinity())};
 }
 
 /// The transmittance from `from` (already off its surface) along the unit `direction` for

@@ -76,10 +76,9 @@ struct RenderResult {
 std::atomic<bool>& renderInterruptFlag();
 
 /// Renders the scene. `progress` is called from the calling thread now and then.
-/// Refuses a scene with media (SceneDesc::hasMedia) for what does not render media yet: the
-/// bdpt integrator, the light integrator with an emitting medium, and the polarised mode
-/// (docs/media.md). The renderer calls it;
-/// experiments call it before they start work.
+/// Refuses a scene with media (SceneDesc::hasMedia) for what does not render it yet: the
+/// light and bdpt integrators with an emitting medium, and the polarised mode (docs/media.md). The
+/// renderer calls it; experiments call it before they start work.
 void checkMedia(const SceneDesc& scene, RenderModeKind mode, IntegratorKind integrator);
 
 RenderResult renderScene(const SceneDesc& scene, const RenderOptions& options,
