@@ -70,15 +70,36 @@ FringeColors::FringeColors() {
     }
 }
 
+namespace {
+
+std::complex<double> interpolated(const std::vector<std::complex<double>>& e, double x) {
+    const double f = x / FringeColors::kStep;
+    const int j = std::min(int(f), int(e.size()) - 2);
+    const double a = f - j;
+    return e[j] * (1.0 - a) + e[j + 1] * a;
+}
+
+}  // namespace
+
 std::complex<double> FringeColors::operator()(int channel, double pathDifferenceNm) const {
     const double x = std::max(0.0, pathDifferenceNm);
     if (!(x < kMaxPathDifference)) return 0.0;
-    const auto& e = envelope_[channel];
-    const double f = x / kStep;
-    const int j = std::min(int(f), int(e.size()) - 2);
-    const double a = f - j;
-    const std::complex<double> envelope = e[j] * (1.0 - a) + e[j + 1] * a;
-    return envelope * std::polar(1.0, 2.0 * kPi<double> * x * meanWavenumber_[channel]);
+    return interpolated(envelope_[channel], x) *
+           std::polar(1.0, 2.0 * kPi<double> * x * meanWavenumber_[channel]);
+}
+
+void FringeColors::atMultiples(int channel, double pathDifferenceNm, int count,
+                               std::complex<double>* out) const {
+    const double x = std::max(0.0, pathDifferenceNm);
+    const std::complex<double> turn =
+        std::polar(1.0, 2.0 * kPi<double> * x * meanWavenumber_[channel]);
+    std::complex<double> carrier = 1.0;
+    for (int m = 1; m <= count; ++m) {
+        carrier *= turn;
+        out[m - 1] = m * x < kMaxPathDifference
+                         ? interpolated(envelope_[channel], m * x) * carrier
+                         : std::complex<double>(0.0);
+    }
 }
 
 }  // namespace lamina

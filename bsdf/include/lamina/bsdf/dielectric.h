@@ -232,11 +232,8 @@ class DielectricBxdf final : public Bxdf<S> {
     // The film's reflectance at the cosine `cosTheta` to the microfacet normal (negative: from
     // inside); index-matched, the free-standing film's (air on both sides).
     S filmReflectance(Float cosTheta) const {
-        const Float eta = indexMatched() ? Float(1) : eta_;
-        S r;
-        for (int i = 0; i < S::kSize; ++i)
-            r[i] = film_->reflectance(i, ThinFilm<S>::dielectricSide(cosTheta, eta));
-        return r;
+        return film_->reflectance(
+            ThinFilm<S>::dielectricSide(cosTheta, indexMatched() ? Float(1) : eta_));
     }
 
     // The probability of choosing reflection: F, or the mean of the film's F.

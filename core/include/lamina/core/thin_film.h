@@ -50,6 +50,13 @@ std::complex<T> filmCosine(T n1, std::complex<T> n, T sin2ThetaI) {
     return principalSqrt(C(1) - sin2);
 }
 
+/// a / b as a conj(b) / |b|^2: libgcc's complex division (__divdc3, with its C99 infinity
+/// handling) was a fifth of a film's cost; the denominators here are never 0 or huge.
+template <std::floating_point T>
+std::complex<T> quotient(std::complex<T> a, std::complex<T> b) {
+    return a * std::conj(b) / std::norm(b);
+}
+
 /// One interface's amplitudes from medium a to medium b (complex indices and cosines), in
 /// lamina's sign convention; an index-matched boundary at grazing incidence passes the light.
 template <std::floating_point T>
@@ -63,10 +70,10 @@ void interfaceAmplitudes(std::complex<T> a, std::complex<T> cosA, std::complex<T
         ts = tp = C(1);
         return;
     }
-    rs = (a * cosA - b * cosB) / sDen;
-    rp = (b * cosA - a * cosB) / pDen;
-    ts = T(2) * a * cosA / sDen;
-    tp = T(2) * a * cosA / pDen;
+    rs = quotient(a * cosA - b * cosB, sDen);
+    rp = quotient(b * cosA - a * cosB, pDen);
+    ts = quotient(T(2) * a * cosA, sDen);
+    tp = quotient(T(2) * a * cosA, pDen);
 }
 
 }  // namespace detail
@@ -100,8 +107,8 @@ FresnelAmplitudes<T> thinFilmAmplitudes(T cosThetaI, const FilmStack<T>& stack,
             t = C(0);
             return;
         }
-        r = (r12 + r23 * twice) / den;
-        t = t12 * t23 * once / den;
+        r = detail::quotient(r12 + r23 * twice, den);
+        t = detail::quotient(t12 * t23 * once, den);
     };
     combine(rs12, rs23, ts12, ts23, a.rs, a.ts);
     combine(rp12, rp23, tp12, tp23, a.rp, a.tp);
@@ -118,8 +125,8 @@ FresnelAmplitudes<T> thinFilmAmplitudes(T cosThetaI, const FilmStack<T>& stack,
 template <std::floating_point T>
 struct AirySeries {
     T c0 = T(0);
-    T ratio = T(0);  ///< sqrt(R12 R23)
-    T psi = T(0);    ///< arg(-r12 r23)
+    T ratio = T(0);                      ///< sqrt(R12 R23)
+    std::complex<T> turn{T(1), T(0)};  ///< exp(i psi), psi = arg(-r12 r23)
 };
 
 /// The series of both polarisations and the optical path difference per unit thickness,
@@ -150,7 +157,8 @@ std::optional<AiryFourier<T>> airyFourier(T cosThetaI, const FilmStack<T>& stack
         a.c0 = den > T(0) ? R12 + sqr(T12) * R23 / den : T(1);
         a.ratio = std::sqrt(R12 * R23);
         const C q = -r12 * r23;
-        a.psi = std::norm(q) > T(0) ? std::arg(q) : T(0);
+        const T qAbs = std::abs(q);
+        if (qAbs > T(0)) a.turn = q / qAbs;
         return a;
     };
     return AiryFourier<T>{series(rs12, rs23), series(rp12, rp23),

@@ -26,6 +26,12 @@ class FringeColors {
     /// where the fringes of every channel have averaged out to below 1e-3.
     std::complex<double> operator()(int channel, double pathDifferenceNm) const;
 
+    /// F_c(m x) for m = 1 .. count into out[0 .. count - 1]: the same values as operator(),
+    /// with the carrier exp(2 pi i m x nu_c) turned by one multiplication per m instead of a
+    /// sine and cosine each (a film's series needs a run of multiples).
+    void atMultiples(int channel, double pathDifferenceNm, int count,
+                     std::complex<double>* out) const;
+
     /// The channel's centre wavelength: 1 / the mean wavenumber of its sensitivity's positive
     /// part (596, 538 and 452 nm for red, green and blue).
     double meanWavelength(int channel) const { return 1.0 / meanWavenumber_[channel]; }
