@@ -84,12 +84,14 @@ MaterialModel readConductor(const JsonReader& r) {
         r.failAt("fresnel", "\"exact\" needs the eta and k of the conductor, not f0");
     c.thinFilm = readThinFilm(r);
     if (c.thinFilm && c.optics.form == ConductorOptics::Form::F0F82)
-        r.failAt("thin_film", "needs the conductor's n and k (material, eta and k, or nk_file), "
-                              "not f0 and f82");
+        r.failAt("thin_film",
+                 "needs the conductor's n and k (material, eta and k, or nk_file), "
+                 "not f0 and f82");
     if (c.thinFilm && c.fresnel != FresnelChoice::Auto && c.fresnel != FresnelChoice::Exact)
-        r.failAt("thin_film", "needs the exact Fresnel equations; expected fresnel \"exact\" or "
-                              "\"auto\", got \"" + std::string(kFresnelChoiceNames.name(c.fresnel)) +
-                                  "\"");
+        r.failAt("thin_film",
+                 "needs the exact Fresnel equations; expected fresnel \"exact\" or "
+                 "\"auto\", got \"" +
+                     std::string(kFresnelChoiceNames.name(c.fresnel)) + "\"");
     return c;
 }
 

@@ -71,8 +71,7 @@ std::optional<ThinFilmParams> readThinFilm(const JsonReader& r) {
     if (!r.has("thin_film")) return std::nullopt;
     const JsonReader f = r.child("thin_film");
     ThinFilmParams film;
-    film.thicknessNm =
-        f.requiredNumber("thickness_nm", {0.0, ThinFilmParams::kMaxThicknessNm});
+    film.thicknessNm = f.requiredNumber("thickness_nm", {0.0, ThinFilmParams::kMaxThicknessNm});
     // A film less dense than the medium above it could be evanescent at grazing angles; lamina
     // films are coatings of index >= 1 under air (or glass).
     film.ior = f.number("ior", film.ior, {1.0, ThinFilmParams::kMaxIor});

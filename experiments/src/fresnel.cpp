@@ -6,11 +6,11 @@
 
 #include "lamina/bsdf/fresnel.h"
 #include "lamina/core/error.h"
-#include "lamina/core/thin_film.h"
-#include "lamina/spectral/fringe_colors.h"
 #include "lamina/core/hash.h"
+#include "lamina/core/thin_film.h"
 #include "lamina/spectral/color_difference.h"
 #include "lamina/spectral/color_space.h"
+#include "lamina/spectral/fringe_colors.h"
 #include "lamina/spectral/ior_spectrum.h"
 #include "lamina/spectral/rgb_to_spectrum.h"
 
@@ -100,7 +100,8 @@ FresnelMaterial analyse(const std::string& materialName, const Film& film) {
     }
     // The approximations' F0 and F82 are the bare material's (with a film they show what RGB
     // mode would give without it).
-    const Rgb<double> f0 = reflectanceColor([&](double nm) { return exactReflectance(ior, nm, 1.0, {}); });
+    const Rgb<double> f0 =
+        reflectanceColor([&](double nm) { return exactReflectance(ior, nm, 1.0, {}); });
     const Rgb<double> f82 =
         reflectanceColor([&](double nm) { return exactReflectance(ior, nm, kF82Cosine, {}); });
     const double f90Shadowed = std::min(1.0, luminance(f0) / 0.04);

@@ -96,9 +96,8 @@ void FringeColors::atMultiples(int channel, double pathDifferenceNm, int count,
     std::complex<double> carrier = 1.0;
     for (int m = 1; m <= count; ++m) {
         carrier *= turn;
-        out[m - 1] = m * x < kMaxPathDifference
-                         ? interpolated(envelope_[channel], m * x) * carrier
-                         : std::complex<double>(0.0);
+        out[m - 1] = m * x < kMaxPathDifference ? interpolated(envelope_[channel], m * x) * carrier
+                                                : std::complex<double>(0.0);
     }
 }
 

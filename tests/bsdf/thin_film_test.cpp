@@ -38,16 +38,19 @@ TEST(ThinFilm, NormalIncidenceIsTheClosedForm) {
             // A soap film in air, and a film on glass seen from the air and from the glass.
             for (const auto& [n1, n2, n3] : std::array<std::array<double, 3>, 4>{
                      {{1.0, 1.33, 1.0}, {1.0, 1.38, 1.52}, {1.52, 2.4, 1.0}, {1.0, 1.2, 3.0}}}) {
-                const FresnelAmplitudes<double> a = thinFilmAmplitudes(1.0, {n1, n2, C(n3)}, d / nm);
+                const FresnelAmplitudes<double> a =
+                    thinFilmAmplitudes(1.0, {n1, n2, C(n3)}, d / nm);
                 const double expected = normalIncidenceClosedForm(n1, n2, n3, d, nm);
                 EXPECT_NEAR(std::norm(a.rs), expected, 1e-12) << d << " nm at " << nm;
                 EXPECT_NEAR(std::norm(a.rp), expected, 1e-12) << d << " nm at " << nm;
             }
         }
     // On a conductor (gold at 550 nm): the complex form, delta = 2 pi n2 d / lambda.
-    const C r12 = (1.0 - 1.45) / (1.0 + 1.45), r23 = (1.45 - C(0.42, 2.35)) / (1.45 + C(0.42, 2.35));
+    const C r12 = (1.0 - 1.45) / (1.0 + 1.45),
+            r23 = (1.45 - C(0.42, 2.35)) / (1.45 + C(0.42, 2.35));
     const C e = std::polar(1.0, 2 * 2 * kPi<double> * 1.45 * 120 / 550);
-    const FresnelAmplitudes<double> a = thinFilmAmplitudes(1.0, {1.0, 1.45, C(0.42, 2.35)}, 120.0 / 550);
+    const FresnelAmplitudes<double> a =
+        thinFilmAmplitudes(1.0, {1.0, 1.45, C(0.42, 2.35)}, 120.0 / 550);
     EXPECT_NEAR(std::norm(a.rs), std::norm((r12 + r23 * e) / (1.0 + r12 * r23 * e)), 1e-12);
 }
 
@@ -129,11 +132,14 @@ TEST(ThinFilm, RgbModeIsTheColourOfTheExactSpectrum) {
     };
     const Case cases[] = {
         {R"({"type":"dielectric","ior":1.0,"thin_film":{"thickness_nm":380,"ior":1.33}})",
-         {1.0, 1.33, C(1.0)}, 380},
+         {1.0, 1.33, C(1.0)},
+         380},
         {R"({"type":"dielectric","ior":1.5,"thin_film":{"thickness_nm":250,"ior":2.4}})",
-         {1.0, 2.4, C(1.5)}, 250},
+         {1.0, 2.4, C(1.5)},
+         250},
         {R"({"type":"conductor","eta":0.3,"k":3,"thin_film":{"thickness_nm":500,"ior":1.5}})",
-         {1.0, 1.5, C(0.3, 3)}, 500},
+         {1.0, 1.5, C(0.3, 3)},
+         500},
     };
     for (const Case& c : cases) {
         const auto b = buildBxdf(parseMaterialArgument(c.json), SpectrumContext<Rgbd>{});
@@ -143,8 +149,8 @@ TEST(ThinFilm, RgbModeIsTheColourOfTheExactSpectrum) {
             const auto s = b->sample(wo, 0.0, {0.5, 0.5}, TransportMode::Radiance);
             ASSERT_TRUE(s && !s->isTransmission());
             const Rgbd rgb = s->weight * s->pdf;
-            const Rgb<double> expected =
-                reflectanceColor([&](double nm) { return filmReflectance(cosI, c.stack, c.d, nm); });
+            const Rgb<double> expected = reflectanceColor(
+                [&](double nm) { return filmReflectance(cosI, c.stack, c.d, nm); });
             for (int k = 0; k < 3; ++k)
                 EXPECT_NEAR(rgb[k], expected[k], 5e-5) << c.json << " at " << theta;
         }
@@ -155,15 +161,16 @@ TEST(ThinFilm, SpectralModeIsTheAirySumAtEachWavelength) {
     auto lambda = SampledWavelengths<double>::fixed({420, 510, 600, 690});
     const SpectrumContext<SampledSpectrum<double>> context{lambda};
     const auto b = buildBxdf(
-        parseMaterialArgument(R"({"type":"dielectric","ior":1.5,"thin_film":{"thickness_nm":300,"ior":1.33}})"),
+        parseMaterialArgument(
+            R"({"type":"dielectric","ior":1.5,"thin_film":{"thickness_nm":300,"ior":1.33}})"),
         context);
     const double cosI = std::cos(radians(35.0));
     const Vec3d wo(std::sin(radians(35.0)), 0, cosI);
     const auto s = b->sample(wo, 0.0, {0.5, 0.5}, TransportMode::Radiance);
     ASSERT_TRUE(s && !s->isTransmission());
     for (int i = 0; i < 4; ++i)
-        EXPECT_NEAR(s->weight[i] * s->pdf, filmReflectance(cosI, {1.0, 1.33, C(1.5)}, 300, lambda[i]),
-                    1e-12);
+        EXPECT_NEAR(s->weight[i] * s->pdf,
+                    filmReflectance(cosI, {1.0, 1.33, C(1.5)}, 300, lambda[i]), 1e-12);
     // The refracted share is the rest, and no wavelength is dropped (the film bends nothing).
     const auto t = b->sample(wo, 1 - 1e-12, {0.5, 0.5}, TransportMode::Importance);
     ASSERT_TRUE(t && t->isTransmission());
@@ -175,16 +182,17 @@ TEST(ThinFilm, SpectralModeIsTheAirySumAtEachWavelength) {
 TEST(ThinFilm, MaterialsRefuseFilmsTheyCannotCarry) {
     EXPECT_NO_THROW(parseMaterialArgument(
         R"({"type":"conductor","material":"Au","thin_film":{"thickness_nm":100}})"));
-    for (const char* bad : {
-             R"({"type":"conductor","f0":0.9,"thin_film":{"thickness_nm":100}})",
-             R"({"type":"conductor","material":"Au","fresnel":"f82","thin_film":{"thickness_nm":100}})",
-             R"({"type":"dielectric","thin_film":{"ior":1.4}})",
-             R"({"type":"dielectric","thin_film":{"thickness_nm":-1}})",
-             R"({"type":"dielectric","thin_film":{"thickness_nm":100,"ior":0.8}})",
-             R"({"type":"dielectric","thin_film":{"thickness_nm":1e9}})",
-             R"({"type":"dielectric","thin_film":{"thickness_nm":100,"colour":1}})",
-             R"({"type":"layered","base":{"type":"conductor","material":"Au","roughness":0.3,"thin_film":{"thickness_nm":100}}})",
-         })
+    for (
+        const char* bad : {
+            R"({"type":"conductor","f0":0.9,"thin_film":{"thickness_nm":100}})",
+            R"({"type":"conductor","material":"Au","fresnel":"f82","thin_film":{"thickness_nm":100}})",
+            R"({"type":"dielectric","thin_film":{"ior":1.4}})",
+            R"({"type":"dielectric","thin_film":{"thickness_nm":-1}})",
+            R"({"type":"dielectric","thin_film":{"thickness_nm":100,"ior":0.8}})",
+            R"({"type":"dielectric","thin_film":{"thickness_nm":1e9}})",
+            R"({"type":"dielectric","thin_film":{"thickness_nm":100,"colour":1}})",
+            R"({"type":"layered","base":{"type":"conductor","material":"Au","roughness":0.3,"thin_film":{"thickness_nm":100}}})",
+        })
         EXPECT_THROW(parseMaterialArgument(bad), InputError) << bad;
 }
 

@@ -159,7 +159,6 @@ inline std::vector<BsdfCase> bsdfCases() {
                                   R"("k":[3.42,2.35,1.77],"alpha":0.3,)"
                                   R"("thin_film":{"thickness_nm":300,"ior":2.0}})")});
 
-
     // Layered: the article's default (GGX + Lambert, shadowed Schlick, fresnel coupling),
     // sum coupling with Frostbite, and a transmissive stack.
     auto layered = [&](double alpha, DiffuseModel dm, LayerCoupling c, double t, FresnelKind fk) {

@@ -214,7 +214,8 @@ class DielectricBxdf final : public Bxdf<S> {
     // The Mueller matrix of a lobe value for the pair (wo, wi) on the microfacet m.
     MuellerMatrix<S> polarised(const S& value, const V3& wo, const V3& wi, const V3& m) const {
         if (wo.z * wi.z > Float(0)) {
-            Fresnel<S> fresnel = Fresnel<S>::dielectric(S(indexMatched() && film_ ? Float(1) : eta_));
+            Fresnel<S> fresnel =
+                Fresnel<S>::dielectric(S(indexMatched() && film_ ? Float(1) : eta_));
             fresnel.film = film_;
             return reflectionMueller(value, fresnel, wo, wi);
         }

@@ -59,8 +59,8 @@ class MaterialBuilder {
 
     std::unique_ptr<Bxdf<S>> buildModel(const DielectricMaterial& d) const {
         const Float eta = d.spectrum ? ctx_.dielectricIor(*d.spectrum) : Float(d.ior);
-        return std::make_unique<DielectricBxdf<S>>(eta, distribution(d.microfacet),
-                                                   d.microfacet.g2, thinFilm(d.thinFilm));
+        return std::make_unique<DielectricBxdf<S>>(eta, distribution(d.microfacet), d.microfacet.g2,
+                                                   thinFilm(d.thinFilm));
     }
 
     // The film of a material in this variant: spectral variants evaluate it at the path's
@@ -93,8 +93,9 @@ class MaterialBuilder {
                 S eta, k;
                 for (int i = 0; i < S::kSize; ++i) {
                     const double nm = FringeColors::rec709().meanWavelength(i);
-                    const NkTable::Nk nk = o.table ? (*o.table)(nm)
-                                                   : NkTable::Nk{o.spectrum->n(nm), o.spectrum->k(nm)};
+                    const NkTable::Nk nk = o.table
+                                               ? (*o.table)(nm)
+                                               : NkTable::Nk{o.spectrum->n(nm), o.spectrum->k(nm)};
                     eta[i] = Float(nk.n);
                     k[i] = Float(nk.k);
                 }

@@ -119,7 +119,8 @@ MuellerMatrix<S> transmissionMueller(const S& value, typename S::Float etaLight,
             // boundary's eta is 1 / etaLight.
             const bool fromOutside = wi.z > F(0);
             const F eta = fromOutside ? etaLight : F(1) / etaLight;
-            return film->amplitudes(i, ThinFilm<S>::dielectricSide(fromOutside ? cosI : -cosI, eta));
+            return film->amplitudes(i,
+                                    ThinFilm<S>::dielectricSide(fromOutside ? cosI : -cosI, eta));
         }
         return fresnelAmplitudes(cosI, std::complex<F>(etaLight));
     });

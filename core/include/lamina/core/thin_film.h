@@ -46,7 +46,8 @@ std::complex<T> filmCosine(T n1, std::complex<T> n, T sin2ThetaI) {
     using C = std::complex<T>;
     const T s = sqr(n1) * sin2ThetaI;
     const C n2 = n * n;
-    const C sin2 = n.imag() == T(0) ? C(s / sqr(n.real()), T(0)) : std::conj(n2) * (s / std::norm(n2));
+    const C sin2 =
+        n.imag() == T(0) ? C(s / sqr(n.real()), T(0)) : std::conj(n2) * (s / std::norm(n2));
     return principalSqrt(C(1) - sin2);
 }
 
@@ -125,7 +126,7 @@ FresnelAmplitudes<T> thinFilmAmplitudes(T cosThetaI, const FilmStack<T>& stack,
 template <std::floating_point T>
 struct AirySeries {
     T c0 = T(0);
-    T ratio = T(0);                      ///< sqrt(R12 R23)
+    T ratio = T(0);                    ///< sqrt(R12 R23)
     std::complex<T> turn{T(1), T(0)};  ///< exp(i psi), psi = arg(-r12 r23)
 };
 
@@ -161,8 +162,7 @@ std::optional<AiryFourier<T>> airyFourier(T cosThetaI, const FilmStack<T>& stack
         if (qAbs > T(0)) a.turn = q / qAbs;
         return a;
     };
-    return AiryFourier<T>{series(rs12, rs23), series(rp12, rp23),
-                          T(2) * stack.nFilm * cos2.real()};
+    return AiryFourier<T>{series(rs12, rs23), series(rp12, rp23), T(2) * stack.nFilm * cos2.real()};
 }
 
 }  // namespace lamina
