@@ -20,7 +20,9 @@ for scene in scenes/*.json scenes/reciprocity/*.json scenes/stress/*.json; do
     "$lamina" render "$scene" -o "$image" --integrator "$integrator" --mode "$mode" --spp 4 \
       --resolution 64x48 --seed 7 --threads 1 -q "$@"
     if [ -n "$baseline" ]; then
-      if ! idiff -q -fail 0 -failpercent 0 -warn 0 "$baseline/$(basename "$image")" "$image" >/dev/null; then
+      if [ ! -e "$baseline/$(basename "$image")" ]; then
+        echo "render-identity: $image is new (no image of it in $baseline)"
+      elif ! idiff -q -fail 0 -failpercent 0 -warn 0 "$baseline/$(basename "$image")" "$image" >/dev/null; then
         echo "render-identity: $image differs from $baseline"; status=1
       fi
     fi

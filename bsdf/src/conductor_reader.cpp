@@ -82,6 +82,16 @@ MaterialModel readConductor(const JsonReader& r) {
     prepareEnergyTables(c);
     if (c.optics.form == ConductorOptics::Form::F0F82 && c.fresnel == FresnelChoice::Exact)
         r.failAt("fresnel", "\"exact\" needs the eta and k of the conductor, not f0");
+    c.thinFilm = readThinFilm(r);
+    if (c.thinFilm && c.optics.form == ConductorOptics::Form::F0F82)
+        r.failAt("thin_film",
+                 "needs the conductor's n and k (material, eta and k, or nk_file), "
+                 "not f0 and f82");
+    if (c.thinFilm && c.fresnel != FresnelChoice::Auto && c.fresnel != FresnelChoice::Exact)
+        r.failAt("thin_film",
+                 "needs the exact Fresnel equations; expected fresnel \"exact\" or "
+                 "\"auto\", got \"" +
+                     std::string(kFresnelChoiceNames.name(c.fresnel)) + "\"");
     return c;
 }
 
@@ -112,6 +122,7 @@ void texturedConductor(MaterialModel& model, const TexturedValues& t) {
 void conductorSpectra(const MaterialModel& model, std::vector<std::string>& out) {
     const auto& c = std::get<ConductorMaterial>(model);
     if (c.optics.spectrum) out.push_back(c.optics.spectrum->name() + " (n, k)");
+    describeThinFilm(c.thinFilm, out);
 }
 
 }  // namespace
@@ -140,10 +151,12 @@ extern const MaterialKind kConductorMaterial{"conductor",
     "g2": {"$ref": "#/$defs/g2"},
     "sampling": {"$ref": "#/$defs/sampling"},
     "fresnel": {"enum": ["schlick", "schlick_shadowed", "schlick_sg", "f82", "exact", "auto"]},
-    "multiscatter": {"type": "boolean", "default": false}
+    "multiscatter": {"type": "boolean", "default": false},
+    "thin_film": {"$ref": "#/$defs/thin_film"}
   },
   "examples": [
     {"type": "conductor", "material": "Au", "roughness": 0.2, "multiscatter": true},
+    {"type": "conductor", "material": "Ti", "roughness": 0.1, "thin_film": {"thickness_nm": 250, "ior": 2.4}},
     {
       "type": "conductor",
       "eta": [0.2, 0.9, 1.1],

@@ -108,6 +108,7 @@ MaterialModel readDielectric(const JsonReader& r) {
     d.microfacet.ndf = r.choice("distribution", NdfKind::Ggx, kDielectricNdfNames);
     readRoughness(r, 0.0, d.microfacet);
     readMicrofacetSwitches(r, d.microfacet, false);
+    d.thinFilm = readThinFilm(r);
     return d;
 }
 
@@ -131,6 +132,7 @@ void texturedDielectric(MaterialModel& model, const TexturedValues& t) {
 void dielectricSpectra(const MaterialModel& model, std::vector<std::string>& out) {
     const auto& d = std::get<DielectricMaterial>(model);
     if (d.spectrum) out.push_back(d.spectrum->name() + " (dispersion)");
+    describeThinFilm(d.thinFilm, out);
 }
 
 void thinDielectricSpectra(const MaterialModel& model, std::vector<std::string>& out) {
@@ -163,10 +165,12 @@ extern const MaterialKind kDielectricMaterial{"dielectric",
     "alpha_x": {"type": "number", "minimum": 0, "maximum": 1},
     "alpha_y": {"type": "number", "minimum": 0, "maximum": 1},
     "anisotropy": {"type": "number", "minimum": 0, "maximum": 0.99, "default": 0},
-    "g2": {"$ref": "#/$defs/g2"}
+    "g2": {"$ref": "#/$defs/g2"},
+    "thin_film": {"$ref": "#/$defs/thin_film"}
   },
   "examples": [
     {"type": "dielectric", "ior": 1.5, "roughness": 0.1},
+    {"type": "dielectric", "ior": 1.0, "thin_film": {"thickness_nm": 400, "ior": 1.33}},
     {"type": "dielectric", "ior": "bk7"},
     {
       "type": "dielectric",

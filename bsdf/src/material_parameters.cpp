@@ -67,6 +67,25 @@ FresnelChoice readFresnel(const JsonReader& r, FresnelChoice defaultValue, bool 
                      : r.choice("fresnel", defaultValue, kWithoutAuto);
 }
 
+std::optional<ThinFilmParams> readThinFilm(const JsonReader& r) {
+    if (!r.has("thin_film")) return std::nullopt;
+    const JsonReader f = r.child("thin_film");
+    ThinFilmParams film;
+    film.thicknessNm = f.requiredNumber("thickness_nm", {0.0, ThinFilmParams::kMaxThicknessNm});
+    // A film less dense than the medium above it could be evanescent at grazing angles; lamina
+    // films are coatings of index >= 1 under air (or glass).
+    film.ior = f.number("ior", film.ior, {1.0, ThinFilmParams::kMaxIor});
+    f.finish();
+    return film;
+}
+
+void describeThinFilm(const std::optional<ThinFilmParams>& film, std::vector<std::string>& out) {
+    if (film)
+        out.push_back("thin film " + formatNumber(film->thicknessNm) + " nm of index " +
+                      formatNumber(film->ior) +
+                      " (spectral: Airy sum per wavelength; RGB: Belcour-Barla closed form)");
+}
+
 std::string knownNames(const std::vector<std::string>& names) {
     std::string list;
     for (const auto& n : names)

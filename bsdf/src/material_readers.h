@@ -33,6 +33,10 @@ std::shared_ptr<const IorSpectrum> loadIorAt(const JsonReader& r, const std::str
 /// `ior` (a number, a named glass or a dispersion formula) or `ior_file`: the RGB-mode index
 /// and, unless a plain number, the spectrum (dielectric_reader.cpp).
 std::pair<double, std::shared_ptr<const IorSpectrum>> readDielectricIor(const JsonReader& r);
+/// `thin_film`: {"thickness_nm": ..., "ior": ...}, or nullopt without the key.
+std::optional<ThinFilmParams> readThinFilm(const JsonReader& r);
+/// What `lamina info` lists of a film (with the spectral data): "thin film 380 nm of index 1.33".
+void describeThinFilm(const std::optional<ThinFilmParams>& film, std::vector<std::string>& out);
 /// "a, b, c" for a message.
 std::string knownNames(const std::vector<std::string>& names);
 

@@ -53,6 +53,8 @@ void readBase(const JsonReader& b, StandardMaterial& s) {
             b.fail(
                 "a conductor base needs a roughness (alpha >= 0.001): a smooth one would be a "
                 "second delta lobe under the interface, which the stack does not have");
+        if (conductor.thinFilm)
+            b.failAt("thin_film", "is not supported on the conductor base of a layered material");
         s.conductorBase = std::make_shared<const ConductorMaterial>(std::move(conductor));
         s.diffuse.reset();
         return;

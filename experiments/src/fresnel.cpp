@@ -7,8 +7,10 @@
 #include "lamina/bsdf/fresnel.h"
 #include "lamina/core/error.h"
 #include "lamina/core/hash.h"
+#include "lamina/core/thin_film.h"
 #include "lamina/spectral/color_difference.h"
 #include "lamina/spectral/color_space.h"
+#include "lamina/spectral/fringe_colors.h"
 #include "lamina/spectral/ior_spectrum.h"
 #include "lamina/spectral/rgb_to_spectrum.h"
 
@@ -16,11 +18,42 @@ namespace lamina::experiments {
 
 namespace {
 
-/// The exact reflectance of an interface from air at one wavelength.
-double exactReflectance(const IorSpectrum& ior, double nm, double cosTheta) {
+/// A film on the materials: thickness (0: none) and index.
+struct Film {
+    double nm = 0, ior = 1.33;
+};
+
+/// The exact reflectance of an interface from air at one wavelength, with the film's Airy sum
+/// (core/thin_film.h) when there is one.
+double exactReflectance(const IorSpectrum& ior, double nm, double cosTheta, const Film& film) {
     const double k = ior.k(nm);
+    if (film.nm > 0) {
+        const FresnelAmplitudes<double> a = thinFilmAmplitudes(
+            cosTheta, FilmStack<double>{1.0, film.ior, {ior.n(nm), k}}, film.nm / nm);
+        return 0.5 * (std::norm(a.rs) + std::norm(a.rp));
+    }
     if (k > 0) return fresnelConductor(cosTheta, ior.n(nm), k);
     return fresnelDielectric(cosTheta, ior.n(nm));
+}
+
+/// RGB mode's filmed Fresnel model of the material (material_builder.h: a conductor's n, k at
+/// each channel's centre wavelength, a dielectric's index at the d-line).
+Fresnel<Rgb<double>> rgbFilmModel(const IorSpectrum& ior, bool conductor, const Film& film) {
+    Rgb<double> eta, k;
+    for (int c = 0; c < 3; ++c) {
+        const double nm = conductor ? FringeColors::rec709().meanWavelength(c) : kDLineNm;
+        eta[c] = ior.n(nm);
+        k[c] = conductor ? ior.k(nm) : 0.0;
+    }
+    Fresnel<Rgb<double>> f =
+        conductor ? Fresnel<Rgb<double>>::conductor(eta, k) : Fresnel<Rgb<double>>::dielectric(eta);
+    ThinFilm<Rgb<double>> t;
+    t.thicknessNm = film.nm;
+    t.ior = film.ior;
+    for (int c = 0; c < 3; ++c)
+        t.wavelengthsNm[c] = FringeColors::rec709().meanWavelength(c);
+    f.film = t;
+    return f;
 }
 
 bool isConductor(const IorSpectrum& ior) {
@@ -45,14 +78,14 @@ double cosOf(int degrees) {
     return degrees == 90 ? 0.0 : std::cos(double(degrees) * kPi<double> / 180.0);
 }
 
-WavelengthCurve exactCurve(const IorSpectrum& ior, double nm) {
+WavelengthCurve exactCurve(const IorSpectrum& ior, double nm, const Film& film) {
     WavelengthCurve c{nm, {}};
     for (int a = 0; a < kFresnelAngles; ++a)
-        c.reflectance.push_back(exactReflectance(ior, nm, cosOf(a)));
+        c.reflectance.push_back(exactReflectance(ior, nm, cosOf(a), film));
     return c;
 }
 
-FresnelMaterial analyse(const std::string& materialName) {
+FresnelMaterial analyse(const std::string& materialName, const Film& film) {
     const IorSpectrum ior = loadMaterial(materialName);
     const bool conductor = isConductor(ior);
     FresnelMaterial result;
@@ -63,11 +96,14 @@ FresnelMaterial analyse(const std::string& materialName) {
     for (int a = 0; a < kFresnelAngles; ++a) {
         const double c = cosOf(a);
         exact.rgb.push_back(
-            reflectanceColor([&](double nm) { return exactReflectance(ior, nm, c); }));
+            reflectanceColor([&](double nm) { return exactReflectance(ior, nm, c, film); }));
     }
-    const Rgb<double> f0 = exact.rgb[0];
+    // The approximations' F0 and F82 are the bare material's (with a film they show what RGB
+    // mode would give without it).
+    const Rgb<double> f0 =
+        reflectanceColor([&](double nm) { return exactReflectance(ior, nm, 1.0, {}); });
     const Rgb<double> f82 =
-        reflectanceColor([&](double nm) { return exactReflectance(ior, nm, kF82Cosine); });
+        reflectanceColor([&](double nm) { return exactReflectance(ior, nm, kF82Cosine, {}); });
     const double f90Shadowed = std::min(1.0, luminance(f0) / 0.04);
     struct Named {
         std::string name;
@@ -83,6 +119,9 @@ FresnelMaterial analyse(const std::string& materialName) {
     if (!conductor)
         rgbModels.push_back({"exact at the d-line index",
                              Fresnel<Rgb<double>>::dielectric(Rgb<double>(ior.n(kDLineNm)))});
+    if (film.nm > 0)
+        rgbModels = {{"thin film, Belcour-Barla (RGB mode)", rgbFilmModel(ior, conductor, film)},
+                     {"Hoffman F82 without the film", Fresnel<Rgb<double>>::hoffmanF82(f0, f82)}};
     result.models.push_back(exact);
     for (const Named& n : rgbModels) {
         FresnelModel m{n.name, {}};
@@ -102,9 +141,9 @@ FresnelMaterial analyse(const std::string& materialName) {
         result.models.push_back(std::move(m));
     }
     for (int nm = 380; nm <= 780; nm += 20)
-        result.spectral.push_back(exactCurve(ior, nm));
+        result.spectral.push_back(exactCurve(ior, nm, film));
     for (double nm : {450.0, 550.0, 650.0})
-        result.plotted.push_back(exactCurve(ior, nm));
+        result.plotted.push_back(exactCurve(ior, nm, film));
     return result;
 }
 
@@ -158,8 +197,10 @@ FresnelSceneComparison compareModes(const std::string& scenePath, int spp,
 
 FresnelResult runFresnel(const FresnelInputs& in) {
     FresnelResult result;
+    result.thinFilmNm = in.thinFilmNm;
+    result.thinFilmIor = in.thinFilmIor;
     for (const std::string& m : in.materials)
-        result.materials.push_back(analyse(m));
+        result.materials.push_back(analyse(m, Film{in.thinFilmNm, in.thinFilmIor}));
     if (!in.scene.empty()) result.scene = compareModes(in.scene, in.spp, in.overrides, in.progress);
     return result;
 }

@@ -1,6 +1,7 @@
 // `lamina fresnel` and lamina.fresnel (fresnel.h): the options, the inputs read from them, the
 // report, and the result as data.
 #include "declarations.h"
+#include "lamina/bsdf/material.h"
 #include "lamina/experiments/command_options.h"
 #include "lamina/experiments/fresnel.h"
 #include "lamina/render/render_limits.h"
@@ -12,6 +13,8 @@ namespace {
 FresnelInputs fresnelInputs(const OptionValues& v, const CommandContext& context) {
     FresnelInputs in;
     in.materials = v.texts("materials");
+    in.thinFilmNm = *v.number("thin-film");
+    in.thinFilmIor = *v.number("thin-film-ior");
     in.scene = v.text("scene").value_or("");
     in.spp = int(v.integer("spp").value_or(0));
     if (const auto resolution = v.resolution("resolution")) in.overrides.resolution = resolution;
@@ -70,11 +73,19 @@ CommandDecl fresnelDeclaration() {
         "per material a dict: degrees (0 ... 90), models (the exact colour first, then RGB mode's "
         "models: name, rgb, max_error, mean_error, max_delta_e, mean_delta_e) and spectral (nm -> "
         "the exact reflectance against angle)";
+    const FresnelInputs defaults;
     c.options = {
         textListOption("materials",
                        "Metals (Au, Ag, Cu, Al, ...), glasses (bk7, diamond, ...) or n/k files")
             .asPositional()
             .asRequired(),
+        numberOption("thin-film",
+                     "Put a thin film this many nm thick on every material (0: none); the RGB "
+                     "models are then RGB mode's film and the bare material's F82",
+                     0.0, ThinFilmParams::kMaxThicknessNm)
+            .byDefault(defaults.thinFilmNm),
+        numberOption("thin-film-ior", "The index of the --thin-film", 1.0, ThinFilmParams::kMaxIor)
+            .byDefault(defaults.thinFilmIor),
         outputDirectoryOption(),
         fileOption("scene", "Also render this scene in both modes and compare")
             .existing()

@@ -185,6 +185,12 @@ void writeFresnelReport(const FresnelResult& result, Report& report) {
         "Reflectance of a flat interface from air, 0 to 89 degrees; errors are against the "
         "colour (linear Rec.709, under D65) of the exact spectral reflectance; the RGB models "
         "are built from that colour (F0, and F82 at cos = 1/7) as RGB mode builds them.\n\n";
+    if (result.thinFilmNm > 0)
+        md += formatText(
+            "Every material carries a thin film %g nm thick of index %g: the exact reflectance is "
+            "the film's Airy sum per wavelength; RGB mode's film is Belcour and Barla's closed "
+            "form with the channels' indices; F82 is the bare material's, for scale.\n\n",
+            result.thinFilmNm, result.thinFilmIor);
     for (const FresnelMaterial& m : result.materials) {
         writeCsvs(m, report);
         writePlot(m, report);

@@ -147,6 +147,17 @@ inline std::vector<BsdfCase> bsdfCases() {
                      std::make_shared<DielectricBxdf<Spec>>(
                          1.33, MicrofacetDistribution<double>(NdfKind::Beckmann, 0.3, 0.3)),
                      true, 1.33});
+    // Thin films (RGB mode: Belcour and Barla's closed form) on a rough dielectric (entered and
+    // left: the "_below" cases) and a rough conductor. Two cases only: a film costs the
+    // chi-square test's millions of pdf calls some 5 times the bare interface's time.
+    cases.push_back({"dielectric_thin_film_a0p3_eta1p5",
+                     lazyMaterial(R"({"type":"dielectric","ior":1.5,"alpha":0.3,)"
+                                  R"("thin_film":{"thickness_nm":350,"ior":1.38}})"),
+                     true, 1.5});
+    cases.push_back({"conductor_thin_film_a0p3",
+                     lazyMaterial(R"({"type":"conductor","eta":[0.18,0.42,1.37],)"
+                                  R"("k":[3.42,2.35,1.77],"alpha":0.3,)"
+                                  R"("thin_film":{"thickness_nm":300,"ior":2.0}})")});
 
     // Layered: the article's default (GGX + Lambert, shadowed Schlick, fresnel coupling),
     // sum coupling with Frostbite, and a transmissive stack.

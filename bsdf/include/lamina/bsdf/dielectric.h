@@ -9,8 +9,14 @@
 //   f_t(wo, wi) |cos_i| = D G2 (1 - F) |wi.m| |wo.m| / (|cos_o| (wi.m + wo.m / eta')^2)  [/
 //   eta'^2].
 //
+// A thin film (thin_film.h) on the outside replaces the Fresnel reflectance F by the film's, a
+// spectrum: the lobes are chosen with the probability of its channels' mean and weighted by
+// each channel's F / mean (1 - F and 1 - mean for refraction); directions are the bare
+// boundary's.
+//
 // |eta - 1| < kIndexMatched is treated as an index-matched boundary: light passes straight
-// through (a delta lobe). The refracted lobe's width there is ~ |eta - 1| alpha, so this is
+// through (a delta lobe); with a film it is a free-standing film (a soap bubble), whose
+// reflection is then a mirror's. The refracted lobe's width there is ~ |eta - 1| alpha, so this is
 // exact to that order, and it keeps float and double in agreement where the generalised half
 // vector would suffer catastrophic cancellation.
 #pragma once
@@ -52,16 +58,25 @@ class DielectricBxdf final : public Bxdf<S> {
     using Distribution = MicrofacetDistribution<Float>;
 
     DielectricBxdf(Float eta, const Distribution& distribution,
-                   G2Form g2 = G2Form::HeightCorrelated)
-        : eta_(eta), distribution_(distribution), g2_(g2) {}
+                   G2Form g2 = G2Form::HeightCorrelated,
+                   std::optional<ThinFilm<S>> film = std::nullopt)
+        : eta_(eta), distribution_(distribution), g2_(g2), film_(std::move(film)) {}
 
     Float eta() const { return eta_; }
+    const std::optional<ThinFilm<S>>& film() const { return film_; }
     bool indexMatched() const { return std::abs(eta_ - Float(1)) < Float(kIndexMatched); }
     bool isSmooth() const { return indexMatched() || distribution_.effectivelySmooth(); }
 
     S eval(const V3& wo, const V3& wi, TransportMode mode) const override {
         const auto g = geometry(wo, wi);
         if (!g) return S(Float(0));
+        if (film_) {
+            const S F = filmReflectance(glm::dot(wo, g->m));
+            if (g->reflection)
+                return F * (distribution_.D(g->m) * distribution_.G2(wo, wi, g2_) /
+                            (Float(4) * std::abs(wo.z)));
+            return (S(Float(1)) - F) * btdfWithoutFresnel(wo, wi, *g, mode);
+        }
         const Float F = fresnelDielectric(glm::dot(wo, g->m), eta_);
         if (g->reflection) {
             const Float dg = distribution_.D(g->m) * distribution_.G2(wo, wi, g2_);
@@ -73,7 +88,7 @@ class DielectricBxdf final : public Bxdf<S> {
     Float pdf(const V3& wo, const V3& wi) const override {
         const auto g = geometry(wo, wi);
         if (!g) return Float(0);
-        const Float R = fresnelDielectric(glm::dot(wo, g->m), eta_);
+        const Float R = reflectionProbability(glm::dot(wo, g->m));
         const Float dv = visibleDensity(wo, g->m);
         if (g->reflection) return dv / (Float(4) * std::abs(glm::dot(wo, g->m))) * R;
         const Float wim = glm::dot(wi, g->m), wom = glm::dot(wo, g->m);
@@ -88,7 +103,7 @@ class DielectricBxdf final : public Bxdf<S> {
         const V3 m = distribution_.sampleVisibleNormal(wup, u);
         const Float wom = glm::dot(wo, m);
         if (wom == Float(0)) return std::nullopt;
-        const Float R = fresnelDielectric(wom, eta_);
+        const Float R = reflectionProbability(wom);
         V3 wi;
         std::uint32_t flags;
         Float etap = Float(1);
@@ -198,11 +213,16 @@ class DielectricBxdf final : public Bxdf<S> {
 
     // The Mueller matrix of a lobe value for the pair (wo, wi) on the microfacet m.
     MuellerMatrix<S> polarised(const S& value, const V3& wo, const V3& wi, const V3& m) const {
-        if (wo.z * wi.z > Float(0))
-            return reflectionMueller(value, Fresnel<S>::dielectric(S(eta_)), wo, wi);
+        if (wo.z * wi.z > Float(0)) {
+            Fresnel<S> fresnel =
+                Fresnel<S>::dielectric(S(indexMatched() && film_ ? Float(1) : eta_));
+            fresnel.film = film_;
+            return reflectionMueller(value, fresnel, wo, wi);
+        }
         // Light crosses from wi's side to wo's.
         const Float etaLight = wi.z > Float(0) ? eta_ : Float(1) / eta_;
-        return transmissionMueller(value, indexMatched() ? Float(1) : etaLight, wo, wi, m);
+        return transmissionMueller(value, indexMatched() ? Float(1) : etaLight, wo, wi, m,
+                                   film_ ? &*film_ : nullptr);
     }
 
     // Visible-normal density of m seen from wo's side.
@@ -210,7 +230,20 @@ class DielectricBxdf final : public Bxdf<S> {
         return distribution_.visibleNormalPdf(wo.z < Float(0) ? -wo : wo, m);
     }
 
+    // The film's reflectance at the cosine `cosTheta` to the microfacet normal (negative: from
+    // inside); index-matched, the free-standing film's (air on both sides).
+    S filmReflectance(Float cosTheta) const {
+        return film_->reflectance(
+            ThinFilm<S>::dielectricSide(cosTheta, indexMatched() ? Float(1) : eta_));
+    }
+
+    // The probability of choosing reflection: F, or the mean of the film's F.
+    Float reflectionProbability(Float cosTheta) const {
+        return film_ ? filmReflectance(cosTheta).average() : fresnelDielectric(cosTheta, eta_);
+    }
+
     std::optional<BsdfSample<S>> sampleSmooth(const V3& wo, Float uc, TransportMode mode) const {
+        if (film_) return sampleSmoothFilm(wo, uc, mode);
         const Float R = indexMatched() ? Float(0) : fresnelDielectric(wo.z, eta_);
         if (uc < R) {
             return BsdfSample<S>{V3(-wo.x, -wo.y, wo.z), S(Float(1)), R, kLobeSpecularReflection,
@@ -227,9 +260,30 @@ class DielectricBxdf final : public Bxdf<S> {
                              t->second};
     }
 
+    // sampleSmooth with a film: the mirror with the probability of the film's mean F, weighted
+    // by F / mean; refraction (straight through when index-matched) with the rest.
+    std::optional<BsdfSample<S>> sampleSmoothFilm(const V3& wo, Float uc,
+                                                  TransportMode mode) const {
+        const S F = filmReflectance(wo.z);
+        const Float R = F.average();
+        if (uc < R)
+            return BsdfSample<S>{V3(-wo.x, -wo.y, wo.z), F / R, R, kLobeSpecularReflection,
+                                 Float(1)};
+        if (!(Float(1) - R > Float(0))) return std::nullopt;
+        const S weight = (S(Float(1)) - F) / (Float(1) - R);
+        if (indexMatched())
+            return BsdfSample<S>{-wo, weight, Float(1) - R, kLobeSpecularTransmission, Float(1)};
+        const auto t = refract(wo, V3(0, 0, 1), eta_);
+        if (!t) return std::nullopt;
+        const Float scale = mode == TransportMode::Radiance ? Float(1) / sqr(t->second) : Float(1);
+        return BsdfSample<S>{t->first, weight * scale, Float(1) - R, kLobeSpecularTransmission,
+                             t->second};
+    }
+
     Float eta_;
     Distribution distribution_;
     G2Form g2_;
+    std::optional<ThinFilm<S>> film_;
 };
 
 }  // namespace lamina

@@ -3,6 +3,9 @@
 // (the article, section 4.3: evaluating it on the shading normal would ignore roughness).
 #pragma once
 
+#include <optional>
+
+#include "lamina/bsdf/thin_film.h"
 #include "lamina/core/fresnel_equations.h"
 #include "lamina/core/spectrum.h"
 
@@ -30,6 +33,8 @@ struct Fresnel {
     S f82{};  ///< absolute reflectance at cos = 1/7 (F82 model)
     S eta{Float(1.5)};
     S k{};
+    /// A thin film on the interface (the exact models only: the film needs the index).
+    std::optional<ThinFilm<S>> film;
 
     static Fresnel schlick(const S& f0, const S& f90 = S(Float(1))) {
         Fresnel f;
@@ -83,6 +88,7 @@ struct Fresnel {
     /// dielectric a negative cosine means "from inside" (eta inverted); the approximations
     /// and conductors use |cosTheta|.
     S evaluate(Float cosTheta) const {
+        if (film) return filmReflectance(cosTheta);
         const Float c = std::abs(cosTheta);
         switch (kind) {
             case FresnelKind::Schlick:
@@ -118,6 +124,22 @@ struct Fresnel {
             }
         }
         return S(Float(1));
+    }
+
+    /// Where the light meets the film of channel i (the exact models): the cosine on its side
+    /// and the stack from there (a conductor's index is relative to the outside, index 1).
+    typename ThinFilm<S>::Side filmSide(Float cosTheta, int i) const {
+        if (kind == FresnelKind::ExactConductor)
+            return {std::abs(cosTheta), Float(1), std::complex<Float>(eta[i], k[i])};
+        return ThinFilm<S>::dielectricSide(cosTheta, eta[i]);
+    }
+
+  private:
+    S filmReflectance(Float cosTheta) const {
+        S r;
+        for (int i = 0; i < S::kSize; ++i)
+            r[i] = film->reflectance(i, filmSide(cosTheta, i));
+        return r;
     }
 };
 

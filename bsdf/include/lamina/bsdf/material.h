@@ -105,6 +105,16 @@ struct DiffuseMaterial {
     double roughness = 0;  ///< perceptual
 };
 
+/// `thin_film` of a conductor or dielectric: a film of real index `ior` and thickness
+/// `thicknessNm` on the outside of the interface (thin_film.h). The thickness limit keeps the
+/// film thin: beyond some microns its fringes average out to the incoherent sum anyway.
+struct ThinFilmParams {
+    double thicknessNm = 0;
+    double ior = 1.33;
+    static constexpr double kMaxThicknessNm = 10000;
+    static constexpr double kMaxIor = 5;
+};
+
 /// A conductor's optics: exactly one form.
 struct ConductorOptics {
     /// EtaK: numbers per channel; F0F82: reflectances; Spectral: n, k as functions of
@@ -129,6 +139,7 @@ struct ConductorMaterial {
     ConductorOptics optics;
     MicrofacetParams microfacet;
     FresnelChoice fresnel = FresnelChoice::Auto;
+    std::optional<ThinFilmParams> thinFilm;  ///< needs n, k optics and the exact Fresnel
 };
 
 /// `dielectric`: a boundary between outside (index 1) and inside (index ior).
@@ -136,6 +147,7 @@ struct DielectricMaterial {
     double ior = 1.5;  ///< the RGB-mode index (n at 587.56 nm for a dispersive glass)
     std::shared_ptr<const IorSpectrum> spectrum;  ///< a named glass or an ior_file
     MicrofacetParams microfacet;
+    std::optional<ThinFilmParams> thinFilm;
 };
 
 /// `diffuse_transmission`: Lambertian reflection and transmission (diffuse_transmission.h).

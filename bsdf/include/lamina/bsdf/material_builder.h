@@ -59,8 +59,53 @@ class MaterialBuilder {
 
     std::unique_ptr<Bxdf<S>> buildModel(const DielectricMaterial& d) const {
         const Float eta = d.spectrum ? ctx_.dielectricIor(*d.spectrum) : Float(d.ior);
-        return std::make_unique<DielectricBxdf<S>>(eta, distribution(d.microfacet),
-                                                   d.microfacet.g2);
+        return std::make_unique<DielectricBxdf<S>>(eta, distribution(d.microfacet), d.microfacet.g2,
+                                                   thinFilm(d.thinFilm));
+    }
+
+    // The film of a material in this variant: spectral variants evaluate it at the path's
+    // wavelengths; RGB mode takes its polarisation shape at the channels' centre wavelengths.
+    std::optional<ThinFilm<S>> thinFilm(const std::optional<ThinFilmParams>& p) const {
+        if (!p) return std::nullopt;
+        ThinFilm<S> film;
+        film.thicknessNm = Float(p->thicknessNm);
+        film.ior = Float(p->ior);
+        for (int i = 0; i < S::kSize; ++i) {
+            if constexpr (SpectrumContext<S>::kSpectral)
+                film.wavelengthsNm[i] = ctx_.wavelength(i);
+            else
+                film.wavelengthsNm[i] = Float(FringeColors::rec709().meanWavelength(i));
+        }
+        return film;
+    }
+
+    // A filmed conductor's exact Fresnel model with its film. RGB mode takes n and k per
+    // channel: the numbers given, or a spectrum's n, k at the channel's centre wavelength
+    // (FringeColors::meanWavelength), since the film's closed form needs an index per channel
+    // (Hoffman's F82 cannot carry a film).
+    Fresnel<S> filmedConductorFresnel(const ConductorMaterial& c) const {
+        const ConductorOptics& o = c.optics;
+        Fresnel<S> f;
+        if (o.form == ConductorOptics::Form::Spectral) {
+            if constexpr (SpectrumContext<S>::kSpectral) {
+                f = conductorFresnel(c);  // exact at the path's wavelengths
+            } else {
+                S eta, k;
+                for (int i = 0; i < S::kSize; ++i) {
+                    const double nm = FringeColors::rec709().meanWavelength(i);
+                    const NkTable::Nk nk = o.table
+                                               ? (*o.table)(nm)
+                                               : NkTable::Nk{o.spectrum->n(nm), o.spectrum->k(nm)};
+                    eta[i] = Float(nk.n);
+                    k[i] = Float(nk.k);
+                }
+                f = Fresnel<S>::conductor(eta, k);
+            }
+        } else {
+            f = Fresnel<S>::conductor(ctx_.unbounded(o.eta), ctx_.unbounded(o.k));
+        }
+        f.film = thinFilm(c.thinFilm);
+        return f;
     }
 
     std::unique_ptr<Bxdf<S>> buildModel(const DiffuseTransmissionMaterial& d) const {
@@ -174,7 +219,7 @@ class MaterialBuilder {
     }
 
     ConductorBxdf<S> conductorBxdf(const ConductorMaterial& c) const {
-        const Fresnel<S> fresnel = conductorFresnel(c);
+        const Fresnel<S> fresnel = c.thinFilm ? filmedConductorFresnel(c) : conductorFresnel(c);
         std::optional<MultiscatterLobe<S>> ms;
         if (c.microfacet.multiscatter && c.microfacet.energyF1)
             ms.emplace(c.microfacet.energyF1, fresnel);

@@ -39,16 +39,25 @@ std::pair<std::complex<typename S::Float>, typename S::Float> fresnelIndex(
     }
 }
 
+/// The complex amplitudes of `f` at the cosine `cosTheta` to the microfacet normal, channel
+/// `i`: its film's, or the bare interface's.
+template <SpectrumType S>
+FresnelAmplitudes<typename S::Float> fresnelAmplitudesOf(const Fresnel<S>& f,
+                                                         typename S::Float cosTheta, int i) {
+    if (f.film) return f.film->amplitudes(i, f.filmSide(cosTheta, i));
+    const auto [eta, cosI] = fresnelIndex(f, cosTheta, i);
+    return fresnelAmplitudes(cosI, eta);
+}
+
 /// The Fresnel reflection (or transmission) Mueller matrix of each channel divided by its own
 /// [0][0], in the event's s/p frames. A channel with nothing reflected (or transmitted) gets
 /// the depolariser of [0][0] = 1: its value is 0 anyway.
-template <SpectrumType S, typename IndexOf>
-MuellerMatrix<S> fresnelShape(bool transmission, IndexOf&& indexOf) {
+template <SpectrumType S, typename AmplitudesOf>
+MuellerMatrix<S> fresnelShape(bool transmission, AmplitudesOf&& amplitudesOf) {
     using F = typename S::Float;
     MuellerMatrix<S> shape;
     for (int i = 0; i < S::kSize; ++i) {
-        const auto [eta, cosI] = indexOf(i);
-        const FresnelAmplitudes<F> a = fresnelAmplitudes(cosI, eta);
+        const FresnelAmplitudes<F> a = amplitudesOf(i);
         const MuellerMatrix<F> m =
             transmission ? fresnelTransmissionMueller(a) : fresnelReflectionMueller(a);
         const F norm = m(0, 0);
@@ -88,22 +97,32 @@ MuellerMatrix<S> reflectionMueller(const S& value, const Fresnel<S>& f,
     if (m.z < F(0)) m = -m;  // as the lobes orient it: a negative cosine is "from inside"
     const F cosTheta = glm::dot(wo, m);
     MuellerMatrix<S> shape =
-        fresnelShape<S>(false, [&](int i) { return fresnelIndex(f, cosTheta, i); });
+        fresnelShape<S>(false, [&](int i) { return fresnelAmplitudesOf(f, cosTheta, i); });
     return inCanonicalFrames(shape, -wi, wo, m) * value;
 }
 
 /// The Mueller matrix of a transmission lobe of value `value`: radiance leaving along wo,
 /// arriving from wi on the other side through the microfacet normal m (either orientation),
-/// `etaLight` the relative index along the light's travel (wi's side to wo's).
+/// `etaLight` the relative index along the light's travel (wi's side to wo's). With a `film`
+/// on the outside (z > 0) of the boundary, the film's transmission amplitudes.
 template <SpectrumType S>
 MuellerMatrix<S> transmissionMueller(const S& value, typename S::Float etaLight,
                                      const Vec3<typename S::Float>& wo,
                                      const Vec3<typename S::Float>& wi,
-                                     const Vec3<typename S::Float>& m) {
+                                     const Vec3<typename S::Float>& m,
+                                     const ThinFilm<S>* film = nullptr) {
     using F = typename S::Float;
     const F cosI = std::abs(glm::dot(wi, m));
-    MuellerMatrix<S> shape = fresnelShape<S>(true, [&](int) {
-        return std::pair{std::complex<F>(etaLight), cosI};
+    MuellerMatrix<S> shape = fresnelShape<S>(true, [&](int i) {
+        if (film) {
+            // etaLight > 1 enters the boundary from outside (eta = etaLight); from inside the
+            // boundary's eta is 1 / etaLight.
+            const bool fromOutside = wi.z > F(0);
+            const F eta = fromOutside ? etaLight : F(1) / etaLight;
+            return film->amplitudes(i,
+                                    ThinFilm<S>::dielectricSide(fromOutside ? cosI : -cosI, eta));
+        }
+        return fresnelAmplitudes(cosI, std::complex<F>(etaLight));
     });
     return inCanonicalFrames(shape, -wi, wo, m) * value;
 }

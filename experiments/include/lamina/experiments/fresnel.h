@@ -9,6 +9,10 @@
 //    (F90 = 1), Schlick with shadowed F90 = min(1, luminance(F0) / 0.04), Hoffman's F82 (F0
 //    and the exact colour at cos = 1/7), Lagarde's spherical-Gaussian Schlick, and for
 //    dielectrics the exact equations at the d-line index (RGB mode's dielectric).
+// With a thin film (thickness > 0), every material carries that film (docs/bsdf.md, "Thin
+// films"): the exact reflectance is the Airy sum per wavelength, and the RGB models are RGB
+// mode's film (Belcour and Barla's closed form, with the channels' indices) and, for scale,
+// Hoffman's F82 of the bare material (what RGB mode gives a metal that ignores the film).
 // Reported per model: the maximum and mean absolute error of the RGB reflectance and the
 // maximum and mean CIEDE2000 difference of its colour (as a reflectance under D65). Written:
 // MATERIAL.csv (the RGB curves), MATERIAL_spectral.csv (one column per 20 nm),
@@ -37,6 +41,8 @@ inline constexpr int kFresnelAngles = 91;  ///< 0, 1, ..., 90 degrees
 struct FresnelInputs {
     /// Metals (Au, Ag, ...), glasses (bk7, diamond, ...) or n/k files (YAML or CSV).
     std::vector<std::string> materials;
+    double thinFilmNm = 0;            ///< a film on every material; 0: none
+    double thinFilmIor = 1.33;        ///< the film's index
     std::string scene;                ///< optional: also rendered in both modes and compared
     int spp = 0;                      ///< of the scene renders; 0: the scene's
     render::RenderOptions overrides;  ///< --resolution, --threads, --max-depth of the scene renders
@@ -79,6 +85,7 @@ struct FresnelSceneComparison {
 
 struct FresnelResult {
     std::vector<FresnelMaterial> materials;
+    double thinFilmNm = 0, thinFilmIor = 1.33;  ///< the film on every material (0: none)
     std::optional<FresnelSceneComparison> scene;
 };
 
