@@ -64,9 +64,19 @@ std::optional<std::string> referenceCorrelation(const render::RgbImage& referenc
     const std::string measuredSeed = std::to_string(measured.seed.value_or(scene.settings.seed));
     const std::string measuredSampler(
         render::kSamplerNames.name(measured.sampler.value_or(scene.settings.sampler)));
-    if (seed != measuredSeed || sampler != measuredSampler) return std::nullopt;
+    if (sampler != measuredSampler) return std::nullopt;
     const std::string hash = metadataValue(reference, "scene_hash");
     const bool sameScene = hash == render::sceneHash(scene);
+    // sobol-global's film positions are one fixed pattern whatever the seed.
+    if (sampler == render::kSamplerNames.name(render::SamplerKind::SobolGlobal))
+        return formatText(
+            "the reference was rendered %swith the sampler sobol-global, as the measured "
+            "renders are: its film positions are the same for every seed, so their samples are "
+            "correlated with its own and the measured error would be understated; render the "
+            "reference with another sampler (lamina render --sampler sobol) or pass "
+            "--allow-correlated-reference",
+            sameScene ? "from the same scene files " : "");
+    if (seed != measuredSeed) return std::nullopt;
     return formatText(
         "the reference was rendered %swith the same sampler (%s) and seed (%s) as the measured "
         "renders, so their samples are correlated with its own: the measured error would be "

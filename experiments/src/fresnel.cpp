@@ -1,5 +1,6 @@
 #include "lamina/experiments/fresnel.h"
 #include "lamina/experiments/interrupted.h"
+#include "lamina/experiments/noise_floor.h"
 
 #include <algorithm>
 #include <cmath>
@@ -159,6 +160,7 @@ FresnelSceneComparison compareModes(const std::string& scenePath, int spp,
                                     const ProgressSink& progress) {
     const render::SceneDesc scene = render::loadScene(scenePath);
     render::RenderOptions o = overrides;
+    requireSeedDependentSampler(o.sampler.value_or(scene.settings.sampler), scenePath);
     if (spp > 0) o.spp = spp;
     o.mode = render::RenderModeKind::Rgb;
     tell(progress, "rendering " + scenePath + " in RGB mode...\n");

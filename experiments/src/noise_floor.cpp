@@ -3,9 +3,18 @@
 #include <algorithm>
 #include <cmath>
 
+#include "lamina/core/error.h"
 #include "lamina/experiments/text_format.h"
 
 namespace lamina::experiments {
+
+void requireSeedDependentSampler(render::SamplerKind sampler, const std::string& experiment) {
+    if (sampler == render::SamplerKind::SobolGlobal)
+        throw InputError(experiment +
+                         ": the noise floor compares renders with different seeds, and the "
+                         "sampler sobol-global's film positions are the same for every seed; "
+                         "use --sampler sobol");
+}
 
 NoiseFloorReading readAgainstFloor(double difference, double floor, int spp) {
     NoiseFloorReading r;

@@ -8,6 +8,7 @@
 #include "lamina/core/hash.h"
 #include "lamina/core/spectrum.h"
 #include "lamina/experiments/interrupted.h"
+#include "lamina/experiments/noise_floor.h"
 
 namespace lamina::experiments {
 
@@ -92,6 +93,7 @@ FlooredStatistic floored(double value, double polarisedPair, double spectralPair
 PolarisationResult runPolarisation(const PolarisationInputs& in) {
     const render::SceneDesc scene = render::loadScene(in.scene);
     render::RenderOptions o = in.overrides;
+    requireSeedDependentSampler(o.sampler.value_or(scene.settings.sampler), in.scene);
     if (in.spp > 0) o.spp = in.spp;
     PolarisationResult r;
     r.scene = in.scene;

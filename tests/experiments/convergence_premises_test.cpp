@@ -106,6 +106,29 @@ TEST(ConvergencePremises, ARenderedReferenceIsFlaggedAsSelfRendered) {
     EXPECT_NE(p[0].detail.find("self-rendered"), std::string::npos);
 }
 
+// A lamina reference with the measured renders' sampler and seed is correlated with them; with
+// sobol-global (one film-position pattern for every seed) whatever the seeds, with sobol only
+// at the same seed.
+TEST(ConvergencePremises, ASobolGlobalReferenceIsCorrelatedWhateverTheSeeds) {
+    const Fixture f;
+    const auto reference = [](const std::string& sampler, const std::string& seed) {
+        render::RgbImage image;
+        image.metadata = {{"lamina:sampler", sampler}, {"lamina:seed", seed}};
+        return image;
+    };
+    render::RenderOptions measured;
+    measured.seed = 2;
+    measured.sampler = render::SamplerKind::SobolGlobal;
+    const auto correlated = referenceCorrelation(reference("sobol-global", "1"), f.scene, measured);
+    ASSERT_TRUE(correlated.has_value());
+    EXPECT_NE(correlated->find("sobol-global"), std::string::npos) << *correlated;
+    EXPECT_FALSE(referenceCorrelation(reference("sobol", "1"), f.scene, measured));
+    measured.sampler = render::SamplerKind::Sobol;
+    EXPECT_FALSE(referenceCorrelation(reference("sobol", "1"), f.scene, measured));
+    EXPECT_FALSE(referenceCorrelation(reference("sobol-global", "2"), f.scene, measured));
+    EXPECT_TRUE(referenceCorrelation(reference("sobol", "2"), f.scene, measured));
+}
+
 /// A standard normal number (Box and Muller 1958).
 double gaussian(Pcg32& rng) {
     const double u1 = 1.0 - rng.nextDouble(), u2 = rng.nextDouble();

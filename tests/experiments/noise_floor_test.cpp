@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "lamina/core/error.h"
+
 namespace lamina::experiments {
 namespace {
 
@@ -28,6 +30,15 @@ TEST(NoiseFloor, TheSamplesThatWouldResolveADifference) {
     EXPECT_EQ(describeReading(none, 16),
               "0.50 (noise floor 0.60: not resolved at 16 spp; no difference beyond the noise)");
     EXPECT_EQ(describeReading(readAgainstFloor(4.54, 1.21, 8), 8), "4.54 (noise floor 1.21)");
+}
+
+// A noise floor compares renders that differ by their seed: sobol-global, whose film positions
+// do not change with the seed, is refused (the floor would be understated), the others pass.
+TEST(NoiseFloor, RefusesASamplerWhoseFilmPositionsIgnoreTheSeed) {
+    EXPECT_THROW(requireSeedDependentSampler(render::SamplerKind::SobolGlobal, "s.json"),
+                 InputError);
+    EXPECT_NO_THROW(requireSeedDependentSampler(render::SamplerKind::Sobol, "s.json"));
+    EXPECT_NO_THROW(requireSeedDependentSampler(render::SamplerKind::Independent, "s.json"));
 }
 
 }  // namespace

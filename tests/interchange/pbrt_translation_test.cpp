@@ -105,6 +105,17 @@ TEST_F(PbrtTranslation, OptionsBlock) {
     EXPECT_EQ(import("Integrator \"lightpath\" \"integer maxdepth\" 3\n", false)
                   .scene["integrator"]["type"],
               "light");
+    // pbrt-v4's sobol: film positions from one global Sobol sequence, lamina's sobol-global.
+    const ImportedScene g = import(
+        "Sampler \"sobol\" \"integer pixelsamples\" 4 \"string randomization\" "
+        "\"fastowen\"\n",
+        false);
+    EXPECT_EQ(g.scene["sampler"], Json::parse(R"({"type": "sobol-global", "spp": 4})"));
+    ASSERT_EQ(g.warnings.size(), 1u);
+    EXPECT_EQ(g.warnings[0], file_.string() +
+                                 ":1: Sampler \"sobol\" became lamina's sobol-global sampler "
+                                 "(pbrt-v4's film positions; the other dimensions Owen-scrambled "
+                                 "per pixel; same sample count)");
 }
 
 TEST_F(PbrtTranslation, FovSpansTheShorterAxis) {

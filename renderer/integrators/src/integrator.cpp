@@ -11,7 +11,7 @@ namespace lamina::render {
 
 CameraSample sampleCamera(const PixelFilter& filter, const Camera& camera, PixelSampler& sampler,
                           int x, int y) {
-    const auto fs = filter.sample(sampler.get2D());
+    const auto fs = filter.sample(sampler.getPixel2D());
     const Vec2f lens = sampler.get2DIfUsed(!camera.isPinhole());
     const Vec2f raster(float(x) + 0.5f + fs.offset.x, float(y) + 0.5f + fs.offset.y);
     return {raster, lens, fs.weight};

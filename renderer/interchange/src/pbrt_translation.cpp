@@ -84,8 +84,15 @@ Json translateSampler(TranslationContext& ctx, const Entity& e) {
                  "Sampler \"stratified\" became lamina's Owen-scrambled Sobol "
                  "sampler with xsamples x ysamples = " +
                      std::to_string(spp) + " samples per pixel");
-    } else if (e.type == "zsobol" || e.type == "sobol" || e.type == "paddedsobol" ||
-               e.type == "halton" || e.type == "pmj02bn") {
+    } else if (e.type == "sobol") {
+        // pbrt-v4's SobolSampler: film positions from one global Sobol sequence, unscrambled.
+        type = "sobol-global";
+        if (p.has("randomization")) p.string("randomization", "");
+        ctx.warn(e.location,
+                 "Sampler \"sobol\" became lamina's sobol-global sampler (pbrt-v4's film "
+                 "positions; the other dimensions Owen-scrambled per pixel; same sample count)");
+    } else if (e.type == "zsobol" || e.type == "paddedsobol" || e.type == "halton" ||
+               e.type == "pmj02bn") {
         if (p.has("randomization")) p.string("randomization", "");
         ctx.warn(e.location, "Sampler \"" + e.type +
                                  "\" became lamina's Owen-scrambled Sobol "

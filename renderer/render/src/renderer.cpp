@@ -6,9 +6,11 @@
 
 #include <chrono>
 #include <limits>
+#include <optional>
 
 #include "lamina/core/error.h"
 #include "lamina/integrators/integrator.h"
+#include "lamina/render/global_sobol_net.h"
 #include "lamina/render/pass_schedule.h"
 #include "lamina/render/render_memory.h"
 
@@ -73,11 +75,16 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
         return std::chrono::duration<double>(Clock::now() - start).count() - callbackSeconds;
     };
 
+    // sobol-global's film positions: one net over the whole image (a crop is a window of it).
+    std::optional<GlobalSobolNet> globalNet;
+    if (settings.sampler == SamplerKind::SobolGlobal) globalNet.emplace(width, height);
+    const GlobalSobolNet* net = globalNet ? &*globalNet : nullptr;
+
     // One sample of pixel (x, y): the integrator's camera-side estimate goes to the pixel, its
     // splats (light, bdpt) anywhere on the film.
     const auto renderSample = [&](int x, int y, const PixelSeed& pixelSeed, int s,
                                   PathStatistics& stats) {
-        PixelSampler sampler(settings.sampler, pixelSeed, std::uint32_t(s));
+        PixelSampler sampler(settings.sampler, pixelSeed, std::uint32_t(s), net);
         auto path = mode.startPath(sampler);
         const auto estimate = integrator->sample({x, y, sampler, path, film, stats});
         if (!estimate) return;

@@ -6,7 +6,14 @@
 
 #include <string>
 
+#include "lamina/scene/scene_description.h"
+
 namespace lamina::experiments {
+
+/// A noise floor's twin render differs from the first by its seed alone, so every number of
+/// its samples must change with the seed: refuses (InputError) sobol-global, whose film
+/// positions are one pattern for every seed (the floor would be understated).
+void requireSeedDependentSampler(render::SamplerKind sampler, const std::string& experiment);
 
 /// A difference is resolved when it exceeds this many times its floor.
 inline constexpr double kResolvedOverFloor = 2.0;

@@ -134,7 +134,7 @@ class RenderMode<SampledSpectrum<float>> {
     static constexpr bool kRendersMedia = true;
 
     Path startPath(PixelSampler& sampler) const {
-        const auto lambda = SampledWavelengths<float>::sample(double(sampler.get1D()));
+        const auto lambda = SampledWavelengths<float>::sample(double(sampler.getWavelength1D()));
         return {lambda, ResampledSpectrum::locate(lambda), ++cache().nextPathId};
     }
 

@@ -6,14 +6,21 @@
 //                       dimensions gets its own shuffle of the sample index and its own
 //                       scramble ("padding", so every 2D pair is a (0, 2)-sequence); the
 //                       three seeds of a pair come from one 64-bit hash of (pixel, pair).
+//   sobol-global        the Sobol sampler, but, as pbrt-v4's SobolSampler, the film position
+//                       (getPixel2D) from one global, unscrambled Sobol sequence over the image
+//                       (global_sobol_net.h: a fixed pattern, the same for every seed) and the
+//                       wavelengths (getWavelength1D) from dimension 2 of the same global point,
+//                       Owen-scrambled: the two are stratified together within a pixel.
 #pragma once
 
 #include <bit>
 #include <cstdint>
+#include <stdexcept>
 
 #include "lamina/core/hash.h"
 #include "lamina/core/pcg32.h"
 #include "lamina/core/vector.h"
+#include "lamina/render/global_sobol_net.h"
 #include "lamina/scene/scene_description.h"
 
 namespace lamina::render {
@@ -29,13 +36,41 @@ inline std::uint32_t reverseBits(std::uint32_t x) {
 }
 
 /// Sobol dimension 1 (primitive polynomial x + 1, direction numbers v_k = v_{k-1} ^
-/// (v_{k-1} >> 1) from v_0 = 2^31); dimension 0 is the van der Corput sequence.
-constexpr std::uint32_t sobolDimension1(std::uint32_t index) {
+/// (v_{k-1} >> 1) from v_0 = 2^31); dimension 0 is the van der Corput sequence. The index may
+/// exceed 32 bits (the global net of sobol-global); the result keeps 32 bits.
+constexpr std::uint32_t sobolDimension1(std::uint64_t index) {
     std::uint32_t result = 0, v = 1u << 31;
     for (; index; index >>= 1, v ^= v >> 1)
         if (index & 1u) result ^= v;
     return result;
 }
+
+/// Sobol dimension 2: primitive polynomial x^2 + x + 1 and initial direction numbers m_1 = 1,
+/// m_2 = 3 (Joe and Kuo 2008, "Constructing Sobol sequences with better two-dimensional
+/// projections", the second dimension of their table; the first is dimension 1 above), the
+/// others by the recurrence m_k = 2 m_{k-1} ^ 4 m_{k-2} ^ m_{k-2} (their section 2); v_k =
+/// m_k / 2^k as a 32-bit fraction. Any 64-bit index.
+class SobolDimension2 {
+  public:
+    constexpr SobolDimension2() {
+        std::uint64_t m[65] = {0, 1, 3};
+        for (int k = 3; k <= 64; ++k)
+            m[k] = (m[k - 1] << 1) ^ (m[k - 2] << 2) ^ m[k - 2];
+        for (int k = 1; k <= 64; ++k)
+            direction_[k - 1] = std::uint32_t(k <= 32 ? m[k] << (32 - k) : m[k] >> (k - 32));
+    }
+    constexpr std::uint32_t operator()(std::uint64_t index) const {
+        std::uint32_t result = 0;
+        for (int k = 0; index; index >>= 1, ++k)
+            if (index & 1u) result ^= direction_[k];
+        return result;
+    }
+
+  private:
+    std::uint32_t direction_[64] = {};
+};
+
+inline constexpr SobolDimension2 kSobolDimension2{};
 
 /// Sobol dimension 1 in the bit-reversed domain: reverseBits(sobolDimension1(reverseBits(y))).
 /// It is linear over GF(2) in y, so it is the XOR of one table entry per byte of y (the
@@ -76,6 +111,11 @@ inline constexpr ReversedSobolDimension1 kReversedSobolDimension1{};
 /// Burley 2020, listing 3: the Laine-Karras-style hash that permutes bits only downwards;
 /// applied to reversed bits, reverse(LK(reverse(x), seed)) is a nested uniform (Owen) scramble
 /// of x.
+/// A 32-bit fixed-point fraction as a float in [0, 1): its top 24 bits, exactly.
+inline float unitFloat(std::uint32_t v) {
+    return std::min(kOneMinusEpsilon<float>, float(v >> 8) * 0x1p-24f);
+}
+
 inline std::uint32_t laineKarrasPermutation(std::uint32_t x, std::uint32_t seed) {
     x += seed;
     x ^= x * 0x6c50b47cu;
@@ -93,26 +133,62 @@ struct PixelSeed {
     PixelSeed(std::uint64_t seed, int x, int y)
         : pixel(hashValues({seed, std::uint64_t(x), std::uint64_t(y)})),
           dimensionBase(hashValues({pixel})),
-          dimensionSalt(0x9e3779b97f4a7c15ULL + (dimensionBase << 6u)) {}
+          dimensionSalt(0x9e3779b97f4a7c15ULL + (dimensionBase << 6u)),
+          x(x),
+          y(y) {}
 
     std::uint64_t pixel;
     std::uint64_t dimensionBase;  ///< hashValues({pixel})
     /// The part of hashValues({pixel, dim})'s last step that does not depend on dim.
     std::uint64_t dimensionSalt;
+    int x, y;  ///< the pixel, for the global net of sobol-global
 };
 
 class PixelSampler {
   public:
-    PixelSampler(SamplerKind kind, std::uint64_t seed, int x, int y, std::uint32_t sampleIndex)
-        : PixelSampler(kind, PixelSeed(seed, x, y), sampleIndex) {}
-    PixelSampler(SamplerKind kind, const PixelSeed& pixel, std::uint32_t sampleIndex)
+    /// `net`: the film's global net, which sobol-global needs (and the others ignore).
+    PixelSampler(SamplerKind kind, std::uint64_t seed, int x, int y, std::uint32_t sampleIndex,
+                 const GlobalSobolNet* net = nullptr)
+        : PixelSampler(kind, PixelSeed(seed, x, y), sampleIndex, net) {}
+    PixelSampler(SamplerKind kind, const PixelSeed& pixel, std::uint32_t sampleIndex,
+                 const GlobalSobolNet* net = nullptr)
         : kind_(kind),
           reversedIndex_(sobol_detail::reverseBits(sampleIndex)),
           dimensionBase_(pixel.dimensionBase),
-          dimensionSalt_(pixel.dimensionSalt) {
+          dimensionSalt_(pixel.dimensionSalt),
+          net_(net) {
         // The Sobol sampler needs no generator; seeding one costs as much as a dimension.
         if (kind_ == SamplerKind::Independent)
             rng_ = Pcg32(hashValues({pixel.pixel, sampleIndex}), pixel.pixel);
+        if (kind_ == SamplerKind::SobolGlobal) {
+            if (!net_)
+                throw std::invalid_argument(
+                    "PixelSampler: sobol-global needs the film's global net");
+            globalIndex_ = net_->globalIndex(pixel.x, pixel.y, sampleIndex);
+        }
+    }
+
+    /// The next dimension pair as the sample's position in its pixel (the camera sample's
+    /// film position, before the pixel filter): get2D(), except for sobol-global, whose
+    /// position is the pixel's point of the global net (the dimension still counts, so the
+    /// later ones are the Sobol sampler's).
+    Vec2<float> getPixel2D() {
+        if (kind_ != SamplerKind::SobolGlobal) return get2D();
+        ++dimension_;
+        return net_->pixelPosition(globalIndex_);
+    }
+
+    /// The next dimension as the number that draws the path's wavelengths (the spectral
+    /// modes): get1D(), except for sobol-global, which takes Sobol dimension 2 of the
+    /// sample's global point (pbrt-v4's SobolSampler draws its wavelengths from its dimension
+    /// 2), Owen-scrambled with this pixel's and dimension's seed, so that a pixel's film
+    /// positions and wavelengths are stratified together.
+    float getWavelength1D() {
+        if (kind_ != SamplerKind::SobolGlobal) return get1D();
+        using namespace sobol_detail;
+        const DimensionSeeds s = dimensionSeeds(dimension_++);
+        return toFloat(reverseBits(
+            laineKarrasPermutation(reverseBits(kSobolDimension2(globalIndex_)), s.first)));
     }
 
     float get1D() {
@@ -199,14 +275,14 @@ class PixelSampler {
     /// for a 64-bit LCG: Steele and Vigna 2022, "Computationally easy, spectrally good
     /// multipliers for congruential pseudorandom number generators" (a 64-bit one they list).
     static constexpr std::uint64_t kSecondSeedMultiplier = 0xd1342543de82ef95ULL;
-    static float toFloat(std::uint32_t v) {
-        return std::min(kOneMinusEpsilon<float>, float(v >> 8) * 0x1p-24f);
-    }
+    static float toFloat(std::uint32_t v) { return sobol_detail::unitFloat(v); }
 
     SamplerKind kind_;
     std::uint32_t reversedIndex_;
     std::uint64_t dimensionBase_, dimensionSalt_;
     Pcg32 rng_;
+    const GlobalSobolNet* net_;
+    std::uint64_t globalIndex_ = 0;  ///< sobol-global: the sample's index in the global net
     std::uint32_t dimension_ = 0;
 };
 

@@ -84,9 +84,12 @@ struct FilmDesc {
     double imagingRatio() const { return exposureTime * iso / 100 * scale; }
 };
 
-enum class SamplerKind { Sobol, Independent };
+/// sobol-global: Sobol, with the film positions of one global unscrambled Sobol sequence (as
+/// pbrt-v4's SobolSampler; the same for every seed).
+enum class SamplerKind { Sobol, Independent, SobolGlobal };
 inline constexpr NameTable kSamplerNames{std::array{
-    NameEntry{SamplerKind::Sobol, "sobol"}, NameEntry{SamplerKind::Independent, "independent"}}};
+    NameEntry{SamplerKind::Sobol, "sobol"}, NameEntry{SamplerKind::Independent, "independent"},
+    NameEntry{SamplerKind::SobolGlobal, "sobol-global"}}};
 
 /// The light transport algorithm: camera path tracing, light tracing, bidirectional.
 enum class IntegratorKind { Path, Light, Bdpt };
