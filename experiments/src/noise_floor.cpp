@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "lamina/core/error.h"
 #include "lamina/experiments/text_format.h"
@@ -14,6 +15,20 @@ void requireSeedDependentSampler(render::SamplerKind sampler, const std::string&
                          ": the noise floor compares renders with different seeds, and the "
                          "sampler sobol-global's film positions are the same for every seed; "
                          "use --sampler sobol");
+}
+
+render::RgbImage pairedNoiseImage(const render::RgbImage& a1, const render::RgbImage& b1,
+                                  const render::RgbImage& a2, const render::RgbImage& b2) {
+    for (const render::RgbImage* image : {&a1, &a2, &b2})
+        if (image->width != b1.width || image->height != b1.height)
+            throw std::logic_error("pairedNoiseImage: four renders of one size");
+    render::RgbImage moved = b1;
+    for (std::size_t i = 0; i < moved.pixels.size(); ++i) {
+        const double difference1 = double(a1.pixels[i]) - double(b1.pixels[i]);
+        const double difference2 = double(a2.pixels[i]) - double(b2.pixels[i]);
+        moved.pixels[i] = float(double(b1.pixels[i]) + (difference1 - difference2) / std::sqrt(2.0));
+    }
+    return moved;
 }
 
 NoiseFloorReading readAgainstFloor(double difference, double floor, int spp) {
