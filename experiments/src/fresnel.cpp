@@ -172,7 +172,7 @@ FresnelSceneComparison compareModes(const FresnelInputs& in) {
         c.rgb = renderIn(render::RenderModeKind::Rgb, "scene_rgb", "RGB mode");
         c.spectral = renderIn(render::RenderModeKind::Spectral, "scene_spectral", "spectral mode");
         // Both modes again with another seed: the second pair gives the noise of the modes'
-        // difference (noise_floor.h, pairedNoiseImage).
+        // difference (noise_floor.h, pairedNoise).
         o.seed = hashValues({o.seed.value_or(scene.settings.seed), 0x666c6f6f72});
         const render::RenderResult rgb2 =
             renderIn(render::RenderModeKind::Rgb, "scene_rgb_seed2",
@@ -189,7 +189,8 @@ FresnelSceneComparison compareModes(const FresnelInputs& in) {
                           ? 0
                           : double(*std::max_element(c.ciede2000.begin(), c.ciede2000.end()));
         c.p95DeltaE = percentileOf(c.ciede2000, 95);
-        const std::vector<float> floor = ciede2000Map(pairedNoiseImage(a, b, a2, b2), b);
+        const NoiseOnlyPair noise = pairedNoise(a, b, a2, b2);
+        const std::vector<float> floor = ciede2000Map(noise.a, noise.b);
         c.floorMeanDeltaE = mean(floor);
         c.floorP95DeltaE = percentileOf(floor, 95);
         const std::vector<float> otherSeed = ciede2000Map(a2, b2);

@@ -17,18 +17,21 @@ void requireSeedDependentSampler(render::SamplerKind sampler, const std::string&
                          "use --sampler sobol");
 }
 
-render::RgbImage pairedNoiseImage(const render::RgbImage& a1, const render::RgbImage& b1,
-                                  const render::RgbImage& a2, const render::RgbImage& b2) {
+NoiseOnlyPair pairedNoise(const render::RgbImage& a1, const render::RgbImage& b1,
+                          const render::RgbImage& a2, const render::RgbImage& b2) {
     for (const render::RgbImage* image : {&a1, &a2, &b2})
         if (image->width != b1.width || image->height != b1.height)
-            throw std::logic_error("pairedNoiseImage: four renders of one size");
-    render::RgbImage moved = b1;
-    for (std::size_t i = 0; i < moved.pixels.size(); ++i) {
+            throw std::logic_error("pairedNoise: four renders of one size");
+    NoiseOnlyPair pair{a1, b1};
+    for (std::size_t i = 0; i < b1.pixels.size(); ++i) {
+        const double mean = (double(a1.pixels[i]) + double(b1.pixels[i])) / 2;
         const double difference1 = double(a1.pixels[i]) - double(b1.pixels[i]);
         const double difference2 = double(a2.pixels[i]) - double(b2.pixels[i]);
-        moved.pixels[i] = float(double(b1.pixels[i]) + (difference1 - difference2) / std::sqrt(2.0));
+        const double noise = (difference1 - difference2) / std::sqrt(2.0);
+        pair.a.pixels[i] = float(mean + noise / 2);
+        pair.b.pixels[i] = float(mean - noise / 2);
     }
-    return moved;
+    return pair;
 }
 
 NoiseFloorReading readAgainstFloor(double difference, double floor, int spp) {

@@ -97,7 +97,7 @@ PolarisationResult comparePolarisation(const PolarisationInputs& in,
     r.polarised = renderIn(render::RenderModeKind::Polarised, "polarised", "");
     r.spectral = renderIn(render::RenderModeKind::Spectral, "spectral", "");
     // Both modes again with another seed: the second pair gives the noise of the modes'
-    // difference (noise_floor.h, pairedNoiseImage).
+    // difference (noise_floor.h, pairedNoise).
     o.seed = hashValues({o.seed.value_or(scene.settings.seed), 0x706f6c666c6f6f72});
     const render::RenderResult polarised2 =
         renderIn(render::RenderModeKind::Polarised, "polarised_seed2",
@@ -112,21 +112,21 @@ PolarisationResult comparePolarisation(const PolarisationInputs& in,
     r.height = p.height;
     r.metrics = compareImages(s, p);
     requireComparedValues(r.metrics, s, "the spectral render", p, "the polarised render");
-    // The spectral render against the polarised one (the reference); the floor: the polarised
-    // render against itself moved by the noise of that difference.
-    const render::RgbImage moved = pairedNoiseImage(s, p, s2, p2);
+    // The spectral render against the polarised one (the reference); the floor: the same
+    // statistic of two images that differ by that difference's noise alone.
+    const NoiseOnlyPair noiseOnly = pairedNoise(s, p, s2, p2);
 
     r.relative = relativeDifferenceMap(s, p);
     r.comparedPixels = std::size_t(std::count_if(r.relative.begin(), r.relative.end(),
                                                  [](float v) { return std::isfinite(v); }));
-    const std::vector<float> relFloor = relativeDifferenceMap(moved, p);
+    const std::vector<float> relFloor = relativeDifferenceMap(noiseOnly.a, noiseOnly.b);
     const std::vector<float> relOther = relativeDifferenceMap(s2, p2);
     r.meanRelative = {meanOf(r.relative), meanOf(relFloor), meanOf(relOther)};
     r.p95Relative = {percentileOf(r.relative, 95), percentileOf(relFloor, 95),
                      percentileOf(relOther, 95)};
 
     r.ciede2000 = ciede2000Map(s, p);
-    const std::vector<float> deFloor = ciede2000Map(moved, p);
+    const std::vector<float> deFloor = ciede2000Map(noiseOnly.a, noiseOnly.b);
     const std::vector<float> deOther = ciede2000Map(s2, p2);
     r.meanDeltaE = {meanOf(r.ciede2000), meanOf(deFloor), meanOf(deOther)};
     r.p95DeltaE = {percentileOf(r.ciede2000, 95), percentileOf(deFloor, 95),

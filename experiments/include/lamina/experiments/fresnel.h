@@ -21,7 +21,7 @@
 // 75, 82, 87 degrees), summary.md. With a scene, renders it in both modes with the same seed
 // and writes the difference and a CIEDE2000 map (scene_ciede2000.png/.pdf), and renders both
 // modes once more with another seed: the two pairs give the noise of the modes' difference, the
-// floor every difference is read against (pairedNoiseImage, noise_floor.h). The scene's renders
+// floor every difference is read against (pairedNoise, noise_floor.h). The scene's renders
 // are kept in the report's directory as they finish and taken back by a resumed run
 // (kept_renders.h).
 #pragma once
@@ -84,9 +84,9 @@ struct FresnelSceneComparison {
     ImageMetrics metrics;          ///< RGB against spectral
     std::vector<float> ciede2000;  ///< per pixel
     double meanDeltaE = 0, maxDeltaE = 0, p95DeltaE = 0;
-    /// The noise floor, its mean and 95th percentile: the CIEDE2000 of the spectral render
-    /// against itself moved by the noise of the modes' difference, measured from the second
-    /// pair (pairedNoiseImage).
+    /// The noise floor, its mean and 95th percentile: the CIEDE2000 between two images that
+    /// differ by the noise of the modes' difference alone, measured from the second pair
+    /// (pairedNoise).
     double floorMeanDeltaE = 0, floorP95DeltaE = 0;
     /// The mean and 95th percentile CIEDE2000 between the two modes' renders of the second seed.
     double otherSeedMeanDeltaE = 0, otherSeedP95DeltaE = 0;

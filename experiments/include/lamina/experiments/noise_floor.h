@@ -2,7 +2,7 @@
 // (mean or 95th-percentile CIEDE2000, ...) for a difference made of noise alone. For two
 // independent renders that is the statistic between two independent renders of one side; for two
 // renders that share their random numbers it is the statistic of their difference's own noise
-// (pairedNoiseImage). A difference within the floor says nothing about the models; it is
+// (pairedNoise). A difference within the floor says nothing about the models; it is
 // reported as not resolved at this sample count, with the count that would resolve it.
 #pragma once
 
@@ -18,6 +18,11 @@ namespace lamina::experiments {
 /// positions are one pattern for every seed (the floor would be understated).
 void requireSeedDependentSampler(render::SamplerKind sampler, const std::string& experiment);
 
+/// Two images that differ by noise alone, as much as two renders of a same-seed pair do.
+struct NoiseOnlyPair {
+    render::RgbImage a, b;
+};
+
 /// The noise floor of a difference between two renders `a1` and `b1` that share their seed
 /// (common random numbers: `fresnel --scene`'s two modes, `polarisation`'s), from a second such
 /// pair `a2`, `b2` rendered with another seed. Sharing their random numbers, a1 and b1 make
@@ -25,10 +30,12 @@ void requireSeedDependentSampler(render::SamplerKind sampler, const std::string&
 /// renders, whose floor would call real small differences unresolved. The noise of the
 /// difference itself is measured instead: per pixel and channel, n = ((a1 - b1) - (a2 - b2)) /
 /// sqrt(2) is zero on average and has the variance of a1 - b1 (the two pairs are independent
-/// and alike). Returns b1 + n, `b1` moved by that noise alone: a statistic of b1 + n against b1
-/// (CIEDE2000, relative difference) is the floor of the same statistic of a1 against b1.
-render::RgbImage pairedNoiseImage(const render::RgbImage& a1, const render::RgbImage& b1,
-                                  const render::RgbImage& a2, const render::RgbImage& b2);
+/// and alike). Returns the pair's mean m = (a1 + b1) / 2 moved apart by that noise alone,
+/// m + n/2 and m - n/2: a statistic of these two (CIEDE2000, relative difference) is the floor
+/// of the same statistic of a1 against b1. Centred on the mean, not on one side, so that a
+/// statistic relative to one side (black in one mode: light that cancels) stays finite.
+NoiseOnlyPair pairedNoise(const render::RgbImage& a1, const render::RgbImage& b1,
+                          const render::RgbImage& a2, const render::RgbImage& b2);
 
 /// A difference is resolved when it exceeds this many times its floor.
 inline constexpr double kResolvedOverFloor = 2.0;

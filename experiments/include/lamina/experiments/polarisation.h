@@ -8,7 +8,7 @@
 // being at most 1e-6 of the brightest pixel: light cancelled to float rounding), and
 // the CIEDE2000 of the spectral render against the polarised one; the mean and 95th percentile
 // of each, read against their noise floors (noise_floor.h): both modes are rendered again with
-// another seed, and the two pairs give the noise of the modes' difference (pairedNoiseImage), as
+// another seed, and the two pairs give the noise of the modes' difference (pairedNoise), as
 // in `fresnel --scene`. The renders are kept in the report's directory as they finish and taken
 // back by a resumed run (kept_renders.h). And the polarisation of the
 // light reaching the camera, from the polarised render's Stokes layers (luminance of each
@@ -49,7 +49,7 @@ struct PolarisationInputs {
 
 /// A statistic of a per-pixel difference and its noise floor.
 struct FlooredStatistic {
-    /// `floor`: the statistic of the difference's own noise (pairedNoiseImage): the two
+    /// `floor`: the statistic of the difference's own noise (pairedNoise): the two
     /// compared renders share their seed (common random numbers: the same paths and
     /// wavelengths), so their difference carries much less noise than two independent renders.
     double value = 0, floor = 0;
