@@ -178,7 +178,9 @@ std::string writeScene(const FresnelSceneComparison& c, Report& report) {
                "would resolve one that does not are estimated with the noise falling as "
                "1/sqrt(spp) and adding in quadrature to the true difference. The last column is "
                "the difference between the second pair: a difference that is real shows in "
-               "both.\n\n"
+               "both. Premises: the two pairs differ by their seed alone, and every sample "
+               "number of the sampler changes with the seed (sobol-global, whose film positions "
+               "do not, is refused).\n\n"
                "![CIEDE2000 map](scene_ciede2000.png) "
                "![|RGB - spectral|](scene_difference.png)\n\n",
                kResolvedOverFloor);
@@ -191,7 +193,9 @@ void writeFresnelReport(const FresnelResult& result, Report& report) {
         "# Fresnel: exact spectral against RGB models\n\n"
         "Reflectance of a flat interface from air, 0 to 89 degrees; errors are against the "
         "colour (linear Rec.709, under D65) of the exact spectral reflectance; the RGB models "
-        "are built from that colour (F0, and F82 at cos = 1/7) as RGB mode builds them.\n\n";
+        "are built from that colour (F0, and F82 at cos = 1/7) as RGB mode builds them. These "
+        "tables are computed from the n/k data in closed form, not sampled: they carry no "
+        "noise, and need no floor.\n\n";
     if (result.thinFilmNm > 0)
         md += formatText(
             "Every material carries a thin film %g nm thick of index %g: the exact reflectance is "

@@ -121,7 +121,9 @@ void writePolarisationReport(const PolarisationResult& r, Report& report) {
         "its floor; the samples that would resolve one that does not are estimated with the "
         "noise falling as 1/sqrt(spp) and adding in quadrature to the true difference. The "
         "last column is the difference between the second pair: a difference that is real "
-        "shows in both.\n\n"
+        "shows in both. Premises: the two pairs differ by their seed alone, and every sample "
+        "number of the sampler changes with the seed (sobol-global, whose film positions do "
+        "not, is refused).\n\n"
         "![relative difference](relative_difference.png) ![CIEDE2000](ciede2000.png)\n\n",
         r.comparedPixels, kResolvedOverFloor);
     md += formatText(
