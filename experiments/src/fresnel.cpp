@@ -174,9 +174,8 @@ FresnelSceneComparison compareModes(const FresnelInputs& in) {
         // Both modes again with another seed: the second pair gives the noise of the modes'
         // difference (noise_floor.h, pairedNoise).
         o.seed = hashValues({o.seed.value_or(scene.settings.seed), 0x666c6f6f72});
-        const render::RenderResult rgb2 =
-            renderIn(render::RenderModeKind::Rgb, "scene_rgb_seed2",
-                     "RGB mode with another seed (the noise floor)");
+        const render::RenderResult rgb2 = renderIn(render::RenderModeKind::Rgb, "scene_rgb_seed2",
+                                                   "RGB mode with another seed (the noise floor)");
         const render::RenderResult spectral2 =
             renderIn(render::RenderModeKind::Spectral, "scene_spectral_seed2",
                      "spectral mode with another seed (the noise floor)");

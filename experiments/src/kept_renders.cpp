@@ -48,15 +48,16 @@ render::RenderResult takeBack(const std::filesystem::path& path, const render::S
     const std::string hash = render::sceneHash(scene);
     if (shard.sceneHash != hash)
         throw refuse("scene files of hash " + shard.sceneHash, "scene files of hash " + hash);
-    const auto [found, wanted] = firstDifference(shard.settings, render::shardSettings(scene, options));
+    const auto [found, wanted] =
+        firstDifference(shard.settings, render::shardSettings(scene, options));
     if (!wanted.empty()) throw refuse(found, wanted);
     const render::RenderSettings settings = render::resolveRenderSettings(scene, options);
     if (shard.requested.first != 0 || shard.requested.count != settings.spp)
         throw refuse("spp=" + std::to_string(shard.requested.count),
                      "spp=" + std::to_string(settings.spp));
     if (shard.partial || shard.samplesDone != settings.spp)
-        throw InputError(path.string() + ": holds " + std::to_string(shard.samplesDone) + " of its " +
-                         std::to_string(settings.spp) + " samples per pixel" + remedy);
+        throw InputError(path.string() + ": holds " + std::to_string(shard.samplesDone) +
+                         " of its " + std::to_string(settings.spp) + " samples per pixel" + remedy);
     render::RenderResult r;
     r.film = std::move(shard.film);
     r.spp = shard.samplesDone;
@@ -84,7 +85,8 @@ render::RenderResult KeptRenders::render(const std::string& name, const render::
     render::RenderResult r;
     if (!directory_.empty() && resume_ && std::filesystem::exists(path)) {
         r = takeBack(path, scene, options);
-        if (!what.empty()) tell(progress, what + ": kept from " + keptRenderFile(name).string() + "\n");
+        if (!what.empty())
+            tell(progress, what + ": kept from " + keptRenderFile(name).string() + "\n");
     } else {
         if (!what.empty()) tell(progress, "rendering " + what + "...\n");
         r = renderWhole(scene, options);

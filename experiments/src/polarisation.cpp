@@ -81,18 +81,17 @@ void linearPolarisation(const render::Film& film, const std::vector<bool>& lit,
 }
 
 /// The four renders (two modes, two seeds) and what the experiment reads from them.
-PolarisationResult comparePolarisation(const PolarisationInputs& in,
-                                       const render::SceneDesc& scene, render::RenderOptions o,
-                                       KeptRenders& kept) {
+PolarisationResult comparePolarisation(const PolarisationInputs& in, const render::SceneDesc& scene,
+                                       render::RenderOptions o, KeptRenders& kept) {
     PolarisationResult r;
     r.scene = in.scene;
     r.dolpThreshold = in.dolpThreshold;
     const auto renderIn = [&](render::RenderModeKind mode, const std::string& name,
                               const std::string& what) {
         o.mode = mode;
-        return kept.render(name, scene, o, in.progress,
-                           in.scene + " in " + std::string(render::kRenderModeNames.name(mode)) +
-                               " mode" + what);
+        return kept.render(
+            name, scene, o, in.progress,
+            in.scene + " in " + std::string(render::kRenderModeNames.name(mode)) + " mode" + what);
     };
     r.polarised = renderIn(render::RenderModeKind::Polarised, "polarised", "");
     r.spectral = renderIn(render::RenderModeKind::Spectral, "spectral", "");
@@ -102,9 +101,8 @@ PolarisationResult comparePolarisation(const PolarisationInputs& in,
     const render::RenderResult polarised2 =
         renderIn(render::RenderModeKind::Polarised, "polarised_seed2",
                  " with another seed (the noise floor)");
-    const render::RenderResult spectral2 =
-        renderIn(render::RenderModeKind::Spectral, "spectral_seed2",
-                 " with another seed (the noise floor)");
+    const render::RenderResult spectral2 = renderIn(
+        render::RenderModeKind::Spectral, "spectral_seed2", " with another seed (the noise floor)");
 
     const render::RgbImage p = filmImage(*r.polarised.film), s = filmImage(*r.spectral.film);
     const render::RgbImage p2 = filmImage(*polarised2.film), s2 = filmImage(*spectral2.film);

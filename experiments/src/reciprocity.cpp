@@ -83,8 +83,7 @@ ReciprocityResult runReciprocity(const ReciprocityInputs& in) {
         const auto start = std::chrono::steady_clock::now();
         BatchImages images = keepingOnInterrupt(kept, [&] {
             return renderBatches(scene, o, in.spp, in.batches, kept, name, [&](int k) {
-                tell(in.progress,
-                     formatText("\r%s: batch %d/%d", name.c_str(), k + 1, in.batches));
+                tell(in.progress, formatText("\r%s: batch %d/%d", name.c_str(), k + 1, in.batches));
             });
         });
         const double seconds =

@@ -17,9 +17,9 @@
 #include <thread>
 
 #include "cli_helpers.h"
-#include "source_files.h"
 #include "lamina/image/image_io.h"
 #include "lamina/output/image_output.h"
+#include "source_files.h"
 
 extern char** environ;
 
@@ -237,8 +237,8 @@ TEST_F(Interruption, CtrlCDuringConvergenceKeepsTheFinishedRunsAndResumeContinue
 TEST_F(Interruption, CtrlCDuringPolarisationKeepsItsRendersAndResumeContinues) {
     const std::string scene = testing::sourceFile("scenes/polarisation/two-mirrors.json").string();
     const auto report = dir_ / "report";
-    const std::vector<std::string> args = {"polarisation", scene, "--spp", "128", "-o",
-                                           report.string()};
+    const std::vector<std::string> args = {"polarisation", scene, "--spp",
+                                           "128",          "-o",  report.string()};
     const pid_t pid = start(args);
     const fs::path first = report / "renders" / "polarised.exr";
     const auto deadline = std::chrono::steady_clock::now() + 60s;
@@ -247,9 +247,9 @@ TEST_F(Interruption, CtrlCDuringPolarisationKeepsItsRendersAndResumeContinues) {
     ASSERT_TRUE(fs::exists(first)) << "the first render was not kept";
     ::kill(pid, SIGINT);
     EXPECT_EQ(wait(pid), 130) << stderrText();
-    EXPECT_THAT(stderrText(), ::testing::HasSubstr("stopped before the report; kept " +
-                                                   first.string() +
-                                                   " (the same command with --resume"));
+    EXPECT_THAT(stderrText(),
+                ::testing::HasSubstr("stopped before the report; kept " + first.string() +
+                                     " (the same command with --resume"));
     EXPECT_FALSE(fs::exists(report / "renders" / "spectral.exr"));
     EXPECT_FALSE(fs::exists(report / "summary.md"));
     EXPECT_FALSE(temporaryPresent());
@@ -259,20 +259,21 @@ TEST_F(Interruption, CtrlCDuringPolarisationKeepsItsRendersAndResumeContinues) {
         command += arg + " ";
     const CommandRun refused = runLaminaStderr(command + "--resume --seed 3");
     EXPECT_EQ(refused.exitCode, 1) << refused.output;
-    EXPECT_THAT(refused.output, ::testing::HasSubstr(
-                                    "lamina: error: " + first.string() + ": rendered with seed="));
-    EXPECT_EQ(std::count(refused.output.begin(), refused.output.end(), '\n'), 1)
-        << refused.output;
+    EXPECT_THAT(refused.output,
+                ::testing::HasSubstr("lamina: error: " + first.string() + ": rendered with seed="));
+    EXPECT_EQ(std::count(refused.output.begin(), refused.output.end(), '\n'), 1) << refused.output;
 
     const CommandRun resumed = runLaminaStderr(command + "--resume");
     EXPECT_EQ(resumed.exitCode, 0) << resumed.output;
-    EXPECT_THAT(resumed.output, ::testing::HasSubstr("polarised mode: kept from renders/polarised.exr"));
-    EXPECT_THAT(resumed.output, ::testing::HasSubstr("rendering " + scene + " in spectral mode..."));
+    EXPECT_THAT(resumed.output,
+                ::testing::HasSubstr("polarised mode: kept from renders/polarised.exr"));
+    EXPECT_THAT(resumed.output,
+                ::testing::HasSubstr("rendering " + scene + " in spectral mode..."));
     EXPECT_FALSE(fs::exists(report / "renders")) << "kept renders left after the report";
 
     const auto whole = dir_ / "whole";
-    const CommandRun uninterrupted = runLamina("polarisation " + scene + " --spp 128 -o " +
-                                               whole.string());
+    const CommandRun uninterrupted =
+        runLamina("polarisation " + scene + " --spp 128 -o " + whole.string());
     EXPECT_EQ(uninterrupted.exitCode, 0) << uninterrupted.output;
     const auto text = [](const fs::path& file) {
         std::ifstream in(file);

@@ -184,10 +184,10 @@ TEST_F(PolarisationExperimentScene, ASmallRealDifferenceIsResolvedAgainstTheNois
     const render::RgbImage s2 = filmImage(*render::renderScene(desc, o).film);
     double independent = 0;
     for (std::size_t i = 0; i < s1.pixels.size() / 3; ++i) {
-        const double y1 = luminance(Rgb<double>(s1.pixels[3 * i], s1.pixels[3 * i + 1],
-                                                s1.pixels[3 * i + 2]));
-        const double y2 = luminance(Rgb<double>(s2.pixels[3 * i], s2.pixels[3 * i + 1],
-                                                s2.pixels[3 * i + 2]));
+        const double y1 =
+            luminance(Rgb<double>(s1.pixels[3 * i], s1.pixels[3 * i + 1], s1.pixels[3 * i + 2]));
+        const double y2 =
+            luminance(Rgb<double>(s2.pixels[3 * i], s2.pixels[3 * i + 1], s2.pixels[3 * i + 2]));
         independent += std::abs(y1 - y2) / ((y1 + y2) / 2) / double(s1.pixels.size() / 3);
     }
     EXPECT_FALSE(readAgainstFloor(r.meanRelative.value, independent, 4).resolved) << independent;
