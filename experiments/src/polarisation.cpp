@@ -80,12 +80,41 @@ void linearPolarisation(const render::Film& film, const std::vector<bool>& lit,
         }
 }
 
-FlooredStatistic floored(double value, double polarisedPair, double spectralPair,
-                         double otherSeed) {
+FlooredStatistic floored(double value, double polarisedPair, double modePair, double otherSeed) {
     // One render of each mode against each other carries one render's noise of each; a pair of
     // renders of one mode carries twice its own: combined in quadrature, as fresnel --scene.
-    return {value, std::sqrt((polarisedPair * polarisedPair + spectralPair * spectralPair) / 2),
-            otherSeed};
+    return {value, std::sqrt((polarisedPair * polarisedPair + modePair * modePair) / 2), otherSeed};
+}
+
+/// The unpolarised render `mode` (and its twin of the floor's seed) against the polarised
+/// render `p` (and its twin).
+AgainstPolarised againstPolarised(render::RenderResult mode, const render::RenderResult& modeTwin,
+                                  const render::RgbImage& p, const render::RgbImage& pTwin,
+                                  const char* what) {
+    AgainstPolarised a;
+    a.render = std::move(mode);
+    const render::RgbImage s = filmImage(*a.render.film), sTwin = filmImage(*modeTwin.film);
+    a.metrics = compareImages(s, p);
+    requireComparedValues(a.metrics, s, what, p, "the polarised render");
+
+    a.relative = relativeDifferenceMap(s, p);
+    a.comparedPixels = std::size_t(std::count_if(a.relative.begin(), a.relative.end(),
+                                                 [](float v) { return std::isfinite(v); }));
+    const std::vector<float> relP = relativeDifferenceMap(pTwin, p);
+    const std::vector<float> relS = relativeDifferenceMap(sTwin, s);
+    const std::vector<float> relTwins = relativeDifferenceMap(sTwin, pTwin);
+    a.meanRelative = floored(meanOf(a.relative), meanOf(relP), meanOf(relS), meanOf(relTwins));
+    a.p95Relative = floored(percentileOf(a.relative, 95), percentileOf(relP, 95),
+                            percentileOf(relS, 95), percentileOf(relTwins, 95));
+
+    a.ciede2000 = ciede2000Map(s, p);
+    const std::vector<float> deP = ciede2000Map(pTwin, p);
+    const std::vector<float> deS = ciede2000Map(sTwin, s);
+    const std::vector<float> deTwins = ciede2000Map(sTwin, pTwin);
+    a.meanDeltaE = floored(meanOf(a.ciede2000), meanOf(deP), meanOf(deS), meanOf(deTwins));
+    a.p95DeltaE = floored(percentileOf(a.ciede2000, 95), percentileOf(deP, 95),
+                          percentileOf(deS, 95), percentileOf(deTwins, 95));
+    return a;
 }
 
 }  // namespace
@@ -106,39 +135,24 @@ PolarisationResult runPolarisation(const PolarisationInputs& in) {
         return renderWhole(scene, o);
     };
     r.polarised = renderIn(render::RenderModeKind::Polarised, "");
-    r.spectral = renderIn(render::RenderModeKind::Spectral, "");
+    render::RenderResult spectral = renderIn(render::RenderModeKind::Spectral, "");
+    render::RenderResult rgb = renderIn(render::RenderModeKind::Rgb, "");
     // Each mode again with an independent seed: each pair differs by its mode's noise alone.
     o.seed = hashValues({o.seed.value_or(scene.settings.seed), 0x706f6c666c6f6f72});
     const render::RenderResult polarisedTwin =
         renderIn(render::RenderModeKind::Polarised, " again (the noise floor)");
     const render::RenderResult spectralTwin =
         renderIn(render::RenderModeKind::Spectral, " again (the noise floor)");
+    const render::RenderResult rgbTwin =
+        renderIn(render::RenderModeKind::Rgb, " again (the noise floor)");
 
-    const render::RgbImage p = filmImage(*r.polarised.film), s = filmImage(*r.spectral.film);
+    const render::RgbImage p = filmImage(*r.polarised.film);
     const render::RgbImage pTwin = filmImage(*polarisedTwin.film);
-    const render::RgbImage sTwin = filmImage(*spectralTwin.film);
     r.width = p.width;
     r.height = p.height;
-    r.metrics = compareImages(s, p);
-    requireComparedValues(r.metrics, s, "the spectral render", p, "the polarised render");
-
-    r.relative = relativeDifferenceMap(s, p);
-    r.comparedPixels = std::size_t(std::count_if(r.relative.begin(), r.relative.end(),
-                                                 [](float v) { return std::isfinite(v); }));
-    const std::vector<float> relP = relativeDifferenceMap(pTwin, p);
-    const std::vector<float> relS = relativeDifferenceMap(sTwin, s);
-    const std::vector<float> relTwins = relativeDifferenceMap(sTwin, pTwin);
-    r.meanRelative = floored(meanOf(r.relative), meanOf(relP), meanOf(relS), meanOf(relTwins));
-    r.p95Relative = floored(percentileOf(r.relative, 95), percentileOf(relP, 95),
-                            percentileOf(relS, 95), percentileOf(relTwins, 95));
-
-    r.ciede2000 = ciede2000Map(s, p);
-    const std::vector<float> deP = ciede2000Map(pTwin, p);
-    const std::vector<float> deS = ciede2000Map(sTwin, s);
-    const std::vector<float> deTwins = ciede2000Map(sTwin, pTwin);
-    r.meanDeltaE = floored(meanOf(r.ciede2000), meanOf(deP), meanOf(deS), meanOf(deTwins));
-    r.p95DeltaE = floored(percentileOf(r.ciede2000, 95), percentileOf(deP, 95),
-                          percentileOf(deS, 95), percentileOf(deTwins, 95));
+    r.spectral =
+        againstPolarised(std::move(spectral), spectralTwin, p, pTwin, "the spectral render");
+    r.rgb = againstPolarised(std::move(rgb), rgbTwin, p, pTwin, "the RGB render");
 
     r.lit = litPixels(p);
     std::vector<float> twinDolp, twinAolp;

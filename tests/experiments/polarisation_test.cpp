@@ -66,21 +66,22 @@ TEST(PolarisationExperiment, CrossedMirrorsAtBrewstersAngleDifferAboveTheNoiseFl
         runOn(testing::sourceFile("scenes/polarisation/two-mirrors.json").string());
     ASSERT_EQ(r.width, 64);
     ASSERT_EQ(r.height, 12);
-    const Sample crossed = blockOf(r.relative, r.width, kCrossed);
-    const Sample parallel = blockOf(r.relative, r.width, kParallel);
+    const Sample crossed = blockOf(r.spectral.relative, r.width, kCrossed);
+    const Sample parallel = blockOf(r.spectral.relative, r.width, kParallel);
     EXPECT_LT(std::abs(crossed.mean - 2.0), kZ * crossed.standardError + 1e-6) << crossed.mean;
     EXPECT_LT(std::abs(parallel.mean - 2.0 / 3.0), kZ * parallel.standardError + 1e-6)
         << parallel.mean;
     // What the summary reports: every statistic resolved, far above its floor.
     const int spp = r.polarised.spp;
-    for (const FlooredStatistic& s : {r.meanRelative, r.p95Relative, r.meanDeltaE, r.p95DeltaE})
+    for (const FlooredStatistic& s : {r.spectral.meanRelative, r.spectral.p95Relative,
+                                      r.spectral.meanDeltaE, r.spectral.p95DeltaE})
         EXPECT_TRUE(readAgainstFloor(s.value, s.floor, spp).resolved)
             << s.value << " against " << s.floor;
     // The relative difference, a closed form of the mirrors, stands far above its noise.
-    EXPECT_GT(r.meanRelative.value, 10 * r.meanRelative.floor);
-    EXPECT_GT(r.p95Relative.value, 10 * r.p95Relative.floor);
+    EXPECT_GT(r.spectral.meanRelative.value, 10 * r.spectral.meanRelative.floor);
+    EXPECT_GT(r.spectral.p95Relative.value, 10 * r.spectral.p95Relative.floor);
     // The p95 of the relative difference is the crossed pair's 2.
-    EXPECT_NEAR(r.p95Relative.value, 2.0, 1e-3);
+    EXPECT_NEAR(r.spectral.p95Relative.value, 2.0, 1e-3);
     // The parallel pair's light is s-polarised: fully, along the image's x.
     const Sample dolp = blockOf(r.dolp, r.width, kParallel);
     const Sample aolp = blockOf(r.aolp, r.width, kParallel);

@@ -1,16 +1,17 @@
 // What ignoring polarisation costs in a scene (`lamina polarisation`): the scene rendered in the
-// polarised mode (Stokes vectors and Mueller matrices, docs/polarisation.md) and in the spectral
-// mode (s and p averaged at every event), with the same seed, samples and settings, so that the
-// two differ by polarisation and by noise alone.
+// polarised mode (Stokes vectors and Mueller matrices, docs/polarisation.md), in the spectral
+// mode (s and p averaged at every event) and in the RGB mode, with the same seed, samples and
+// settings, so that the polarised and the spectral render differ by polarisation and by noise
+// alone, and the RGB render also by its colour and Fresnel approximations.
 //
-// Reported: per pixel the relative difference of the luminance, |Y_spectral - Y_polarised| /
-// ((Y_spectral + Y_polarised) / 2) (symmetric, in [0, 2]; pixels black in both left out, black
-// being at most 1e-6 of the brightest pixel: light cancelled to float rounding), and
-// the CIEDE2000 of the spectral render against the polarised one; the mean and 95th percentile
-// of each, read against their noise floors (noise_floor.h): the same statistic between each
-// mode's render and a second one with another seed, the two pairs combined in quadrature,
-// sqrt((polarised^2 + spectral^2) / 2), as `fresnel --scene` does. And the polarisation of the
-// light reaching the camera, from the polarised render's Stokes layers (luminance of each
+// Reported for each unpolarised mode: per pixel the relative difference of the luminance,
+// |Y_mode - Y_polarised| / ((Y_mode + Y_polarised) / 2) (symmetric, in [0, 2]; pixels black in
+// both left out, black being at most 1e-6 of the brightest pixel: light cancelled to float
+// rounding), and the CIEDE2000 of the mode's render against the polarised one; the mean and 95th
+// percentile of each, read against their noise floors (noise_floor.h): the same statistic
+// between each mode's render and a second one with another seed, the two pairs combined in
+// quadrature, sqrt((polarised^2 + mode^2) / 2), as `fresnel --scene` does. And the polarisation of
+// the light reaching the camera, from the polarised render's Stokes layers (luminance of each
 // component, in the image frame): the degree of linear polarisation DoLP = sqrt(S1^2 + S2^2) /
 // S0 and its angle AoLP = atan2(S2, S1) / 2 (degrees counter-clockwise from the image's right),
 // which means something only where the light is polarised: the AoLP figure masks pixels whose
@@ -51,16 +52,24 @@ struct FlooredStatistic {
     double otherSeed = 0;
 };
 
-struct PolarisationResult {
-    std::string scene;
-    double dolpThreshold = kDefaultDolpThreshold;
-    render::RenderResult polarised, spectral;
-    ImageMetrics metrics;  ///< the spectral render against the polarised one (the reference)
-    int width = 0, height = 0;
+/// An unpolarised mode's render of the scene against the polarised one.
+struct AgainstPolarised {
+    render::RenderResult render;
+    ImageMetrics metrics;  ///< against the polarised render (the reference)
     /// Per pixel, row-major from the top row. `relative`: NaN where both renders are black.
     std::vector<float> relative, ciede2000;
     FlooredStatistic meanRelative, p95Relative, meanDeltaE, p95DeltaE;
     std::size_t comparedPixels = 0;  ///< pixels not black in both renders (`relative`'s)
+};
+
+struct PolarisationResult {
+    std::string scene;
+    double dolpThreshold = kDefaultDolpThreshold;
+    render::RenderResult polarised;
+    /// The spectral mode (s and p averaged at each event: polarisation alone differs) and the
+    /// RGB mode (also its colour and Fresnel approximations: F82 for metals, the d-line index).
+    AgainstPolarised spectral, rgb;
+    int width = 0, height = 0;
     /// The pixels with light in the polarised render: S0 above 1e-6 of the brightest pixel's
     /// (a light that cancels to float rounding, crossed mirrors at Brewster's angle, is none).
     std::vector<bool> lit;
