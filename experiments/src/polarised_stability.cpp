@@ -12,19 +12,12 @@ namespace lamina::experiments {
 
 namespace {
 
-/// A model's spectral build with the wavelengths it reads kept alive beside it.
+/// A model's build with the wavelengths it reads kept alive beside it.
 template <std::floating_point T>
 struct SpectralBuild {
     SampledWavelengths<T> lambda = SampledWavelengths<T>::fixed({450, 520, 600, 680});
     std::unique_ptr<Bxdf<SampledSpectrum<T>>> bxdf;
 };
-
-template <std::floating_point T>
-std::unique_ptr<SpectralBuild<T>> build(const MaterialDesc& desc) {
-    auto b = std::make_unique<SpectralBuild<T>>();
-    b->bxdf = buildBxdf(desc, SpectrumContext<SampledSpectrum<T>>{b->lambda});
-    return b;
-}
 
 /// One matrix of a probe point, with what it is, so that neighbours compare like with like.
 template <std::floating_point T>
@@ -170,21 +163,22 @@ std::vector<double> probedIndices(const std::string& materialJson) {
     return {};
 }
 
-PolarisedStabilityReport auditPolarisedStability(
-    const std::function<MaterialDesc(double alpha)>& materialAt, const std::vector<double>& alphas,
-    const std::vector<double>& indices) {
+PolarisedStabilityReport auditPolarisedStability(const PolarisedStabilityModel& model,
+                                                 const std::vector<double>& alphas,
+                                                 const std::vector<double>& indices) {
     PolarisedStabilityReport r;
     for (const double alpha : alphas) {
-        const MaterialDesc desc = materialAt(alpha);
-        const auto d = build<double>(desc);
-        const auto f = build<float>(desc);
+        SpectralBuild<double> d;
+        d.bxdf = model.makeDouble(alpha, d.lambda);
+        SpectralBuild<float> f;
+        f.bxdf = model.makeFloat(alpha, f.lambda);
         for (const Special& s : specialAngles(indices)) {
             PolarisedProbe p;
             p.what = s.what;
             p.cosTheta = s.cosTheta;
             p.alpha = alpha;
-            p.jumpDouble = probe(*d->bxdf, s.cosTheta, s.neighbours, indices, p);
-            p.jumpFloat = probe(*f->bxdf, s.cosTheta, s.neighbours, indices, p);
+            p.jumpDouble = probe(*d.bxdf, s.cosTheta, s.neighbours, indices, p);
+            p.jumpFloat = probe(*f.bxdf, s.cosTheta, s.neighbours, indices, p);
             r.evaluations += p.evaluations;
             r.nan += p.nan;
             r.inf += p.inf;
@@ -196,6 +190,19 @@ PolarisedStabilityReport auditPolarisedStability(
         }
     }
     return r;
+}
+
+PolarisedStabilityReport auditPolarisedStability(
+    const std::function<MaterialDesc(double alpha)>& materialAt, const std::vector<double>& alphas,
+    const std::vector<double>& indices) {
+    PolarisedStabilityModel model;
+    model.makeDouble = [&](double alpha, SampledWavelengths<double>& lambda) {
+        return buildBxdf(materialAt(alpha), SpectrumContext<SampledSpectrum<double>>{lambda});
+    };
+    model.makeFloat = [&](double alpha, SampledWavelengths<float>& lambda) {
+        return buildBxdf(materialAt(alpha), SpectrumContext<SampledSpectrum<float>>{lambda});
+    };
+    return auditPolarisedStability(model, alphas, indices);
 }
 
 }  // namespace lamina::experiments

@@ -59,5 +59,69 @@ INSTANTIATE_TEST_SUITE_P(
                       Model{R"({"type":"conductor","eta":0.5,"k":20})", true}),
     [](const auto& param) { return "model" + std::to_string(param.index); });
 
+/// A real BSDF whose Mueller matrices turn their output frame by 90 degrees (S1 and S2 change
+/// sign) beyond Brewster's angle from outside: the kind of frame error the audit is for.
+template <std::floating_point T>
+class TurnedPastBrewster final : public Bxdf<SampledSpectrum<T>> {
+  public:
+    using S = SampledSpectrum<T>;
+    using V = Vec3<T>;
+    TurnedPastBrewster(std::unique_ptr<Bxdf<S>> inner, double eta)
+        : inner_(std::move(inner)), cosBrewster_(T(1 / std::sqrt(1 + eta * eta))) {}
+    S eval(const V& wo, const V& wi, TransportMode mode) const override {
+        return inner_->eval(wo, wi, mode);
+    }
+    T pdf(const V& wo, const V& wi) const override { return inner_->pdf(wo, wi); }
+    std::optional<BsdfSample<S>> sample(const V& wo, T uc, const Vec2<T>& u,
+                                        TransportMode mode) const override {
+        return inner_->sample(wo, uc, u, mode);
+    }
+    std::uint32_t flags() const override { return inner_->flags(); }
+    MuellerMatrix<S> evalMueller(const V& wo, const V& wi, TransportMode mode) const override {
+        return turned(wo, inner_->evalMueller(wo, wi, mode));
+    }
+    MuellerMatrix<S> sampleMueller(const V& wo, const BsdfSample<S>& s,
+                                   TransportMode mode) const override {
+        return turned(wo, inner_->sampleMueller(wo, s, mode));
+    }
+
+  private:
+    MuellerMatrix<S> turned(const V& wo, MuellerMatrix<S> m) const {
+        if (wo.z > T(0) && wo.z < cosBrewster_)
+            for (int row = 1; row < 3; ++row)
+                for (int c = 0; c < 4; ++c)
+                    m(row, c) = -m(row, c);
+        return m;
+    }
+    std::unique_ptr<Bxdf<S>> inner_;
+    T cosBrewster_;
+};
+
+TEST(StabilityPolarisedAudit, FindsAFrameTurnedPastBrewstersAngle) {
+    const MaterialDesc glass = parseMaterialArgument(R"({"type":"dielectric","ior":1.5})");
+    PolarisedStabilityModel model;
+    model.makeDouble =
+        [&](double,
+            SampledWavelengths<double>& lambda) -> std::unique_ptr<Bxdf<SampledSpectrum<double>>> {
+        return std::make_unique<TurnedPastBrewster<double>>(
+            buildBxdf(glass, SpectrumContext<SampledSpectrum<double>>{lambda}), 1.5);
+    };
+    model.makeFloat =
+        [&](double,
+            SampledWavelengths<float>& lambda) -> std::unique_ptr<Bxdf<SampledSpectrum<float>>> {
+        return std::make_unique<TurnedPastBrewster<float>>(
+            buildBxdf(glass, SpectrumContext<SampledSpectrum<float>>{lambda}), 1.5);
+    };
+    const PolarisedStabilityReport r = auditPolarisedStability(model, {0.0}, {1.5});
+    EXPECT_EQ(r.nan + r.inf, 0);
+    // Found in both precisions, at Brewster's angle from outside and nowhere else.
+    EXPECT_EQ(r.discontinuities, 2);
+    for (const PolarisedProbe& p : r.probes) {
+        const bool there = p.what == "Brewster's angle, outside";
+        EXPECT_EQ(p.jumpFloat > kPolarisedJumpBound<float>, there) << p.what;
+        EXPECT_EQ(p.jumpDouble > kPolarisedJumpBound<double>, there) << p.what;
+    }
+}
+
 }  // namespace
 }  // namespace lamina::experiments

@@ -19,10 +19,12 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "lamina/bsdf/material_builder.h"
+#include "lamina/spectral/sampled_wavelengths.h"
 
 namespace lamina::experiments {
 
@@ -60,8 +62,24 @@ struct PolarisedStabilityReport {
 /// k = 0, when a number (none for other models: only the normal and grazing probes).
 std::vector<double> probedIndices(const std::string& materialJson);
 
-/// The audit of a material, `materialAt(alpha)` at each of `alphas`, its spectral build at 450,
-/// 520, 600 and 680 nm, with the Brewster and critical angles of `indices` (probedIndices).
+/// Builds the model at a given alpha in both precisions, at the wavelengths given (which the
+/// model may keep a reference to: they outlive it).
+struct PolarisedStabilityModel {
+    std::function<std::unique_ptr<Bxdf<SampledSpectrum<double>>>(
+        double alpha, SampledWavelengths<double>& lambda)>
+        makeDouble;
+    std::function<std::unique_ptr<Bxdf<SampledSpectrum<float>>>(double alpha,
+                                                                SampledWavelengths<float>& lambda)>
+        makeFloat;
+};
+
+/// The audit of a model at each of `alphas`, at 450, 520, 600 and 680 nm, with the Brewster
+/// and critical angles of `indices` (probedIndices).
+PolarisedStabilityReport auditPolarisedStability(const PolarisedStabilityModel& model,
+                                                 const std::vector<double>& alphas,
+                                                 const std::vector<double>& indices);
+
+/// The same for a material, `materialAt(alpha)` (its spectral build).
 PolarisedStabilityReport auditPolarisedStability(
     const std::function<MaterialDesc(double alpha)>& materialAt, const std::vector<double>& alphas,
     const std::vector<double>& indices);
