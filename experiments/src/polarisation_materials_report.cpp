@@ -143,7 +143,10 @@ void writeDerivedFigures(const PolarisationMaterial& m, const std::vector<double
 }
 
 std::string angleTable(const PolarisationMaterial& m) {
-    std::string md = formatText("### %s (%s)\n\n", m.stem.c_str(), m.name.c_str());
+    // The heading is the data's own name, with the files' stem where the name does not start
+    // with it (an n/k file's).
+    std::string md = "### " + m.name +
+                     (m.name.rfind(m.stem, 0) == 0 ? "" : " (files " + m.stem + "_*)") + "\n\n";
     md += m.conductor
               ? "| wavelength | n + ik | principal angle (retardance 90 degrees) | "
                 "minimum of Rp (pseudo-Brewster) | Rs, Rp there |\n|---|---|---|---|---|\n"
