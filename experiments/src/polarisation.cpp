@@ -97,23 +97,20 @@ AgainstPolarised againstPolarised(render::RenderResult mode, const render::Rende
     a.metrics = compareImages(s, p);
     requireComparedValues(a.metrics, s, what, p, "the polarised render");
 
-    a.relative = relativeDifferenceMap(s, p);
+    // A per-pixel statistic of the pair, its mean and 95th percentile against their floors.
+    const auto measure = [&](auto map, std::vector<float>& values, FlooredStatistic& mean,
+                             FlooredStatistic& p95) {
+        values = map(s, p);
+        const std::vector<float> pPair = map(pTwin, p), sPair = map(sTwin, s);
+        const std::vector<float> twins = map(sTwin, pTwin);
+        mean = floored(meanOf(values), meanOf(pPair), meanOf(sPair), meanOf(twins));
+        p95 = floored(percentileOf(values, 95), percentileOf(pPair, 95), percentileOf(sPair, 95),
+                      percentileOf(twins, 95));
+    };
+    measure(relativeDifferenceMap, a.relative, a.meanRelative, a.p95Relative);
+    measure(ciede2000Map, a.ciede2000, a.meanDeltaE, a.p95DeltaE);
     a.comparedPixels = std::size_t(std::count_if(a.relative.begin(), a.relative.end(),
                                                  [](float v) { return std::isfinite(v); }));
-    const std::vector<float> relP = relativeDifferenceMap(pTwin, p);
-    const std::vector<float> relS = relativeDifferenceMap(sTwin, s);
-    const std::vector<float> relTwins = relativeDifferenceMap(sTwin, pTwin);
-    a.meanRelative = floored(meanOf(a.relative), meanOf(relP), meanOf(relS), meanOf(relTwins));
-    a.p95Relative = floored(percentileOf(a.relative, 95), percentileOf(relP, 95),
-                            percentileOf(relS, 95), percentileOf(relTwins, 95));
-
-    a.ciede2000 = ciede2000Map(s, p);
-    const std::vector<float> deP = ciede2000Map(pTwin, p);
-    const std::vector<float> deS = ciede2000Map(sTwin, s);
-    const std::vector<float> deTwins = ciede2000Map(sTwin, pTwin);
-    a.meanDeltaE = floored(meanOf(a.ciede2000), meanOf(deP), meanOf(deS), meanOf(deTwins));
-    a.p95DeltaE = floored(percentileOf(a.ciede2000, 95), percentileOf(deP, 95),
-                          percentileOf(deS, 95), percentileOf(deTwins, 95));
     return a;
 }
 

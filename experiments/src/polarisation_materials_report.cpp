@@ -120,26 +120,25 @@ void writeDerivedFigures(const PolarisationMaterial& m, const std::vector<double
              false)}};
     report.addFigure(m.stem + "_reflectance", r);
 
-    LineFigure d;
-    d.title = "Diattenuation of reflection on " + m.name;
-    d.xLabel = "angle of incidence (degrees)";
-    d.yLabel = "(Rs - Rp) / (Rs + Rp)";
-    d.xScale = d.yScale = AxisScale::Linear;
-    d.panels = {{"", perWavelength(m, degrees, [](const MuellerCurve& c, std::size_t a) {
-                     return c.diattenuation[a];
-                 })}};
-    report.addFigure(m.stem + "_diattenuation", d);
-
-    LineFigure t;
-    t.title = "Retardance of reflection on " + m.name;
-    t.xLabel = "angle of incidence (degrees)";
-    t.yLabel = "phase of r_s conj(r_p) (degrees)";
-    t.xScale = t.yScale = AxisScale::Linear;
-    t.panels = {{"", perWavelength(m, degrees, [](const MuellerCurve& c, std::size_t a) {
-                     return c.retardance[a];
-                 })}};
-    t.caption = "atan2(M23, M22): 180 degrees at normal incidence, 0 at grazing incidence.";
-    report.addFigure(m.stem + "_retardance", t);
+    // One panel against angle, a series per wavelength of `of(curve)`.
+    const auto onePanel = [&](const std::string& name, std::string title, std::string yLabel,
+                              const std::vector<double> MuellerCurve::*of, std::string caption) {
+        LineFigure f;
+        f.title = std::move(title) + " of reflection on " + m.name;
+        f.xLabel = "angle of incidence (degrees)";
+        f.yLabel = std::move(yLabel);
+        f.xScale = f.yScale = AxisScale::Linear;
+        f.panels = {{"", perWavelength(m, degrees, [&](const MuellerCurve& c, std::size_t a) {
+                         return (c.*of)[a];
+                     })}};
+        f.caption = std::move(caption);
+        report.addFigure(m.stem + "_" + name, f);
+    };
+    onePanel("diattenuation", "Diattenuation", "(Rs - Rp) / (Rs + Rp)",
+             &MuellerCurve::diattenuation, "");
+    onePanel("retardance", "Retardance", "phase of r_s conj(r_p) (degrees)",
+             &MuellerCurve::retardance,
+             "atan2(M23, M22): 180 degrees at normal incidence, 0 at grazing incidence.");
 }
 
 std::string angleTable(const PolarisationMaterial& m) {

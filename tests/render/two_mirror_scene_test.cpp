@@ -61,12 +61,12 @@ void expectBlock(const render::Film& film, const Block& b, double expected, cons
     }
 }
 
-render::RenderResult renderShipped(render::RenderModeKind mode) {
+render::RenderResult renderShipped(render::RenderModeKind mode,
+                                   const char* scene = "scenes/polarisation/two-mirrors.json") {
     render::RenderOptions o;
     o.mode = mode;
     o.spp = 16;
-    return render::renderScene(
-        render::loadScene(testing::sourceFile("scenes/polarisation/two-mirrors.json")), o);
+    return render::renderScene(render::loadScene(testing::sourceFile(scene)), o);
 }
 
 struct Reflectances {
@@ -109,11 +109,7 @@ constexpr double kGoldDegrees = 70;
 constexpr double kSpectralIntegration = 2e-3;
 
 render::RenderResult renderGold(render::RenderModeKind mode) {
-    render::RenderOptions o;
-    o.mode = mode;
-    o.spp = 16;
-    return render::renderScene(
-        render::loadScene(testing::sourceFile("scenes/polarisation/gold-mirrors.json")), o);
+    return renderShipped(mode, "scenes/polarisation/gold-mirrors.json");
 }
 
 /// The colour of kRadiance times `f(Rs, Rp)` of gold at kGoldDegrees, per wavelength.
