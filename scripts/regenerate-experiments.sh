@@ -28,10 +28,17 @@ rm -rf "$out/layering"
 "$lamina" layering clear-paint varnished-wood coated-gold tinted-coat --estimates 1024 \
   --albedo-samples 32768 --scene scenes/layering/test-object.json -o "$out/layering"
 
-# What ignoring polarisation costs: the two mirror pairs at Brewster's angle (closed forms) and
-# the metal and glass spheres.
-rm -rf "$out/polarisation/two-mirrors" "$out/polarisation/fresnel-spheres"
+# What ignoring polarisation costs: the glass and the gold mirror pairs (closed forms), the
+# metal and glass spheres, the still life behind a polarising filter; and the Mueller matrices
+# of reflection of gold, copper and BK7.
+rm -rf "$out/polarisation/two-mirrors" "$out/polarisation/gold-mirrors" \
+  "$out/polarisation/fresnel-spheres" "$out/polarisation/still-life" "$out/polarisation/materials"
 "$lamina" polarisation scenes/polarisation/two-mirrors.json --spp 64 \
   -o "$out/polarisation/two-mirrors"
+"$lamina" polarisation scenes/polarisation/gold-mirrors.json --spp 64 \
+  -o "$out/polarisation/gold-mirrors"
 "$lamina" polarisation scenes/fresnel-spheres.json --resolution 240x120 --spp 256 \
   -o "$out/polarisation/fresnel-spheres"
+"$lamina" polarisation scenes/polarisation/still-life.json --spp 64 \
+  -o "$out/polarisation/still-life"
+"$lamina" polarisation Au Cu bk7 -o "$out/polarisation/materials"

@@ -48,7 +48,9 @@ for scene in scenes/media/*.json; do
     fi
   done
 done
-# Scenes of the polarised mode: every integrator in it, beside the spectral path tracer.
+# Scenes of the polarised mode: every integrator in it, beside the spectral path tracer (the
+# still life's polarising filter, a delta sheet in front of the lens, leaves light tracing and
+# BDPT's light paths black there: still an image to keep identical).
 for scene in scenes/polarisation/*.json; do
   name=$(echo "${scene#scenes/}" | tr / _); name=${name%.json}
   for variant in "path polarised" "light polarised" "bdpt polarised" "path spectral"; do

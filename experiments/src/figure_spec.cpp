@@ -99,6 +99,7 @@ void writeFigureSpec(const std::filesystem::path& directory, const std::string& 
         panels.push_back(panel);
     }
     j["panels"] = panels;
+    if (figure.columns > 0) j["columns"] = figure.columns;
     writeSpec(directory, name, j);
 }
 

@@ -1,5 +1,7 @@
 #include "lamina/experiments/fresnel.h"
+#include "lamina/experiments/interrupted.h"
 #include "lamina/experiments/kept_renders.h"
+#include "lamina/experiments/material_names.h"
 #include "lamina/experiments/noise_floor.h"
 
 #include <algorithm>
@@ -57,24 +59,6 @@ Fresnel<Rgb<double>> rgbFilmModel(const IorSpectrum& ior, bool conductor, const 
     return f;
 }
 
-bool isConductor(const IorSpectrum& ior) {
-    for (double nm = 380; nm <= 780; nm += 10)
-        if (ior.k(nm) > 0) return true;
-    return false;
-}
-
-IorSpectrum loadMaterial(const std::string& name) {
-    if (auto ior = namedIor(name)) return *ior;
-    if (std::filesystem::exists(name)) return loadIorFile(name);
-    std::string known;
-    for (const auto& m : namedMetalNames())
-        known += m + " ";
-    for (const auto& g : namedGlassNames())
-        known += g + " ";
-    throw InputError("unknown material \"" + name + "\": expected a metal or glass name (" + known +
-                     ") or an n/k file (YAML or CSV)");
-}
-
 double cosOf(int degrees) {
     return degrees == 90 ? 0.0 : std::cos(double(degrees) * kPi<double> / 180.0);
 }
@@ -87,7 +71,7 @@ WavelengthCurve exactCurve(const IorSpectrum& ior, double nm, const Film& film) 
 }
 
 FresnelMaterial analyse(const std::string& materialName, const Film& film) {
-    const IorSpectrum ior = loadMaterial(materialName);
+    const IorSpectrum ior = loadNamedMaterial(materialName);
     const bool conductor = isConductor(ior);
     FresnelMaterial result;
     result.stem = std::filesystem::path(materialName).stem().string();

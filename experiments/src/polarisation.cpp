@@ -80,7 +80,37 @@ void linearPolarisation(const render::Film& film, const std::vector<bool>& lit,
         }
 }
 
-/// The four renders (two modes, two seeds) and what the experiment reads from them.
+/// The unpolarised render `mode` (and its twin of the floor's seed) against the polarised
+/// render `p` (and its twin).
+AgainstPolarised againstPolarised(render::RenderResult mode, const render::RenderResult& modeTwin,
+                                  const render::RgbImage& p, const render::RgbImage& pTwin,
+                                  const char* what) {
+    AgainstPolarised a;
+    a.render = std::move(mode);
+    const render::RgbImage s = filmImage(*a.render.film), sTwin = filmImage(*modeTwin.film);
+    a.metrics = compareImages(s, p);
+    requireComparedValues(a.metrics, s, what, p, "the polarised render");
+
+    // A per-pixel statistic of the pair, its mean and 95th percentile against their floors: the
+    // same statistic of two images that differ by that difference's noise alone (pairedNoise),
+    // and of the pair of the second seed.
+    const NoiseOnlyPair noiseOnly = pairedNoise(s, p, sTwin, pTwin);
+    const auto measure = [&](auto map, std::vector<float>& values, FlooredStatistic& mean,
+                             FlooredStatistic& p95) {
+        values = map(s, p);
+        const std::vector<float> floor = map(noiseOnly.a, noiseOnly.b);
+        const std::vector<float> other = map(sTwin, pTwin);
+        mean = {meanOf(values), meanOf(floor), meanOf(other)};
+        p95 = {percentileOf(values, 95), percentileOf(floor, 95), percentileOf(other, 95)};
+    };
+    measure(relativeDifferenceMap, a.relative, a.meanRelative, a.p95Relative);
+    measure(ciede2000Map, a.ciede2000, a.meanDeltaE, a.p95DeltaE);
+    a.comparedPixels = std::size_t(std::count_if(a.relative.begin(), a.relative.end(),
+                                                 [](float v) { return std::isfinite(v); }));
+    return a;
+}
+
+/// The six renders (three modes, two seeds) and what the experiment reads from them.
 PolarisationResult comparePolarisation(const PolarisationInputs& in, const render::SceneDesc& scene,
                                        render::RenderOptions o, KeptRenders& kept) {
     PolarisationResult r;
@@ -94,46 +124,30 @@ PolarisationResult comparePolarisation(const PolarisationInputs& in, const rende
             in.scene + " in " + std::string(render::kRenderModeNames.name(mode)) + " mode" + what);
     };
     r.polarised = renderIn(render::RenderModeKind::Polarised, "polarised", "");
-    r.spectral = renderIn(render::RenderModeKind::Spectral, "spectral", "");
-    // Both modes again with another seed: the second pair gives the noise of the modes'
-    // difference (noise_floor.h, pairedNoise).
+    render::RenderResult spectral = renderIn(render::RenderModeKind::Spectral, "spectral", "");
+    render::RenderResult rgb = renderIn(render::RenderModeKind::Rgb, "rgb", "");
+    // Each mode again with another seed: the second pairs give the noise of the modes'
+    // differences (noise_floor.h, pairedNoise).
     o.seed = hashValues({o.seed.value_or(scene.settings.seed), 0x706f6c666c6f6f72});
-    const render::RenderResult polarised2 =
-        renderIn(render::RenderModeKind::Polarised, "polarised_seed2",
-                 " with another seed (the noise floor)");
-    const render::RenderResult spectral2 = renderIn(
-        render::RenderModeKind::Spectral, "spectral_seed2", " with another seed (the noise floor)");
+    const std::string again = " with another seed (the noise floor)";
+    const render::RenderResult polarisedTwin =
+        renderIn(render::RenderModeKind::Polarised, "polarised_seed2", again);
+    const render::RenderResult spectralTwin =
+        renderIn(render::RenderModeKind::Spectral, "spectral_seed2", again);
+    const render::RenderResult rgbTwin = renderIn(render::RenderModeKind::Rgb, "rgb_seed2", again);
 
-    const render::RgbImage p = filmImage(*r.polarised.film), s = filmImage(*r.spectral.film);
-    const render::RgbImage p2 = filmImage(*polarised2.film), s2 = filmImage(*spectral2.film);
+    const render::RgbImage p = filmImage(*r.polarised.film);
+    const render::RgbImage pTwin = filmImage(*polarisedTwin.film);
     r.width = p.width;
     r.height = p.height;
-    r.metrics = compareImages(s, p);
-    requireComparedValues(r.metrics, s, "the spectral render", p, "the polarised render");
-    // The spectral render against the polarised one (the reference); the floor: the same
-    // statistic of two images that differ by that difference's noise alone.
-    const NoiseOnlyPair noiseOnly = pairedNoise(s, p, s2, p2);
-
-    r.relative = relativeDifferenceMap(s, p);
-    r.comparedPixels = std::size_t(std::count_if(r.relative.begin(), r.relative.end(),
-                                                 [](float v) { return std::isfinite(v); }));
-    const std::vector<float> relFloor = relativeDifferenceMap(noiseOnly.a, noiseOnly.b);
-    const std::vector<float> relOther = relativeDifferenceMap(s2, p2);
-    r.meanRelative = {meanOf(r.relative), meanOf(relFloor), meanOf(relOther)};
-    r.p95Relative = {percentileOf(r.relative, 95), percentileOf(relFloor, 95),
-                     percentileOf(relOther, 95)};
-
-    r.ciede2000 = ciede2000Map(s, p);
-    const std::vector<float> deFloor = ciede2000Map(noiseOnly.a, noiseOnly.b);
-    const std::vector<float> deOther = ciede2000Map(s2, p2);
-    r.meanDeltaE = {meanOf(r.ciede2000), meanOf(deFloor), meanOf(deOther)};
-    r.p95DeltaE = {percentileOf(r.ciede2000, 95), percentileOf(deFloor, 95),
-                   percentileOf(deOther, 95)};
+    r.spectral =
+        againstPolarised(std::move(spectral), spectralTwin, p, pTwin, "the spectral render");
+    r.rgb = againstPolarised(std::move(rgb), rgbTwin, p, pTwin, "the RGB render");
 
     r.lit = litPixels(p);
     std::vector<float> twinDolp, twinAolp;
     linearPolarisation(*r.polarised.film, r.lit, r.dolp, r.aolp);
-    linearPolarisation(*polarised2.film, r.lit, twinDolp, twinAolp);
+    linearPolarisation(*polarisedTwin.film, r.lit, twinDolp, twinAolp);
     double sum = 0, noise = 0;
     std::size_t lit = 0;
     for (std::size_t i = 0; i < r.dolp.size(); ++i) {

@@ -42,7 +42,7 @@ std::optional<MaterialDesc> withAlpha(const std::string& json, double alpha) {
     }
 }
 
-StabilityReport audit(const std::string& json, int samples) {
+AuditedModel audit(const std::string& json, int samples) {
     parseMaterialArgument(json);  // a clear error for a bad material
     const bool rough = withAlpha(json, 0.5).has_value();
     StabilityModel model;
@@ -54,8 +54,14 @@ StabilityReport audit(const std::string& json, int samples) {
         const MaterialDesc m = rough ? *withAlpha(json, alpha) : parseMaterialArgument(json);
         return buildBxdf(m, SpectrumContext<Rgb<float>>{});
     };
-    return auditStability(model, rough ? kStabilityAlphas : std::vector<double>{0.0},
-                          kStabilityCosines, 64, samples);
+    AuditedModel m{json,
+                   auditStability(model, rough ? kStabilityAlphas : std::vector<double>{0.0},
+                                  kStabilityCosines, 64, samples),
+                   {}};
+    m.polarised = auditPolarisedStability(
+        [&](double alpha) { return rough ? *withAlpha(json, alpha) : parseMaterialArgument(json); },
+        rough ? kPolarisedStabilityAlphas : std::vector<double>{0.0}, probedIndices(json));
+    return m;
 }
 
 StiffSceneRender renderStiffScene(const std::string& path, int spp) {
@@ -79,7 +85,7 @@ StabilityResult runStability(const StabilityInputs& in) {
         in.materials.empty() ? defaultStabilityMaterials() : in.materials;
     for (const std::string& json : materials) {
         stopIfInterrupted();
-        result.models.push_back({json, audit(json, in.samples)});
+        result.models.push_back(audit(json, in.samples));
         tell(in.progress, "audited " + json + "\n");
     }
     for (const std::string& s : in.scenes) {

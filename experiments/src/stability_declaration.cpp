@@ -43,6 +43,15 @@ Data modelData(const AuditedModel& m) {
     d.set("energy_gain", t.energyGain);
     d.set("evaluations", t.evaluations);
     d.set("samples", t.samples);
+    const PolarisedStabilityReport& p = m.polarised;
+    Data polarised = Data::dict();
+    polarised.set("evaluations", p.evaluations);
+    polarised.set("nan", p.nan);
+    polarised.set("inf", p.inf);
+    polarised.set("worst_jump_float", p.worstJumpFloat);
+    polarised.set("worst_jump_double", p.worstJumpDouble);
+    polarised.set("discontinuities", p.discontinuities);
+    d.set("polarised", std::move(polarised));
     return d;
 }
 
@@ -65,7 +74,9 @@ CommandDecl stabilityDeclaration() {
         "gain, weight != eval/pdf, float error) and firefly statistics of stiff scenes";
     c.returns =
         "per model a dict: alphas, cosines, issues and worst_float_error over (alpha, cos theta), "
-        "and the totals nan, inf, negative, weight_mismatch, energy_gain, evaluations and samples";
+        "and the totals nan, inf, negative, weight_mismatch, energy_gain, evaluations and "
+        "samples; polarised: the Mueller matrices at the singular angles (evaluations, nan, inf, "
+        "worst_jump_float, worst_jump_double across +-1 ulp, discontinuities above the bound)";
     c.options = {
         textListOption("materials",
                        "Materials as JSON (default: a conductor, dielectric, standard and "

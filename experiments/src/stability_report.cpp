@@ -1,4 +1,5 @@
-// The report of `lamina stability`: heat maps per model over (alpha, angle) and summary.md.
+// The report of `lamina stability`: heat maps per model over (alpha, angle), the polarised
+// probes, and summary.md.
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -104,6 +105,42 @@ std::string modelsSection(const StabilityResult& result, Report& report) {
     return md.str();
 }
 
+std::string polarisedSection(const StabilityResult& result) {
+    std::ostringstream md;
+    md << "## Polarised: Mueller matrices at the singular angles\n\n"
+       << formatText(
+              "Each model's spectral build (450, 520, 600, 680 nm) in float and double, smooth "
+              "and at alpha 0.1 where it has a roughness: evalMueller on the mirror and "
+              "refraction directions and sampleMueller with random numbers at the edges of [0, "
+              "1), with wo along the normal, at grazing incidence, and at Brewster's and the "
+              "critical angle of a numeric index and one ulp either side. The jump is the "
+              "largest change of an element between neighbours one ulp apart over the largest "
+              "[0][0] there; a continuous function moves by O(sqrt(ulp)) at most (the critical "
+              "angle's square-root singularity): the bound is 64 sqrt(epsilon), %.2g in float "
+              "and %.2g in double.\n\n",
+              kPolarisedJumpBound<float>, kPolarisedJumpBound<double>)
+       << "| model | matrices | NaN | Inf | worst jump, float | worst jump, double | jumps above "
+          "the bound |\n|---|---|---|---|---|---|---|\n";
+    std::string probes;
+    for (const AuditedModel& m : result.models) {
+        const PolarisedStabilityReport& p = m.polarised;
+        md << formatText("| `%s` | %d | %d | %d | %.2g | %.2g | %d |\n", m.json.c_str(),
+                         p.evaluations, p.nan, p.inf, p.worstJumpFloat, p.worstJumpDouble,
+                         p.discontinuities);
+        for (const PolarisedProbe& q : p.probes)
+            if (q.jumpFloat > 0 || q.jumpDouble > 0)
+                probes +=
+                    formatText("| `%s` | %g | %s | %.6f | %.2g | %.2g |\n", m.json.c_str(), q.alpha,
+                               q.what.c_str(), q.cosTheta, q.jumpFloat, q.jumpDouble);
+    }
+    if (!probes.empty())
+        md << "\nAcross Brewster's and the critical angle:\n\n"
+              "| model | alpha | angle | cos(theta_o) | jump, float | jump, double |\n"
+              "|---|---|---|---|---|---|\n"
+           << probes;
+    return md.str() + "\n";
+}
+
 std::string scenesSection(const StabilityResult& result) {
     std::ostringstream md;
     md << "## Stiff scenes\n\n"
@@ -135,7 +172,8 @@ std::string scenesSection(const StabilityResult& result) {
 }  // namespace
 
 void writeStabilityReport(const StabilityResult& result, Report& report) {
-    std::string md = "# Numerical stability\n\n" + modelsSection(result, report);
+    std::string md =
+        "# Numerical stability\n\n" + modelsSection(result, report) + polarisedSection(result);
     if (!result.scenes.empty()) md += scenesSection(result);
     report.addSummary(md);
 }

@@ -8,8 +8,8 @@ directory: ``python3 figures.py DIR`` draws every spec found there into NAME.png
 Three kinds of figure:
 
 - ``lines``: series against x, each optionally with standard errors drawn as a band around it
-  (never as a series of its own); logarithmic axes where the data span decades; one panel, or
-  several side by side sharing the y axis.
+  (never as a series of its own); logarithmic axes where the data span decades; one panel,
+  several side by side sharing the y axis, or a grid of them sharing both axes (``columns``).
 - ``map``: a false-colour map. Unsigned quantities use a sequential perceptual map (viridis),
   signed ones a diverging map with limits symmetric about zero; a logarithmic colour scale
   where the values span decades. The limits come from the data's percentiles and the caption
@@ -241,11 +241,20 @@ def draw_lines(spec):
 
     log_x = _axis_is_log(spec.get("log_x", "auto"), values("x"))
     log_y = _axis_is_log(spec.get("log_y", "auto"), values("y"))
-    width = _WIDTH_IN if len(panels) == 1 else min(10.0, 3.3 * len(panels))
-    fig = Figure(figsize=(width, spec.get("height_in", _LINE_HEIGHT_IN)))
+    # A grid of `columns` panels a row shares both axes: the bottom row carries the x label,
+    # the first column the y label.
+    columns = max(1, min(int(spec.get("columns") or len(panels)), len(panels)))
+    rows = -(-len(panels) // columns)
+    width = _WIDTH_IN if len(panels) == 1 else min(10.0, 3.3 * columns)
+    height = spec.get("height_in", _LINE_HEIGHT_IN if rows == 1 else 1.2 + 2.0 * rows)
+    fig = Figure(figsize=(width, height))
     FigureCanvasAgg(fig)
-    axes = fig.subplots(1, len(panels), sharey=True, squeeze=False)[0]
+    grid = fig.subplots(rows, columns, sharex=rows > 1, sharey=True, squeeze=False)
+    axes = list(grid.ravel())
+    for unused in axes[len(panels):]:
+        fig.delaxes(unused)
     for i, (ax, panel) in enumerate(zip(axes, panels)):
+        bottom = i + columns >= len(panels)
         for s in panel["series"]:
             _draw_series(ax, s, log_x, log_y)
         if log_x:
@@ -254,8 +263,10 @@ def draw_lines(spec):
             ax.set_yscale("log")
         if panel.get("title"):
             ax.set_title(panel["title"], fontsize="medium")
-        ax.set_xlabel(panel.get("x_label", spec["x_label"]))
-        ax.set_ylabel(spec["y_label"] if i == 0 else "")
+        ax.set_xlabel(panel.get("x_label", spec["x_label"]) if bottom else "")
+        ax.set_ylabel(spec["y_label"] if i % columns == 0 else "")
+        ax.lamina_shares_x_label = not bottom
+        ax.lamina_shares_y_label = i % columns != 0
         ax.grid(True, which="major", alpha=0.3)
         # One legend (the first panel's) names what every panel shows.
         named = [s for s in panel["series"] if s.get("name")]
@@ -263,9 +274,6 @@ def draw_lines(spec):
             ax.legend(loc=spec.get("legend", "best"), fontsize="small" if len(panels) == 1
                       else "x-small", ncol=2 if len(named) > 5 and len(panels) == 1 else 1,
                       framealpha=0.85)
-    if len(panels) > 1:  # one y label for the row: the other panels share the first's axis
-        for ax in axes[1:]:
-            ax.lamina_shares_y_label = True
     caption = spec.get("caption", "")
     if any(s.get("se") is not None for s in every):
         caption = (caption + " " if caption else "") + "Bands: +-1 standard error."
@@ -455,8 +463,9 @@ def problems(fig):
     for ax in fig.axes:
         if any(ax is im.colorbar.ax for im in fig.findobj(AxesImage) if im.colorbar):
             continue
-        shared = getattr(ax, "lamina_shares_y_label", False)
-        if not ax.get_xlabel().strip() or not (shared or ax.get_ylabel().strip()):
+        shared_x = getattr(ax, "lamina_shares_x_label", False)
+        shared_y = getattr(ax, "lamina_shares_y_label", False)
+        if not (shared_x or ax.get_xlabel().strip()) or not (shared_y or ax.get_ylabel().strip()):
             found.append(f"{name}: axes without a label on x or y")
 
     # A tick label over its own axes' plot area hides data and reads as part of it.

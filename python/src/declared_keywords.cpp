@@ -37,6 +37,10 @@ std::string textOf(const OptionDecl& o, const py::handle& v, bool path) {
 }
 
 std::vector<std::string> listOf(const OptionDecl& o, const py::handle& v) {
+    // A text list takes one str or path alone as the list of it: polarisation("scene.json").
+    if (o.kind == OptionKind::TextList &&
+        (py::isinstance<py::str>(v) || py::hasattr(v, "__fspath__")))
+        return {textOf(o, v, true)};
     if (!py::isinstance<py::list>(v) && !py::isinstance<py::tuple>(v)) refuse(o, "a list");
     std::vector<std::string> out;
     for (const py::handle item : v) {

@@ -68,21 +68,22 @@ TEST(PolarisationExperiment, CrossedMirrorsAtBrewstersAngleDifferAboveTheNoiseFl
         runOn(testing::sourceFile("scenes/polarisation/two-mirrors.json").string());
     ASSERT_EQ(r.width, 64);
     ASSERT_EQ(r.height, 12);
-    const Sample crossed = blockOf(r.relative, r.width, kCrossed);
-    const Sample parallel = blockOf(r.relative, r.width, kParallel);
+    const Sample crossed = blockOf(r.spectral.relative, r.width, kCrossed);
+    const Sample parallel = blockOf(r.spectral.relative, r.width, kParallel);
     EXPECT_LT(std::abs(crossed.mean - 2.0), kZ * crossed.standardError + 1e-6) << crossed.mean;
     EXPECT_LT(std::abs(parallel.mean - 2.0 / 3.0), kZ * parallel.standardError + 1e-6)
         << parallel.mean;
     // What the summary reports: every statistic resolved, far above its floor.
     const int spp = r.polarised.spp;
-    for (const FlooredStatistic& s : {r.meanRelative, r.p95Relative, r.meanDeltaE, r.p95DeltaE})
+    for (const FlooredStatistic& s : {r.spectral.meanRelative, r.spectral.p95Relative,
+                                      r.spectral.meanDeltaE, r.spectral.p95DeltaE})
         EXPECT_TRUE(readAgainstFloor(s.value, s.floor, spp).resolved)
             << s.value << " against " << s.floor;
     // The relative difference, a closed form of the mirrors, stands far above its noise.
-    EXPECT_GT(r.meanRelative.value, 10 * r.meanRelative.floor);
-    EXPECT_GT(r.p95Relative.value, 10 * r.p95Relative.floor);
+    EXPECT_GT(r.spectral.meanRelative.value, 10 * r.spectral.meanRelative.floor);
+    EXPECT_GT(r.spectral.p95Relative.value, 10 * r.spectral.p95Relative.floor);
     // The p95 of the relative difference is the crossed pair's 2.
-    EXPECT_NEAR(r.p95Relative.value, 2.0, 1e-3);
+    EXPECT_NEAR(r.spectral.p95Relative.value, 2.0, 1e-3);
     // The parallel pair's light is s-polarised: fully, along the image's x.
     const Sample dolp = blockOf(r.dolp, r.width, kParallel);
     const Sample aolp = blockOf(r.aolp, r.width, kParallel);
@@ -166,13 +167,15 @@ TEST_F(PolarisationExperimentScene, ASmallRealDifferenceIsResolvedAgainstTheNois
     ASSERT_NEAR(expected, 6.33e-4, 1e-6);
     // Every pixel's difference is the closed form (its noise cancels: the ratio of the modes
     // is the same at every wavelength), to float rounding.
-    EXPECT_NEAR(r.meanRelative.value, expected, 2e-5);
-    EXPECT_NEAR(r.meanRelative.otherSeed, expected, 2e-5);
-    EXPECT_EQ(r.comparedPixels, 80u);
-    EXPECT_TRUE(readAgainstFloor(r.meanRelative.value, r.meanRelative.floor, 4).resolved)
-        << r.meanRelative.value << " against " << r.meanRelative.floor;
-    EXPECT_TRUE(readAgainstFloor(r.meanDeltaE.value, r.meanDeltaE.floor, 4).resolved)
-        << r.meanDeltaE.value << " against " << r.meanDeltaE.floor;
+    EXPECT_NEAR(r.spectral.meanRelative.value, expected, 2e-5);
+    EXPECT_NEAR(r.spectral.meanRelative.otherSeed, expected, 2e-5);
+    EXPECT_EQ(r.spectral.comparedPixels, 80u);
+    EXPECT_TRUE(
+        readAgainstFloor(r.spectral.meanRelative.value, r.spectral.meanRelative.floor, 4).resolved)
+        << r.spectral.meanRelative.value << " against " << r.spectral.meanRelative.floor;
+    EXPECT_TRUE(
+        readAgainstFloor(r.spectral.meanDeltaE.value, r.spectral.meanDeltaE.floor, 4).resolved)
+        << r.spectral.meanDeltaE.value << " against " << r.spectral.meanDeltaE.floor;
     // The floor of two independent renders (the spectral mode with two seeds) is far above
     // the difference: read against it, it would not be resolved.
     render::RenderOptions o;
@@ -190,8 +193,9 @@ TEST_F(PolarisationExperimentScene, ASmallRealDifferenceIsResolvedAgainstTheNois
             luminance(Rgb<double>(s2.pixels[3 * i], s2.pixels[3 * i + 1], s2.pixels[3 * i + 2]));
         independent += std::abs(y1 - y2) / ((y1 + y2) / 2) / double(s1.pixels.size() / 3);
     }
-    EXPECT_FALSE(readAgainstFloor(r.meanRelative.value, independent, 4).resolved) << independent;
-    EXPECT_GT(independent, 20 * r.meanRelative.value);
+    EXPECT_FALSE(readAgainstFloor(r.spectral.meanRelative.value, independent, 4).resolved)
+        << independent;
+    EXPECT_GT(independent, 20 * r.spectral.meanRelative.value);
 }
 
 // A scene of diffuse walls: polarisation changes nothing, and the same-seed difference of the
@@ -202,7 +206,8 @@ TEST_F(PolarisationExperimentScene, NoDifferenceIsNotResolved) {
     in.spp = 4;
     in.overrides.resolution = {16, 16};
     const PolarisationResult r = runPolarisation(in);
-    for (const FlooredStatistic& s : {r.meanRelative, r.p95Relative, r.meanDeltaE, r.p95DeltaE})
+    for (const FlooredStatistic& s : {r.spectral.meanRelative, r.spectral.p95Relative,
+                                      r.spectral.meanDeltaE, r.spectral.p95DeltaE})
         EXPECT_FALSE(readAgainstFloor(s.value, s.floor, 4).resolved)
             << s.value << " against " << s.floor;
 }

@@ -58,6 +58,24 @@ def test_stability():
     (model,) = lamina.stability(['{"type":"conductor","material":"Au","alpha":0.3}'], samples=64)
     assert model["issues"].shape == (len(model["alphas"]), len(model["cosines"]))
     assert model["nan"] == 0 and model["inf"] == 0
+    polarised = model["polarised"]
+    assert polarised["evaluations"] > 0 and polarised["discontinuities"] == 0
+    assert polarised["nan"] == 0 and polarised["inf"] == 0
+
+
+def test_polarisation_of_materials():
+    # One name alone is the list of it; materials give the Mueller matrices against angle.
+    (bk7,) = lamina.polarisation("bk7", wavelengths=[550])
+    (curve,) = bk7["wavelengths"]
+    assert curve["mueller"].shape == (181, 4, 4) and bk7["degrees"][-1] == 90
+    # Brewster's angle of the index at 550 nm, where only s is reflected: M01 / M00 = 1.
+    assert curve["principal_angle"] == pytest.approx(np.degrees(np.arctan(curve["n"])), abs=1e-9)
+    np.testing.assert_allclose(curve["diattenuation"], curve["mueller"][:, 0, 1] /
+                               curve["mueller"][:, 0, 0])
+    au, cu = lamina.polarisation(["Au", "Cu"])
+    assert au["conductor"] and [c["nm"] for c in au["wavelengths"]] == [450, 550, 650]
+    with pytest.raises(ValueError, match="neither a scene file"):
+        lamina.polarisation("Unobtainium")
 
 
 def test_convergence(scene):

@@ -365,4 +365,27 @@ def test_polarisation_figures(figures, lamina_exe, source_dir, tmp_path):
     assert np.allclose(aolp["values"][2:10, 45:59], 0.0, atol=0.5)
     assert np.all(np.isnan(aolp["values"]) == np.isnan(dolp["values"]))
     summary = (out / "summary.md").read_text()
-    assert summary.count("(noise floor ") == 4, summary
+    # Four statistics, each of the spectral and of the RGB render against the polarised one.
+    assert summary.count("(noise floor ") == 8, summary
+    assert {"rgb_relative_difference.figure.json", "rgb_ciede2000.figure.json"} <= set(specs)
+
+
+def test_polarisation_material_figures(figures, lamina_exe, tmp_path):
+    out = tmp_path / "materials"
+    code, _, err = run_cli(lamina_exe, "polarisation", "Au", "bk7", "-o", str(out))
+    assert code == 0, err
+    specs = assert_drawn_without_problems(figures, str(out))
+    for stem in ("Au", "bk7"):
+        assert {f"{stem}_mueller.figure.json", f"{stem}_reflectance.figure.json",
+                f"{stem}_diattenuation.figure.json", f"{stem}_retardance.figure.json"} <= set(specs)
+    # The Mueller matrix as a 4 x 4 grid of panels sharing both axes: the x label on the bottom
+    # row alone, the y label on the first column alone.
+    spec = figures.load(str(out / "Au_mueller.figure.json"))
+    assert spec["columns"] == 4 and len(spec["panels"]) == 16
+    fig = figures.draw(spec)
+    labelled_x = [i for i, ax in enumerate(fig.axes) if ax.get_xlabel()]
+    labelled_y = [i for i, ax in enumerate(fig.axes) if ax.get_ylabel()]
+    assert labelled_x == [12, 13, 14, 15] and labelled_y == [0, 4, 8, 12]
+    # Every number is in the CSV: a row per wavelength (3) and angle (181).
+    rows = (out / "Au_mueller.csv").read_text().splitlines()
+    assert len(rows) == 1 + 3 * 181 and rows[0].startswith("nm,degrees,Rs,Rp,reflectance")

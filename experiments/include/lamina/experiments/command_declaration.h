@@ -37,7 +37,7 @@ enum class OptionKind {
     File,        ///< a file name (Python: also an os.PathLike)
     Name,        ///< one of `names`
     NameList,    ///< names among `names` (command line: comma-separated; Python: a list)
-    TextList,    ///< several texts (command line: several arguments; Python: a list)
+    TextList,    ///< several texts (command line: several arguments; Python: a list, or one str)
     NumberList,  ///< numbers, kept as written (command line: comma-separated; Python: a list)
     Resolution,  ///< WIDTHxHEIGHT (Python: also (width, height))
     Callback,    ///< a callable (Python only)

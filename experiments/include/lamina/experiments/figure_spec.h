@@ -37,11 +37,13 @@ struct LinePanel {
     std::string xLabel;  ///< empty: the figure's
 };
 
-/// Line plots side by side sharing the y axis (one panel: a plain plot).
+/// Line plots side by side sharing the y axis (one panel: a plain plot), or in a grid of
+/// `columns` panels a row sharing both axes (a Mueller matrix's 4 x 4 elements).
 struct LineFigure {
     std::string title, xLabel, yLabel;  ///< the labels with their units
     std::string caption;                ///< printed under the figure
     std::vector<LinePanel> panels;
+    int columns = 0;  ///< panels per row; 0: all in one row
     AxisScale xScale = AxisScale::Auto, yScale = AxisScale::Auto;
 };
 

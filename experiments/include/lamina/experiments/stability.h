@@ -1,7 +1,9 @@
 // Numerical stability (`lamina stability`): the extreme-input sweep of every model in float and
 // double (stability_audit.h) over roughness alpha in kStabilityAlphas and cos(theta_o) in
 // kStabilityCosines: a table of NaN, Inf, negative values, energy gain, weight != eval / pdf and
-// the worst float/double relative error, and per model two heat maps over (alpha, angle).
+// the worst float/double relative error, and per model two heat maps over (alpha, angle); and
+// the polarised case (polarised_stability.h): the Mueller matrices at normal and grazing
+// incidence and across Brewster's and the critical angle +-1 ulp.
 // With scenes, renders stiff scenes (tiny bright lights, near-smooth glass, grazing views,
 // high indices) and reports rejected samples and firefly statistics (the largest sample's
 // luminance over the image's mean).
@@ -11,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "lamina/experiments/polarised_stability.h"
 #include "lamina/experiments/progress.h"
 #include "lamina/experiments/report.h"
 #include "lamina/experiments/stability_audit.h"
@@ -32,9 +35,14 @@ struct StabilityInputs {
     ProgressSink progress;
 };
 
+/// The roughness values of the polarised probes (polarised_stability.h): smooth (delta lobes,
+/// through sample) and rough (the microfacet Fresnel on the half vector, through eval).
+inline const std::vector<double> kPolarisedStabilityAlphas = {0, 0.1};
+
 struct AuditedModel {
     std::string json;
-    StabilityReport audit;  ///< one row of alpha (0) for a model without a roughness
+    StabilityReport audit;               ///< one row of alpha (0) for a model without a roughness
+    PolarisedStabilityReport polarised;  ///< the Mueller matrices at the singular angles
 };
 
 /// A stiff scene's render, path integrator, RGB mode.
