@@ -57,5 +57,19 @@ fi
 if hits=$(grep -rnE '#include [<"](CLI/|app/|\.\./)' python --include='*.h' --include='*.cpp'); then
   echo "check-layering: python/ may not include app/ or CLI11:"; echo "$hits"; status=1
 fi
+# A material type lives in its own files (docs/architecture.md, "A new material"): the files
+# every type passes through name none of them.
+models=$(grep -hoE '^LAMINA_MATERIAL_MODEL\([A-Za-z0-9_]+\)' bsdf/include/lamina/bsdf/*.h |
+         sed -E 's/.*\((.*)\)/\1/')
+for model in $models; do
+  if hits=$(grep -nw "$model" bsdf/include/lamina/bsdf/material.h \
+            bsdf/include/lamina/bsdf/material_builder.h bsdf/include/lamina/bsdf/material_kind.h \
+            bsdf/src/material_kinds.cpp bsdf/src/material_parser.cpp \
+            bsdf/src/bsdf_instantiations.cpp); then
+    echo "check-layering: $model is named in a file every material type passes through:"
+    echo "$hits"; status=1
+  fi
+done
+[ -n "$models" ] || { echo "check-layering: no LAMINA_MATERIAL_MODEL marks found"; status=1; }
 [ $status -eq 0 ] && echo "check-layering: every include points down the rooms"
 exit $status

@@ -1,5 +1,6 @@
 // `coated`: a dielectric coat over a base material without transmission, with an optional
 // homogeneous medium between them (docs/bsdf.md, "coated").
+#include "lamina/bsdf/coated.h"
 #include "lamina/bsdf/material_kind.h"
 #include "material_readers.h"
 
@@ -8,27 +9,6 @@ namespace lamina {
 namespace {
 
 constexpr auto kCoatNdfNames = kNdfKindNames.subset(std::array{NdfKind::Ggx, NdfKind::Beckmann});
-
-// A base transmits if any part of it is a dielectric boundary or a transmission lobe: the walk
-// has no way below the base.
-bool transmits(const MaterialDesc& m) {
-    return std::visit(
-        [](const auto& x) -> bool {
-            using M = std::decay_t<decltype(x)>;
-            if constexpr (std::is_same_v<M, DielectricMaterial> ||
-                          std::is_same_v<M, ThinDielectricMaterial> ||
-                          std::is_same_v<M, PolariserMaterial> ||
-                          std::is_same_v<M, RetarderMaterial>)
-                return true;
-            if constexpr (std::is_same_v<M, DiffuseTransmissionMaterial>)
-                return x.transmittance.rgb.maxValue() > 0 || x.transmittance.spectrum;
-            if constexpr (std::is_same_v<M, StandardMaterial>) return x.transmission > 0;
-            if constexpr (std::is_same_v<M, MixMaterial>) return transmits(*x.a) || transmits(*x.b);
-            if constexpr (std::is_same_v<M, CoatedMaterial>) return transmits(*x.base);
-            return false;
-        },
-        m.model);
-}
 
 }  // namespace
 
@@ -40,7 +20,7 @@ MaterialModel readCoated(const JsonReader& r) {
     readMicrofacetSwitches(r, c.microfacet, false);
     if (!r.has("base")) r.failAt("base", "missing; expected a material without transmission");
     c.base = std::make_shared<MaterialDesc>(parseMaterial(r.child("base")));
-    if (transmits(*c.base))
+    if (materialTransmits(*c.base))
         r.failAt("base",
                  "expected a material without transmission (no dielectric or thin_dielectric, "
                  "no diffuse_transmission, no polariser or retarder, no standard or layered "
@@ -72,13 +52,13 @@ MaterialModel readCoated(const JsonReader& r) {
 namespace {
 
 std::vector<const MaterialDesc*> coatedNested(const MaterialModel& model) {
-    return {std::get<CoatedMaterial>(model).base.get()};
+    return {model.as<CoatedMaterial>().base.get()};
 }
 
 // A coat takes no texture itself; the textures of its base set the base (texturedThrough): a
 // copy of the base with them, so that the scene's material stays as it was read.
 void texturedCoated(MaterialModel& model, const TexturedValues& t) {
-    auto& c = std::get<CoatedMaterial>(model);
+    auto& c = model.as<CoatedMaterial>();
     auto base = std::make_shared<MaterialDesc>(*c.base);
     findMaterialKind(base->type)->applyTextures(base->model, t);
     c.base = std::move(base);
@@ -86,9 +66,11 @@ void texturedCoated(MaterialModel& model, const TexturedValues& t) {
 
 }  // namespace
 
-extern const MaterialKind kCoatedMaterial{.name = "coated",
-                                          .read = readCoated,
-                                          .schema = R"json({
+extern const MaterialKind kCoatedMaterial{
+    .name = "coated",
+    .listPosition = 130,
+    .read = readCoated,
+    .schema = R"json({
   "type": "object",
   "description": "A dielectric coat (smooth or rough) over a base without transmission, with an optional homogeneous Henyey-Greenstein medium between them, evaluated by a random walk (docs/bsdf.md, \"coated\").",
   "required": ["type", "base"],
@@ -129,8 +111,11 @@ extern const MaterialKind kCoatedMaterial{.name = "coated",
     }
   ]
 })json",
-                                          .applyTextures = texturedCoated,
-                                          .nested = coatedNested,
-                                          .texturedThrough = "base"};
+    .applyTextures = texturedCoated,
+    .nested = coatedNested,
+    .texturedThrough = "base",
+    .transmits = [](const MaterialModel& m) {
+        return materialTransmits(*m.as<CoatedMaterial>().base);
+    }};
 
 }  // namespace lamina

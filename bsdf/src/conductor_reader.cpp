@@ -1,5 +1,6 @@
 // `conductor`: a metal's optics in one of four forms, a microfacet NDF and a Fresnel model
 // (docs/bsdf.md, "Materials").
+#include "lamina/bsdf/conductor.h"
 #include "lamina/bsdf/material_kind.h"
 #include "material_readers.h"
 
@@ -115,21 +116,23 @@ namespace {
 constexpr TexturableKey kConductorTextured[] = {{"roughness", TexturedParameter::Roughness}};
 
 void texturedConductor(MaterialModel& model, const TexturedValues& t) {
-    auto& c = std::get<ConductorMaterial>(model);
+    auto& c = model.as<ConductorMaterial>();
     if (t.roughness) c.microfacet.alphaX = c.microfacet.alphaY = *t.roughness * *t.roughness;
 }
 
 void conductorSpectra(const MaterialModel& model, std::vector<std::string>& out) {
-    const auto& c = std::get<ConductorMaterial>(model);
+    const auto& c = model.as<ConductorMaterial>();
     if (c.optics.spectrum) out.push_back(c.optics.spectrum->name() + " (n, k)");
     describeThinFilm(c.thinFilm, out);
 }
 
 }  // namespace
 
-extern const MaterialKind kConductorMaterial{"conductor",
-                                             readConductor,
-                                             R"json({
+extern const MaterialKind kConductorMaterial{
+    .name = "conductor",
+    .listPosition = 60,
+    .read = readConductor,
+    .schema = R"json({
   "type": "object",
   "description": "A metal: named, eta and k (numbers, [r, g, b] or spectra), an n/k file, or f0 and f82.",
   "required": ["type"],
@@ -182,13 +185,15 @@ extern const MaterialKind kConductorMaterial{"conductor",
     }
   ]
 })json",
-                                             kConductorTextured,
-                                             texturedConductor,
-                                             conductorSpectra,
-                                             nullptr,
-                                             nullptr,
-                                             "polarising: the Fresnel amplitudes of its optics "
-                                             "on each microfacet (its multiple-scattering "
-                                             "compensation depolarises)"};
+    .texturable = kConductorTextured,
+    .applyTextures = texturedConductor,
+    .spectralData = conductorSpectra,
+    .polarisation =
+        "polarising: the Fresnel amplitudes of its optics "
+        "on each microfacet (its multiple-scattering "
+        "compensation depolarises)",
+    .tabulatesRoughness = [](const MaterialModel& m) {
+        return m.as<ConductorMaterial>().microfacet.multiscatter;
+    }};
 
 }  // namespace lamina

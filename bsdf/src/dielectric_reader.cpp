@@ -4,7 +4,9 @@
 #include <cmath>
 #include <tuple>
 
+#include "lamina/bsdf/dielectric.h"
 #include "lamina/bsdf/material_kind.h"
+#include "lamina/bsdf/thin_dielectric.h"
 #include "lamina/spectral/cie.h"
 #include "material_readers.h"
 
@@ -125,26 +127,28 @@ namespace {
 constexpr TexturableKey kDielectricTextured[] = {{"roughness", TexturedParameter::Roughness}};
 
 void texturedDielectric(MaterialModel& model, const TexturedValues& t) {
-    auto& d = std::get<DielectricMaterial>(model);
+    auto& d = model.as<DielectricMaterial>();
     if (t.roughness) d.microfacet.alphaX = d.microfacet.alphaY = *t.roughness * *t.roughness;
 }
 
 void dielectricSpectra(const MaterialModel& model, std::vector<std::string>& out) {
-    const auto& d = std::get<DielectricMaterial>(model);
+    const auto& d = model.as<DielectricMaterial>();
     if (d.spectrum) out.push_back(d.spectrum->name() + " (dispersion)");
     describeThinFilm(d.thinFilm, out);
 }
 
 void thinDielectricSpectra(const MaterialModel& model, std::vector<std::string>& out) {
-    const auto& t = std::get<ThinDielectricMaterial>(model);
+    const auto& t = model.as<ThinDielectricMaterial>();
     if (t.spectrum) out.push_back(t.spectrum->name() + " (index per wavelength)");
 }
 
 }  // namespace
 
-extern const MaterialKind kDielectricMaterial{"dielectric",
-                                              readDielectric,
-                                              R"json({
+extern const MaterialKind kDielectricMaterial{
+    .name = "dielectric",
+    .listPosition = 80,
+    .read = readDielectric,
+    .schema = R"json({
   "type": "object",
   "description": "Glass: ior as a number, a named glass or a dispersion formula, or an index file.",
   "required": ["type"],
@@ -187,17 +191,20 @@ extern const MaterialKind kDielectricMaterial{"dielectric",
     {"type": "dielectric", "ior": {"cauchy": [1.5046, 0.0042]}}
   ]
 })json",
-                                              kDielectricTextured,
-                                              texturedDielectric,
-                                              dielectricSpectra,
-                                              nullptr,
-                                              nullptr,
-                                              "polarising: the Fresnel amplitudes on each "
-                                              "microfacet, with the phase of total internal "
-                                              "reflection"};
+    .texturable = kDielectricTextured,
+    .applyTextures = texturedDielectric,
+    .spectralData = dielectricSpectra,
+    .polarisation =
+        "polarising: the Fresnel amplitudes on each "
+        "microfacet, with the phase of total internal "
+        "reflection",
+    .transmits = [](const MaterialModel&) { return true; }};
 
-extern const MaterialKind kThinDielectricMaterial{"thin_dielectric", readThinDielectric,
-                                                  R"json({
+extern const MaterialKind kThinDielectricMaterial{
+    .name = "thin_dielectric",
+    .listPosition = 90,
+    .read = readThinDielectric,
+    .schema = R"json({
   "type": "object",
   "description": "A thin slab of glass (pbrt-v4's ThinDielectricBxDF): mirror reflection and straight transmission with the slab's inter-reflections; ior as dielectric takes it.",
   "required": ["type"],
@@ -218,7 +225,8 @@ extern const MaterialKind kThinDielectricMaterial{"thin_dielectric", readThinDie
     {"type": "thin_dielectric", "ior": "bk7"},
     {"type": "thin_dielectric", "ior": {"cauchy": [1.5046, 0.0042]}}
   ]
-})json",          {},
-                                                  nullptr,           thinDielectricSpectra};
+})json",
+    .spectralData = thinDielectricSpectra,
+    .transmits = [](const MaterialModel&) { return true; }};
 
 }  // namespace lamina

@@ -1,6 +1,9 @@
 // Materials of one lobe: the diffuse models (`lambert`, `oren_nayar`, `burley`, `frostbite`),
 // `diffuse_transmission` and the article's `phong` (docs/bsdf.md, "Materials").
+#include "lamina/bsdf/diffuse.h"
+#include "lamina/bsdf/diffuse_transmission.h"
 #include "lamina/bsdf/material_kind.h"
+#include "lamina/bsdf/phong.h"
 #include "material_readers.h"
 
 namespace lamina {
@@ -52,17 +55,17 @@ constexpr TexturableKey kPhongTextured[] = {{"reflectance", TexturedParameter::C
                                             {"roughness", TexturedParameter::Roughness}};
 
 void texturedDiffuse(MaterialModel& model, const TexturedValues& t) {
-    auto& d = std::get<DiffuseMaterial>(model);
+    auto& d = model.as<DiffuseMaterial>();
     if (t.color) d.reflectance = *t.color;
     if (t.roughness) d.roughness = *t.roughness;
 }
 
 void texturedDiffuseTransmission(MaterialModel& model, const TexturedValues& t) {
-    if (t.color) std::get<DiffuseTransmissionMaterial>(model).reflectance = *t.color;
+    if (t.color) model.as<DiffuseTransmissionMaterial>().reflectance = *t.color;
 }
 
 void texturedPhong(MaterialModel& model, const TexturedValues& t) {
-    auto& p = std::get<PhongMaterial>(model);
+    auto& p = model.as<PhongMaterial>();
     if (t.color) p.reflectance = *t.color;
     // The roughness as readPhong takes it: alpha = roughness^2, then Walter's shininess.
     if (t.roughness)
@@ -71,9 +74,10 @@ void texturedPhong(MaterialModel& model, const TexturedValues& t) {
 
 }  // namespace
 
-extern const MaterialKind kLambertMaterial{kDiffuseModelNames.name(DiffuseModel::Lambert),
-                                           readDiffuseModel<DiffuseModel::Lambert>,
-                                           R"json({
+extern const MaterialKind kLambertMaterial{.name = kDiffuseModelNames.name(DiffuseModel::Lambert),
+                                           .listPosition = 20,
+                                           .read = readDiffuseModel<DiffuseModel::Lambert>,
+                                           .schema = R"json({
   "type": "object",
   "description": "A diffuse lobe alone: lambert.",
   "required": ["type"],
@@ -84,11 +88,14 @@ extern const MaterialKind kLambertMaterial{kDiffuseModelNames.name(DiffuseModel:
   },
   "examples": [{"type": "lambert", "reflectance": [0.5, 0.5, 0.5]}]
 })json",
-                                           kLambertTextured, texturedDiffuse};
+                                           .texturable = kLambertTextured,
+                                           .applyTextures = texturedDiffuse};
 
-extern const MaterialKind kOrenNayarMaterial{kDiffuseModelNames.name(DiffuseModel::OrenNayar),
-                                             readDiffuseModel<DiffuseModel::OrenNayar>,
-                                             R"json({
+extern const MaterialKind kOrenNayarMaterial{
+    .name = kDiffuseModelNames.name(DiffuseModel::OrenNayar),
+    .listPosition = 30,
+    .read = readDiffuseModel<DiffuseModel::OrenNayar>,
+    .schema = R"json({
   "type": "object",
   "description": "A diffuse lobe alone: oren_nayar.",
   "required": ["type"],
@@ -104,11 +111,13 @@ extern const MaterialKind kOrenNayarMaterial{kDiffuseModelNames.name(DiffuseMode
   },
   "examples": [{"type": "oren_nayar", "reflectance": 0.5, "roughness": 0.4}]
 })json",
-                                             kRoughDiffuseTextured, texturedDiffuse};
+    .texturable = kRoughDiffuseTextured,
+    .applyTextures = texturedDiffuse};
 
-extern const MaterialKind kBurleyMaterial{kDiffuseModelNames.name(DiffuseModel::Burley),
-                                          readDiffuseModel<DiffuseModel::Burley>,
-                                          R"json({
+extern const MaterialKind kBurleyMaterial{.name = kDiffuseModelNames.name(DiffuseModel::Burley),
+                                          .listPosition = 40,
+                                          .read = readDiffuseModel<DiffuseModel::Burley>,
+                                          .schema = R"json({
   "type": "object",
   "description": "A diffuse lobe alone: burley.",
   "required": ["type"],
@@ -124,11 +133,14 @@ extern const MaterialKind kBurleyMaterial{kDiffuseModelNames.name(DiffuseModel::
   },
   "examples": [{"type": "burley", "reflectance": 0.5, "roughness": 0.4}]
 })json",
-                                          kRoughDiffuseTextured, texturedDiffuse};
+                                          .texturable = kRoughDiffuseTextured,
+                                          .applyTextures = texturedDiffuse};
 
-extern const MaterialKind kFrostbiteMaterial{kDiffuseModelNames.name(DiffuseModel::Frostbite),
-                                             readDiffuseModel<DiffuseModel::Frostbite>,
-                                             R"json({
+extern const MaterialKind kFrostbiteMaterial{
+    .name = kDiffuseModelNames.name(DiffuseModel::Frostbite),
+    .listPosition = 50,
+    .read = readDiffuseModel<DiffuseModel::Frostbite>,
+    .schema = R"json({
   "type": "object",
   "description": "A diffuse lobe alone: frostbite.",
   "required": ["type"],
@@ -144,7 +156,8 @@ extern const MaterialKind kFrostbiteMaterial{kDiffuseModelNames.name(DiffuseMode
   },
   "examples": [{"type": "frostbite", "reflectance": 0.5, "roughness": 0.4}]
 })json",
-                                             kRoughDiffuseTextured, texturedDiffuse};
+    .texturable = kRoughDiffuseTextured,
+    .applyTextures = texturedDiffuse};
 
 namespace {
 constexpr TexturableKey kDiffuseTransmissionTextured[] = {
@@ -152,8 +165,10 @@ constexpr TexturableKey kDiffuseTransmissionTextured[] = {
 }  // namespace
 
 extern const MaterialKind kDiffuseTransmissionMaterial{
-    "diffuse_transmission", readDiffuseTransmission,
-    R"json({
+    .name = "diffuse_transmission",
+    .listPosition = 70,
+    .read = readDiffuseTransmission,
+    .schema = R"json({
   "type": "object",
   "description": "Lambertian reflection on the side of the incoming direction plus Lambertian transmission to the other (pbrt-v4's DiffuseTransmissionBxDF); a texture applies to reflectance only.",
   "required": ["type"],
@@ -172,10 +187,17 @@ extern const MaterialKind kDiffuseTransmissionMaterial{
     }
   ]
 })json",
-    kDiffuseTransmissionTextured, texturedDiffuseTransmission};
+    .texturable = kDiffuseTransmissionTextured,
+    .applyTextures = texturedDiffuseTransmission,
+    .transmits = [](const MaterialModel& m) {
+        const auto& t = m.as<DiffuseTransmissionMaterial>().transmittance;
+        return t.rgb.maxValue() > 0 || t.spectrum != nullptr;
+    }};
 
-extern const MaterialKind kPhongMaterial{"phong", readPhong,
-                                         R"json({
+extern const MaterialKind kPhongMaterial{.name = "phong",
+                                         .listPosition = 100,
+                                         .read = readPhong,
+                                         .schema = R"json({
   "type": "object",
   "description": "The article's Phong lobe: shininess, or a roughness converted to it.",
   "required": ["type"],
@@ -195,6 +217,7 @@ extern const MaterialKind kPhongMaterial{"phong", readPhong,
     {"type": "phong", "reflectance": [0.4, 0.5, 0.6], "alpha": 0.2}
   ]
 })json",
-                                         kPhongTextured, texturedPhong};
+                                         .texturable = kPhongTextured,
+                                         .applyTextures = texturedPhong};
 
 }  // namespace lamina

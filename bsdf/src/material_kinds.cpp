@@ -1,36 +1,31 @@
-// The list of material types (material_kind.h): each registration lives in its reader file;
-// this is the order in which messages, `lamina info` and the scene schema name them.
+// The list of material types (material_kind.h): each registration lives in its reader file, and
+// the build lists the reader files' registrations (cmake/GenerateBsdfRegistry.cmake).
 #include <algorithm>
+#include <vector>
 
 #include "lamina/bsdf/material_kind.h"
 
 namespace lamina {
 
-extern const MaterialKind kStandardMaterial, kLambertMaterial, kOrenNayarMaterial, kBurleyMaterial,
-    kFrostbiteMaterial, kConductorMaterial, kDiffuseTransmissionMaterial, kDielectricMaterial,
-    kThinDielectricMaterial, kPhongMaterial, kLayeredMaterial, kMixMaterial, kCoatedMaterial,
-    kPolariserMaterial, kRetarderMaterial;
+#include "material_kind_list.inc"
 
 namespace {
 
-// The diffuse models are material types of their own, under their model names.
-const MaterialKind* const kMaterialKinds[] = {
-    &kStandardMaterial,
-    &kLambertMaterial,
-    &kOrenNayarMaterial,
-    &kBurleyMaterial,
-    &kFrostbiteMaterial,
-    &kConductorMaterial,
-    &kDiffuseTransmissionMaterial,
-    &kDielectricMaterial,
-    &kThinDielectricMaterial,
-    &kPhongMaterial,
-    &kLayeredMaterial,
-    &kMixMaterial,
-    &kCoatedMaterial,
-    &kPolariserMaterial,
-    &kRetarderMaterial,
-};
+// The registered types by listPosition (ties by name, so the order never depends on the files').
+std::vector<const MaterialKind*> orderedKinds() {
+    std::vector<const MaterialKind*> kinds(std::begin(kRegisteredMaterialKinds),
+                                           std::end(kRegisteredMaterialKinds));
+    std::sort(kinds.begin(), kinds.end(), [](const MaterialKind* a, const MaterialKind* b) {
+        return a->listPosition != b->listPosition ? a->listPosition < b->listPosition
+                                                  : a->name < b->name;
+    });
+    return kinds;
+}
+
+const std::vector<const MaterialKind*>& kinds() {
+    static const std::vector<const MaterialKind*> ordered = orderedKinds();
+    return ordered;
+}
 
 }  // namespace
 
@@ -41,13 +36,13 @@ std::optional<TexturedParameter> MaterialKind::texturedParameter(std::string_vie
 }
 
 std::span<const MaterialKind* const> materialKinds() {
-    return kMaterialKinds;
+    return kinds();
 }
 
 const MaterialKind* findMaterialKind(std::string_view name) {
-    const auto kind = std::find_if(std::begin(kMaterialKinds), std::end(kMaterialKinds),
+    const auto kind = std::find_if(kinds().begin(), kinds().end(),
                                    [&](const MaterialKind* k) { return k->name == name; });
-    return kind == std::end(kMaterialKinds) ? nullptr : *kind;
+    return kind == kinds().end() ? nullptr : *kind;
 }
 
 bool needsOrientation(const MaterialDesc& m) {
@@ -60,6 +55,11 @@ MaterialDesc orientedMaterial(const MaterialDesc& m, const Frame<double>& frame)
     if (const MaterialKind* kind = findMaterialKind(m.type); kind && kind->orient)
         kind->orient(out.model, frame);
     return out;
+}
+
+bool materialTransmits(const MaterialDesc& m) {
+    const MaterialKind* kind = findMaterialKind(m.type);
+    return kind && kind->transmits && kind->transmits(m.model);
 }
 
 void collectSpectralData(const MaterialDesc& m, std::vector<std::string>& out) {

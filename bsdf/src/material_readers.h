@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "lamina/bsdf/diffuse.h"
 #include "lamina/bsdf/material_builder.h"
 #include "lamina/core/json_reader.h"
 
@@ -53,6 +54,13 @@ std::optional<E> choiceOrNone(const JsonReader& r, const std::string& key,
     if (const auto e = table.find(s)) return e;
     r.failAt(key, "expected one of " + table.list() + ", none, got \"" + s + "\"");
 }
+
+struct StandardMaterial;
+struct ConductorMaterial;
+
+/// Fills in the tables a material's energy options need (called once, when it is parsed).
+void prepareEnergyTables(StandardMaterial& s);   // standard_reader.cpp
+void prepareEnergyTables(ConductorMaterial& c);  // conductor_reader.cpp
 
 // One reader per material family; each reads the keys of one JSON object.
 

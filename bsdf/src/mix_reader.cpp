@@ -1,5 +1,6 @@
 // `mix`: a stochastic blend of two materials (docs/bsdf.md, "Materials").
 #include "lamina/bsdf/material_kind.h"
+#include "lamina/bsdf/mix.h"
 #include "material_readers.h"
 
 namespace lamina {
@@ -21,16 +22,17 @@ MaterialModel readMix(const JsonReader& r) {
 }
 
 std::vector<const MaterialDesc*> mixNested(const MaterialModel& model) {
-    const auto& m = std::get<MixMaterial>(model);
+    const auto& m = model.as<MixMaterial>();
     return {m.a.get(), m.b.get()};
 }
 
 }  // namespace
 
 // The registration of `mix` (material_kind.h; listed in material_kinds.cpp).
-extern const MaterialKind kMixMaterial{
-    "mix",    readMix,
-    R"json({
+extern const MaterialKind kMixMaterial{.name = "mix",
+                                       .listPosition = 120,
+                                       .read = readMix,
+                                       .schema = R"json({
   "type": "object",
   "description": "A stochastic blend of two materials: a with probability 1 - weight, b with weight.",
   "required": ["type"],
@@ -49,6 +51,13 @@ extern const MaterialKind kMixMaterial{
       "b": {"type": "conductor", "material": "Cu"}
     }
   ]
-})json", {},      nullptr, nullptr, mixNested, nullptr, "as its materials a and b"};
+})json",
+                                       .nested = mixNested,
+                                       .polarisation = "as its materials a and b",
+                                       .transmits = [](const MaterialModel& m) {
+                                           const auto& x = m.as<MixMaterial>();
+                                           return materialTransmits(*x.a) ||
+                                                  materialTransmits(*x.b);
+                                       }};
 
 }  // namespace lamina

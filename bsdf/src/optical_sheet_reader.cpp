@@ -2,6 +2,7 @@
 // "Optical sheets"): their readers and registrations. Their axes are world directions, which
 // the polarised mode turns into each hit's shading frame (orient).
 #include "lamina/bsdf/material_kind.h"
+#include "lamina/bsdf/optical_sheet.h"
 #include "lamina/core/json_reader.h"
 #include "material_readers.h"
 
@@ -38,19 +39,22 @@ Vec3d toFrame(const Vec3d& axis, const Frame<double>& frame) {
 }
 
 void orientPolariser(MaterialModel& model, const Frame<double>& frame) {
-    auto& p = std::get<PolariserMaterial>(model);
+    auto& p = model.as<PolariserMaterial>();
     p.axis = toFrame(p.axis, frame);
 }
 
 void orientRetarder(MaterialModel& model, const Frame<double>& frame) {
-    auto& t = std::get<RetarderMaterial>(model);
+    auto& t = model.as<RetarderMaterial>();
     t.axis = toFrame(t.axis, frame);
 }
 
 }  // namespace
 
 extern const MaterialKind kPolariserMaterial{
-    "polariser", readPolariser,   R"json({
+    .name = "polariser",
+    .listPosition = 140,
+    .read = readPolariser,
+    .schema = R"json({
   "type": "object",
   "description": "An ideal linear polariser sheet: light crosses it without turning; the polarised mode passes the component along the axis (projected perpendicular to the light), the other modes half of the light.",
   "required": ["type", "axis"],
@@ -62,11 +66,14 @@ extern const MaterialKind kPolariserMaterial{
   },
   "examples": [{"type": "polariser", "axis": [1, 0, 0]}]
 })json",
-    {},          nullptr,         nullptr,
-    nullptr,     orientPolariser, "a linear polariser at its axis"};
+    .orient = orientPolariser,
+    .polarisation = "a linear polariser at its axis",
+    .transmits = [](const MaterialModel&) { return true; }};
 
-extern const MaterialKind kRetarderMaterial{
-    "retarder", readRetarder,   R"json({
+extern const MaterialKind kRetarderMaterial{.name = "retarder",
+                                            .listPosition = 150,
+                                            .read = readRetarder,
+                                            .schema = R"json({
   "type": "object",
   "description": "An ideal linear retarder sheet (a wave plate): light crosses it without turning; the polarised mode delays the component perpendicular to the fast axis by the retardance, the other modes see a clear sheet.",
   "required": ["type", "axis"],
@@ -78,7 +85,8 @@ extern const MaterialKind kRetarderMaterial{
   },
   "examples": [{"type": "retarder", "axis": [1, 1, 0], "retardance": 90}]
 })json",
-    {},         nullptr,        nullptr,
-    nullptr,    orientRetarder, "a linear retarder at its axis"};
+                                            .orient = orientRetarder,
+                                            .polarisation = "a linear retarder at its axis",
+                                            .transmits = [](const MaterialModel&) { return true; }};
 
 }  // namespace lamina

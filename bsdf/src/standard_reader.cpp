@@ -2,6 +2,7 @@
 // base with transmission, both read into StandardMaterial (docs/bsdf.md, "Materials").
 #include <cmath>
 
+#include "lamina/bsdf/layered.h"
 #include "lamina/bsdf/material_kind.h"
 #include "material_readers.h"
 
@@ -47,7 +48,7 @@ void readBase(const JsonReader& b, StandardMaterial& s) {
     b.noteNames("type", types);
     const std::string type = b.string("type", "lambert");
     if (type == "conductor") {
-        auto conductor = std::get<ConductorMaterial>(readConductor(b));
+        auto conductor = readConductor(b).as<ConductorMaterial>();
         const MicrofacetParams& m = conductor.microfacet;
         if (std::max(m.alphaX, m.alphaY) < kSmoothAlpha)
             b.fail(
@@ -174,21 +175,24 @@ constexpr TexturableKey kStandardTextured[] = {{"base_color", TexturedParameter:
                                                {"roughness", TexturedParameter::Roughness}};
 
 void texturedStandard(MaterialModel& model, const TexturedValues& t) {
-    auto& s = std::get<StandardMaterial>(model);
+    auto& s = model.as<StandardMaterial>();
     if (t.color) s.baseColor = *t.color;
     if (t.roughness) s.microfacet.alphaX = s.microfacet.alphaY = *t.roughness * *t.roughness;
 }
 
 void standardSpectra(const MaterialModel& model, std::vector<std::string>& out) {
-    const auto& s = std::get<StandardMaterial>(model);
+    const auto& s = model.as<StandardMaterial>();
     if (s.conductorBase && s.conductorBase->optics.spectrum)
         out.push_back(s.conductorBase->optics.spectrum->name() + " (n, k)");
 }
 
 }  // namespace
 
-extern const MaterialKind kStandardMaterial{"standard",       readStandard,
-                                            R"json({
+extern const MaterialKind kStandardMaterial{
+    .name = "standard",
+    .listPosition = 10,
+    .read = readStandard,
+    .schema = R"json({
   "type": "object",
   "description": "A specular interface over a diffuse base with transmission (docs/bsdf.md).",
   "required": ["type"],
@@ -242,11 +246,22 @@ extern const MaterialKind kStandardMaterial{"standard",       readStandard,
       "transmission": 0.2
     }
   ]
-})json",         kStandardTextured,
-                                            texturedStandard, standardSpectra};
+})json",
+    .texturable = kStandardTextured,
+    .applyTextures = texturedStandard,
+    .spectralData = standardSpectra,
+    .transmits = [](const MaterialModel& m) { return m.as<StandardMaterial>().transmission > 0; },
+    .tabulatesRoughness =
+        [](const MaterialModel& m) {
+            const auto& s = m.as<StandardMaterial>();
+            return s.microfacet.multiscatter || s.coupling == LayerCoupling::Albedo;
+        }};
 
-extern const MaterialKind kLayeredMaterial{"layered", readLayered,
-                                           R"json({
+extern const MaterialKind kLayeredMaterial{
+    .name = "layered",
+    .listPosition = 110,
+    .read = readLayered,
+    .schema = R"json({
   "type": "object",
   "description": "The stack spelled out: an interface over a base, with transmission and a coupling.",
   "required": ["type"],
@@ -352,6 +367,13 @@ extern const MaterialKind kLayeredMaterial{"layered", readLayered,
       }
     }
   ]
-})json",  {},          nullptr, standardSpectra};
+})json",
+    .spectralData = standardSpectra,
+    .transmits = [](const MaterialModel& m) { return m.as<StandardMaterial>().transmission > 0; },
+    .tabulatesRoughness =
+        [](const MaterialModel& m) {
+            const auto& s = m.as<StandardMaterial>();
+            return s.microfacet.multiscatter || s.coupling == LayerCoupling::Albedo;
+        }};
 
 }  // namespace lamina

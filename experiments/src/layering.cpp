@@ -1,4 +1,5 @@
 #include "lamina/experiments/layering.h"
+#include "lamina/bsdf/coated.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,8 @@
 #include "lamina/experiments/layering_twins.h"
+#include "lamina/bsdf/coated.h"
+#include "lamina/bsdf/conductor.h"
+#include "lamina/bsdf/diffuse.h"
+#include "lamina/bsdf/layered.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -55,7 +59,7 @@ LayeringMaterial readLayeringMaterial(const std::string& argument, int index) {
     }
     const JsonReader reader(j, "", source);
     m.desc = parseMaterial(reader);
-    if (!std::holds_alternative<CoatedMaterial>(m.desc.model))
+    if (!m.desc.model.holds<CoatedMaterial>())
         reader.failAt("type",
                       "expected \"coated\": lamina layering compares coated materials "
                       "with their analytic twins");
@@ -66,11 +70,10 @@ LayeringMaterial readLayeringMaterial(const std::string& argument, int index) {
 std::vector<LayeringTwin> analyticTwins(const LayeringMaterial& m, std::string& note) {
     note.clear();
     const CoatedMaterial& c = m.coated();
-    const auto* conductor = std::get_if<ConductorMaterial>(&c.base->model);
+    const auto* conductor = c.base->model.get<ConductorMaterial>();
     const bool smoothConductor = conductor && std::max(conductor->microfacet.alphaX,
                                                        conductor->microfacet.alphaY) < kSmoothAlpha;
-    if ((!std::holds_alternative<DiffuseMaterial>(c.base->model) && !conductor) ||
-        smoothConductor) {
+    if ((!c.base->model.holds<DiffuseMaterial>() && !conductor) || smoothConductor) {
         note =
             "no analytic twin: the layered stack (bsdf/layered.h) takes a diffuse base "
             "(lambert, oren_nayar, burley, frostbite) or a rough conductor, and this base is " +

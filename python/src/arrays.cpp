@@ -1,5 +1,7 @@
 #include "arrays.h"
 
+#include <cmath>
+
 namespace lamina::python {
 
 Rows rowsOf(const DoubleArray& a, std::size_t width, const std::string& what) {
@@ -43,6 +45,27 @@ std::size_t commonCount(std::initializer_list<std::pair<const Rows*, const char*
         from = name;
     }
     return n;
+}
+
+namespace {
+
+Vec3d direction(const Rows& rows, std::size_t i, const char* what) {
+    const double* p = rows.row(i);
+    const Vec3d d(p[0], p[1], p[2]);
+    const double length = glm::length(d);
+    if (!(length > 0) || !std::isfinite(length))
+        throw py::value_error(std::string(what) + "[" + std::to_string(rows.shared ? 0 : i) +
+                              "]: expected a finite direction that is not zero");
+    return glm::normalize(d);
+}
+
+}  // namespace
+
+std::vector<Vec3d> directions(const Rows& rows, std::size_t n, const char* what) {
+    std::vector<Vec3d> out(rows.shared ? 1 : n);
+    for (std::size_t i = 0; i < out.size(); ++i)
+        out[i] = direction(rows, i, what);
+    return out;
 }
 
 }  // namespace lamina::python

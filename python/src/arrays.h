@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "lamina/core/vector.h"
+
 namespace lamina::python {
 
 namespace py = pybind11;
@@ -35,6 +37,14 @@ Rows rowsOf(const DoubleArray& a, std::size_t width, const std::string& what);
 /// The number of rows of arguments that must agree (shared rows fit any count); ValueError
 /// naming them when two counts differ.
 std::size_t commonCount(std::initializer_list<std::pair<const Rows*, const char*>> rows);
+
+/// The rows of directions, normalised (one when the rows are shared), or ValueError naming the
+/// first that is zero or not finite.
+std::vector<Vec3d> directions(const Rows& rows, std::size_t n, const char* what);
+/// Direction i of `directions`' result (the shared one for every i).
+inline const Vec3d& at(const std::vector<Vec3d>& v, std::size_t i) {
+    return v.size() == 1 ? v[0] : v[i];
+}
 
 /// A new float64 array of the given shape.
 inline py::array_t<double> newDoubles(const std::vector<py::ssize_t>& shape) {

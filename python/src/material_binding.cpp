@@ -43,27 +43,6 @@ std::unique_ptr<SpectralBsdf> buildSpectral(const MaterialDesc& desc,
     return b;
 }
 
-Vec3d direction(const Rows& rows, std::size_t i, const char* what) {
-    const double* p = rows.row(i);
-    const Vec3d d(p[0], p[1], p[2]);
-    const double length = glm::length(d);
-    if (!(length > 0) || !std::isfinite(length))
-        throw py::value_error(std::string(what) + "[" + std::to_string(rows.shared ? 0 : i) +
-                              "]: expected a finite direction that is not zero");
-    return glm::normalize(d);
-}
-
-/// The rows of directions, normalised, or ValueError naming the first bad one.
-std::vector<Vec3d> directions(const Rows& rows, std::size_t n, const char* what) {
-    std::vector<Vec3d> out(rows.shared ? 1 : n);
-    for (std::size_t i = 0; i < out.size(); ++i)
-        out[i] = direction(rows, i, what);
-    return out;
-}
-const Vec3d& at(const std::vector<Vec3d>& v, std::size_t i) {
-    return v.size() == 1 ? v[0] : v[i];
-}
-
 TransportMode transportMode(const std::string& name) {
     if (const auto t = kTransportModeNames.find(name)) return *t;
     throw py::value_error("transport: expected one of " + kTransportModeNames.list() + ", got \"" +
@@ -400,39 +379,6 @@ class Material {
 }  // namespace
 
 void bindMaterial(py::module_& m) {
-    m.def(
-        "random_numbers",
-        [](std::size_t count, std::size_t dims, std::uint64_t seed) {
-            auto out = newDoubles({py::ssize_t(count), py::ssize_t(dims)});
-            Pcg32 rng(seed);
-            double* p = out.mutable_data();
-            for (std::size_t i = 0; i < count * dims; ++i)
-                p[i] = rng.nextDouble();
-            return out;
-        },
-        py::arg("count"), py::arg("dims") = 3, py::arg("seed") = 0,
-        "Uniform numbers in [0, 1), (count, dims), row by row from PCG32(seed): the sequence "
-        "`lamina bsdf sample --seed` draws (u_lobe, then u_dir) for each sample");
-    m.def(
-        "material_kinds",
-        []() {
-            const py::object loads = py::module_::import("json").attr("loads");
-            py::list kinds;
-            for (const MaterialKind* kind : materialKinds()) {
-                py::dict d, texturable;
-                d["name"] = std::string(kind->name);
-                for (const TexturableKey& t : kind->texturable)
-                    texturable[py::str(std::string(t.key))] =
-                        std::string(kTexturedParameterNames.name(t.parameter));
-                d["texturable"] = texturable;
-                d["schema"] = loads(std::string(kind->schema));
-                kinds.append(d);
-            }
-            return kinds;
-        },
-        "Every material type, as the scene reader knows it: a list of dicts of name, "
-        "texturable (the keys a scene may take from a texture: 'color' or 'roughness') and "
-        "schema (its branch of docs/scene.schema.json)");
     py::class_<Material>(m, "Material",
                          "A material of the JSON material reader (docs/bsdf.md) in RGB or "
                          "spectral mode; directions in the local frame (z = normal)")

@@ -64,6 +64,7 @@ PYBIND11_MODULE(_lamina, m) {
         }
     });
     lamina::python::bindMaterial(m);
+    lamina::python::bindMaterialSupport(m);
     lamina::python::bindSpectra(m);
     lamina::python::bindRender(m);
     lamina::python::bindExperiments(m);

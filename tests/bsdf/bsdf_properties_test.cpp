@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "bsdf_cases.h"
+#include "lamina/bsdf/dielectric.h"
 #include "lamina/core/pcg32.h"
 
 namespace lamina {

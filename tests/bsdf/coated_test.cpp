@@ -8,6 +8,7 @@
 #include "bsdf_cases.h"
 #include "chi2_helpers.h"
 #include "lamina/bsdf/coated.h"
+#include "lamina/bsdf/dielectric.h"
 #include "sampled_albedo.h"
 
 namespace lamina {

@@ -2,6 +2,7 @@
 // reflectance + transmittance (the generic properties run over bsdf_cases.h).
 #include <gtest/gtest.h>
 
+#include "lamina/bsdf/diffuse_transmission.h"
 #include "lamina/bsdf/material_builder.h"
 #include "lamina/core/error.h"
 
@@ -93,8 +94,8 @@ TEST(DiffuseTransmission, ReflectanceSpectraInSpectralMode) {
 }
 
 TEST(DiffuseTransmission, ParserDefaultsAndRefusals) {
-    const auto d = std::get<DiffuseTransmissionMaterial>(
-        parseMaterialArgument(R"({"type":"diffuse_transmission"})").model);
+    const auto d = parseMaterialArgument(R"({"type":"diffuse_transmission"})")
+                       .model.as<DiffuseTransmissionMaterial>();
     EXPECT_EQ(d.reflectance.rgb, RgbInput(0.25));
     EXPECT_EQ(d.transmittance.rgb, RgbInput(0.25));
     EXPECT_THROW(parseMaterialArgument(R"({"type":"diffuse_transmission","transmittance":1.5})"),

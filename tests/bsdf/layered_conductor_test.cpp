@@ -4,6 +4,8 @@
 // layered_conductor_walk_test.cpp its agreement with the random walk and its energy.
 #include <gtest/gtest.h>
 
+#include "lamina/bsdf/conductor.h"
+#include "lamina/bsdf/layered.h"
 #include "lamina/bsdf/material_builder.h"
 #include "lamina/core/error.h"
 #include "lamina/core/pcg32.h"
@@ -91,7 +93,7 @@ TEST(LayeredConductor, IsReciprocalInFloatAndInSpectralMode) {
 
 TEST(LayeredConductor, TheReaderTakesARoughConductorBaseAndRefusesWhatTheStackCannotBe) {
     const MaterialDesc d = parseMaterialArgument(overGold(1.5, "albedo"));
-    const auto& s = std::get<StandardMaterial>(d.model);
+    const auto& s = d.model.as<StandardMaterial>();
     ASSERT_TRUE(s.conductorBase);
     EXPECT_FALSE(s.diffuse.has_value());
     EXPECT_EQ(s.conductorBase->optics.form, ConductorOptics::Form::Spectral);

@@ -5,6 +5,8 @@
 
 #include <cmath>
 
+#include "lamina/bsdf/coated.h"
+#include "lamina/bsdf/layered.h"
 #include "lamina/bsdf/material_builder.h"
 #include "lamina/core/pcg32.h"
 #include "lamina/core/special_functions.h"

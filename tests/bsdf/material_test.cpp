@@ -5,7 +5,12 @@
 
 #include <cmath>
 
+#include "lamina/bsdf/conductor.h"
+#include "lamina/bsdf/dielectric.h"
+#include "lamina/bsdf/diffuse.h"
+#include "lamina/bsdf/layered.h"
 #include "lamina/bsdf/material_builder.h"
+#include "lamina/bsdf/mix.h"
 #include "lamina/core/error.h"
 
 namespace lamina {
@@ -417,12 +422,12 @@ TEST(DielectricMaterial, CauchyAndSellmeierFormulas) {
     const auto sell = parseMaterialArgument(
         R"({"type":"dielectric","ior":{"sellmeier":{"b":[1.03961212,0.231792344,1.01046945],)"
         R"("c":[0.00600069867,0.0200179144,103.560653]}}})");
-    const auto& d = std::get<DielectricMaterial>(sell.model);
+    const auto& d = sell.model.as<DielectricMaterial>();
     EXPECT_NEAR(d.ior, 1.5168, 1e-4);
     EXPECT_NEAR(d.spectrum->n(450), namedIor("bk7")->n(450), 1e-12);
     const auto cauchy =
         parseMaterialArgument(R"({"type":"dielectric","ior":{"cauchy":[1.5046,0.0042]}})");
-    const auto& c = std::get<DielectricMaterial>(cauchy.model);
+    const auto& c = cauchy.model.as<DielectricMaterial>();
     EXPECT_NEAR(c.spectrum->n(500), 1.5046 + 0.0042 / 0.25, 1e-12);
     EXPECT_TRUE(c.spectrum->dispersive());
     expectError(R"({"type":"dielectric","ior":{"cauchy":[1.5]}})", "ior.cauchy: expected [A, B]");

@@ -6,6 +6,9 @@
 #include <string>
 #include <string_view>
 
+#include "lamina/bsdf/conductor.h"
+#include "lamina/bsdf/diffuse.h"
+#include "lamina/bsdf/layered.h"
 #include "lamina/bsdf/material_builder.h"
 #include "lamina/core/error.h"
 
@@ -73,13 +76,13 @@ MaterialDesc parse(const std::string& json) {
 ConductorMaterial conductor(const std::string& key, std::string_view name) {
     const MaterialDesc d = parse(R"({"type":"conductor","material":"Au","roughness":0.3,")" + key +
                                  R"(":")" + std::string(name) + "\"}");
-    return std::get<ConductorMaterial>(d.model);
+    return d.model.as<ConductorMaterial>();
 }
 
 StandardMaterial standard(const std::string& key, std::string_view name) {
     const MaterialDesc d =
         parse(R"({"type":"standard",")" + key + R"(":")" + std::string(name) + "\"}");
-    return std::get<StandardMaterial>(d.model);
+    return d.model.as<StandardMaterial>();
 }
 
 TEST(NameTables, TheMaterialParserReadsEveryNameOfItsTables) {

@@ -8,6 +8,8 @@
 #include <numbers>
 
 #include "bsdf_cases.h"
+#include "lamina/bsdf/conductor.h"
+#include "lamina/bsdf/dielectric.h"
 #include "lamina/bsdf/optical_sheet.h"
 #include "lamina/core/pcg32.h"
 

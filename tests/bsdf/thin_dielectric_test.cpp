@@ -3,7 +3,9 @@
 // per wavelength in spectral mode.
 #include <gtest/gtest.h>
 
+#include "lamina/bsdf/dielectric.h"
 #include "lamina/bsdf/material_builder.h"
+#include "lamina/bsdf/thin_dielectric.h"
 #include "lamina/core/error.h"
 #include "lamina/core/pcg32.h"
 
@@ -142,8 +144,8 @@ TEST(ThinDielectric, SpectralModeUsesTheIndexOfEachWavelength) {
 }
 
 TEST(ThinDielectric, ParserTakesTheIorsOfDielectric) {
-    EXPECT_EQ(std::get<ThinDielectricMaterial>(
-                  parseMaterialArgument(R"({"type":"thin_dielectric"})").model)
+    EXPECT_EQ(parseMaterialArgument(R"({"type":"thin_dielectric"})")
+                  .model.as<ThinDielectricMaterial>()
                   .ior,
               1.5);
     EXPECT_THROW(parseMaterialArgument(R"({"type":"thin_dielectric","ior":"unobtainium"})"),

@@ -5,6 +5,8 @@
 
 #include <cmath>
 
+#include "lamina/bsdf/diffuse.h"
+#include "lamina/bsdf/layered.h"
 #include "lamina/core/error.h"
 #include "lamina/experiments/layering.h"
 #include "scratch_directory.h"
@@ -95,7 +97,7 @@ TEST(LayeringMaterials, TwinsExistForDiffuseAndRoughConductorBasesAndSayWhatThey
     EXPECT_TRUE(note.empty());
     EXPECT_EQ(twins[0].name, "fresnel coupling");
     EXPECT_EQ(twins[1].name, "albedo coupling");
-    const auto& s = std::get<StandardMaterial>(twins[1].desc.model);
+    const auto& s = twins[1].desc.model.as<StandardMaterial>();
     EXPECT_EQ(s.coupling, LayerCoupling::Albedo);
     EXPECT_EQ(s.fresnel, FresnelChoice::Exact);
     EXPECT_DOUBLE_EQ(s.ior, 1.55);
@@ -106,7 +108,7 @@ TEST(LayeringMaterials, TwinsExistForDiffuseAndRoughConductorBasesAndSayWhatThey
     ASSERT_EQ(gold.size(), 2u);
     EXPECT_NE(note.find("one pass through the coat"), std::string::npos) << note;
     for (const LayeringTwin& t : gold) {
-        const auto& g = std::get<StandardMaterial>(t.desc.model);
+        const auto& g = t.desc.model.as<StandardMaterial>();
         ASSERT_TRUE(g.conductorBase) << t.name;
         EXPECT_FALSE(g.diffuse.has_value());
         EXPECT_DOUBLE_EQ(g.conductorBase->microfacet.alphaX, 0.09);

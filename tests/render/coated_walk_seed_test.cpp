@@ -8,6 +8,7 @@
 #include <cmath>
 #include <string>
 
+#include "lamina/bsdf/coated.h"
 #include "lamina/experiments/layering_statistics.h"
 #include "lamina/render/render_mode.h"
 #include "render_helpers.h"

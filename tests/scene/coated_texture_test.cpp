@@ -5,6 +5,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "lamina/bsdf/coated.h"
+#include "lamina/bsdf/diffuse.h"
 #include "lamina/bsdf/material_builder.h"
 #include "lamina/scene/material_textures.h"
 #include "lamina/scene/scene_description.h"
@@ -37,8 +39,8 @@ int materialIndex(const render::SceneDesc& scene, const std::string& name) {
 }
 
 double baseReflectance(const MaterialDesc& coated) {
-    const auto& base = *std::get<CoatedMaterial>(coated.model).base;
-    return std::get<DiffuseMaterial>(base.model).reflectance.rgb[0];
+    const auto& base = *coated.model.as<CoatedMaterial>().base;
+    return base.model.as<DiffuseMaterial>().reflectance.rgb[0];
 }
 
 TEST(CoatedTexture, TheBaseTakesTheTexturesColourAtEachUv) {

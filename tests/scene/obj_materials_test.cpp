@@ -7,6 +7,9 @@
 
 #include <cmath>
 
+#include "lamina/bsdf/dielectric.h"
+#include "lamina/bsdf/diffuse.h"
+#include "lamina/bsdf/layered.h"
 #include "lamina/core/json_reader.h"
 #include "lamina/scene/scene_description.h"
 #include "scene_shapes.h"
@@ -67,9 +70,9 @@ TEST_F(ObjMaterials, EachUsemtlGroupIsAMeshWithItsMaterial) {
     EXPECT_EQ(s.materialNames.at(std::size_t(meshes[0].material)), mtl() + ":red");
     EXPECT_EQ(s.materialNames.at(std::size_t(meshes[1].material)), mtl() + ":green");
     EXPECT_EQ(materialOf(s, 0).type, "lambert");
-    EXPECT_EQ(std::get<DiffuseMaterial>(materialOf(s, 0).model).reflectance.rgb,
+    EXPECT_EQ(materialOf(s, 0).model.as<DiffuseMaterial>().reflectance.rgb,
               RgbInput(0.8, 0.1, 0.1));
-    EXPECT_EQ(std::get<DiffuseMaterial>(materialOf(s, 1).model).reflectance.rgb,
+    EXPECT_EQ(materialOf(s, 1).model.as<DiffuseMaterial>().reflectance.rgb,
               RgbInput(0.1, 0.8, 0.1));
     EXPECT_TRUE(s.importWarnings.empty()) << s.importWarnings.front();
     // The library is one of the scene's input files (provenance).
@@ -90,7 +93,7 @@ TEST_F(ObjMaterials, TheMappingOfEachKey) {
     ASSERT_EQ(meshes.size(), 5u);
 
     // Ks, Ns: the specular workflow, alpha = sqrt(2 / (Ns + 2)) (Walter et al. 2007).
-    const auto& shiny = std::get<StandardMaterial>(materialOf(s, 0).model);
+    const auto& shiny = materialOf(s, 0).model.as<StandardMaterial>();
     EXPECT_EQ(shiny.baseColor.rgb, RgbInput(0.2, 0.3, 0.4));
     ASSERT_TRUE(shiny.specularColor);
     EXPECT_EQ(*shiny.specularColor, RgbInput(0.04, 0.05, 0.06));
@@ -98,9 +101,9 @@ TEST_F(ObjMaterials, TheMappingOfEachKey) {
     EXPECT_NEAR(shiny.microfacet.alphaY, std::sqrt(2.0 / 100.0), 1e-12);
 
     // illum 7 with Ni: glass of that index.
-    EXPECT_EQ(std::get<DielectricMaterial>(materialOf(s, 1).model).ior, 1.33);
+    EXPECT_EQ(materialOf(s, 1).model.as<DielectricMaterial>().ior, 1.33);
     // d < 1 without Ni: glass of index 1.5, with warnings that say so.
-    EXPECT_EQ(std::get<DielectricMaterial>(materialOf(s, 2).model).ior, 1.5);
+    EXPECT_EQ(materialOf(s, 2).model.as<DielectricMaterial>().ior, 1.5);
     EXPECT_THAT(
         s.importWarnings,
         ::testing::Contains(HasSubstr(mtl() + ":9: newmtl dissolved is glass (illum 2, d 0.5) "
@@ -146,7 +149,7 @@ TEST_F(ObjMaterials, FacesWithoutAKnownMaterialGetTheDefaultLambert) {
     EXPECT_EQ(meshes[0].triangles.size(), 4u);
     const std::string obj = (dir_ / "quads.obj").string();
     EXPECT_EQ(s.materialNames.at(std::size_t(meshes[0].material)), obj + ":default");
-    EXPECT_EQ(std::get<DiffuseMaterial>(materialOf(s, 0).model).reflectance.rgb, RgbInput(0.5));
+    EXPECT_EQ(materialOf(s, 0).model.as<DiffuseMaterial>().reflectance.rgb, RgbInput(0.5));
     EXPECT_THAT(
         s.importWarnings,
         ::testing::ElementsAre(obj + ":17: usemtl nosuch: no such material in the MTL libraries",

@@ -4,6 +4,8 @@
 // {"texture": name} stays a texture reference.
 #include <gtest/gtest.h>
 
+#include "lamina/bsdf/diffuse.h"
+#include "lamina/bsdf/layered.h"
 #include "lamina/core/json_reader.h"
 #include "lamina/scene/scene_description.h"
 
@@ -24,7 +26,7 @@ SceneDesc sceneWithMaterial(const std::string& material) {
 TEST(SceneColors, MeasuredReflectanceSpectrumIsTheMaterialsSpectrum) {
     const SceneDesc scene = sceneWithMaterial(
         R"({"type": "lambert", "reflectance": {"spectrum": [[360, 0.2], [830, 0.6]]}})");
-    const auto& diffuse = std::get<DiffuseMaterial>(scene.materials.at(0).model);
+    const auto& diffuse = scene.materials.at(0).model.as<DiffuseMaterial>();
     ASSERT_TRUE(diffuse.reflectance.spectrum);
     EXPECT_NEAR((*diffuse.reflectance.spectrum)(595.0), 0.4, 1e-12);
     // Its RGB-mode value is its colour, between the two ends of the spectrum.
@@ -35,7 +37,7 @@ TEST(SceneColors, MeasuredReflectanceSpectrumIsTheMaterialsSpectrum) {
 TEST(SceneColors, MeasuredBaseColourOfAStandardMaterial) {
     const SceneDesc scene = sceneWithMaterial(
         R"({"type": "standard", "base_color": {"spectrum": [[360, 0.9], [830, 0.1]]}})");
-    const auto& standard = std::get<StandardMaterial>(scene.materials.at(0).model);
+    const auto& standard = scene.materials.at(0).model.as<StandardMaterial>();
     ASSERT_TRUE(standard.baseColor.spectrum);
     EXPECT_NEAR((*standard.baseColor.spectrum)(595.0), 0.5, 1e-12);
 }

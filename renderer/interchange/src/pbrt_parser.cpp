@@ -3,13 +3,11 @@
 #include <algorithm>
 #include <map>
 
-#include <glm/gtc/matrix_transform.hpp>
-#include <glm/gtc/type_ptr.hpp>
-
 #include "lamina/core/error.h"
 #include "lamina/core/gzip_file.h"
 #include "lamina/core/input_file.h"
 #include "pbrt_tokenizer.h"
+#include "pbrt_transform_directives.h"
 
 namespace lamina::render::pbrt {
 
@@ -70,37 +68,6 @@ class Parser {
         scene_.warnings.push_back(at.str() + ": " + message);
     }
 
-    Token expect(Tokenizer& tokens, Token::Kind kind, const std::string& what, int line) {
-        auto t = tokens.next();
-        if (!t) tokens.fail(line, "expected " + what + ", got the end of the file");
-        if (t->kind != kind) tokens.fail(t->line, "expected " + what + ", got \"" + t->text + "\"");
-        return *t;
-    }
-    std::string string(Tokenizer& tokens, const Token& directive) {
-        return expect(tokens, Token::Kind::String, "a quoted string after " + directive.text,
-                      directive.line)
-            .text;
-    }
-    std::vector<double> numbers(Tokenizer& tokens, const Token& directive, std::size_t count,
-                                bool bracketsAllowed) {
-        bool bracketed = false;
-        if (bracketsAllowed && tokens.peek() && tokens.peek()->kind == Token::Kind::OpenBracket) {
-            tokens.next();
-            bracketed = true;
-        }
-        std::vector<double> v;
-        for (std::size_t i = 0; i < count; ++i)
-            v.push_back(expect(tokens, Token::Kind::Number,
-                               std::to_string(count) + " numbers after " + directive.text,
-                               directive.line)
-                            .number);
-        if (bracketed)
-            expect(tokens, Token::Kind::CloseBracket,
-                   "']' after " + std::to_string(count) + " numbers of " + directive.text,
-                   directive.line);
-        return v;
-    }
-
     Entity entity(Tokenizer& tokens, const Token& directive, const std::string& type) {
         Entity e;
         e.type = type;
@@ -137,7 +104,7 @@ class Parser {
     }
 
     void include(Tokenizer& tokens, const Token& directive, int depth) {
-        const std::string name = string(tokens, directive);
+        const std::string name = quotedString(tokens, directive);
         if (depth + 1 > kMaxIncludeDepth)
             tokens.fail(directive.line, directive.text + " \"" + name + "\": more than " +
                                             std::to_string(kMaxIncludeDepth) +
@@ -165,49 +132,7 @@ class Parser {
         const std::string& name = d.text;
         const Location at = where(tokens, d.line);
         glm::dmat4& ctm = state_.transform;
-        if (name == "Identity") {
-            ctm = glm::dmat4(1.0);
-        } else if (name == "Translate") {
-            const auto v = numbers(tokens, d, 3, false);
-            ctm = glm::translate(ctm, glm::dvec3(v[0], v[1], v[2]));
-        } else if (name == "Scale") {
-            const auto v = numbers(tokens, d, 3, false);
-            ctm = glm::scale(ctm, glm::dvec3(v[0], v[1], v[2]));
-        } else if (name == "Rotate") {
-            const auto v = numbers(tokens, d, 4, false);
-            const glm::dvec3 axis(v[1], v[2], v[3]);
-            if (glm::length(axis) == 0) tokens.fail(d.line, "Rotate: the axis is zero");
-            // pbrt-v4's Rotate (transform.cpp) is the right-handed rotation about the axis,
-            // as glm::rotate.
-            ctm = glm::rotate(ctm, glm::radians(v[0]), glm::normalize(axis));
-        } else if (name == "LookAt") {
-            const auto v = numbers(tokens, d, 9, false);
-            ctm = ctm * lookAt(tokens, d, glm::dvec3(v[0], v[1], v[2]),
-                               glm::dvec3(v[3], v[4], v[5]), glm::dvec3(v[6], v[7], v[8]));
-        } else if (name == "Transform" || name == "ConcatTransform") {
-            const auto v = numbers(tokens, d, 16, true);
-            // pbrt-v4 transposes the 16 numbers (parser.cpp, Transform): they are the matrix
-            // column by column, which is glm's storage order.
-            const glm::dmat4 m = glm::make_mat4(v.data());
-            ctm = name == "Transform" ? m : ctm * m;
-        } else if (name == "CoordinateSystem") {
-            coordinateSystems_[string(tokens, d)] = ctm;
-        } else if (name == "CoordSysTransform") {
-            const std::string system = string(tokens, d);
-            const auto it = coordinateSystems_.find(system);
-            if (it == coordinateSystems_.end())
-                tokens.fail(d.line, "CoordSysTransform: no coordinate system \"" + system +
-                                        "\" was defined");
-            ctm = it->second;
-        } else if (name == "ActiveTransform") {
-            const auto t = expect(tokens, Token::Kind::Word, "All, StartTime or EndTime", d.line);
-            if (t.text != "All")
-                tokens.fail(d.line,
-                            "ActiveTransform " + t.text +
-                                ": motion blur is not supported (only ActiveTransform All)");
-        } else if (name == "TransformTimes") {
-            numbers(tokens, d, 2, false);
-            warn(at, "TransformTimes ignored: lamina renders one instant (no motion blur)");
+        if (readTransformDirective(tokens, d, ctm, coordinateSystems_, scene_.warnings)) {
         } else if (name == "ReverseOrientation") {
             state_.reverseOrientation = !state_.reverseOrientation;
         } else if (name == "AttributeBegin" || name == "TransformBegin") {
@@ -229,25 +154,25 @@ class Parser {
             ctm = glm::dmat4(1.0);
             coordinateSystems_["world"] = ctm;
         } else if (name == "Camera") {
-            Entity e = entity(tokens, d, string(tokens, d));
+            Entity e = entity(tokens, d, quotedString(tokens, d));
             // pbrt-v4 names the camera's frame "camera" (scene.cpp, BasicSceneBuilder::Camera).
             coordinateSystems_["camera"] = glm::inverse(e.transform);
             // The camera sits in the current outside medium (BasicSceneBuilder::Camera).
             scene_.cameraMedia = state_.media;
             setOnce(scene_.camera, std::move(e), "Camera");
         } else if (name == "Film") {
-            setOnce(scene_.film, entity(tokens, d, string(tokens, d)), "Film");
+            setOnce(scene_.film, entity(tokens, d, quotedString(tokens, d)), "Film");
         } else if (name == "Sampler") {
-            setOnce(scene_.sampler, entity(tokens, d, string(tokens, d)), "Sampler");
+            setOnce(scene_.sampler, entity(tokens, d, quotedString(tokens, d)), "Sampler");
         } else if (name == "Integrator") {
-            setOnce(scene_.integrator, entity(tokens, d, string(tokens, d)), "Integrator");
+            setOnce(scene_.integrator, entity(tokens, d, quotedString(tokens, d)), "Integrator");
         } else if (name == "PixelFilter") {
-            setOnce(scene_.filter, entity(tokens, d, string(tokens, d)), "PixelFilter");
+            setOnce(scene_.filter, entity(tokens, d, quotedString(tokens, d)), "PixelFilter");
         } else if (name == "Accelerator") {
-            entity(tokens, d, string(tokens, d));
+            entity(tokens, d, quotedString(tokens, d));
             warn(at, "Accelerator ignored: lamina always uses Embree's BVH");
         } else if (name == "ColorSpace") {
-            const std::string space = string(tokens, d);
+            const std::string space = quotedString(tokens, d);
             if (space != "srgb")
                 tokens.fail(d.line, "ColorSpace \"" + space +
                                         "\" is not supported (lamina's colours are sRGB / "
@@ -259,13 +184,13 @@ class Parser {
         } else if (name == "Include" || name == "Import") {
             include(tokens, d, depth);
         } else if (name == "Material") {
-            Entity e = entity(tokens, d, string(tokens, d));
+            Entity e = entity(tokens, d, quotedString(tokens, d));
             MaterialDef m{"pbrt_material_" + std::to_string(++anonymousMaterials_), std::move(e)};
             state_.material = m.name;
             state_.materialLocation = at;
             scene_.materials.push_back(std::move(m));
         } else if (name == "MakeNamedMaterial") {
-            const std::string materialName = string(tokens, d);
+            const std::string materialName = quotedString(tokens, d);
             Entity e;
             e.location = at;
             e.transform = ctm;
@@ -281,11 +206,11 @@ class Parser {
                                             m.entity.location.str() + ")");
             scene_.materials.push_back({materialName, std::move(e)});
         } else if (name == "NamedMaterial") {
-            state_.material = string(tokens, d);
+            state_.material = quotedString(tokens, d);
             state_.materialLocation = at;
         } else if (name == "Texture") {
-            const std::string textureName = string(tokens, d);
-            const std::string valueType = string(tokens, d);
+            const std::string textureName = quotedString(tokens, d);
+            const std::string valueType = quotedString(tokens, d);
             if (valueType != "float" && valueType != "spectrum")
                 tokens.fail(d.line,
                             "Texture \"" + textureName +
@@ -295,7 +220,7 @@ class Parser {
                                      ? " (pbrt-v3's name: convert the file with pbrt-v4's `pbrt "
                                        "--upgrade FILE > NEW.pbrt`)"
                                      : ""));
-            Entity e = entity(tokens, d, string(tokens, d));
+            Entity e = entity(tokens, d, quotedString(tokens, d));
             for (const TextureDef& t : scene_.textures)
                 if (t.name == textureName && t.valueType == valueType)
                     tokens.fail(d.line, "Texture \"" + textureName +
@@ -303,15 +228,15 @@ class Parser {
                                             t.entity.location.str() + ")");
             scene_.textures.push_back({textureName, valueType, std::move(e)});
         } else if (name == "Shape") {
-            addShape(entity(tokens, d, string(tokens, d)));
+            addShape(entity(tokens, d, quotedString(tokens, d)));
         } else if (name == "AreaLightSource") {
-            state_.areaLight = entity(tokens, d, string(tokens, d));
+            state_.areaLight = entity(tokens, d, quotedString(tokens, d));
         } else if (name == "LightSource") {
             if (currentObject_)
                 tokens.fail(d.line, "LightSource inside ObjectBegin is not supported");
-            scene_.lights.push_back(entity(tokens, d, string(tokens, d)));
+            scene_.lights.push_back(entity(tokens, d, quotedString(tokens, d)));
         } else if (name == "ObjectBegin") {
-            const std::string objectName = string(tokens, d);
+            const std::string objectName = quotedString(tokens, d);
             if (currentObject_)
                 tokens.fail(d.line, "ObjectBegin \"" + objectName + "\" inside ObjectBegin \"" +
                                         currentObject_->name + "\"");
@@ -331,12 +256,12 @@ class Parser {
             stack_.pop_back();
             currentObject_ = nullptr;
         } else if (name == "ObjectInstance") {
-            const std::string objectName = string(tokens, d);
+            const std::string objectName = quotedString(tokens, d);
             if (currentObject_)
                 tokens.fail(d.line, "ObjectInstance inside ObjectBegin is not supported");
             scene_.instances.push_back({objectName, at, ctm});
         } else if (name == "MakeNamedMedium") {
-            const std::string mediumName = string(tokens, d);
+            const std::string mediumName = quotedString(tokens, d);
             Entity e;
             e.location = at;
             e.transform = ctm;
@@ -354,7 +279,7 @@ class Parser {
         } else if (name == "MediumInterface") {
             // One name is both sides (pbrt-v4's parser); the state is an attribute, saved by
             // AttributeBegin.
-            state_.media.inside = string(tokens, d);
+            state_.media.inside = quotedString(tokens, d);
             state_.media.outside = state_.media.inside;
             if (tokens.peek() && tokens.peek()->kind == Token::Kind::String)
                 state_.media.outside = tokens.next()->text;
@@ -368,27 +293,6 @@ class Parser {
         } else {
             tokens.fail(d.line, "unknown directive \"" + name + "\"");
         }
-    }
-
-    // pbrt-v4's LookAt (transform.cpp): camera space has x = normalize(cross(up, dir)),
-    // y = cross(dir, x), z = dir; the transform returned is cameraFromWorld.
-    glm::dmat4 lookAt(Tokenizer& tokens, const Token& d, const glm::dvec3& eye,
-                      const glm::dvec3& look, const glm::dvec3& up) {
-        const glm::dvec3 dir = look - eye;
-        if (glm::length(dir) == 0) tokens.fail(d.line, "LookAt: the eye and the target coincide");
-        if (glm::length(up) == 0) tokens.fail(d.line, "LookAt: the up vector is zero");
-        const glm::dvec3 z = glm::normalize(dir);
-        const glm::dvec3 c = glm::cross(glm::normalize(up), z);
-        if (glm::length(c) < 1e-12)
-            tokens.fail(d.line, "LookAt: the up vector is parallel to the viewing direction");
-        const glm::dvec3 x = glm::normalize(c);
-        const glm::dvec3 y = glm::cross(z, x);
-        glm::dmat4 worldFromCamera(1.0);
-        worldFromCamera[0] = glm::dvec4(x, 0);
-        worldFromCamera[1] = glm::dvec4(y, 0);
-        worldFromCamera[2] = glm::dvec4(z, 0);
-        worldFromCamera[3] = glm::dvec4(eye, 1);
-        return glm::inverse(worldFromCamera);
     }
 
     ParsedScene& scene_;

@@ -50,13 +50,22 @@ Json translateFilm(TranslationContext& context, const Entity& film, const Entity
 /// The camera for an image of `width` x `height`.
 Json translateCamera(TranslationContext& context, const Entity& camera, int width, int height);
 
-// Materials and textures (pbrt_materials.cpp).
+// Materials (pbrt_materials.cpp).
 
 /// The lamina material name for a shape's material (`name` empty: pbrt's default diffuse),
 /// writing it (and the textures it uses) into the document on first use. Returns an empty
 /// string for pbrt's "interface" material: the shape is to be omitted.
 std::string useMaterial(TranslationContext& context, const std::string& name,
                         const Location& usedAt);
+/// A reflectance-like spectrum parameter `name` of `e`: a number, [r, g, b], {"spectrum": pairs}
+/// or, with `textureAllowed`, {"texture": name}; `fallback` when absent (pbrt_materials.cpp).
+Json colour(TranslationContext& context, const Entity& e, const std::string& name,
+            const Json& fallback, bool textureAllowed);
+/// A number parameter that may not be a texture; `fallback` when absent.
+double constantNumber(const ParamList& params, const std::string& name, double fallback);
+
+// Textures (pbrt_textures.cpp).
+
 /// The lamina texture name for a pbrt float or spectrum texture, written on first use.
 std::string useTexture(TranslationContext& context, const std::string& name,
                        const std::string& valueType, const Location& usedAt);

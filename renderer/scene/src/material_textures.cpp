@@ -192,14 +192,7 @@ std::pair<MaterialDesc, MaterialTextures> readTexturedMaterial(const JsonReader&
     const JsonReader patched(copy, r.path(), r.source());
     MaterialDesc desc = parseMaterial(patched);
     if (tex.roughness >= 0) {
-        const bool energy = std::visit(
-            [](const auto& m) {
-                if constexpr (requires { m.microfacet; }) return m.microfacet.multiscatter;
-                return false;
-            },
-            desc.model);
-        const auto* st = std::get_if<StandardMaterial>(&desc.model);
-        if (energy || (st && st->coupling == LayerCoupling::Albedo))
+        if (kind->tabulatesRoughness && kind->tabulatesRoughness(desc.model))
             r.failAt("roughness",
                      "a textured roughness cannot use the albedo tables of "
                      "multiscatter or the albedo coupling");

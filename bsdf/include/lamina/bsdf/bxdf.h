@@ -8,6 +8,7 @@
 #include <string>
 
 #include "lamina/bsdf/bsdf_sample.h"
+#include "lamina/bsdf/bsdf_variants.h"
 #include "lamina/core/mueller_matrix.h"
 
 namespace lamina {

@@ -35,6 +35,7 @@
 #include "lamina/bsdf/bxdf.h"
 #include "lamina/bsdf/coat_interface.h"
 #include "lamina/bsdf/henyey_greenstein.h"
+#include "lamina/bsdf/material_builder.h"
 #include "lamina/core/hash.h"
 #include "lamina/core/pcg32.h"
 #include "lamina/core/warp.h"
@@ -186,3 +187,39 @@ class CoatedBxdf final : public Bxdf<S> {
 }  // namespace lamina
 
 #include "lamina/bsdf/coated_walk.h"
+
+namespace lamina {
+
+LAMINA_EXTERN_BSDF_VARIANTS(CoatedBxdf)
+
+/// `coated` (coated_reader.cpp): a dielectric coat over a base without transmission, with an
+/// optional medium between them; evaluated by a random walk.
+struct CoatedMaterial {
+    double ior = 1.5;
+    MicrofacetParams microfacet;  ///< the coat's roughness (0: smooth)
+    std::shared_ptr<const MaterialDesc> base;
+    double thickness = 0;  ///< optical thickness of the medium at normal incidence; 0: none
+    ColorInput albedo{RgbInput(0.0)};  ///< single-scattering albedo of the medium
+    double g = 0;                      ///< Henyey-Greenstein asymmetry
+    int maxDepth = 0;  ///< the most events of a walk; 0: no cap (Russian roulette ends it)
+    int samples = 1;
+};
+
+template <SpectrumType S>
+std::unique_ptr<Bxdf<S>> buildModel(const CoatedMaterial& c, const MaterialBuilder<S>& b) {
+    using Float = typename S::Float;
+    typename CoatedBxdf<S>::Medium medium;
+    medium.thickness = Float(c.thickness);
+    medium.albedo = b.context().reflectance(c.albedo);
+    medium.g = Float(c.g);
+    // A coated base gets a seed of its own: with an index-matched coat its walk would see
+    // the same pairs as this one, and the same seed would replay this walk's numbers.
+    const MaterialBuilder<S> baseBuilder(b.context(), hashValues({b.walkSeed(), 0x62617365ull}));
+    return std::make_unique<CoatedBxdf<S>>(
+        CoatInterface<S>(Float(c.ior), MaterialBuilder<S>::distribution(c.microfacet),
+                         c.microfacet.g2),
+        baseBuilder.build(*c.base), medium, c.maxDepth, c.samples, b.walkSeed());
+}
+LAMINA_MATERIAL_MODEL(CoatedMaterial)
+
+}  // namespace lamina

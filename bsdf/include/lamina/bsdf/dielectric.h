@@ -22,6 +22,7 @@
 #pragma once
 
 #include "lamina/bsdf/bxdf.h"
+#include "lamina/bsdf/material_builder.h"
 #include "lamina/bsdf/microfacet_distribution.h"
 #include "lamina/bsdf/polarised_fresnel.h"
 #include "lamina/core/fresnel_equations.h"
@@ -285,5 +286,25 @@ class DielectricBxdf final : public Bxdf<S> {
     G2Form g2_;
     std::optional<ThinFilm<S>> film_;
 };
+
+LAMINA_EXTERN_BSDF_VARIANTS(DielectricBxdf)
+
+/// `dielectric` (dielectric_reader.cpp): a boundary between outside (index 1) and inside
+/// (index ior).
+struct DielectricMaterial {
+    double ior = 1.5;  ///< the RGB-mode index (n at 587.56 nm for a dispersive glass)
+    std::shared_ptr<const IorSpectrum> spectrum;  ///< a named glass or an ior_file
+    MicrofacetParams microfacet;
+    std::optional<ThinFilmParams> thinFilm;
+};
+
+template <SpectrumType S>
+std::unique_ptr<Bxdf<S>> buildModel(const DielectricMaterial& d, const MaterialBuilder<S>& b) {
+    using Float = typename S::Float;
+    const Float eta = d.spectrum ? b.context().dielectricIor(*d.spectrum) : Float(d.ior);
+    return std::make_unique<DielectricBxdf<S>>(eta, b.distribution(d.microfacet), d.microfacet.g2,
+                                               b.thinFilm(d.thinFilm));
+}
+LAMINA_MATERIAL_MODEL(DielectricMaterial)
 
 }  // namespace lamina

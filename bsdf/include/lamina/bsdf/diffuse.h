@@ -116,3 +116,35 @@ class DiffuseBxdf final : public Bxdf<S> {
 };
 
 }  // namespace lamina
+
+// The diffuse material types (lobe_readers.cpp). A black one builds an empty LayeredBxdf, whose
+// header includes this one: it is declared here and included at the end.
+#include "lamina/bsdf/material_builder.h"
+
+namespace lamina {
+
+template <SpectrumType S>
+class LayeredBxdf;
+
+/// `lambert`, `oren_nayar`, `burley`, `frostbite`.
+struct DiffuseMaterial {
+    DiffuseModel model = DiffuseModel::Lambert;
+    ColorInput reflectance{RgbInput(0.5)};
+    double roughness = 0;  ///< perceptual
+};
+
+template <SpectrumType S>
+std::unique_ptr<Bxdf<S>> buildModel(const DiffuseMaterial& d, const MaterialBuilder<S>& b) {
+    using Float = typename S::Float;
+    // A black diffuse surface (an emitter's back, say) has no lobe at all.
+    if (d.reflectance.rgb.maxValue() <= 0.0 && !d.reflectance.spectrum)
+        return std::make_unique<LayeredBxdf<S>>(typename LayeredBxdf<S>::Layers{});
+    return std::make_unique<DiffuseBxdf<S>>(b.context().reflectance(d.reflectance), d.model,
+                                            Float(d.roughness));
+}
+LAMINA_MATERIAL_MODEL(DiffuseMaterial)
+LAMINA_EXTERN_BSDF_VARIANTS(DiffuseBxdf)
+
+}  // namespace lamina
+
+#include "lamina/bsdf/layered.h"

@@ -11,6 +11,8 @@
 #pragma once
 
 #include "lamina/bsdf/bxdf.h"
+#include "lamina/bsdf/layered.h"
+#include "lamina/bsdf/material_builder.h"
 #include "lamina/core/warp.h"
 
 namespace lamina {
@@ -68,5 +70,26 @@ class DiffuseTransmissionBxdf final : public Bxdf<S> {
     S reflectance_, transmittance_;
     Float reflectProbability_ = 0;
 };
+
+LAMINA_EXTERN_BSDF_VARIANTS(DiffuseTransmissionBxdf)
+
+/// `diffuse_transmission`: Lambertian reflection and transmission (lobe_readers.cpp). Defaults
+/// are pbrt-v4's.
+struct DiffuseTransmissionMaterial {
+    ColorInput reflectance{RgbInput(0.25)};
+    ColorInput transmittance{RgbInput(0.25)};
+};
+
+template <SpectrumType S>
+std::unique_ptr<Bxdf<S>> buildModel(const DiffuseTransmissionMaterial& d,
+                                    const MaterialBuilder<S>& b) {
+    using Float = typename S::Float;
+    const S r = b.context().reflectance(d.reflectance),
+            t = b.context().reflectance(d.transmittance);
+    if (r.maxValue() <= Float(0) && t.maxValue() <= Float(0))
+        return std::make_unique<LayeredBxdf<S>>(typename LayeredBxdf<S>::Layers{});
+    return std::make_unique<DiffuseTransmissionBxdf<S>>(r, t);
+}
+LAMINA_MATERIAL_MODEL(DiffuseTransmissionMaterial)
 
 }  // namespace lamina

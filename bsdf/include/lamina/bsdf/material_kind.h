@@ -40,6 +40,9 @@ struct TexturedValues {
 
 struct MaterialKind {
     std::string_view name;  ///< the JSON "type"
+    /// Where messages, `lamina info` and the scene schema list this type among the others
+    /// (ascending; the built-in types are 10, 20, ...).
+    int listPosition;
     /// Reads the keys of one material object of this type (validated; InputError otherwise).
     MaterialModel (*read)(const JsonReader&);
     /// This type's branch of $defs.material in docs/scene.schema.json (JSON text); the schema
@@ -66,12 +69,19 @@ struct MaterialKind {
     /// (coated: "base", pbrt-v4's coateddiffuse with a textured reflectance); its textures set
     /// the nested material's parameters, through this type's applyTextures. Empty: none.
     std::string_view texturedThrough = {};
+    /// Whether a model of this type lets light through the surface (coated refuses such a
+    /// base: its walk has no way below it); null: never.
+    bool (*transmits)(const MaterialModel&) = nullptr;
+    /// Whether a model of this type holds tables computed from its roughness when it was read
+    /// (multiscatter's albedo table, the albedo coupling), which a textured roughness could not
+    /// follow from hit to hit; null: never.
+    bool (*tabulatesRoughness)(const MaterialModel&) = nullptr;
 
     /// The parameter `key` takes from a texture, if it may be textured.
     std::optional<TexturedParameter> texturedParameter(std::string_view key) const;
 };
 
-/// Every material type, in the order messages and the schema list them (material_kinds.cpp).
+/// Every material type, in the order messages and the schema list them (listPosition).
 std::span<const MaterialKind* const> materialKinds();
 /// The type called `name`; nullptr if there is none.
 const MaterialKind* findMaterialKind(std::string_view name);
@@ -80,6 +90,8 @@ bool needsOrientation(const MaterialDesc& m);
 /// `m` with its world directions turned into the shading frame `frame` (a copy; `m` itself
 /// if it has none).
 MaterialDesc orientedMaterial(const MaterialDesc& m, const Frame<double>& frame);
+/// Whether `m` lets light through the surface (MaterialKind::transmits).
+bool materialTransmits(const MaterialDesc& m);
 /// The spectral data of `m` and of every material nested in it, for `lamina info`.
 void collectSpectralData(const MaterialDesc& m, std::vector<std::string>& out);
 

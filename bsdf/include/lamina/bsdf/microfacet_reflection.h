@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "lamina/bsdf/bsdf_sample.h"
+#include "lamina/bsdf/bsdf_variants.h"
 #include "lamina/bsdf/fresnel.h"
 #include "lamina/bsdf/microfacet_distribution.h"
 
@@ -78,5 +79,7 @@ class MicrofacetReflectionLobe {
     Fresnel<S> fresnel_;
     G2Form g2_;
 };
+
+LAMINA_EXTERN_BSDF_VARIANTS(MicrofacetReflectionLobe)
 
 }  // namespace lamina

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "lamina/bsdf/bxdf.h"
+#include "lamina/bsdf/material_builder.h"
 
 namespace lamina {
 
@@ -54,5 +55,20 @@ class MixBxdf final : public Bxdf<S> {
     std::unique_ptr<Bxdf<S>> a_, b_;
     Float w_;
 };
+
+LAMINA_EXTERN_BSDF_VARIANTS(MixBxdf)
+
+/// `mix` (mix_reader.cpp): (1 - weight) a + weight b.
+struct MixMaterial {
+    std::shared_ptr<const MaterialDesc> a, b;
+    double weight = 0.5;
+};
+
+template <SpectrumType S>
+std::unique_ptr<Bxdf<S>> buildModel(const MixMaterial& m, const MaterialBuilder<S>& b) {
+    using Float = typename S::Float;
+    return std::make_unique<MixBxdf<S>>(b.build(*m.a), b.build(*m.b), Float(m.weight));
+}
+LAMINA_MATERIAL_MODEL(MixMaterial)
 
 }  // namespace lamina

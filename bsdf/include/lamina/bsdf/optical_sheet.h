@@ -17,6 +17,7 @@
 #pragma once
 
 #include "lamina/bsdf/bxdf.h"
+#include "lamina/bsdf/material_builder.h"
 #include "lamina/core/mueller_matrix.h"
 
 namespace lamina {
@@ -81,5 +82,40 @@ class OpticalSheetBxdf final : public Bxdf<S> {
     V3 axis_;
     Float transmittance_, retardance_;
 };
+
+LAMINA_EXTERN_BSDF_VARIANTS(OpticalSheetBxdf)
+
+/// `polariser`: an ideal linear polariser sheet (optical_sheet_reader.cpp). `axis`: the
+/// transmission axis, in the world as the scene gives it, in the shading frame once the polarised
+/// mode has turned it (MaterialKind::orient); unit length.
+struct PolariserMaterial {
+    Vec3d axis{1, 0, 0};
+    double transmittance = 1;  ///< of light polarised along the axis
+};
+
+/// `retarder`: an ideal linear retarder sheet, a wave plate (optical_sheet_reader.cpp). `axis`:
+/// the fast axis, as PolariserMaterial's.
+struct RetarderMaterial {
+    Vec3d axis{1, 0, 0};
+    double retardanceDegrees = 90;  ///< the slow component's lag, at every wavelength
+};
+
+template <SpectrumType S>
+std::unique_ptr<Bxdf<S>> buildModel(const PolariserMaterial& p, const MaterialBuilder<S>&) {
+    using Float = typename S::Float;
+    return std::make_unique<OpticalSheetBxdf<S>>(OpticalSheetBxdf<S>::Element::Polariser,
+                                                 Vec3<Float>(p.axis), Float(p.transmittance),
+                                                 Float(0));
+}
+LAMINA_MATERIAL_MODEL(PolariserMaterial)
+
+template <SpectrumType S>
+std::unique_ptr<Bxdf<S>> buildModel(const RetarderMaterial& r, const MaterialBuilder<S>&) {
+    using Float = typename S::Float;
+    return std::make_unique<OpticalSheetBxdf<S>>(OpticalSheetBxdf<S>::Element::Retarder,
+                                                 Vec3<Float>(r.axis), Float(1),
+                                                 Float(r.retardanceDegrees * kPi<double> / 180.0));
+}
+LAMINA_MATERIAL_MODEL(RetarderMaterial)
 
 }  // namespace lamina

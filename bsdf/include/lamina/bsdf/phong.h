@@ -76,3 +76,32 @@ class PhongLobe {
 };
 
 }  // namespace lamina
+
+// The `phong` material (lobe_readers.cpp): the lobe alone, as the interface of a LayeredBxdf,
+// whose header includes this one: it is declared here and included at the end.
+#include "lamina/bsdf/material_builder.h"
+
+namespace lamina {
+
+template <SpectrumType S>
+class LayeredBxdf;
+
+/// `phong`: the article's Phong lobe alone.
+struct PhongMaterial {
+    ColorInput reflectance{RgbInput(0.5)};
+    double shininess = 0;
+};
+
+template <SpectrumType S>
+std::unique_ptr<Bxdf<S>> buildModel(const PhongMaterial& p, const MaterialBuilder<S>& b) {
+    using Float = typename S::Float;
+    typename LayeredBxdf<S>::Layers layers;
+    const S rho = b.context().reflectance(p.reflectance);
+    layers.interface.emplace(PhongLobe<S>(rho, Float(p.shininess), Fresnel<S>::schlick(rho)));
+    return std::make_unique<LayeredBxdf<S>>(std::move(layers));
+}
+LAMINA_MATERIAL_MODEL(PhongMaterial)
+
+}  // namespace lamina
+
+#include "lamina/bsdf/layered.h"

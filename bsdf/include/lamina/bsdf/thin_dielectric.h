@@ -16,6 +16,7 @@
 #pragma once
 
 #include "lamina/bsdf/bxdf.h"
+#include "lamina/bsdf/material_builder.h"
 #include "lamina/core/fresnel_equations.h"
 
 namespace lamina {
@@ -66,5 +67,21 @@ class ThinDielectricBxdf final : public Bxdf<S> {
   private:
     S eta_;
 };
+
+LAMINA_EXTERN_BSDF_VARIANTS(ThinDielectricBxdf)
+
+/// `thin_dielectric`: a thin slab of glass (dielectric_reader.cpp); ior as `dielectric` reads it.
+struct ThinDielectricMaterial {
+    double ior = 1.5;  ///< the RGB-mode index (n at 587.56 nm for a dispersive glass)
+    std::shared_ptr<const IorSpectrum> spectrum;  ///< a named glass or an ior_file
+};
+
+template <SpectrumType S>
+std::unique_ptr<Bxdf<S>> buildModel(const ThinDielectricMaterial& t, const MaterialBuilder<S>& b) {
+    using Float = typename S::Float;
+    return std::make_unique<ThinDielectricBxdf<S>>(
+        t.spectrum ? b.context().indexPerChannel(*t.spectrum) : S(Float(t.ior)));
+}
+LAMINA_MATERIAL_MODEL(ThinDielectricMaterial)
 
 }  // namespace lamina

@@ -20,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "lamina/bsdf/coated.h"
 #include "lamina/bsdf/material.h"
 
 namespace lamina::experiments {
@@ -31,7 +32,7 @@ struct LayeringMaterial {
     std::string stem;  ///< a file-name stem for the report
     std::string json;  ///< the material's JSON text
     MaterialDesc desc;
-    const CoatedMaterial& coated() const { return std::get<CoatedMaterial>(desc.model); }
+    const CoatedMaterial& coated() const { return desc.model.as<CoatedMaterial>(); }
 };
 
 /// A built-in name, a JSON object literal or "@file.json"; `index` (from 1) names a literal
