@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "lamina/integrators/bdpt_mis.h"
+#include "lamina/integrators/grid_tracking.h"
 
 namespace lamina::render {
 
