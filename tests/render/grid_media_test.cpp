@@ -112,7 +112,8 @@ TEST(GridTracking, DeltaTrackingPassesAndScattersWithBeerLambert) {
         const int hero = int(rng() % 3);
         Rgb<float> beta(1.0f), rU(1.0f), rL(1.0f);
         const GridFlight f = deltaTrack(tc.m, tc.o, tc.d, std::numeric_limits<float>::infinity(),
-                                        hero, rng(), beta, rU, &rL, nullptr);
+                                        hero, rng(), beta, rU, &rL,
+                                        static_cast<Rgb<float>*>(nullptr));
         // The path integrator's estimate of a flight: beta over the average density ratio.
         for (int c = 0; c < 3; ++c) {
             const double v = double(beta[c] / rU.average());
