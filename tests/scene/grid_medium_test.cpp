@@ -32,8 +32,8 @@ std::string gridFile(const std::string& header, const std::vector<float>& values
 class GridFile : public testing::ScratchDirectoryTest {};
 
 TEST_F(GridFile, ReadsTheValuesInOrder) {
-    const auto p = write("g.lgrid", gridFile(R"({"lamina_grid": 1, "size": [2, 3, 1]})",
-                                             {0, 1, 2, 3, 4, 5.5f}));
+    const auto p = write(
+        "g.lgrid", gridFile(R"({"lamina_grid": 1, "size": [2, 3, 1]})", {0, 1, 2, 3, 4, 5.5f}));
     const DensityGrid g = readGridFile(p);
     EXPECT_EQ(g.nx, 2);
     EXPECT_EQ(g.ny, 3);
@@ -59,7 +59,8 @@ TEST_F(GridFile, RefusesBadFilesInOneLine) {
         {gridFile(h, std::vector<float>(9, 1.0f)), "expected 32 bytes of float32"},
         {gridFile(h, nan), "value 5 (x 1, y 0, z 1) is NaN: expected a finite density >= 0"},
         {gridFile(h, negative), "value 3 (x 1, y 1, z 0) is -1"},
-        {gridFile(R"({"lamina_grid": 1, "size": [2, 0, 2]})", eight), "size: expected [nx, ny, nz]"},
+        {gridFile(R"({"lamina_grid": 1, "size": [2, 0, 2]})", eight),
+         "size: expected [nx, ny, nz]"},
         {gridFile(R"({"lamina_grid": 1, "size": [2, 2.5, 2]})", eight), "size: expected"},
         {gridFile(R"({"lamina_grid": 2, "size": [2, 2, 2]})", eight), "lamina_grid"},
         {gridFile(R"({"size": [2, 2, 2]})", eight), "lamina_grid: missing"},
