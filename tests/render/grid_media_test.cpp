@@ -6,7 +6,8 @@
 //   scattering, ratio tracking's transmittance, and the two combined by the balance heuristic
 //   over strategies and channels as next-event estimation and scattering are;
 // - path tracing through a slab of the same grid against exp(-sigma_t (d1 + d2) L / 2), and the
-//   same seen by light tracing (ratio tracking of the camera connection);
+//   same seen by light tracing (ratio tracking of the camera connection), and the slab emitting
+//   (Le_behind T + Le (1 - T): the emission at every tentative collision);
 // - a grid of constant density renders the image of the homogeneous medium of the same
 //   coefficients (path, RGB and spectral), with majorants 1.5 times too large so that null
 //   collisions happen everywhere;
@@ -22,7 +23,8 @@
 // RatioTrackingMatchesBeerLambert (red 38% low); delta tracking's rL without the null
 // collisions' factor, or ratio tracking's passing without it, fails
 // DeltaAndRatioTrackingCombineByTheBalanceHeuristic (green 8% high; every channel 8% to 55%
-// low). (The path integrator without the null collisions' rL changes the NEE test's image by
+// low); the emission not scaled by the density fails EmissionOfAnAbsorbingSlab (blue 36%
+// high). (The path integrator without the null collisions' rL changes the NEE test's image by
 // 0.5%, below what it resolves: the tracking-level test is the one that sees it.)
 #include <gtest/gtest.h>
 
@@ -206,12 +208,12 @@ class GridMediaRender : public ::testing::TestWithParam<RenderModeKind> {};
 
 // A slab 1.5 thick between two interfaces, seen along its normal (z) by an orthographic camera
 // in front of an emitter: d1 on the near half, d2 on the far half.
-std::string gridSlab(const std::string& sigma) {
+std::string gridSlab(const std::string& sigma, const std::string& more = "") {
     return R"({
       "camera": {"type": "orthographic", "position": [0, 0, -2], "look_at": [0, 0, 0]},
       "film": {"resolution": [8, 8]},
       "media": {"slab": {"type": "grid", "sigma_a": )" +
-           sigma + R"(, "density": {"size": [1, 1, 4], "values": [0.4, 0.4, 1.6, 1.6]},
+           sigma + more + R"(, "density": {"size": [1, 1, 4], "values": [0.4, 0.4, 1.6, 1.6]},
                          "bounds": {"min": [-3, -3, 0], "max": [3, 3, 1.5]}}},
       "materials": {"black": {"type": "lambert", "reflectance": 0}},
       "shapes": [
@@ -252,6 +254,25 @@ TEST_P(GridMediaRender, BeerLambertThroughTwoDensities) {
 
 TEST_P(GridMediaRender, BeerLambertThroughTwoDensitiesSeenByLightTracing) {
     expectBeerLambert(GetParam(), IntegratorKind::Light);
+}
+
+// The same slab emitting: along a ray without scattering the radiance gained is
+// Le (1 - T) whatever the density profile (dL/dz = sigma_a(z) (Le - L)), so the pixel is
+// Le_behind T + Le (1 - T): the emission estimated at every tentative collision, over the
+// channels' average of its densities (path tracing; light tracing and BDPT refuse emitting
+// media). RGB mode, where the pixel is exactly this per channel.
+TEST(GridMediaRenderRgb, EmissionOfAnAbsorbingSlab) {
+    const Rgb<double> sigma(0.2, 0.7, 1.5), Le(0.5, 1.0, 2.0), behind(2.0, 1.0, 0.5);
+    const Rendered r = render(sceneFromText(gridSlab("[0.2, 0.7, 1.5]", R"(, "Le": [0.5, 1, 2])")),
+                              RenderModeKind::Rgb, 256, 9);
+    for (int c = 0; c < 3; ++c) {
+        const double T = std::exp(-sigma[c] * 0.5 * (0.4 + 1.6) * 1.5);
+        const double expected = behind[c] * T + Le[c] * (1.0 - T);
+        const ImageMean& m = r.channel[c];
+        EXPECT_LT(std::abs(m.mean - expected), kZ * m.standardError + 1e-6)
+            << "channel " << c << ": " << m.mean << " +- " << m.standardError << ", expected "
+            << expected;
+    }
 }
 
 // A chromatic medium in an index-matched sphere over a floor, lit by a rectangle lamp.
