@@ -32,14 +32,15 @@
 #include <random>
 
 #include "lamina/integrators/grid_tracking.h"
-#include "render_helpers.h"
+#include "media_render_helpers.h"
 
 namespace lamina::render {
 namespace {
 
-using testing::channelMean;
 using testing::ImageMean;
+using testing::Rendered;
 using testing::sceneFromText;
+using testing::welch;
 
 constexpr double kZ = 3.29;  // two-sided significance 0.001
 
@@ -119,14 +120,14 @@ TEST(GridTracking, DeltaTrackingPassesAndScattersWithBeerLambert) {
     for (int i = 0; i < 30000; ++i) {
         const int hero = int(rng() % 3);
         Rgb<float> beta(1.0f), rU(1.0f), rL(1.0f);
-        const GridFlight f =
+        const FlightOutcome f =
             deltaTrack(tc.m, tc.o, tc.d, std::numeric_limits<float>::infinity(), hero, rng(), beta,
                        rU, &rL, static_cast<Rgb<float>*>(nullptr));
         // The path integrator's estimate of a flight: beta over the average density ratio.
         for (int c = 0; c < 3; ++c) {
             const double v = double(beta[c] / rU.average());
-            passes[c].add(f.outcome == GridFlight::Outcome::Passes ? v : 0.0);
-            scatters[c].add(f.outcome == GridFlight::Outcome::Scatters ? v : 0.0);
+            passes[c].add(f.outcome == FlightOutcome::Outcome::Passes ? v : 0.0);
+            scatters[c].add(f.outcome == FlightOutcome::Outcome::Scatters ? v : 0.0);
         }
     }
     for (int c = 0; c < 3; ++c) {
@@ -151,13 +152,13 @@ TEST(GridTracking, DeltaAndRatioTrackingCombineByTheBalanceHeuristic) {
     for (int i = 0; i < 30000; ++i) {
         const int hero = int(rng() % 3);
         Rgb<float> beta(1.0f), rU(1.0f), rL(1.0f);
-        const GridFlight f =
+        const FlightOutcome f =
             deltaTrack(tc.m, tc.o, tc.d, std::numeric_limits<float>::infinity(), hero, rng(), beta,
                        rU, &rL, static_cast<Rgb<float>*>(nullptr));
         Transmittance<Rgb<float>> tr;
         ratioTrack(tc.m, tc.o, tc.d, std::numeric_limits<float>::infinity(), hero, rng(), tr);
         for (int c = 0; c < 3; ++c) {
-            const double scattering = f.outcome == GridFlight::Outcome::Passes
+            const double scattering = f.outcome == FlightOutcome::Outcome::Passes
                                           ? double(beta[c] / (rU + rL).average())
                                           : 0.0;
             both[c].add(scattering + double(tr.T[c] / (tr.passing + tr.rL).average()));
@@ -167,29 +168,9 @@ TEST(GridTracking, DeltaAndRatioTrackingCombineByTheBalanceHeuristic) {
         expectMean(both[c], tc.transmittance(c), "both strategies, channel " + std::to_string(c));
 }
 
-struct Rendered {
-    ImageMean channel[3];
-};
-
 Rendered render(const SceneDesc& scene, RenderModeKind mode, int spp, std::uint64_t seed,
                 IntegratorKind integrator = IntegratorKind::Path, bool nextEvent = true) {
-    SceneDesc s = scene;
-    s.settings.nextEvent = nextEvent;
-    RenderOptions o;
-    o.integrator = integrator;
-    o.mode = mode;
-    o.spp = spp;
-    o.seed = seed;
-    const RenderResult r = renderScene(s, o);
-    EXPECT_EQ(r.film->rejectedSamples(), 0u);
-    Rendered out;
-    for (int c = 0; c < 3; ++c)
-        out.channel[c] = channelMean(*r.film, c);
-    return out;
-}
-
-double welch(const ImageMean& a, const ImageMean& b) {
-    return (a.mean - b.mean) / std::sqrt(sqr(a.standardError) + sqr(b.standardError));
+    return testing::renderMeans(scene, mode, spp, seed, nextEvent, integrator);
 }
 
 /// The grid of medium `index` replaced by `grid` (the scene's media share their grids).

@@ -170,16 +170,12 @@ void BdptIntegrator<S>::randomWalk(WalkStart start, int maxVertices, TransportMo
             const auto mf = media_
                                 ? sampleMediumFlight(mode_, path, medium, start.hero, sampler, hit)
                                 : std::nullopt;
-            // A medium vertex's distance, if the flight ends in one.
+            // The flight passes, ends, or scatters at a medium vertex (medium_transport.h).
             std::optional<float> scatterAt;
-            if (mf && mf->tracked()) {
-                const GridFlight g = mf->track(o, d, start.hero, beta, rU, nullptr, nullptr);
-                if (g.outcome == GridFlight::Outcome::Ends) return;
-                if (g.outcome == GridFlight::Outcome::Scatters) scatterAt = g.t;
-            } else if (mf) {
-                if (!(mf->flight.pdf > 0.0f)) return;
-                mf->weigh(beta, rU);
-                if (mf->flight.scatters) scatterAt = mf->flight.t;
+            if (mf) {
+                const FlightOutcome f = mf->apply(o, d, start.hero, beta, rU, nullptr, nullptr);
+                if (f.outcome == FlightOutcome::Outcome::Ends) return;
+                if (f.outcome == FlightOutcome::Outcome::Scatters) scatterAt = f.t;
             }
             if (scatterAt) {
                 if (!(beta.maxValue() > 0.0f)) return;

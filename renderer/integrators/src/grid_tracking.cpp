@@ -62,18 +62,18 @@ std::uint64_t trackingSeed(const Vec3f& o, const Vec3f& d, float u) {
 }
 
 template <SpectrumType S>
-GridFlight deltaTrack(const MediumCoefficients<S>& m, const Vec3f& o, const Vec3f& d, float tMax,
-                      int hero, std::uint64_t seed, S& beta, S& rU, S* rL, S* L) {
+FlightOutcome deltaTrack(const MediumCoefficients<S>& m, const Vec3f& o, const Vec3f& d, float tMax,
+                         int hero, std::uint64_t seed, S& beta, S& rU, S* rL, S* L) {
     const GridDensity& grid = *m.grid;
     const S sigmaT = m.sigmaT();
     Pcg32 rng(seed);
-    GridFlight result{GridFlight::Outcome::Passes, tMax};
+    FlightOutcome result{FlightOutcome::Outcome::Passes, tMax};
     const float tau = trackCollisions(
         grid, sigmaT, o, d, tMax, hero, rng, [&](float t, float maximum, float since) {
             const S Tmaj = transmittance(sigmaT, since);
             const S sigmaMaj = sigmaT * maximum;
             if (!(Tmaj[hero] > 0.0f)) {
-                result.outcome = GridFlight::Outcome::Ends;
+                result.outcome = FlightOutcome::Outcome::Ends;
                 return false;
             }
             const float density = grid.densityAt(o + d * t);
@@ -90,27 +90,27 @@ GridFlight deltaTrack(const MediumCoefficients<S>& m, const Vec3f& o, const Vec3
                 const float pdf = Tmaj[hero] * sigmaTHere[hero];
                 beta *= Tmaj * m.sigmaS * density / pdf;
                 rU *= Tmaj * sigmaTHere / pdf;
-                result = {GridFlight::Outcome::Scatters, t};
+                result = {FlightOutcome::Outcome::Scatters, t};
                 return false;
             }
             const S sigmaN = clampZero(sigmaMaj - sigmaTHere);
             const float pdf = Tmaj[hero] * sigmaN[hero];
             if (!(pdf > 0.0f)) {
-                result.outcome = GridFlight::Outcome::Ends;
+                result.outcome = FlightOutcome::Outcome::Ends;
                 return false;
             }
             beta *= Tmaj * sigmaN / pdf;
             rU *= Tmaj * sigmaN / pdf;
             if (rL) *rL *= Tmaj * sigmaMaj / pdf;
             if (!(beta.maxValue() > 0.0f)) {
-                result.outcome = GridFlight::Outcome::Ends;
+                result.outcome = FlightOutcome::Outcome::Ends;
                 return false;
             }
             return true;
         });
-    if (result.outcome != GridFlight::Outcome::Passes) return result;
+    if (result.outcome != FlightOutcome::Outcome::Passes) return result;
     const S Tmaj = transmittance(sigmaT, tau);
-    if (!(Tmaj[hero] > 0.0f)) return {GridFlight::Outcome::Ends, tMax};
+    if (!(Tmaj[hero] > 0.0f)) return {FlightOutcome::Outcome::Ends, tMax};
     beta *= Tmaj / Tmaj[hero];
     rU *= Tmaj / Tmaj[hero];
     if (rL) *rL *= Tmaj / Tmaj[hero];
@@ -157,8 +157,8 @@ void ratioTrack(const MediumCoefficients<S>& m, const Vec3f& o, const Vec3f& d, 
 }
 
 #define LAMINA_GRID_TRACKING(S)                                                                    \
-    template GridFlight deltaTrack(const MediumCoefficients<S>&, const Vec3f&, const Vec3f&,       \
-                                   float, int, std::uint64_t, S&, S&, S*, S*);                     \
+    template FlightOutcome deltaTrack(const MediumCoefficients<S>&, const Vec3f&, const Vec3f&,    \
+                                      float, int, std::uint64_t, S&, S&, S*, S*);                  \
     template void ratioTrack(const MediumCoefficients<S>&, const Vec3f&, const Vec3f&, float, int, \
                              std::uint64_t, Transmittance<S>&);
 LAMINA_GRID_TRACKING(Rgb<float>)

@@ -110,16 +110,12 @@ void LightIntegrator<S>::traceParticle(PixelSampler& sampler, typename Mode::Pat
         if constexpr (Mode::kRendersMedia) {
             const auto mf =
                 media_ ? sampleMediumFlight(mode_, path, medium, hero, sampler, hit) : std::nullopt;
-            // A medium vertex's distance, if the flight ends in one.
+            // The flight passes, ends, or scatters at a medium vertex (medium_transport.h).
             std::optional<float> scatterAt;
-            if (mf && mf->tracked()) {
-                const GridFlight g = mf->track(o, d, hero, beta, rU, nullptr, nullptr);
-                if (g.outcome == GridFlight::Outcome::Ends) break;
-                if (g.outcome == GridFlight::Outcome::Scatters) scatterAt = g.t;
-            } else if (mf) {
-                if (!(mf->flight.pdf > 0.0f)) break;
-                mf->weigh(beta, rU);
-                if (mf->flight.scatters) scatterAt = mf->flight.t;
+            if (mf) {
+                const FlightOutcome f = mf->apply(o, d, hero, beta, rU, nullptr, nullptr);
+                if (f.outcome == FlightOutcome::Outcome::Ends) break;
+                if (f.outcome == FlightOutcome::Outcome::Scatters) scatterAt = f.t;
             }
             if (scatterAt) {
                 const MediumCoefficients<S>& m = mf->coefficients;

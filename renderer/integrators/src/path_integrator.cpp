@@ -81,38 +81,15 @@ S PathIntegrator<S>::radiance(const Vec3f& rayOrigin, const Vec3f& rayDirection,
         if constexpr (Mode::kRendersMedia) {
             const auto mf =
                 media_ ? sampleMediumFlight(mode_, path, medium, hero, sampler, hit) : std::nullopt;
-            // A medium vertex's distance, if the flight ends in one.
+            // The flight passes, ends, or scatters at a medium vertex (medium_transport.h:
+            // exact in a homogeneous medium, delta tracking with its null collisions' factors
+            // and the emission at its collisions in a grid).
             std::optional<float> scatterAt;
-            if (mf && mf->tracked()) {
-                // A grid medium: delta tracking, with its null collisions' factors and the
-                // emission at its collisions (grid_tracking.h).
-                const GridFlight g =
-                    mf->track(o, d, hero, beta, rU, &rL, mf->coefficients.emits ? &L : nullptr);
-                if (g.outcome == GridFlight::Outcome::Ends) break;
-                if (g.outcome == GridFlight::Outcome::Scatters) scatterAt = g.t;
-            } else if (mf) {
-                const MediumCoefficients<S>& m = mf->coefficients;
-                const FreeFlight<S>& flight = mf->flight;
-                if (!(flight.pdf > 0.0f)) break;
-                if (!flight.scatters) {
-                    // The flight passes (to the surface, or out of the scene where the hero's
-                    // extinction is 0): it had probability T_hero of doing so, channel i
-                    // T_i. A light sample's shadow ray has no density of its own (its
-                    // transmittance is exact): rL gets the hero's normalisation only.
-                    mf->weigh(beta, rU);
-                    rL /= flight.pdf;
-                } else {
-                    // A scattering event at t, of density sigma_t T(t) per channel.
-                    const S& T = flight.T;
-                    const float t = flight.t, pdf = flight.pdf;
-                    if (m.emits) {
-                        // The medium's emission along the flight, by the collision estimator.
-                        const S rE = rU * mf->sigmaT * T / pdf;
-                        L += beta * T * m.sigmaA * m.emission / (pdf * rE.average());
-                    }
-                    mf->weigh(beta, rU);
-                    scatterAt = t;
-                }
+            if (mf) {
+                const FlightOutcome f =
+                    mf->apply(o, d, hero, beta, rU, &rL, mf->coefficients.emits ? &L : nullptr);
+                if (f.outcome == FlightOutcome::Outcome::Ends) break;
+                if (f.outcome == FlightOutcome::Outcome::Scatters) scatterAt = f.t;
             }
             if (scatterAt) {
                 const float g = mf->coefficients.g;

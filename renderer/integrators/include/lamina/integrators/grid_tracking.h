@@ -47,8 +47,9 @@ namespace lamina::render {
 /// A seed for a tracking generator from a ray and a number that tells flights apart.
 std::uint64_t trackingSeed(const Vec3f& o, const Vec3f& d, float u);
 
-/// What a delta-tracked free flight ended in.
-struct GridFlight {
+/// What a free flight ended in (delta-tracked in a grid, sampled exactly in a homogeneous
+/// medium: MediumFlight::apply).
+struct FlightOutcome {
     enum class Outcome { Passes, Scatters, Ends } outcome;
     float t;  ///< the real collision's distance (Scatters)
 };
@@ -61,8 +62,8 @@ struct GridFlight {
 /// Ends when the hero's density of the outcome is 0 (the path ends, as a homogeneous flight
 /// of pdf 0 does).
 template <SpectrumType S>
-GridFlight deltaTrack(const MediumCoefficients<S>& m, const Vec3f& o, const Vec3f& d, float tMax,
-                      int hero, std::uint64_t seed, S& beta, S& rU, S* rL, S* L);
+FlightOutcome deltaTrack(const MediumCoefficients<S>& m, const Vec3f& o, const Vec3f& d, float tMax,
+                         int hero, std::uint64_t seed, S& beta, S& rU, S* rL, S* L);
 
 /// A transmittance through media, for a shadow ray or a connection (medium_transport.h).
 template <SpectrumType S>

@@ -94,10 +94,34 @@ struct MediumFlight {
     float tMax;  ///< the distance to the surface (infinity: none)
 
     bool tracked() const { return coefficients.grid != nullptr; }
-    /// A grid medium's flight along o + t d by delta tracking (grid_tracking.h), with its
-    /// factors on beta, rU, rL (if given) and the emission added to L (if given).
-    GridFlight track(const Vec3f& o, const Vec3f& d, int hero, S& beta, S& rU, S* rL, S* L) const {
-        return deltaTrack(coefficients, o, d, tMax, hero, trackingSeed(o, d, u), beta, rU, rL, L);
+
+    /// The flight of a path along o + t d (the ray it was sampled for), applied to the path's
+    /// throughput `beta`, its densities per channel relative to the hero's `rU` and, if given,
+    /// the path integrator's light-sampling densities `rL` and radiance `L` (the medium's
+    /// emission): where the path goes on, or that it ends (the outcome had no density).
+    /// Homogeneous: `weigh`, rL over the hero's probability of passing (a shadow ray's
+    /// transmittance is exact: it has no density of its own), the emission by the collision
+    /// estimator at a medium vertex. Grid: delta tracking (grid_tracking.h).
+    FlightOutcome apply(const Vec3f& o, const Vec3f& d, int hero, S& beta, S& rU, S* rL,
+                        S* L) const {
+        if (tracked())
+            return deltaTrack(coefficients, o, d, tMax, hero, trackingSeed(o, d, u), beta, rU, rL,
+                              L);
+        if (!(flight.pdf > 0.0f)) return {FlightOutcome::Outcome::Ends, flight.t};
+        if (!flight.scatters) {
+            weigh(beta, rU);
+            if (rL) *rL /= flight.pdf;
+            return {FlightOutcome::Outcome::Passes, flight.t};
+        }
+        if (L && coefficients.emits) {
+            // A scattering event at t, of density sigma_t T(t) per channel: the medium's
+            // emission along the flight, by the collision estimator.
+            const S rE = rU * sigmaT * flight.T / flight.pdf;
+            *L += beta * flight.T * coefficients.sigmaA * coefficients.emission /
+                  (flight.pdf * rE.average());
+        }
+        weigh(beta, rU);
+        return {FlightOutcome::Outcome::Scatters, flight.t};
     }
 
     /// The flight's factors on a path's throughput `beta` and its densities per channel
