@@ -294,7 +294,8 @@ extern const MaterialKind kLayeredMaterial{"layered", readLayered,
         "g2": {"$ref": "#/$defs/g2"},
         "sampling": {"$ref": "#/$defs/sampling"},
         "fresnel": {"enum": ["schlick", "schlick_shadowed", "schlick_sg", "f82", "exact", "auto"]},
-        "multiscatter": {"type": "boolean", "default": false}
+        "multiscatter": {"type": "boolean", "default": false},
+        "thin_film": false
       }
     },
     "transmission": {"type": "number", "minimum": 0, "maximum": 1},

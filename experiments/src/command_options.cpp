@@ -29,6 +29,16 @@ OptionDecl resolutionOverrideOption() {
     return resolutionOption("resolution", "Image size WIDTHxHEIGHT (overrides)");
 }
 
+OptionDecl resumeOption() {
+    return flagOption("resume",
+                      "Continue the interrupted run in --output's directory: the renders it kept "
+                      "(renders/) are used, not rendered again; refused if they were rendered "
+                      "with other settings")
+        .commandLineOnly(
+            "Python keeps no files: an interrupted call's KeyboardInterrupt carries .partial, "
+            "what was done");
+}
+
 void applyRenderOverrides(const OptionValues& values, render::RenderOptions& options) {
     options.threads = int(values.integer("threads").value_or(0));
     if (const auto depth = values.integer("max-depth")) options.maxDepth = int(*depth);

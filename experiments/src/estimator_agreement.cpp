@@ -1,5 +1,5 @@
 #include "lamina/experiments/estimator_agreement.h"
-#include "lamina/experiments/interrupted.h"
+#include "lamina/experiments/text_format.h"
 
 #include <algorithm>
 #include <cmath>
@@ -212,6 +212,13 @@ PixelTestCalibration calibratePixelTest(const BatchImages& a, const BatchImages&
 
 BatchImages renderBatches(const render::SceneDesc& scene, render::RenderOptions options, int spp,
                           int batches, const std::function<void(int batch)>& onBatch) {
+    KeptRenders none;
+    return renderBatches(scene, std::move(options), spp, batches, none, "", onBatch);
+}
+
+BatchImages renderBatches(const render::SceneDesc& scene, render::RenderOptions options, int spp,
+                          int batches, KeptRenders& kept, const std::string& name,
+                          const std::function<void(int batch)>& onBatch) {
     const int width = options.resolution ? options.resolution->first : scene.film.width;
     const int height = options.resolution ? options.resolution->second : scene.film.height;
     BatchImages images(width, height);
@@ -221,7 +228,8 @@ BatchImages renderBatches(const render::SceneDesc& scene, render::RenderOptions 
     options.spp = std::max(1, spp / batches);
     for (int k = 0; k < batches; ++k) {
         options.seed = hashValues({base, std::uint64_t(k), 0x6261746368ull}) & 0x7fffffffull;
-        const render::RenderResult r = renderWhole(scene, options);
+        const render::RenderResult r =
+            kept.render(formatText("%s_batch%02d", name.c_str(), k), scene, options, {}, "");
         images.add(*r.film);
         if (onBatch) onBatch(k);
     }

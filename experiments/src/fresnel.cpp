@@ -1,5 +1,5 @@
 #include "lamina/experiments/fresnel.h"
-#include "lamina/experiments/interrupted.h"
+#include "lamina/experiments/kept_renders.h"
 #include "lamina/experiments/noise_floor.h"
 
 #include <algorithm>
@@ -155,44 +155,48 @@ double mean(const std::vector<float>& values) {
     return values.empty() ? 0 : sum / double(values.size());
 }
 
-FresnelSceneComparison compareModes(const std::string& scenePath, int spp,
-                                    const render::RenderOptions& overrides,
-                                    const ProgressSink& progress) {
-    const render::SceneDesc scene = render::loadScene(scenePath);
-    render::RenderOptions o = overrides;
-    requireSeedDependentSampler(o.sampler.value_or(scene.settings.sampler), scenePath);
-    if (spp > 0) o.spp = spp;
-    o.mode = render::RenderModeKind::Rgb;
-    tell(progress, "rendering " + scenePath + " in RGB mode...\n");
-    FresnelSceneComparison c;
-    c.scene = scenePath;
-    c.rgb = renderWhole(scene, o);
-    o.mode = render::RenderModeKind::Spectral;
-    tell(progress, "rendering " + scenePath + " in spectral mode...\n");
-    c.spectral = renderWhole(scene, o);
-    // Each mode again with an independent seed: each pair differs by its mode's noise alone.
-    // RGB against spectral carries one render's noise of each mode, a pair of one mode twice
-    // its own: the floor combines the two pairs' statistics in quadrature, sqrt((r^2 + s^2) / 2)
-    // (spectral mode's colour noise is the larger; its pair alone would overstate the floor).
-    o.seed = hashValues({o.seed.value_or(scene.settings.seed), 0x666c6f6f72});
-    tell(progress, "rendering " + scenePath + " in spectral mode again (the noise floor)...\n");
-    const render::RenderResult spectralTwin = renderWhole(scene, o);
-    o.mode = render::RenderModeKind::Rgb;
-    tell(progress, "rendering " + scenePath + " in RGB mode again (the noise floor)...\n");
-    const render::RenderResult rgbTwin = renderWhole(scene, o);
-    const render::RgbImage a = filmImage(*c.rgb.film), b = filmImage(*c.spectral.film);
-    c.metrics = compareImages(a, b);
-    c.ciede2000 = ciede2000Map(a, b);
-    c.meanDeltaE = mean(c.ciede2000);
-    c.maxDeltaE =
-        c.ciede2000.empty() ? 0 : double(*std::max_element(c.ciede2000.begin(), c.ciede2000.end()));
-    c.p95DeltaE = percentileOf(c.ciede2000, 95);
-    const std::vector<float> spectralPair = ciede2000Map(filmImage(*spectralTwin.film), b);
-    const std::vector<float> rgbPair = ciede2000Map(filmImage(*rgbTwin.film), a);
-    const auto combined = [](double r, double s) { return std::sqrt((r * r + s * s) / 2); };
-    c.floorMeanDeltaE = combined(mean(rgbPair), mean(spectralPair));
-    c.floorP95DeltaE = combined(percentileOf(rgbPair, 95), percentileOf(spectralPair, 95));
-    return c;
+FresnelSceneComparison compareModes(const FresnelInputs& in) {
+    const render::SceneDesc scene = render::loadScene(in.scene);
+    render::RenderOptions o = in.overrides;
+    requireSeedDependentSampler(o.sampler.value_or(scene.settings.sampler), in.scene);
+    if (in.spp > 0) o.spp = in.spp;
+    KeptRenders kept(in.keepDirectory, in.resume);
+    return keepingOnInterrupt(kept, [&] {
+        const auto renderIn = [&](render::RenderModeKind mode, const std::string& name,
+                                  const std::string& what) {
+            o.mode = mode;
+            return kept.render(name, scene, o, in.progress, in.scene + " in " + what);
+        };
+        FresnelSceneComparison c;
+        c.scene = in.scene;
+        c.rgb = renderIn(render::RenderModeKind::Rgb, "scene_rgb", "RGB mode");
+        c.spectral = renderIn(render::RenderModeKind::Spectral, "scene_spectral", "spectral mode");
+        // Both modes again with another seed: the second pair gives the noise of the modes'
+        // difference (noise_floor.h, pairedNoise).
+        o.seed = hashValues({o.seed.value_or(scene.settings.seed), 0x666c6f6f72});
+        const render::RenderResult rgb2 = renderIn(render::RenderModeKind::Rgb, "scene_rgb_seed2",
+                                                   "RGB mode with another seed (the noise floor)");
+        const render::RenderResult spectral2 =
+            renderIn(render::RenderModeKind::Spectral, "scene_spectral_seed2",
+                     "spectral mode with another seed (the noise floor)");
+        const render::RgbImage a = filmImage(*c.rgb.film), b = filmImage(*c.spectral.film);
+        const render::RgbImage a2 = filmImage(*rgb2.film), b2 = filmImage(*spectral2.film);
+        c.metrics = compareImages(a, b);
+        c.ciede2000 = ciede2000Map(a, b);
+        c.meanDeltaE = mean(c.ciede2000);
+        c.maxDeltaE = c.ciede2000.empty()
+                          ? 0
+                          : double(*std::max_element(c.ciede2000.begin(), c.ciede2000.end()));
+        c.p95DeltaE = percentileOf(c.ciede2000, 95);
+        const NoiseOnlyPair noise = pairedNoise(a, b, a2, b2);
+        const std::vector<float> floor = ciede2000Map(noise.a, noise.b);
+        c.floorMeanDeltaE = mean(floor);
+        c.floorP95DeltaE = percentileOf(floor, 95);
+        const std::vector<float> otherSeed = ciede2000Map(a2, b2);
+        c.otherSeedMeanDeltaE = mean(otherSeed);
+        c.otherSeedP95DeltaE = percentileOf(otherSeed, 95);
+        return c;
+    });
 }
 
 }  // namespace
@@ -203,7 +207,7 @@ FresnelResult runFresnel(const FresnelInputs& in) {
     result.thinFilmIor = in.thinFilmIor;
     for (const std::string& m : in.materials)
         result.materials.push_back(analyse(m, Film{in.thinFilmNm, in.thinFilmIor}));
-    if (!in.scene.empty()) result.scene = compareModes(in.scene, in.spp, in.overrides, in.progress);
+    if (!in.scene.empty()) result.scene = compareModes(in);
     return result;
 }
 

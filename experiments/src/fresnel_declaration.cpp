@@ -4,6 +4,7 @@
 #include "lamina/bsdf/material.h"
 #include "lamina/experiments/command_options.h"
 #include "lamina/experiments/fresnel.h"
+#include "lamina/experiments/kept_renders.h"
 #include "lamina/render/render_limits.h"
 
 namespace lamina::experiments {
@@ -95,12 +96,17 @@ CommandDecl fresnelDeclaration() {
         integerOption("spp", "Samples per pixel of the --scene renders", 1, render::kMaxSppOverride)
             .commandLineOnly("of --scene's renders"),
         resolutionOverrideOption().commandLineOnly("of --scene's renders"),
+        resumeOption().needing("scene"),
     };
     c.report = [](const OptionValues& v, const CommandContext& context) -> ReportWork {
-        const FresnelInputs in = fresnelInputs(v, context);
+        FresnelInputs in = fresnelInputs(v, context);
+        in.resume = v.flag("resume");
         return {[in](Report& report) {
-            writeFresnelReport(runFresnel(in), report);
+            FresnelInputs run = in;
+            run.keepDirectory = report.directory();
+            writeFresnelReport(runFresnel(run), report);
             report.finish();
+            removeKeptRenders(report.directory());
             return 0;
         }};
     };

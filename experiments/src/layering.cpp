@@ -10,6 +10,7 @@
 #include "lamina/core/hash.h"
 #include "lamina/experiments/image_metrics.h"
 #include "lamina/experiments/interrupted.h"
+#include "lamina/experiments/kept_renders.h"
 #include "lamina/spectral/color_difference.h"
 
 namespace lamina::experiments {
@@ -138,9 +139,10 @@ Geometry geometry() {
 }
 
 /// The test object rendered with `material` in place of the scene's "sample", in RGB and in
-/// spectral mode.
+/// spectral mode, kept as NAME_MODE (kept_renders.h).
 std::vector<LayeringRender> renderBoth(const render::SceneDesc& scene, std::size_t index,
                                        const MaterialDesc& material, const LayeringInputs& in,
+                                       KeptRenders& kept, const std::string& name,
                                        const std::string& what, std::uint64_t seed) {
     render::SceneDesc s = scene;
     s.materials[index] = material;
@@ -152,9 +154,9 @@ std::vector<LayeringRender> renderBoth(const render::SceneDesc& scene, std::size
         o.resolution = in.resolution;
         o.seed = seed;
         o.mode = mode;
-        tell(in.progress, "rendering " + what + " in " +
-                              std::string(render::kRenderModeNames.name(mode)) + " mode...\n");
-        render::RenderResult r = renderWhole(s, o);
+        const std::string modeName(render::kRenderModeNames.name(mode));
+        render::RenderResult r = kept.render(name + "_" + modeName, s, o, in.progress,
+                                             what + " in " + modeName + " mode");
         render::RgbImage image = filmImage(*r.film);
         out.push_back({std::shared_ptr<const render::Film>(std::move(r.film)), std::move(image),
                        r.seconds, r.spp});
@@ -200,7 +202,9 @@ std::string cappedWalkNote(int maxDepth) {
            "walk, which ends by Russian roulette)";
 }
 
-LayeringResult runLayering(const LayeringInputs& in) {
+namespace {
+
+LayeringResult compareLayering(const LayeringInputs& in, KeptRenders& kept) {
     if (in.materials.empty()) throw InputError("lamina layering: expected at least one material");
     if (in.estimates < 2 || in.albedoSamples < 2)
         throw InputError(
@@ -245,10 +249,11 @@ LayeringResult runLayering(const LayeringInputs& in) {
         r.walkMap = valuesOnly(walkEval(walk, g.map, in.estimates, seed + 3));
         const std::vector<LayeringTwin> twins = analyticTwins(m, r.twinNote);
         if (scene && !twins.empty()) {
-            r.walkRenders = renderBoth(*scene, sceneIndex, m.desc, in, m.stem + " (walk)", in.seed);
-            const std::vector<LayeringRender> again =
-                renderBoth(*scene, sceneIndex, m.desc, in, m.stem + " (walk, the noise floor)",
-                           hashValues({in.seed, 0x666c6f6f72}));
+            r.walkRenders = renderBoth(*scene, sceneIndex, m.desc, in, kept, m.stem + "_walk",
+                                       m.stem + " (walk)", in.seed);
+            const std::vector<LayeringRender> again = renderBoth(
+                *scene, sceneIndex, m.desc, in, kept, m.stem + "_walk_seed2",
+                m.stem + " (walk, the noise floor)", hashValues({in.seed, 0x666c6f6f72}));
             for (std::size_t k = 0; k < again.size(); ++k)
                 r.walkNoise.push_back(compareRenders(again[k].image, r.walkRenders[k].image));
         }
@@ -266,7 +271,8 @@ LayeringResult runLayering(const LayeringInputs& in) {
                 t.lobes.push_back(compared(exactEval(*bsdf, g.lobes[li]), r.walkLobes[li]));
             t.map = compared(exactEval(*bsdf, g.map), r.walkMap);
             if (scene) {
-                t.renders = renderBoth(*scene, sceneIndex, twin.desc, in,
+                t.renders = renderBoth(*scene, sceneIndex, twin.desc, in, kept,
+                                       m.stem + "_" + twin.name.substr(0, twin.name.find(' ')),
                                        m.stem + " (" + twin.name + ")", in.seed);
                 for (std::size_t k = 0; k < t.renders.size(); ++k)
                     t.renderErrors.push_back(
@@ -278,6 +284,13 @@ LayeringResult runLayering(const LayeringInputs& in) {
     }
     if (scene) result.renderSpp = in.spp > 0 ? in.spp : scene->settings.spp;
     return result;
+}
+
+}  // namespace
+
+LayeringResult runLayering(const LayeringInputs& in) {
+    KeptRenders kept(in.keepDirectory, in.resume);
+    return keepingOnInterrupt(kept, [&] { return compareLayering(in, kept); });
 }
 
 }  // namespace lamina::experiments

@@ -4,6 +4,7 @@
 
 #include "declarations.h"
 #include "lamina/experiments/command_options.h"
+#include "lamina/experiments/kept_renders.h"
 #include "lamina/experiments/layering.h"
 #include "lamina/render/render_limits.h"
 
@@ -120,12 +121,17 @@ CommandDecl layeringDeclaration() {
                       render::kMaxSppOverride)
             .commandLineOnly("of --scene's renders"),
         resolutionOverrideOption().commandLineOnly("of --scene's renders"),
+        resumeOption().needing("scene"),
     };
     c.report = [](const OptionValues& v, const CommandContext& context) -> ReportWork {
-        const LayeringInputs in = layeringInputs(v, context);
+        LayeringInputs in = layeringInputs(v, context);
+        in.resume = v.flag("resume");
         return {[in](Report& report) {
-            writeLayeringReport(runLayering(in), report);
+            LayeringInputs run = in;
+            run.keepDirectory = report.directory();
+            writeLayeringReport(runLayering(run), report);
             report.finish();
+            removeKeptRenders(report.directory());
             return 0;
         }};
     };

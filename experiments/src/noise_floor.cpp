@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "lamina/core/error.h"
 #include "lamina/experiments/text_format.h"
@@ -14,6 +15,23 @@ void requireSeedDependentSampler(render::SamplerKind sampler, const std::string&
                          ": the noise floor compares renders with different seeds, and the "
                          "sampler sobol-global's film positions are the same for every seed; "
                          "use --sampler sobol");
+}
+
+NoiseOnlyPair pairedNoise(const render::RgbImage& a1, const render::RgbImage& b1,
+                          const render::RgbImage& a2, const render::RgbImage& b2) {
+    for (const render::RgbImage* image : {&a1, &a2, &b2})
+        if (image->width != b1.width || image->height != b1.height)
+            throw std::logic_error("pairedNoise: four renders of one size");
+    NoiseOnlyPair pair{a1, b1};
+    for (std::size_t i = 0; i < b1.pixels.size(); ++i) {
+        const double mean = (double(a1.pixels[i]) + double(b1.pixels[i])) / 2;
+        const double difference1 = double(a1.pixels[i]) - double(b1.pixels[i]);
+        const double difference2 = double(a2.pixels[i]) - double(b2.pixels[i]);
+        const double noise = (difference1 - difference2) / std::sqrt(2.0);
+        pair.a.pixels[i] = float(mean + noise / 2);
+        pair.b.pixels[i] = float(mean - noise / 2);
+    }
+    return pair;
 }
 
 NoiseFloorReading readAgainstFloor(double difference, double floor, int spp) {

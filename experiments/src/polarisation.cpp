@@ -7,7 +7,7 @@
 #include "lamina/core/error.h"
 #include "lamina/core/hash.h"
 #include "lamina/core/spectrum.h"
-#include "lamina/experiments/interrupted.h"
+#include "lamina/experiments/kept_renders.h"
 #include "lamina/experiments/noise_floor.h"
 
 namespace lamina::experiments {
@@ -80,70 +80,60 @@ void linearPolarisation(const render::Film& film, const std::vector<bool>& lit,
         }
 }
 
-FlooredStatistic floored(double value, double polarisedPair, double spectralPair,
-                         double otherSeed) {
-    // One render of each mode against each other carries one render's noise of each; a pair of
-    // renders of one mode carries twice its own: combined in quadrature, as fresnel --scene.
-    return {value, std::sqrt((polarisedPair * polarisedPair + spectralPair * spectralPair) / 2),
-            otherSeed};
-}
-
-}  // namespace
-
-PolarisationResult runPolarisation(const PolarisationInputs& in) {
-    const render::SceneDesc scene = render::loadScene(in.scene);
-    render::RenderOptions o = in.overrides;
-    requireSeedDependentSampler(o.sampler.value_or(scene.settings.sampler), in.scene);
-    if (in.spp > 0) o.spp = in.spp;
+/// The four renders (two modes, two seeds) and what the experiment reads from them.
+PolarisationResult comparePolarisation(const PolarisationInputs& in, const render::SceneDesc& scene,
+                                       render::RenderOptions o, KeptRenders& kept) {
     PolarisationResult r;
     r.scene = in.scene;
     r.dolpThreshold = in.dolpThreshold;
-    const auto renderIn = [&](render::RenderModeKind mode, const std::string& what) {
+    const auto renderIn = [&](render::RenderModeKind mode, const std::string& name,
+                              const std::string& what) {
         o.mode = mode;
-        tell(in.progress, "rendering " + in.scene + " in " +
-                              std::string(render::kRenderModeNames.name(mode)) + " mode" + what +
-                              "...\n");
-        return renderWhole(scene, o);
+        return kept.render(
+            name, scene, o, in.progress,
+            in.scene + " in " + std::string(render::kRenderModeNames.name(mode)) + " mode" + what);
     };
-    r.polarised = renderIn(render::RenderModeKind::Polarised, "");
-    r.spectral = renderIn(render::RenderModeKind::Spectral, "");
-    // Each mode again with an independent seed: each pair differs by its mode's noise alone.
+    r.polarised = renderIn(render::RenderModeKind::Polarised, "polarised", "");
+    r.spectral = renderIn(render::RenderModeKind::Spectral, "spectral", "");
+    // Both modes again with another seed: the second pair gives the noise of the modes'
+    // difference (noise_floor.h, pairedNoise).
     o.seed = hashValues({o.seed.value_or(scene.settings.seed), 0x706f6c666c6f6f72});
-    const render::RenderResult polarisedTwin =
-        renderIn(render::RenderModeKind::Polarised, " again (the noise floor)");
-    const render::RenderResult spectralTwin =
-        renderIn(render::RenderModeKind::Spectral, " again (the noise floor)");
+    const render::RenderResult polarised2 =
+        renderIn(render::RenderModeKind::Polarised, "polarised_seed2",
+                 " with another seed (the noise floor)");
+    const render::RenderResult spectral2 = renderIn(
+        render::RenderModeKind::Spectral, "spectral_seed2", " with another seed (the noise floor)");
 
     const render::RgbImage p = filmImage(*r.polarised.film), s = filmImage(*r.spectral.film);
-    const render::RgbImage pTwin = filmImage(*polarisedTwin.film);
-    const render::RgbImage sTwin = filmImage(*spectralTwin.film);
+    const render::RgbImage p2 = filmImage(*polarised2.film), s2 = filmImage(*spectral2.film);
     r.width = p.width;
     r.height = p.height;
     r.metrics = compareImages(s, p);
     requireComparedValues(r.metrics, s, "the spectral render", p, "the polarised render");
+    // The spectral render against the polarised one (the reference); the floor: the same
+    // statistic of two images that differ by that difference's noise alone.
+    const NoiseOnlyPair noiseOnly = pairedNoise(s, p, s2, p2);
 
     r.relative = relativeDifferenceMap(s, p);
     r.comparedPixels = std::size_t(std::count_if(r.relative.begin(), r.relative.end(),
                                                  [](float v) { return std::isfinite(v); }));
-    const std::vector<float> relP = relativeDifferenceMap(pTwin, p);
-    const std::vector<float> relS = relativeDifferenceMap(sTwin, s);
-    const std::vector<float> relTwins = relativeDifferenceMap(sTwin, pTwin);
-    r.meanRelative = floored(meanOf(r.relative), meanOf(relP), meanOf(relS), meanOf(relTwins));
-    r.p95Relative = floored(percentileOf(r.relative, 95), percentileOf(relP, 95),
-                            percentileOf(relS, 95), percentileOf(relTwins, 95));
+    const std::vector<float> relFloor = relativeDifferenceMap(noiseOnly.a, noiseOnly.b);
+    const std::vector<float> relOther = relativeDifferenceMap(s2, p2);
+    r.meanRelative = {meanOf(r.relative), meanOf(relFloor), meanOf(relOther)};
+    r.p95Relative = {percentileOf(r.relative, 95), percentileOf(relFloor, 95),
+                     percentileOf(relOther, 95)};
 
     r.ciede2000 = ciede2000Map(s, p);
-    const std::vector<float> deP = ciede2000Map(pTwin, p);
-    const std::vector<float> deS = ciede2000Map(sTwin, s);
-    const std::vector<float> deTwins = ciede2000Map(sTwin, pTwin);
-    r.meanDeltaE = floored(meanOf(r.ciede2000), meanOf(deP), meanOf(deS), meanOf(deTwins));
-    r.p95DeltaE = floored(percentileOf(r.ciede2000, 95), percentileOf(deP, 95),
-                          percentileOf(deS, 95), percentileOf(deTwins, 95));
+    const std::vector<float> deFloor = ciede2000Map(noiseOnly.a, noiseOnly.b);
+    const std::vector<float> deOther = ciede2000Map(s2, p2);
+    r.meanDeltaE = {meanOf(r.ciede2000), meanOf(deFloor), meanOf(deOther)};
+    r.p95DeltaE = {percentileOf(r.ciede2000, 95), percentileOf(deFloor, 95),
+                   percentileOf(deOther, 95)};
 
     r.lit = litPixels(p);
     std::vector<float> twinDolp, twinAolp;
     linearPolarisation(*r.polarised.film, r.lit, r.dolp, r.aolp);
-    linearPolarisation(*polarisedTwin.film, r.lit, twinDolp, twinAolp);
+    linearPolarisation(*polarised2.film, r.lit, twinDolp, twinAolp);
     double sum = 0, noise = 0;
     std::size_t lit = 0;
     for (std::size_t i = 0; i < r.dolp.size(); ++i) {
@@ -158,6 +148,17 @@ PolarisationResult runPolarisation(const PolarisationInputs& in) {
         r.dolpNoise = noise / double(lit);
     }
     return r;
+}
+
+}  // namespace
+
+PolarisationResult runPolarisation(const PolarisationInputs& in) {
+    const render::SceneDesc scene = render::loadScene(in.scene);
+    render::RenderOptions o = in.overrides;
+    requireSeedDependentSampler(o.sampler.value_or(scene.settings.sampler), in.scene);
+    if (in.spp > 0) o.spp = in.spp;
+    KeptRenders kept(in.keepDirectory, in.resume);
+    return keepingOnInterrupt(kept, [&] { return comparePolarisation(in, scene, o, kept); });
 }
 
 }  // namespace lamina::experiments

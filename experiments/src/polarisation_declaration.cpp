@@ -4,6 +4,7 @@
 
 #include "declarations.h"
 #include "lamina/experiments/command_options.h"
+#include "lamina/experiments/kept_renders.h"
 #include "lamina/experiments/noise_floor.h"
 #include "lamina/experiments/polarisation.h"
 #include "lamina/render/render_limits.h"
@@ -78,7 +79,9 @@ CommandDecl polarisationDeclaration() {
         "p95_delta_e (each value, noise_floor, resolved, other_seed: between the renders of the "
         "floor's seed); compared_pixels; the polarised "
         "render's dolp and aolp (degrees) as (H, W) arrays (0 where there is no light), "
-        "mean_dolp, max_dolp, dolp_noise; the per-pixel relative_difference and delta_e";
+        "mean_dolp, max_dolp, dolp_noise; the per-pixel relative_difference and delta_e. "
+        "Ctrl-C raises KeyboardInterrupt with .partial: {\"renders\": the finished renders (name, "
+        "mode, integrator, seed, spp, rgb as an (H, W, 3) array)}";
     c.options = {
         sceneOption(),
         outputDirectoryOption(),
@@ -96,12 +99,17 @@ CommandDecl polarisationDeclaration() {
         threadsOption(),
         maxDepthOption(),
         resolutionOverrideOption().differsInPython("Python also takes (width, height)"),
+        resumeOption(),
     };
     c.report = [](const OptionValues& v, const CommandContext& context) -> ReportWork {
-        const PolarisationInputs in = polarisationInputs(v, context);
+        PolarisationInputs in = polarisationInputs(v, context);
+        in.resume = v.flag("resume");
         return {[in](Report& report) {
-            writePolarisationReport(runPolarisation(in), report);
+            PolarisationInputs run = in;
+            run.keepDirectory = report.directory();
+            writePolarisationReport(runPolarisation(run), report);
             report.finish();
+            removeKeptRenders(report.directory());
             return 0;
         }};
     };

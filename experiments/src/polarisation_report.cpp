@@ -110,17 +110,21 @@ void writePolarisationReport(const PolarisationResult& r, Report& report) {
     md += row("95th percentile of CIEDE2000", r.p95DeltaE, spp);
     md += formatText(
         "\nThe relative difference of a pixel is |Y_spectral - Y_polarised| / ((Y_spectral + "
-        "Y_polarised) / 2), in [0, 2], over the %zu pixels not black in both renders. The noise "
-        "floor is the same statistic between each mode's render and a second one with another "
-        "seed (noise alone), the two combined as sqrt((polarised^2 + spectral^2) / 2): the "
-        "noise of one render of each mode. A difference is resolved when it exceeds %g times "
+        "Y_polarised) / 2), in [0, 2], over the %zu pixels not black in both renders. The two "
+        "compared renders share their seed (common random numbers: the same paths and "
+        "wavelengths), so their difference carries far less noise than two independent renders "
+        "would. Its noise is measured from a second pair of renders with another seed: per "
+        "pixel and channel, n = ((spectral1 - polarised1) - (spectral2 - polarised2)) / "
+        "sqrt(2) has the variance of the first pair's difference and no true difference in "
+        "it, and the noise floor is the same statistic between m + n/2 and m - n/2, m the mean "
+        "of the two renders: two images that differ by that noise alone. A difference is resolved "
+        "when it exceeds %g times "
         "its floor; the samples that would resolve one that does not are estimated with the "
         "noise falling as 1/sqrt(spp) and adding in quadrature to the true difference. The "
-        "two compared renders share their seed (the same paths and wavelengths: common random "
-        "numbers), so their difference is far less noisy than two independent renders: a "
-        "value below the floor that the renders of the second seed reproduce (the last "
-        "column) is still a measured difference, smaller than what independent renders at "
-        "this sample count could show.\n\n"
+        "last column is the difference between the second pair: a difference that is real "
+        "shows in both. Premises: the two pairs differ by their seed alone, and every sample "
+        "number of the sampler changes with the seed (sobol-global, whose film positions do "
+        "not, is refused).\n\n"
         "![relative difference](relative_difference.png) ![CIEDE2000](ciede2000.png)\n\n",
         r.comparedPixels, kResolvedOverFloor);
     md += formatText(

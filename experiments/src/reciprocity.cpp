@@ -75,13 +75,16 @@ ReciprocityResult runReciprocity(const ReciprocityInputs& in) {
     for (const Ablation a : in.ablations)
         apply(a, o.ablations);
 
+    KeptRenders kept(in.keepDirectory, in.resume);
     for (std::size_t i = 0; i < in.integrators.size(); ++i) {
         const std::string name(render::kIntegratorNames.name(in.integrators[i]));
         o.integrator = in.integrators[i];
         o.seed = hashValues({in.seed, i, 0x7265636970ull}) & 0x7fffffffull;
         const auto start = std::chrono::steady_clock::now();
-        BatchImages images = renderBatches(scene, o, in.spp, in.batches, [&](int k) {
-            tell(in.progress, formatText("\r%s: batch %d/%d", name.c_str(), k + 1, in.batches));
+        BatchImages images = keepingOnInterrupt(kept, [&] {
+            return renderBatches(scene, o, in.spp, in.batches, kept, name, [&](int k) {
+                tell(in.progress, formatText("\r%s: batch %d/%d", name.c_str(), k + 1, in.batches));
+            });
         });
         const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -2,6 +2,7 @@
 // from them, the report (exit status 2 when a pair disagrees), and the result as data.
 #include "declarations.h"
 #include "lamina/experiments/command_options.h"
+#include "lamina/experiments/kept_renders.h"
 #include "lamina/experiments/reciprocity.h"
 #include "lamina/render/render_limits.h"
 
@@ -27,11 +28,15 @@ ReciprocityInputs reciprocityInputs(const OptionValues& v, const CommandContext&
 }
 
 ReportWork reciprocityReport(const OptionValues& v, const CommandContext& context) {
-    const ReciprocityInputs in = reciprocityInputs(v, context);
+    ReciprocityInputs in = reciprocityInputs(v, context);
+    in.resume = v.flag("resume");
     return {[in](Report& report) {
-        const ReciprocityResult result = runReciprocity(in);
+        ReciprocityInputs run = in;
+        run.keepDirectory = report.directory();
+        const ReciprocityResult result = runReciprocity(run);
         writeReciprocityReport(result, report);
         report.finish();
+        removeKeptRenders(report.directory());
         return result.allAgree ? 0 : 2;
     }};
 }
@@ -84,7 +89,9 @@ CommandDecl reciprocityDeclaration() {
     c.returns =
         "a dict: pairs (per pair of integrators: agree, relative_difference, standard_error, the "
         "means, the rejection rates and the block test's p-value), materials (the largest "
-        "reciprocity and adjoint errors of every material) and agree, the verdict";
+        "reciprocity and adjoint errors of every material) and agree, the verdict. Ctrl-C "
+        "raises KeyboardInterrupt with .partial: {\"renders\": the finished batch renders "
+        "(name, mode, integrator, seed, spp, rgb as an (H, W, 3) array)}";
     c.options = {
         sceneOption(),
         outputDirectoryOption("Directory for the images and t-statistic maps"),
@@ -117,6 +124,7 @@ CommandDecl reciprocityDeclaration() {
                        "1/eta^2 on light paths), swapped-directions (f(wi, wo) at light-path "
                        "connections)",
                        kAblationNames, ""),
+        resumeOption(),
     };
     c.report = reciprocityReport;
     c.data = reciprocityData;

@@ -5,6 +5,8 @@
 #include "lamina/experiments/text_format.h"
 #include "lamina/output/image_output.h"
 
+#include <algorithm>
+
 namespace lamina::experiments {
 
 namespace {
@@ -147,6 +149,24 @@ void writeReciprocityReport(const ReciprocityResult& result, Report& report) {
     md += formatText("\nverdict: %s%s (images and t statistics in %s)\n\n",
                      result.allAgree ? "the estimators agree" : "the estimators DISAGREE",
                      pixelTestNote(result).c_str(), report.directory().string().c_str());
+    const int perBatch = std::max(1, in.spp / in.batches);
+    md += formatText(
+        "Premises of the verdict: (1) independent renders: every batch is a render of its own "
+        "seed (derived from --seed %llu, the integrator and the batch) with the independent "
+        "sampler, so the %d batch means of a pixel or a block are independent, their spread "
+        "estimates the variance of their mean with %d degrees of freedom, and the integrators "
+        "share no random numbers; (2) samples: each batch has %d spp, so a block's batch mean "
+        "averages %d samples (%dx%d pixels; fewer at the image's edges), enough for the "
+        "block means to be near normal, which Welch's test assumes (the per-pixel test, %d "
+        "samples a batch, is checked by the bootstrap above); (3) significance: every "
+        "per-pixel and per-block test at alpha %.3g, and the verdict \"disagree\" only when "
+        "the number of rejected blocks (binomial at alpha) or the difference of the image "
+        "means (Welch) is significant at 0.001. The noise floor of the image means' relative "
+        "difference is its standard error (the +- column): a difference whose p-value is "
+        "above 0.001 is not resolved at %d spp.\n\n",
+        static_cast<unsigned long long>(in.seed), in.batches, in.batches - 1, perBatch,
+        perBatch * in.test.blockSize * in.test.blockSize, in.test.blockSize, in.test.blockSize,
+        perBatch, in.test.alpha, in.spp);
     md += "Mean images: " + images +
           "; per pair, its t statistics per pixel and per block (`t_A_vs_B.exr`, "
           "`t_A_vs_B_pixels.png`, `t_A_vs_B_blocks.png`, each also as PDF):\n\n" +

@@ -119,6 +119,16 @@ std::string scenesSection(const StabilityResult& result) {
                          static_cast<unsigned long long>(s.rejectedSamples), s.largestSample,
                          s.meanLuminance,
                          s.meanLuminance > 0 ? s.largestSample / s.meanLuminance : 0.0);
+    md << "\nPremises of these statistics: one render per scene, with the scene's own seed and "
+          "sampler; the largest sample is the largest luminance of one camera sample (before "
+          "the pixel filter's weight) among the "
+       << result.inputs.spp
+       << " spp of every pixel, so it is one extreme draw, not an estimate with a spread: it "
+          "grows with the sample count, and firefly ratios compare only at equal spp. No noise "
+          "floor is given for it (one render has none to give); another seed or --spp shows "
+          "how far it moves. A scene whose film clamps samples (film.max_component_value) "
+          "caps it. No rejected sample means none among these samples, not that none can "
+          "occur.\n";
     return md.str() + "\n";
 }
 

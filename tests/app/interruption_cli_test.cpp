@@ -12,12 +12,14 @@
 #include <spawn.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <chrono>
 #include <thread>
 
 #include "cli_helpers.h"
 #include "lamina/image/image_io.h"
 #include "lamina/output/image_output.h"
+#include "source_files.h"
 
 extern char** environ;
 
@@ -226,6 +228,59 @@ TEST_F(Interruption, CtrlCDuringConvergenceKeepsTheFinishedRunsAndResumeContinue
                 ::testing::Not(::testing::HasSubstr("rendering the rgb reference")));
     EXPECT_TRUE(fs::exists(report / "summary.md"));
     EXPECT_TRUE(fs::exists(report / "runs" / "light_rgb.csv"));
+}
+
+// Every experiment that renders keeps its finished renders (renders/NAME.exr) the same way:
+// Ctrl-C during polarisation's second render keeps the first and names it, --resume renders
+// only the others and writes the summary an uninterrupted run writes, and a resume with other
+// settings is refused on one line.
+TEST_F(Interruption, CtrlCDuringPolarisationKeepsItsRendersAndResumeContinues) {
+    const std::string scene = testing::sourceFile("scenes/polarisation/two-mirrors.json").string();
+    const auto report = dir_ / "report";
+    const std::vector<std::string> args = {"polarisation", scene, "--spp",
+                                           "128",          "-o",  report.string()};
+    const pid_t pid = start(args);
+    const fs::path first = report / "renders" / "polarised.exr";
+    const auto deadline = std::chrono::steady_clock::now() + 60s;
+    while (!fs::exists(first) && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(5ms);
+    ASSERT_TRUE(fs::exists(first)) << "the first render was not kept";
+    ::kill(pid, SIGINT);
+    EXPECT_EQ(wait(pid), 130) << stderrText();
+    EXPECT_THAT(stderrText(),
+                ::testing::HasSubstr("stopped before the report; kept " + first.string() +
+                                     " (the same command with --resume"));
+    EXPECT_FALSE(fs::exists(report / "renders" / "spectral.exr"));
+    EXPECT_FALSE(fs::exists(report / "summary.md"));
+    EXPECT_FALSE(temporaryPresent());
+
+    std::string command;
+    for (const std::string& arg : args)
+        command += arg + " ";
+    const CommandRun refused = runLaminaStderr(command + "--resume --seed 3");
+    EXPECT_EQ(refused.exitCode, 1) << refused.output;
+    EXPECT_THAT(refused.output,
+                ::testing::HasSubstr("lamina: error: " + first.string() + ": rendered with seed="));
+    EXPECT_EQ(std::count(refused.output.begin(), refused.output.end(), '\n'), 1) << refused.output;
+
+    const CommandRun resumed = runLaminaStderr(command + "--resume");
+    EXPECT_EQ(resumed.exitCode, 0) << resumed.output;
+    EXPECT_THAT(resumed.output,
+                ::testing::HasSubstr("polarised mode: kept from renders/polarised.exr"));
+    EXPECT_THAT(resumed.output,
+                ::testing::HasSubstr("rendering " + scene + " in spectral mode..."));
+    EXPECT_FALSE(fs::exists(report / "renders")) << "kept renders left after the report";
+
+    const auto whole = dir_ / "whole";
+    const CommandRun uninterrupted =
+        runLamina("polarisation " + scene + " --spp 128 -o " + whole.string());
+    EXPECT_EQ(uninterrupted.exitCode, 0) << uninterrupted.output;
+    const auto text = [](const fs::path& file) {
+        std::ifstream in(file);
+        return std::string{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    };
+    EXPECT_EQ(text(report / "summary.md"), text(whole / "summary.md"));
+    EXPECT_THAT(text(report / "summary.md"), ::testing::HasSubstr("noise floor"));
 }
 
 // A shard interrupted (a preempted or requeued array task) and run again with the same command

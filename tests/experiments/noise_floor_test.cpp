@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "lamina/core/error.h"
 
 namespace lamina::experiments {
@@ -39,6 +41,35 @@ TEST(NoiseFloor, RefusesASamplerWhoseFilmPositionsIgnoreTheSeed) {
                  InputError);
     EXPECT_NO_THROW(requireSeedDependentSampler(render::SamplerKind::Sobol, "s.json"));
     EXPECT_NO_THROW(requireSeedDependentSampler(render::SamplerKind::Independent, "s.json"));
+}
+
+render::RgbImage grey(std::vector<float> values) {
+    render::RgbImage image;
+    image.width = int(values.size());
+    image.height = 1;
+    for (const float v : values)
+        image.pixels.insert(image.pixels.end(), {v, v, v});
+    return image;
+}
+
+// The noise-only pair of two same-seed pairs, in closed form: per value the pair's mean
+// m = (a1 + b1) / 2 moved apart by n = ((a1 - b1) - (a2 - b2)) / sqrt(2).
+TEST(NoiseFloor, APairedNoiseIsTheDifferenceOfDifferencesAroundThePairsMean) {
+    const NoiseOnlyPair p =
+        pairedNoise(grey({1.0f, 2.0f}), grey({0.5f, 2.0f}), grey({3.0f, 1.0f}), grey({2.9f, 1.5f}));
+    const double n0 = (0.5 - 0.1) / std::sqrt(2.0), n1 = (0.0 + 0.5) / std::sqrt(2.0);
+    EXPECT_NEAR(p.a.at(0, 0, 0), 0.75 + n0 / 2, 1e-6);
+    EXPECT_NEAR(p.b.at(0, 0, 0), 0.75 - n0 / 2, 1e-6);
+    EXPECT_NEAR(p.a.at(1, 0, 1), 2.0 + n1 / 2, 1e-6);
+    EXPECT_NEAR(p.b.at(1, 0, 1), 2.0 - n1 / 2, 1e-6);
+}
+
+// The same mode twice with the same seed: no difference and no noise in it, never resolved.
+TEST(NoiseFloor, TheSameRenderTwiceIsNotResolved) {
+    const render::RgbImage first = grey({0.2f, 0.7f}), second = grey({0.25f, 0.6f});
+    const NoiseOnlyPair p = pairedNoise(first, first, second, second);
+    EXPECT_EQ(p.a.pixels, p.b.pixels);
+    EXPECT_FALSE(readAgainstFloor(0.0, 0.0, 4).resolved);
 }
 
 }  // namespace

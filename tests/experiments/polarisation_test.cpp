@@ -21,6 +21,8 @@
 #include <numbers>
 
 #include "lamina/core/fresnel_amplitudes.h"
+#include "lamina/core/spectrum.h"
+#include "lamina/experiments/image_metrics.h"
 #include "lamina/experiments/noise_floor.h"
 #include "lamina/experiments/polarisation.h"
 #include "scratch_directory.h"
@@ -122,6 +124,87 @@ TEST_F(PolarisationExperimentScene, OneReflectionHasTheDegreeOfPolarisationOfFre
         EXPECT_NEAR(r.aolp[i], 0.0, 0.05) << i;
     }
     EXPECT_NEAR(r.meanDolp, expected, 1e-4);
+}
+
+// The noise floor of the two modes' same-seed difference (noise_floor.h, pairedNoise). Two
+// metal mirrors (n = 1.5, k = 12, the same at every wavelength) at 56.31 degrees with crossed
+// planes of incidence reflect a coloured lamp into the camera: the polarised mode gives
+// L Rs Rp, the spectral mode L ((Rs + Rp) / 2)^2, a relative difference of 0.063% in every
+// pixel (Fresnel in closed form below). The lamp's colour makes the spectral sampling of both
+// modes noisy (about 9% between renders of two seeds at 4 spp), but the two modes share their
+// paths and wavelengths, so their difference is 0.063% of each sample and its own noise is
+// tiny: the floor of that noise resolves it, where the floor of two independent renders could
+// not.
+TEST_F(PolarisationExperimentScene, ASmallRealDifferenceIsResolvedAgainstTheNoiseOfTheDifference) {
+    const auto scene = write("crossed-metal.json", R"({
+      "camera": {"type": "orthographic", "position": [0, 0, 5], "look_at": [0, 0, 0],
+                 "up": [0, 1, 0], "screen_window": [-1.75, -1.25, -0.2, 0.2]},
+      "film": {"resolution": [10, 8], "filter": {"type": "box", "radius": 0.5}},
+      "integrator": {"type": "path", "max_depth": 4},
+      "materials": {"metal": {"type": "conductor", "eta": 1.5, "k": 12},
+                    "lamp": {"type": "lambert", "reflectance": 0}},
+      "shapes": [
+        {"type": "rectangle", "material": "metal",
+         "transform": [{"scale": 0.6}, {"rotate": {"axis": [-1, 0, 0], "angle": 56.309932}},
+                       {"translate": [-1.5, 0, 0]}]},
+        {"type": "rectangle", "material": "metal",
+         "transform": [{"scale": 1.2},
+                       {"rotate": {"axis": [0.524097, -0.851658, 0], "angle": 77.681478}},
+                       {"translate": [-1.5, 1.846154, -0.769231]}]},
+        {"type": "rectangle", "material": "lamp", "emission": {"radiance": [10, 1, 0.1]},
+         "transform": [{"scale": 0.75},
+                       {"rotate": {"axis": [0.358979, 0.933346, 0], "angle": 81.493072}},
+                       {"translate": [-3.346154, 2.556213, -1.065089]}]}]})");
+    PolarisationInputs in;
+    in.scene = scene.string();
+    in.spp = 4;
+    const PolarisationResult r = runPolarisation(in);
+    const auto a = fresnelAmplitudes(std::cos(std::atan(1.5)), std::complex<double>(1.5, 12));
+    const double rs = std::norm(a.rs), rp = std::norm(a.rp);
+    const double polarised = rs * rp, spectral = sqr((rs + rp) / 2);
+    const double expected = (spectral - polarised) / ((spectral + polarised) / 2);
+    ASSERT_NEAR(expected, 6.33e-4, 1e-6);
+    // Every pixel's difference is the closed form (its noise cancels: the ratio of the modes
+    // is the same at every wavelength), to float rounding.
+    EXPECT_NEAR(r.meanRelative.value, expected, 2e-5);
+    EXPECT_NEAR(r.meanRelative.otherSeed, expected, 2e-5);
+    EXPECT_EQ(r.comparedPixels, 80u);
+    EXPECT_TRUE(readAgainstFloor(r.meanRelative.value, r.meanRelative.floor, 4).resolved)
+        << r.meanRelative.value << " against " << r.meanRelative.floor;
+    EXPECT_TRUE(readAgainstFloor(r.meanDeltaE.value, r.meanDeltaE.floor, 4).resolved)
+        << r.meanDeltaE.value << " against " << r.meanDeltaE.floor;
+    // The floor of two independent renders (the spectral mode with two seeds) is far above
+    // the difference: read against it, it would not be resolved.
+    render::RenderOptions o;
+    o.spp = 4;
+    o.mode = render::RenderModeKind::Spectral;
+    const render::SceneDesc desc = render::loadScene(scene);
+    const render::RgbImage s1 = filmImage(*render::renderScene(desc, o).film);
+    o.seed = 12345;
+    const render::RgbImage s2 = filmImage(*render::renderScene(desc, o).film);
+    double independent = 0;
+    for (std::size_t i = 0; i < s1.pixels.size() / 3; ++i) {
+        const double y1 =
+            luminance(Rgb<double>(s1.pixels[3 * i], s1.pixels[3 * i + 1], s1.pixels[3 * i + 2]));
+        const double y2 =
+            luminance(Rgb<double>(s2.pixels[3 * i], s2.pixels[3 * i + 1], s2.pixels[3 * i + 2]));
+        independent += std::abs(y1 - y2) / ((y1 + y2) / 2) / double(s1.pixels.size() / 3);
+    }
+    EXPECT_FALSE(readAgainstFloor(r.meanRelative.value, independent, 4).resolved) << independent;
+    EXPECT_GT(independent, 20 * r.meanRelative.value);
+}
+
+// A scene of diffuse walls: polarisation changes nothing, and the same-seed difference of the
+// two modes, whatever is left of it, is not resolved above the noise of the difference.
+TEST_F(PolarisationExperimentScene, NoDifferenceIsNotResolved) {
+    PolarisationInputs in;
+    in.scene = lamina::testing::sourceFile("scenes/cornell-box.json").string();
+    in.spp = 4;
+    in.overrides.resolution = {16, 16};
+    const PolarisationResult r = runPolarisation(in);
+    for (const FlooredStatistic& s : {r.meanRelative, r.p95Relative, r.meanDeltaE, r.p95DeltaE})
+        EXPECT_FALSE(readAgainstFloor(s.value, s.floor, 4).resolved)
+            << s.value << " against " << s.floor;
 }
 
 }  // namespace

@@ -180,6 +180,42 @@ def test_ctrl_c_during_convergence_carries_the_finished_runs(scene):
     assert "reference" in checks, checks
 
 
+def test_ctrl_c_during_reciprocity_carries_the_finished_renders(scene):
+    # 768 batch renders of a few milliseconds each, SIGINT after two seconds: KeyboardInterrupt
+    # within a second, with .partial holding the batches finished, in order, as images.
+    import signal
+    import subprocess
+    import sys
+    import time
+    code = (
+        "import lamina\n"
+        f"SCENE = {scene!r}\n"
+        "print('started', flush=True)\n"
+        "try:\n"
+        "    lamina.reciprocity(SCENE, spp=2048, batches=256, resolution=(16, 16))\n"
+        "except KeyboardInterrupt as e:\n"
+        "    print('interrupted', flush=True)\n"
+        "    renders = e.partial['renders']\n"
+        "    print(len(renders), renders[0]['name'], renders[-1]['name'], flush=True)\n"
+        "    print(renders[0]['rgb'].shape, renders[0]['spp'], renders[0]['integrator'])\n"
+    )
+    p = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE, text=True,
+                         env=dict(os.environ))
+    assert p.stdout.readline().strip() == "started"
+    time.sleep(2)
+    sent = time.monotonic()
+    p.send_signal(signal.SIGINT)
+    line = p.stdout.readline().strip()
+    stopped = time.monotonic() - sent
+    counts, first = p.stdout.readline().split(), p.stdout.readline().strip()
+    assert p.wait(timeout=30) == 0
+    assert line == "interrupted", line
+    assert stopped < 1.0, f"KeyboardInterrupt {stopped:.2f} s after SIGINT"
+    assert 1 <= int(counts[0]) < 768, counts
+    assert counts[1] == "path_batch00", counts
+    assert first == "(16, 16, 3) 8 path", first
+
+
 @pytest.mark.parametrize("call", [
     'lamina.layering(["varnished-wood"], estimates=1000000)',
     'lamina.convergence(SCENE, integrators=["path"], seconds=60, reference_seconds=120, '

@@ -1,5 +1,6 @@
 #include "lamina/output/shard_file.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <sstream>
@@ -50,6 +51,27 @@ const std::vector<SumChannel>& sumChannels() {
     return channels;
 }
 
+/// The polarised mode's Stokes sums of S1..S3 (Film::stokesCameraSums, stokesSplatSums), in
+/// shards of a film with Stokes layers: "S1.Sum.R", ..., "S3.Splat.B".
+std::vector<std::string> stokesChannels() {
+    std::vector<std::string> names;
+    for (const char* kind : {"Sum", "Splat"})
+        for (int k = 1; k <= 3; ++k)
+            for (const char* c : {"R", "G", "B"})
+                names.push_back("S" + std::to_string(k) + "." + kind + "." + c);
+    return names;
+}
+
+/// The Stokes sums of pixel (x, y) of the film's window in stokesChannels()' order.
+std::vector<double> stokesValues(const Film& film, int x, int y) {
+    std::vector<double> values;
+    for (const StokesSums* sums : {&film.stokesCameraSums(x, y), &film.stokesSplatSums(x, y)})
+        for (std::size_t k = 0; k < 3; ++k)
+            for (int c = 0; c < 3; ++c)
+                values.push_back((*sums)[k][c]);
+    return values;
+}
+
 // The two counts, stored the same way (exact below 2^48).
 constexpr const char* kCountChannel = "Count.N";
 constexpr const char* kSplatCountChannel = "Splat.Count";
@@ -62,18 +84,20 @@ std::string boundsText(const PixelBounds& b) {
 
 }  // namespace
 
-std::string shardSettings(const SceneDesc& scene, const RenderOptions& options,
-                          const RenderResult& r) {
-    const RenderSettings& s = r.settings;
+namespace {
+
+std::string settingsLine(const SceneDesc& scene, const RenderOptions& options,
+                         const RenderSettings& s, std::string_view modeName, int fullWidth,
+                         int fullHeight) {
     std::ostringstream out;
-    out << "mode=" << r.modeName << " integrator=" << kIntegratorNames.name(s.integrator)
+    out << "mode=" << modeName << " integrator=" << kIntegratorNames.name(s.integrator)
         << " sampler=" << kSamplerNames.name(s.sampler) << " seed=" << s.seed
         << " max_depth=" << s.maxDepth << " rr_depth=" << s.russianRouletteDepth
         << " mis=" << kMisHeuristicNames.name(s.mis)
         << " light_selection=" << kLightSelectionNames.name(s.lightSelection)
         << " filter=" << kFilterNames.name(scene.film.filter)
-        << " filter_radius=" << scene.film.filterRadius << " resolution=" << r.film->fullWidth()
-        << "x" << r.film->fullHeight() << " aovs=" << (options.aovs ? 1 : 0)
+        << " filter_radius=" << scene.film.filterRadius << " resolution=" << fullWidth << "x"
+        << fullHeight << " aovs=" << (options.aovs ? 1 : 0)
         << " ablations=" << options.ablations.noAdjointCorrection
         << options.ablations.radianceOnLightPaths << options.ablations.swappedConnections;
     // Only when given, so that the settings of shards rendered before the key existed match.
@@ -83,6 +107,21 @@ std::string shardSettings(const SceneDesc& scene, const RenderOptions& options,
     if (scene.film.maxComponentValue)
         out << " max_component_value=" << *scene.film.maxComponentValue;
     return out.str();
+}
+
+}  // namespace
+
+std::string shardSettings(const SceneDesc& scene, const RenderOptions& options,
+                          const RenderResult& r) {
+    return settingsLine(scene, options, r.settings, r.modeName, r.film->fullWidth(),
+                        r.film->fullHeight());
+}
+
+std::string shardSettings(const SceneDesc& scene, const RenderOptions& options) {
+    const auto [width, height] =
+        options.resolution.value_or(std::pair{scene.film.width, scene.film.height});
+    return settingsLine(scene, options, resolveRenderSettings(scene, options),
+                        kRenderModeNames.name(options.mode), width, height);
 }
 
 void addShardMetadata(ImageMetadata& meta, const SceneDesc& scene, const RenderOptions& options,
@@ -106,7 +145,10 @@ void writeShardExr(const std::filesystem::path& path, const Film& film,
         names.push_back(c.name);
     names.push_back(kCountChannel);
     names.push_back(kSplatCountChannel);
-    const std::size_t doubles = sums.size() + 2;
+    if (film.hasStokes())
+        for (const std::string& name : stokesChannels())
+            names.push_back(name);
+    const std::size_t doubles = names.size() - 3;
     for (std::size_t i = 3; i < 3 + doubles; ++i)
         names.push_back(kLowPrefix + names[i]);
     const std::size_t nc = names.size();
@@ -124,6 +166,9 @@ void writeShardExr(const std::filesystem::path& path, const Film& film,
                 values.push_back(c.field(p));
             values.push_back(double(p.count));
             values.push_back(double(p.splatCount));
+            if (film.hasStokes())
+                for (const double s : stokesValues(film, x, y))
+                    values.push_back(s);
             for (std::size_t i = 0; i < doubles; ++i) {
                 const float high = float(values[i]);
                 if (!std::isfinite(high))
@@ -220,6 +265,18 @@ ShardFile readShardExr(const std::filesystem::path& path) {
                              channel(kLowPrefix + std::string(kSplatCountChannel))};
     shard.film = std::make_unique<Film>(shard.fullWidth, shard.fullHeight, c,
                                         space == "xyz" ? FilmSpace::Xyz : FilmSpace::Rec709);
+    // Stokes sums where the shard has them (a polarised render): all of them or none.
+    std::vector<int> stokesHigh, stokesLow;
+    const std::vector<std::string> stokesNames = stokesChannels();
+    const bool stokes = std::find(spec.channels.begin(), spec.channels.end(),
+                                  stokesNames.front()) != spec.channels.end();
+    if (stokes) {
+        shard.film->enableStokes();
+        for (const std::string& name : stokesNames) {
+            stokesHigh.push_back(channel(name));
+            stokesLow.push_back(channel(kLowPrefix + name));
+        }
+    }
     const std::size_t nc = std::size_t(nchannels);
     for (int y = 0; y < spec.height; ++y)
         for (int x = 0; x < spec.width; ++x) {
@@ -243,6 +300,17 @@ ShardFile readShardExr(const std::filesystem::path& path) {
                                      std::to_string(c.y0 + y) + "): " + sums[i].name +
                                      " is not finite");
             shard.film->addSums(c.x0 + x, c.y0 + y, p);
+            if (!stokes) continue;
+            StokesSums camera, splat;
+            for (std::size_t i = 0; i < stokesHigh.size(); ++i) {
+                const double value = double(v[stokesHigh[i]]) + double(v[stokesLow[i]]);
+                if (!std::isfinite(value))
+                    throw InputError(file + ": pixel (" + std::to_string(c.x0 + x) + ", " +
+                                     std::to_string(c.y0 + y) + "): " + stokesNames[i] +
+                                     " is not finite");
+                (i < 9 ? camera : splat)[(i % 9) / 3][int(i % 3)] = value;
+            }
+            shard.film->addStokesSums(c.x0 + x, c.y0 + y, camera, splat);
         }
     return shard;
 }

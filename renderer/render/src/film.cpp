@@ -101,6 +101,15 @@ std::array<Rgb<double>, 4> Film::stokes(int x, int y) const {
     return s;
 }
 
+void Film::addStokesSums(int x, int y, const StokesSums& camera, const StokesSums& splat) {
+    if (!window_.contains(x, y)) return;
+    const std::size_t i = std::size_t(y - window_.y0) * width_ + std::size_t(x - window_.x0);
+    for (std::size_t k = 0; k < 3; ++k) {
+        stokes_[i][k] += camera[k];
+        stokesSplatSum_[i][k] += splat[k];
+    }
+}
+
 bool Film::accumulate(int x, int y, const Rgb<double>& value, double weight) {
     Pixel& p = at(x - window_.x0, y - window_.y0);
     p.sum += value * weight;

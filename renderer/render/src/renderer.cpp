@@ -194,8 +194,7 @@ void checkMedia(const SceneDesc& scene, RenderModeKind mode, IntegratorKind inte
                          "spectral or rgb");
 }
 
-RenderResult renderScene(const SceneDesc& scene, const RenderOptions& options,
-                         const std::function<void(const RenderProgress&)>& progress) {
+RenderSettings resolveRenderSettings(const SceneDesc& scene, const RenderOptions& options) {
     RenderSettings settings = scene.settings;
     if (options.spp) settings.spp = *options.spp;
     if (options.seed) settings.seed = *options.seed;
@@ -204,13 +203,19 @@ RenderResult renderScene(const SceneDesc& scene, const RenderOptions& options,
     if (options.integrator) settings.integrator = *options.integrator;
     if (options.mis) settings.mis = *options.mis;
     if (options.lightSelection) settings.lightSelection = *options.lightSelection;
+    if (options.samples) settings.spp = options.samples->count;
+    return settings;
+}
+
+RenderResult renderScene(const SceneDesc& scene, const RenderOptions& options,
+                         const std::function<void(const RenderProgress&)>& progress) {
+    const RenderSettings settings = resolveRenderSettings(scene, options);
     if (options.samples) {
         const SampleRange& r = *options.samples;
         if (r.first < 0 || r.count < 1 || r.count > std::numeric_limits<int>::max() - r.first)
             throw InputError("--samples " + std::to_string(r.first) + ":" +
                              std::to_string(r.count) +
                              ": expected FIRST >= 0 and COUNT >= 1 with FIRST + COUNT < 2^31");
-        settings.spp = r.count;
     }
     int width = scene.film.width, height = scene.film.height;
     if (options.resolution) std::tie(width, height) = *options.resolution;

@@ -19,6 +19,10 @@ OptionDecl threadsOption();
 OptionDecl maxDepthOption();
 OptionDecl resolutionOverrideOption();
 
+/// --resume: take back the renders an interrupted run kept in --output's directory
+/// (kept_renders.h; the command line only: Python keeps no files).
+OptionDecl resumeOption();
+
 /// --threads, --max-depth and --resolution, as given, into `options`.
 void applyRenderOverrides(const OptionValues& values, render::RenderOptions& options);
 

@@ -8,8 +8,10 @@
 
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
 
+#include "lamina/experiments/kept_renders.h"
 #include "lamina/render/renderer.h"
 
 namespace lamina::experiments {
@@ -117,5 +119,9 @@ AgreementResult testAgreement(const BatchImages& a, const BatchImages& b,
 /// derived from options.seed and the batch index; independent sampler).
 BatchImages renderBatches(const render::SceneDesc& scene, render::RenderOptions options, int spp,
                           int batches, const std::function<void(int batch)>& onBatch = {});
+/// The same, each batch through `kept` as the render NAME_batchK (kept_renders.h).
+BatchImages renderBatches(const render::SceneDesc& scene, render::RenderOptions options, int spp,
+                          int batches, KeptRenders& kept, const std::string& name,
+                          const std::function<void(int batch)>& onBatch = {});
 
 }  // namespace lamina::experiments

@@ -18,12 +18,15 @@
 // MATERIAL.csv (the RGB curves), MATERIAL_spectral.csv (one column per 20 nm),
 // the figures (figure_spec.h) MATERIAL.png/.pdf (each model's reflectance against angle, one
 // panel per channel) and MATERIAL_swatches.png/.pdf (rows: exact, models; columns: 0, 30, 60,
-// 75, 82, 87 degrees), summary.md. With a scene, renders it in both modes and writes the
-// difference and a CIEDE2000 map (scene_ciede2000.png/.pdf), and renders each mode once more
-// with another seed: the CIEDE2000 within each pair, combined, is the noise floor every
-// difference is read against (noise_floor.h).
+// 75, 82, 87 degrees), summary.md. With a scene, renders it in both modes with the same seed
+// and writes the difference and a CIEDE2000 map (scene_ciede2000.png/.pdf), and renders both
+// modes once more with another seed: the two pairs give the noise of the modes' difference, the
+// floor every difference is read against (pairedNoise, noise_floor.h). The scene's renders
+// are kept in the report's directory as they finish and taken back by a resumed run
+// (kept_renders.h).
 #pragma once
 
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -47,6 +50,10 @@ struct FresnelInputs {
     int spp = 0;                      ///< of the scene renders; 0: the scene's
     render::RenderOptions overrides;  ///< --resolution, --threads, --max-depth of the scene renders
     ProgressSink progress;
+    /// Where the scene's renders are kept as they finish (empty: nowhere), and whether those
+    /// already there are taken back (kept_renders.h).
+    std::filesystem::path keepDirectory;
+    bool resume = false;
 };
 
 /// One model's reflectance against angle and its error against the exact colour.
@@ -77,10 +84,12 @@ struct FresnelSceneComparison {
     ImageMetrics metrics;          ///< RGB against spectral
     std::vector<float> ciede2000;  ///< per pixel
     double meanDeltaE = 0, maxDeltaE = 0, p95DeltaE = 0;
-    /// The noise floor, its mean and 95th percentile: the CIEDE2000 between each mode's render
-    /// and a second one with another seed (noise alone), the two pairs' statistics combined
-    /// as sqrt((rgb^2 + spectral^2) / 2).
+    /// The noise floor, its mean and 95th percentile: the CIEDE2000 between two images that
+    /// differ by the noise of the modes' difference alone, measured from the second pair
+    /// (pairedNoise).
     double floorMeanDeltaE = 0, floorP95DeltaE = 0;
+    /// The mean and 95th percentile CIEDE2000 between the two modes' renders of the second seed.
+    double otherSeedMeanDeltaE = 0, otherSeedP95DeltaE = 0;
 };
 
 struct FresnelResult {

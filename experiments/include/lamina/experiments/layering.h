@@ -16,6 +16,7 @@
 // layering_statistics.h.
 #pragma once
 
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -52,6 +53,11 @@ struct LayeringInputs {
     int spp = 0;        ///< of the scene renders (0: the scene's), equal for every render
     std::optional<std::pair<int, int>> resolution;  ///< of the scene renders (none: the scene's)
     ProgressSink progress;
+    /// Where the scene renders are kept as they finish (empty: nowhere), and whether those
+    /// already there are taken back (kept_renders.h). The walk's and twins' estimates are
+    /// computed again by a resumed run (the same numbers: they depend on the seed alone).
+    std::filesystem::path keepDirectory;
+    bool resume = false;
 };
 
 /// One twin (or the walk) on one curve or map: per point the estimate and, for a twin, the

@@ -1,11 +1,14 @@
 // A difference between two noisy renders read against its noise floor: the same statistic
-// (mean or 95th-percentile CIEDE2000, ...) between two independent renders of one side, which
-// differ by noise alone. A difference within the floor says nothing about the models; it is
+// (mean or 95th-percentile CIEDE2000, ...) for a difference made of noise alone. For two
+// independent renders that is the statistic between two independent renders of one side; for two
+// renders that share their random numbers it is the statistic of their difference's own noise
+// (pairedNoise). A difference within the floor says nothing about the models; it is
 // reported as not resolved at this sample count, with the count that would resolve it.
 #pragma once
 
 #include <string>
 
+#include "lamina/image/image_io.h"
 #include "lamina/scene/scene_description.h"
 
 namespace lamina::experiments {
@@ -14,6 +17,25 @@ namespace lamina::experiments {
 /// its samples must change with the seed: refuses (InputError) sobol-global, whose film
 /// positions are one pattern for every seed (the floor would be understated).
 void requireSeedDependentSampler(render::SamplerKind sampler, const std::string& experiment);
+
+/// Two images that differ by noise alone, as much as two renders of a same-seed pair do.
+struct NoiseOnlyPair {
+    render::RgbImage a, b;
+};
+
+/// The noise floor of a difference between two renders `a1` and `b1` that share their seed
+/// (common random numbers: `fresnel --scene`'s two modes, `polarisation`'s), from a second such
+/// pair `a2`, `b2` rendered with another seed. Sharing their random numbers, a1 and b1 make
+/// mostly the same errors, so their difference is far less noisy than that of two independent
+/// renders, whose floor would call real small differences unresolved. The noise of the
+/// difference itself is measured instead: per pixel and channel, n = ((a1 - b1) - (a2 - b2)) /
+/// sqrt(2) is zero on average and has the variance of a1 - b1 (the two pairs are independent
+/// and alike). Returns the pair's mean m = (a1 + b1) / 2 moved apart by that noise alone,
+/// m + n/2 and m - n/2: a statistic of these two (CIEDE2000, relative difference) is the floor
+/// of the same statistic of a1 against b1. Centred on the mean, not on one side, so that a
+/// statistic relative to one side (black in one mode: light that cancels) stays finite.
+NoiseOnlyPair pairedNoise(const render::RgbImage& a1, const render::RgbImage& b1,
+                          const render::RgbImage& a2, const render::RgbImage& b2);
 
 /// A difference is resolved when it exceeds this many times its floor.
 inline constexpr double kResolvedOverFloor = 2.0;

@@ -7,17 +7,20 @@
 // ((Y_spectral + Y_polarised) / 2) (symmetric, in [0, 2]; pixels black in both left out, black
 // being at most 1e-6 of the brightest pixel: light cancelled to float rounding), and
 // the CIEDE2000 of the spectral render against the polarised one; the mean and 95th percentile
-// of each, read against their noise floors (noise_floor.h): the same statistic between each
-// mode's render and a second one with another seed, the two pairs combined in quadrature,
-// sqrt((polarised^2 + spectral^2) / 2), as `fresnel --scene` does. And the polarisation of the
+// of each, read against their noise floors (noise_floor.h): both modes are rendered again with
+// another seed, and the two pairs give the noise of the modes' difference (pairedNoise), as
+// in `fresnel --scene`. The renders are kept in the report's directory as they finish and taken
+// back by a resumed run (kept_renders.h). And the polarisation of the
 // light reaching the camera, from the polarised render's Stokes layers (luminance of each
 // component, in the image frame): the degree of linear polarisation DoLP = sqrt(S1^2 + S2^2) /
 // S0 and its angle AoLP = atan2(S2, S1) / 2 (degrees counter-clockwise from the image's right),
 // which means something only where the light is polarised: the AoLP figure masks pixels whose
 // DoLP is below `dolpThreshold`. DoLP of a noisy pixel is biased upwards (a norm of noisy S1,
-// S2), which the polarised render's twin bounds: its mean DoLP difference is reported too.
+// S2), which the polarised render of the second seed bounds: its mean DoLP difference is
+// reported too.
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -38,16 +41,20 @@ struct PolarisationInputs {
     render::RenderOptions overrides;  ///< --resolution, --threads, --max-depth, --seed
     double dolpThreshold = kDefaultDolpThreshold;
     ProgressSink progress;
+    /// Where the renders are kept as they finish (empty: nowhere), and whether those already
+    /// there are taken back (kept_renders.h).
+    std::filesystem::path keepDirectory;
+    bool resume = false;
 };
 
 /// A statistic of a per-pixel difference and its noise floor.
 struct FlooredStatistic {
+    /// `floor`: the statistic of the difference's own noise (pairedNoise): the two
+    /// compared renders share their seed (common random numbers: the same paths and
+    /// wavelengths), so their difference carries much less noise than two independent renders.
     double value = 0, floor = 0;
-    /// The same statistic between the polarised and the spectral render of the second seed. The
-    /// two compared renders share their seed (common random numbers: the same paths and
-    /// wavelengths), so their difference carries much less noise than two independent renders
-    /// do: where `value` is far below `floor`, its agreement with `otherSeed` says whether it
-    /// is reproducible.
+    /// The same statistic between the polarised and the spectral render of the second seed: a
+    /// real difference shows in both pairs.
     double otherSeed = 0;
 };
 
@@ -67,7 +74,7 @@ struct PolarisationResult {
     /// The polarised render's DoLP and AoLP in degrees, 0 where there is no light.
     std::vector<float> dolp, aolp;
     double meanDolp = 0, maxDolp = 0;  ///< over the lit pixels
-    /// The mean |DoLP - DoLP of the twin render| over the lit pixels: DoLP's noise.
+    /// The mean |DoLP - DoLP of the second seed's render| over the lit pixels: DoLP's noise.
     double dolpNoise = 0;
 };
 

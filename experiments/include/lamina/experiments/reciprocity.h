@@ -3,10 +3,13 @@
 // (estimator_agreement.h); every pair (and each against a reference image, if given) is tested
 // per pixel and per block; the BSDF of every material is checked for reciprocity and for the
 // adjoint identity in both modes (bsdf_reciprocity.h). The report is a running log on the
-// console and, per integrator and per pair, the mean image and the t-statistic maps.
+// console and, per integrator and per pair, the mean image and the t-statistic maps. The batch
+// renders are kept in the report's directory as they finish and taken back by a resumed run
+// (kept_renders.h).
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -45,6 +48,10 @@ struct ReciprocityInputs {
     /// and the seed are set per render.
     render::RenderOptions overrides;
     ProgressSink progress;
+    /// Where every batch render is kept as it finishes (empty: nowhere), and whether those
+    /// already there are taken back (kept_renders.h).
+    std::filesystem::path keepDirectory;
+    bool resume = false;
 };
 
 struct IntegratorBatches {

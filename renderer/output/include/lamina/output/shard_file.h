@@ -2,10 +2,10 @@
 // FIRST:COUNT`, `--crop X0,X1,Y0,Y1`), carrying what an exact merge needs. Beside R, G, B (the
 // shard's own image, for a look) it holds every per-pixel sum of the film (PixelSums: weighted
 // sums per channel, weight sum, sample count, luminance moments, AOV sums, the splat layer's
-// sums and its count), each double stored as two floats (the value rounded to float, then the
-// rounding error; 48 bits together, so the merge is exact up to the order of summation), and
-// metadata: the scene hash, the settings that decide a pixel's numbers, the sample range and
-// the crop (also the EXR data window).
+// sums and its count; a polarised render's Stokes sums of S1..S3 too), each double stored as two
+// floats (the value rounded to float, then the rounding error; 48 bits together, so the merge is
+// exact up to the order of summation), and metadata: the scene hash, the settings that decide a
+// pixel's numbers, the sample range and the crop (also the EXR data window).
 #pragma once
 
 #include <filesystem>
@@ -22,6 +22,8 @@ namespace lamina::render {
 /// shards merge only if theirs are equal.
 std::string shardSettings(const SceneDesc& scene, const RenderOptions& options,
                           const RenderResult& result);
+/// The same line before the render: the one `renderScene(scene, options)` will have.
+std::string shardSettings(const SceneDesc& scene, const RenderOptions& options);
 
 /// Adds the shard keys to a render's metadata (docs/distributed.md, "Shard files").
 void addShardMetadata(ImageMetadata& metadata, const SceneDesc& scene, const RenderOptions& options,

@@ -97,6 +97,17 @@ class Film {
     /// The pixel's Stokes vector in linear Rec.709 (each component converted as the image is):
     /// S0 is pixel(x, y). Needs enableStokes().
     std::array<Rgb<double>, 4> stokes(int x, int y) const;
+    /// The pixel's raw Stokes sums of S1..S3 in the film's space (shard files): the camera
+    /// samples' weighted sums and the finished splat iterations' sums. Needs enableStokes().
+    const StokesSums& stokesCameraSums(int x, int y) const {
+        return stokes_[std::size_t(y) * width_ + std::size_t(x)];
+    }
+    const StokesSums& stokesSplatSums(int x, int y) const {
+        return stokesSplatSum_[std::size_t(y) * width_ + std::size_t(x)];
+    }
+    /// Adds another film's Stokes sums to pixel (x, y) of the whole image, as addSums adds
+    /// the image's; ignored outside the window. Needs enableStokes().
+    void addStokesSums(int x, int y, const StokesSums& camera, const StokesSums& splat);
     /// Adds a value times `weight` (its filter weight: the response sees the value before it)
     /// to pixel (x, y) of the whole image in the current splat iteration (thread-safe).
     /// Returns false if it is outside the window, or if rejected (and counts it).

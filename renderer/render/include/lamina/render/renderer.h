@@ -81,6 +81,10 @@ std::atomic<bool>& renderInterruptFlag();
 /// renderer calls it; experiments call it before they start work.
 void checkMedia(const SceneDesc& scene, RenderModeKind mode, IntegratorKind integrator);
 
+/// The settings a render of `scene` with `options` runs with: the scene's, overridden by the
+/// options (RenderResult::settings).
+RenderSettings resolveRenderSettings(const SceneDesc& scene, const RenderOptions& options);
+
 RenderResult renderScene(const SceneDesc& scene, const RenderOptions& options,
                          const std::function<void(const RenderProgress&)>& progress = {});
 
