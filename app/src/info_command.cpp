@@ -83,12 +83,18 @@ void run(const std::string& file) {
     std::printf("\n");
     // Only a scene with media prints the line: other scenes' output is as it was.
     if (scene.hasMedia()) {
-        std::printf("media: %zu (the path integrator only; docs/media.md)\n", scene.media.size());
-        for (const render::MediumDesc& m : scene.media)
-            std::printf("  %s: %s, sigma_a [%g, %g, %g], sigma_s [%g, %g, %g], g %g%s\n",
+        std::printf("media: %zu (docs/media.md)\n", scene.media.size());
+        for (const render::MediumDesc& m : scene.media) {
+            std::printf("  %s: %s, sigma_a [%g, %g, %g], sigma_s [%g, %g, %g], g %g%s",
                         m.name.c_str(), std::string(render::kMediumKindNames.name(m.kind)).c_str(),
                         m.sigmaA[0], m.sigmaA[1], m.sigmaA[2], m.sigmaS[0], m.sigmaS[1],
                         m.sigmaS[2], m.g, m.emits() ? ", emits" : "");
+            if (m.grid)
+                std::printf(", density grid %d x %d x %d, majorants %d x %d x %d",
+                            m.grid->density.nx, m.grid->density.ny, m.grid->density.nz,
+                            m.grid->majorants.nx, m.grid->majorants.ny, m.grid->majorants.nz);
+            std::printf("\n");
+        }
     }
     std::printf("spectral data: %s\n", s.spectralData.empty() ? "none" : "");
     for (const auto& data : s.spectralData)

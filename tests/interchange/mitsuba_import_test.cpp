@@ -504,8 +504,8 @@ TEST_F(MitsubaImport, MediaErrorsNameTheLine) {
                     "</shape>"),
               where(2) +
                   ": <medium type=\"heterogeneous\">: the medium \"heterogeneous\" is "
-                  "not supported (lamina renders homogeneous media; grid volumes are not "
-                  "read yet)");
+                  "not supported (the importer translates homogeneous media; grid volumes "
+                  "are not translated yet)");
     EXPECT_EQ(error("<shape type=\"sphere\"><medium type=\"homogeneous\" name=\"inside\"/>"
                     "</shape>"),
               where(2) +

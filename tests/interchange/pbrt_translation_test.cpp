@@ -588,9 +588,9 @@ TEST_F(PbrtTranslation, MediaErrorsNameFileAndLine) {
         "Shape \"sphere\"\nAttributeEnd\n";
     EXPECT_EQ(importError("MakeNamedMedium \"m\" \"string type\" \"nanovdb\"\n" + box),
               at(1) +
-                  ": MakeNamedMedium \"m\": \"nanovdb\" media are not supported (lamina "
-                  "renders homogeneous media; grids, clouds and NanoVDB files are not read "
-                  "yet)");
+                  ": MakeNamedMedium \"m\": \"nanovdb\" media are not supported (the "
+                  "importer translates homogeneous media; grids, clouds and NanoVDB files are "
+                  "not translated yet)");
     EXPECT_EQ(importError(box), at(2) +
                                     ": MediumInterface: no medium \"m\" (MakeNamedMedium "
                                     "defines one; \"\" is vacuum)");

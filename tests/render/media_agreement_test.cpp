@@ -1,5 +1,6 @@
 // Camera path tracing, light tracing and BDPT converge to the same image through homogeneous
-// media (docs/media.md): the light integrator's free flights, medium vertices and camera
+// and grid media (docs/media.md; the chromatic cloud is a grid: delta tracking, and ratio
+// tracking on every connection): the light integrator's free flights, medium vertices and camera
 // connections with transmittance, and BDPT's medium vertices, connections through media and
 // MIS weights, against the path integrator's. Each integrator renders a scene of scenes/media/
 // as 32 independent batches at 32x32 pixels (fixed seeds; 256 samples per pixel in all for
@@ -103,6 +104,9 @@ INSTANTIATE_TEST_SUITE_P(
                   RenderModeKind::Spectral},
         MediaCase{"CameraInFog", "scenes/media/camera-in-fog.json", RenderModeKind::Rgb},
         MediaCase{"CameraInFogSpectral", "scenes/media/camera-in-fog.json",
+                  RenderModeKind::Spectral},
+        MediaCase{"ChromaticCloud", "scenes/media/chromatic-cloud.json", RenderModeKind::Rgb},
+        MediaCase{"ChromaticCloudSpectral", "scenes/media/chromatic-cloud.json",
                   RenderModeKind::Spectral}),
     [](const ::testing::TestParamInfo<MediaCase>& p) { return std::string(p.param.name); });
 

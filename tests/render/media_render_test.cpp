@@ -7,42 +7,21 @@
 
 #include <cmath>
 
-#include "render_helpers.h"
+#include "media_render_helpers.h"
 
 namespace lamina::render {
 namespace {
 
-using testing::channelMean;
 using testing::ImageMean;
+using testing::Rendered;
 using testing::sceneFromText;
+using testing::welch;
 
 constexpr double kZ = 3.29;  // two-sided significance 0.001
 
-struct Rendered {
-    ImageMean channel[3];
-};
-
 Rendered render(const SceneDesc& scene, RenderModeKind mode, int spp, std::uint64_t seed,
                 bool nextEvent = true, IntegratorKind integrator = IntegratorKind::Path) {
-    SceneDesc s = scene;
-    s.settings.nextEvent = nextEvent;
-    RenderOptions o;
-    o.integrator = integrator;
-    o.mode = mode;
-    o.spp = spp;
-    o.seed = seed;
-    const RenderResult r = renderScene(s, o);
-    EXPECT_EQ(r.film->rejectedSamples(), 0u);
-    Rendered out;
-    for (int c = 0; c < 3; ++c)
-        out.channel[c] = channelMean(*r.film, c);
-    return out;
-}
-
-// Welch's statistic of two independent image means (normal approximation: the degrees of
-// freedom are in the thousands).
-double welch(const ImageMean& a, const ImageMean& b) {
-    return (a.mean - b.mean) / std::sqrt(sqr(a.standardError) + sqr(b.standardError));
+    return testing::renderMeans(scene, mode, spp, seed, nextEvent, integrator);
 }
 
 class MediaRender : public ::testing::TestWithParam<RenderModeKind> {};

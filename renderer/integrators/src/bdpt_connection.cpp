@@ -45,9 +45,10 @@ S BdptConnector<S>::emitted(const Vertex& v, const Vec3f& w, typename Mode::Path
 }
 
 template <SpectrumType S>
-std::optional<S> BdptConnector<S>::passes(const Vertex& from, const Vertex* before,
-                                          const Vertex& to, typename Mode::Path& path,
-                                          PathStatistics& stats) const {
+std::optional<Transmittance<S>> BdptConnector<S>::passes(const Vertex& from, const Vertex* before,
+                                                         const Vertex& to, int hero,
+                                                         typename Mode::Path& path,
+                                                         PathStatistics& stats) const {
     if constexpr (Mode::kRendersMedia) {
         if (media_) {
             const Vec3f w = directionTo(from, to);
@@ -57,35 +58,35 @@ std::optional<S> BdptConnector<S>::passes(const Vertex& from, const Vertex* befo
                                      from.ng, directionTo(*before, from), w);
             if (!to.infinite)
                 return segmentTransmittance(c_.geometry, mode_, path, from.p, from.ng, to.p, to.ng,
-                                            medium, stats);
+                                            medium, hero, stats);
             const Vec3f origin =
                 from.ng == Vec3f(0.0f)
                     ? from.p
                     : offsetRayOrigin(from.p, facing(from.ng, w), c_.geometry.rayOffsetScale());
             return shadowTransmittance(c_.geometry, mode_, path, origin, w,
-                                       std::numeric_limits<float>::infinity(), medium, stats);
+                                       std::numeric_limits<float>::infinity(), medium, hero, stats);
         }
     }
     const bool visible = to.infinite
                              ? directionUnoccluded(c_.geometry, from.p, from.ng, to.p, stats)
                              : segmentUnoccluded(c_.geometry, from.p, from.ng, to.p, to.ng, stats);
     if (!visible) return std::nullopt;
-    return S(1.0f);
+    return Transmittance<S>{};
 }
 
 template <SpectrumType S>
-S BdptConnector<S>::throughMedia(const S& value, [[maybe_unused]] const S& T,
+S BdptConnector<S>::throughMedia(const S& value, [[maybe_unused]] const Transmittance<S>& T,
                                  [[maybe_unused]] const S& rUCamera,
                                  [[maybe_unused]] const S& rULight) const {
     if constexpr (Mode::kRendersMedia) {
-        if (media_) return value * T / (rUCamera * rULight).average();
+        if (media_) return value * T.T / (rUCamera * rULight * T.rL).average();
     }
     return value;
 }
 
 template <SpectrumType S>
 BdptConnection<S> BdptConnector<S>::connect(const std::vector<Vertex>& lightPath, int s,
-                                            const std::vector<Vertex>& cameraPath, int t,
+                                            const std::vector<Vertex>& cameraPath, int t, int hero,
                                             PixelSampler& sampler, typename Mode::Path& path,
                                             PathStatistics& stats) const {
     const Vertex& cv = cameraPath[std::size_t(t - 1)];
@@ -98,7 +99,7 @@ BdptConnection<S> BdptConnector<S>::connect(const std::vector<Vertex>& lightPath
         const Vertex& prev = cameraPath[std::size_t(t - 2)];
         value =
             throughMedia(cv.beta * emitted(cv, cv.infinite ? -cv.p : directionTo(cv, prev), path),
-                         S(1.0f), cv.rU, S(1.0f));
+                         Transmittance<S>{}, cv.rU, S(1.0f));
     } else if (t == 1) {
         // Light vertex s-1 (a surface or medium vertex: s >= 2, since (1, 1) is skipped)
         // seen by the camera.
@@ -118,7 +119,7 @@ BdptConnection<S> BdptConnector<S>::connect(const std::vector<Vertex>& lightPath
         // the order light meets them (docs/polarisation.md, "Light paths").
         value = f * lv.beta * sampled.beta;
         result.toLens = cc->wi;
-        const auto T = passes(lv, &before, sampled, path, stats);
+        const auto T = passes(lv, &before, sampled, hero, path, stats);
         if (!T) return BdptConnection<S>{};
         value = throughMedia(value, *T, S(1.0f), lv.rU);
     } else if (s == 1) {
@@ -153,7 +154,7 @@ BdptConnection<S> BdptConnector<S>::connect(const std::vector<Vertex>& lightPath
         if (f.maxValue() <= 0.0f) return result;
         sampled.beta = mode_.emission(ls->radiance, path) / (pmf * ls->pdf);
         value = cv.beta * f * sampled.beta;
-        const auto T = passes(cv, &before, sampled, path, stats);
+        const auto T = passes(cv, &before, sampled, hero, path, stats);
         if (!T) return BdptConnection<S>{};
         value = throughMedia(value, *T, cv.rU, S(1.0f));
     } else {
@@ -171,7 +172,7 @@ BdptConnection<S> BdptConnector<S>::connect(const std::vector<Vertex>& lightPath
         if (fl.maxValue() <= 0.0f) return result;
         // The geometry term: the cosines are in f (a medium vertex has none), 1/d^2 here.
         value = cv.beta * fc * fl * lv.beta * (1.0f / dist2);
-        const auto T = passes(cv, &before, lv, path, stats);
+        const auto T = passes(cv, &before, lv, hero, path, stats);
         if (!T) return BdptConnection<S>{};
         value = throughMedia(value, *T, cv.rU, lv.rU);
     }

@@ -46,8 +46,8 @@ std::optional<CameraEstimate<S>> BdptIntegrator<S>::sample(const PixelSample<S>&
             // (1, 1) would connect a light point to the lens: the emitter seen directly,
             // which (0, 2) already counts with weight 1 (pbrt-v3 does the same).
             if (depth < 0 || depth > settings_.maxDepth || (s == 1 && t == 1)) continue;
-            const BdptConnection<S> c =
-                connector_.connect(lightPath, s, cameraPath, t, ps.sampler, ps.path, ps.stats);
+            const BdptConnection<S> c = connector_.connect(lightPath, s, cameraPath, t, hero,
+                                                           ps.sampler, ps.path, ps.stats);
             if (c.contribution.maxValue() <= 0.0f || !c.contribution.isFinite()) continue;
             const S weighted = c.contribution * c.misWeight;
             if (t == 1)
@@ -120,7 +120,7 @@ void BdptIntegrator<S>::generateLightSubpath(PixelSampler& sampler, typename Mod
     v.pdfFwd = mis_.pdfLightOrigin(v);
     out.push_back(v);
 
-    S beta = particle->beta;
+    S beta = particle->beta, rU(1.0f);
     int medium = -1;
     if constexpr (Mode::kRendersMedia) {
         if (media_) {
@@ -130,12 +130,11 @@ void BdptIntegrator<S>::generateLightSubpath(PixelSampler& sampler, typename Mod
             medium = mediumAt(c_.geometry, c_.scene.camera.medium, Vec3f(c_.scene.camera.position),
                               particle->origin, stats);
             if (v.infinite && medium >= 0)
-                beta *= transmittance(mode_.medium(medium, path).sigmaT(),
-                                      std::numeric_limits<float>::infinity());
+                fromInfinity(mode_, path, medium, hero, particle->origin, e.direction, beta, rU);
         }
     }
     const std::size_t first = out.size();
-    randomWalk({particle->origin, e.direction, beta, e.pdfDirection, medium, hero},
+    randomWalk({particle->origin, e.direction, beta, e.pdfDirection, medium, hero, rU},
                settings_.maxDepth, TransportMode::Importance, sampler, path, out, stats);
     // From infinity the first vertex's density is the disk's, projected on a surface (not
     // 1/d^2).
@@ -162,7 +161,7 @@ void BdptIntegrator<S>::randomWalk(WalkStart start, int maxVertices, TransportMo
     const TransportMode bsdfMode = lightPath ? ablations_.lightPathMode() : mode;
     // With media: the subpath's densities per channel relative to the hero's
     // (medium_transport.h); Russian roulette compares the throughput over their average.
-    S rU(1.0f);
+    S rU = start.rU;
     int crossings = 0;
     for (int vertices = 0; vertices < maxVertices;) {
         ++stats.rays;
@@ -171,44 +170,47 @@ void BdptIntegrator<S>::randomWalk(WalkStart start, int maxVertices, TransportMo
             const auto mf = media_
                                 ? sampleMediumFlight(mode_, path, medium, start.hero, sampler, hit)
                                 : std::nullopt;
+            // The flight passes, ends, or scatters at a medium vertex (medium_transport.h).
+            std::optional<float> scatterAt;
             if (mf) {
-                if (!(mf->flight.pdf > 0.0f)) return;
-                mf->weigh(beta, rU);
-                if (mf->flight.scatters) {
-                    if (!(beta.maxValue() > 0.0f)) return;
-                    Vertex v;
-                    v.type = BdptVertexType::Medium;
-                    v.p = o + d * mf->flight.t;
-                    v.medium = medium;
-                    v.g = mf->coefficients.g;
-                    v.beta = beta;
-                    v.rU = rU;
-                    v.pdfFwd = toArea(pdfDir, out.back(), v);
-                    out.push_back(v);
-                    if (++vertices >= maxVertices) return;
-                    Vertex& cur = out.back();
-                    Vertex& before = out[out.size() - 2];
-                    // The dimensions of a surface's scattering: the lobe choice (none here),
-                    // the direction, the roulette.
+                const FlightOutcome f = mf->apply(o, d, start.hero, beta, rU, nullptr, nullptr);
+                if (f.outcome == FlightOutcome::Outcome::Ends) return;
+                if (f.outcome == FlightOutcome::Outcome::Scatters) scatterAt = f.t;
+            }
+            if (scatterAt) {
+                if (!(beta.maxValue() > 0.0f)) return;
+                Vertex v;
+                v.type = BdptVertexType::Medium;
+                v.p = o + d * *scatterAt;
+                v.medium = medium;
+                v.g = mf->coefficients.g;
+                v.beta = beta;
+                v.rU = rU;
+                v.pdfFwd = toArea(pdfDir, out.back(), v);
+                out.push_back(v);
+                if (++vertices >= maxVertices) return;
+                Vertex& cur = out.back();
+                Vertex& before = out[out.size() - 2];
+                // The dimensions of a surface's scattering: the lobe choice (none here),
+                // the direction, the roulette.
+                sampler.skip();
+                const Vec3f wi = sampleHenyeyGreenstein(d, cur.g, sampler.get2D());
+                // The phase function is its own density, the same both ways.
+                pdfDir = henyeyGreenstein(glm::dot(d, wi), cur.g);
+                before.pdfRev = toArea(pdfDir, cur, before);
+                const float rrBeta = (beta / rU.average()).maxValue() / beta0;
+                if (rouletteApplies(rrBeta, vertices, settings_.russianRouletteDepth)) {
+                    if (!russianRoulette(beta, rrBeta, vertices, settings_.russianRouletteDepth,
+                                         sampler.get1D()))
+                        return;
+                } else {
                     sampler.skip();
-                    const Vec3f wi = sampleHenyeyGreenstein(d, cur.g, sampler.get2D());
-                    // The phase function is its own density, the same both ways.
-                    pdfDir = henyeyGreenstein(glm::dot(d, wi), cur.g);
-                    before.pdfRev = toArea(pdfDir, cur, before);
-                    const float rrBeta = (beta / rU.average()).maxValue() / beta0;
-                    if (rouletteApplies(rrBeta, vertices, settings_.russianRouletteDepth)) {
-                        if (!russianRoulette(beta, rrBeta, vertices, settings_.russianRouletteDepth,
-                                             sampler.get1D()))
-                            return;
-                    } else {
-                        sampler.skip();
-                    }
-                    if (!beta.isFinite()) return;
-                    crossings = 0;
-                    o = cur.p;
-                    d = wi;
-                    continue;
                 }
+                if (!beta.isFinite()) return;
+                crossings = 0;
+                o = cur.p;
+                d = wi;
+                continue;
             }
         }
         if (!hit) {

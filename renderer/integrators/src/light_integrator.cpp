@@ -41,24 +41,26 @@ void LightIntegrator<S>::traceParticle(PixelSampler& sampler, typename Mode::Pat
     S rU(1.0f);
     const int cameraMedium = c_.scene.camera.medium;
     // Whether the lens sees p (normal n; zero for a medium vertex); with media, T gets the
-    // connection's transmittance.
+    // connection's transmittance (ratio-tracked in grid media, with its densities).
     const auto lensSees = [&](const Vec3f& lens, const Vec3f& p, const Vec3f& n,
-                              [[maybe_unused]] S& T) {
+                              [[maybe_unused]] Transmittance<S>& T) {
         if constexpr (Mode::kRendersMedia) {
             if (media_) {
                 const auto t = segmentTransmittance(c_.geometry, mode_, path, lens, Vec3f(0.0f), p,
-                                                    n, cameraMedium, stats);
+                                                    n, cameraMedium, hero, stats);
                 if (t) T = *t;
                 return t.has_value();
             }
         }
         return segmentUnoccluded(c_.geometry, p, n, lens, Vec3f(0.0f), stats);
     };
-    // A contribution through media: times the connection's transmittance, over the particle
-    // path's density averaged over the channels (the balance heuristic of medium_transport.h).
-    const auto throughMedia = [&](const S& value, [[maybe_unused]] const S& T) {
+    // A contribution through media: times the connection's transmittance, over the density of
+    // the particle path and of the connection's tracking, averaged over the channels (the
+    // balance heuristic of medium_transport.h; the tracking's densities are 1 through
+    // homogeneous media).
+    const auto throughMedia = [&](const S& value, [[maybe_unused]] const Transmittance<S>& T) {
         if constexpr (Mode::kRendersMedia) {
-            if (media_) return S(value * T / rU.average());
+            if (media_) return S(value * T.T / (rU * T.rL).average());
         }
         return value;
     };
@@ -74,8 +76,7 @@ void LightIntegrator<S>::traceParticle(PixelSampler& sampler, typename Mode::Pat
             // Light from infinity through a medium that reaches infinity: none gets through
             // where the extinction is not 0, as for the path integrator's escaping rays.
             if (light.isInfinite() && medium >= 0)
-                beta *= transmittance(mode_.medium(medium, path).sigmaT(),
-                                      std::numeric_limits<float>::infinity());
+                fromInfinity(mode_, path, medium, hero, particle->origin, e.direction, beta, rU);
         }
     }
 
@@ -87,7 +88,7 @@ void LightIntegrator<S>::traceParticle(PixelSampler& sampler, typename Mode::Pat
             at.p = e.point;
             at.ng = at.ns = facing(e.normal, e.normal);
             const Emission toCamera = light.radiance(at, cc->wi);
-            S T(1.0f);
+            Transmittance<S> T;
             if (!toCamera.isZero() && lensSees(cc->lensPoint, e.point, e.normal, T)) {
                 const float cosLight = std::abs(glm::dot(e.normal, cc->wi));
                 const S value =
@@ -109,45 +110,46 @@ void LightIntegrator<S>::traceParticle(PixelSampler& sampler, typename Mode::Pat
         if constexpr (Mode::kRendersMedia) {
             const auto mf =
                 media_ ? sampleMediumFlight(mode_, path, medium, hero, sampler, hit) : std::nullopt;
+            // The flight passes, ends, or scatters at a medium vertex (medium_transport.h).
+            std::optional<float> scatterAt;
             if (mf) {
+                const FlightOutcome f = mf->apply(o, d, hero, beta, rU, nullptr, nullptr);
+                if (f.outcome == FlightOutcome::Outcome::Ends) break;
+                if (f.outcome == FlightOutcome::Outcome::Scatters) scatterAt = f.t;
+            }
+            if (scatterAt) {
                 const MediumCoefficients<S>& m = mf->coefficients;
-                const FreeFlight<S>& flight = mf->flight;
-                if (!(flight.pdf > 0.0f)) break;
-                mf->weigh(beta, rU);
-                if (flight.scatters) {
-                    // A medium vertex (its sigma_s is in beta already).
-                    if (!(beta.maxValue() > 0.0f)) break;
-                    const Vec3f p = o + d * flight.t;
-                    // Connection to the camera: the light leaves along d, reaches the lens
-                    // along cc->wi; the phase function of the angle between them.
-                    const Vec2f uCamera = sampler.get2DIfUsed(!c_.camera.isPinhole());
-                    if (const auto cc = c_.camera.sampleConnection(p, uCamera)) {
-                        const float phase = henyeyGreenstein(glm::dot(d, cc->wi), m.g);
-                        S T(1.0f);
-                        if (phase > 0.0f && lensSees(cc->lensPoint, p, Vec3f(0.0f), T)) {
-                            const S value = beta * (phase * cc->importance / cc->pdf);
-                            splatContribution(film, filter_, cc->raster, mode_,
-                                              throughMedia(value, T), cc->wi,
-                                              c_.camera.imageRight(), path);
-                        }
+                // A medium vertex (its sigma_s is in beta already).
+                if (!(beta.maxValue() > 0.0f)) break;
+                const Vec3f p = o + d * *scatterAt;
+                // Connection to the camera: the light leaves along d, reaches the lens
+                // along cc->wi; the phase function of the angle between them.
+                const Vec2f uCamera = sampler.get2DIfUsed(!c_.camera.isPinhole());
+                if (const auto cc = c_.camera.sampleConnection(p, uCamera)) {
+                    const float phase = henyeyGreenstein(glm::dot(d, cc->wi), m.g);
+                    Transmittance<S> T;
+                    if (phase > 0.0f && lensSees(cc->lensPoint, p, Vec3f(0.0f), T)) {
+                        const S value = beta * (phase * cc->importance / cc->pdf);
+                        splatContribution(film, filter_, cc->raster, mode_, throughMedia(value, T),
+                                          cc->wi, c_.camera.imageRight(), path);
                     }
-                    if (bounces == settings_.maxDepth) break;
-                    const Vec3f wi = sampleHenyeyGreenstein(d, m.g, sampler.get2D());
-                    const float rrBeta = (beta / rU.average()).maxValue() / beta0;
-                    if (rouletteApplies(rrBeta, bounces, settings_.russianRouletteDepth)) {
-                        if (!russianRoulette(beta, rrBeta, bounces, settings_.russianRouletteDepth,
-                                             sampler.get1D()))
-                            break;
-                    } else {
-                        sampler.skip();
-                    }
-                    if (!beta.isFinite()) break;
-                    crossings = 0;
-                    o = p;
-                    d = wi;
-                    ++bounces;
-                    continue;
                 }
+                if (bounces == settings_.maxDepth) break;
+                const Vec3f wi = sampleHenyeyGreenstein(d, m.g, sampler.get2D());
+                const float rrBeta = (beta / rU.average()).maxValue() / beta0;
+                if (rouletteApplies(rrBeta, bounces, settings_.russianRouletteDepth)) {
+                    if (!russianRoulette(beta, rrBeta, bounces, settings_.russianRouletteDepth,
+                                         sampler.get1D()))
+                        break;
+                } else {
+                    sampler.skip();
+                }
+                if (!beta.isFinite()) break;
+                crossings = 0;
+                o = p;
+                d = wi;
+                ++bounces;
+                continue;
             }
         }
         if (!hit) break;
@@ -172,7 +174,7 @@ void LightIntegrator<S>::traceParticle(PixelSampler& sampler, typename Mode::Pat
                 const Vec3f toCamera = at.frame.toLocal(cc->wi);
                 const S f = ablations_.connectionBsdf(bsdf, at.wo, toCamera) *
                             ablations_.adjointCorrection(at.woWorld, cc->wi, hit->ng, hit->ns);
-                S T(1.0f);
+                Transmittance<S> T;
                 if (f.maxValue() > 0.0f && lensSees(cc->lensPoint, hit->p, hit->ng, T)) {
                     // f before beta: in the polarised mode the light path's matrices act
                     // in the order light meets them (docs/polarisation.md, "Light paths").

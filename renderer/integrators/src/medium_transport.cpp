@@ -22,11 +22,12 @@ S transmittance(const S& sigmaT, float d) {
 }
 
 template <SpectrumType S>
-std::optional<S> shadowTransmittance(const Geometry& geometry, const RenderMode<S>& mode,
-                                     typename RenderMode<S>::Path& path, Vec3f from,
-                                     const Vec3f& direction, float distance, int medium,
-                                     PathStatistics& stats) {
-    S result(1.0f);
+std::optional<Transmittance<S>> shadowTransmittance(const Geometry& geometry,
+                                                    const RenderMode<S>& mode,
+                                                    typename RenderMode<S>::Path& path, Vec3f from,
+                                                    const Vec3f& direction, float distance,
+                                                    int medium, int hero, PathStatistics& stats) {
+    Transmittance<S> result;
     const bool toInfinity = std::isinf(distance);
     const Vec3f to = toInfinity ? Vec3f(0.0f) : from + direction * distance;
     float remaining = distance;
@@ -34,8 +35,17 @@ std::optional<S> shadowTransmittance(const Geometry& geometry, const RenderMode<
         ++stats.rays;
         const auto hit = geometry.intersect(from, direction, remaining);
         if (medium >= 0) {
-            result *= transmittance(mode.medium(medium, path).sigmaT(), hit ? hit->t : remaining);
-            if (!(result.maxValue() > 0.0f)) return std::nullopt;
+            const MediumCoefficients<S> m = mode.medium(medium, path);
+            const float length = hit ? hit->t : remaining;
+            if (m.grid) {
+                ratioTrack(m, from, direction, length, hero, trackingSeed(from, direction, length),
+                           result);
+            } else {
+                const S T = transmittance(m.sigmaT(), length);
+                result.T *= T;
+                result.passing *= T;
+            }
+            if (!(result.T.maxValue() > 0.0f)) return std::nullopt;
         }
         if (!hit) return result;
         const ShapeInfo& shape = geometry.shapes()[std::size_t(hit->shape)];
@@ -52,18 +62,35 @@ std::optional<S> shadowTransmittance(const Geometry& geometry, const RenderMode<
 }
 
 template <SpectrumType S>
-std::optional<S> segmentTransmittance(const Geometry& geometry, const RenderMode<S>& mode,
-                                      typename RenderMode<S>::Path& path, const Vec3f& a,
-                                      const Vec3f& na, const Vec3f& b, const Vec3f& nb, int medium,
-                                      PathStatistics& stats) {
+std::optional<Transmittance<S>> segmentTransmittance(const Geometry& geometry,
+                                                     const RenderMode<S>& mode,
+                                                     typename RenderMode<S>::Path& path,
+                                                     const Vec3f& a, const Vec3f& na,
+                                                     const Vec3f& b, const Vec3f& nb, int medium,
+                                                     int hero, PathStatistics& stats) {
     const Vec3f ab = b - a;
     const float scale = geometry.rayOffsetScale();
     const Vec3f from = na == Vec3f(0.0f) ? a : offsetRayOrigin(a, facing(na, ab), scale);
     const Vec3f to = nb == Vec3f(0.0f) ? b : offsetRayOrigin(b, facing(nb, -ab), scale);
     const float length = glm::length(to - from);
-    if (!(length > 0.0f)) return S(1.0f);
+    if (!(length > 0.0f)) return Transmittance<S>{};
     return shadowTransmittance(geometry, mode, path, from, (to - from) / length,
-                               length * (1.0f - 1e-4f), medium, stats);
+                               length * (1.0f - 1e-4f), medium, hero, stats);
+}
+
+template <SpectrumType S>
+void fromInfinity(const RenderMode<S>& mode, typename RenderMode<S>::Path& path, int medium,
+                  int hero, const Vec3f& origin, const Vec3f& d, S& beta, S& rU) {
+    const MediumCoefficients<S> m = mode.medium(medium, path);
+    if (!m.grid) {
+        beta *= transmittance(m.sigmaT(), std::numeric_limits<float>::infinity());
+        return;
+    }
+    Transmittance<S> tr;
+    const float tMax = std::numeric_limits<float>::infinity();
+    ratioTrack(m, origin, -d, tMax, hero, trackingSeed(origin, -d, tMax), tr);
+    beta *= tr.T;
+    rU *= tr.rL;
 }
 
 int mediumAt(const Geometry& geometry, int cameraMedium, const Vec3f& cameraPosition,
@@ -86,14 +113,16 @@ int mediumAt(const Geometry& geometry, int cameraMedium, const Vec3f& cameraPosi
     return medium;
 }
 
-#define LAMINA_MEDIUM_TRANSPORT(S)                                                            \
-    template S transmittance(const S&, float);                                                \
-    template std::optional<S> shadowTransmittance(const Geometry&, const RenderMode<S>&,      \
-                                                  typename RenderMode<S>::Path&, Vec3f,       \
-                                                  const Vec3f&, float, int, PathStatistics&); \
-    template std::optional<S> segmentTransmittance(                                           \
-        const Geometry&, const RenderMode<S>&, typename RenderMode<S>::Path&, const Vec3f&,   \
-        const Vec3f&, const Vec3f&, const Vec3f&, int, PathStatistics&);
+#define LAMINA_MEDIUM_TRANSPORT(S)                                                                 \
+    template S transmittance(const S&, float);                                                     \
+    template std::optional<Transmittance<S>> shadowTransmittance(                                  \
+        const Geometry&, const RenderMode<S>&, typename RenderMode<S>::Path&, Vec3f, const Vec3f&, \
+        float, int, int, PathStatistics&);                                                         \
+    template std::optional<Transmittance<S>> segmentTransmittance(                                 \
+        const Geometry&, const RenderMode<S>&, typename RenderMode<S>::Path&, const Vec3f&,        \
+        const Vec3f&, const Vec3f&, const Vec3f&, int, int, PathStatistics&);                      \
+    template void fromInfinity(const RenderMode<S>&, typename RenderMode<S>::Path&, int, int,      \
+                               const Vec3f&, const Vec3f&, S&, S&);
 LAMINA_MEDIUM_TRANSPORT(Rgb<float>)
 LAMINA_MEDIUM_TRANSPORT(SampledSpectrum<float>)
 #undef LAMINA_MEDIUM_TRANSPORT

@@ -81,68 +81,58 @@ S PathIntegrator<S>::radiance(const Vec3f& rayOrigin, const Vec3f& rayDirection,
         if constexpr (Mode::kRendersMedia) {
             const auto mf =
                 media_ ? sampleMediumFlight(mode_, path, medium, hero, sampler, hit) : std::nullopt;
+            // The flight passes, ends, or scatters at a medium vertex (medium_transport.h:
+            // exact in a homogeneous medium, delta tracking with its null collisions' factors
+            // and the emission at its collisions in a grid).
+            std::optional<float> scatterAt;
             if (mf) {
-                const MediumCoefficients<S>& m = mf->coefficients;
-                const FreeFlight<S>& flight = mf->flight;
-                if (!(flight.pdf > 0.0f)) break;
-                if (!flight.scatters) {
-                    // The flight passes (to the surface, or out of the scene where the hero's
-                    // extinction is 0): it had probability T_hero of doing so, channel i
-                    // T_i. A light sample's shadow ray has no density of its own (its
-                    // transmittance is exact): rL gets the hero's normalisation only.
-                    mf->weigh(beta, rU);
-                    rL /= flight.pdf;
+                const FlightOutcome f =
+                    mf->apply(o, d, hero, beta, rU, &rL, mf->coefficients.emits ? &L : nullptr);
+                if (f.outcome == FlightOutcome::Outcome::Ends) break;
+                if (f.outcome == FlightOutcome::Outcome::Scatters) scatterAt = f.t;
+            }
+            if (scatterAt) {
+                const float g = mf->coefficients.g;
+                if (depth >= settings_.maxDepth || !(beta.maxValue() > 0.0f)) break;
+                const Vec3f p = o + d * *scatterAt;
+                const auto phase = [&](const Vec3f& wi) {
+                    return henyeyGreenstein(glm::dot(d, wi), g);
+                };
+                // The same dimensions as at a surface: the light's two, the lobe choice
+                // (none here), the direction's two, the roulette's.
+                if (nextEvent && c_.lights.nextEventChooses()) {
+                    const float uLight = sampler.get1DIfUsed(c_.lights.choiceReadsNumber());
+                    const Vec2f uLightPoint = sampler.get2D();
+                    L += beta * directLight(
+                                    {p, Vec3f(0.0f), Vec3f(0.0f), nullptr, medium, d, hero},
+                                    [&](const Vec3f& wi) { return S(phase(wi)); }, phase, rU,
+                                    uLight, uLightPoint, path, stats);
                 } else {
-                    // A scattering event at t, of density sigma_t T(t) per channel.
-                    const S& T = flight.T;
-                    const float t = flight.t, pdf = flight.pdf;
-                    if (m.emits) {
-                        // The medium's emission along the flight, by the collision estimator.
-                        const S rE = rU * mf->sigmaT * T / pdf;
-                        L += beta * T * m.sigmaA * m.emission / (pdf * rE.average());
-                    }
-                    mf->weigh(beta, rU);
-                    if (depth >= settings_.maxDepth || !(beta.maxValue() > 0.0f)) break;
-                    const Vec3f p = o + d * t;
-                    const auto phase = [&](const Vec3f& wi) {
-                        return henyeyGreenstein(glm::dot(d, wi), m.g);
-                    };
-                    // The same dimensions as at a surface: the light's two, the lobe choice
-                    // (none here), the direction's two, the roulette's.
-                    if (nextEvent && c_.lights.nextEventChooses()) {
-                        const float uLight = sampler.get1DIfUsed(c_.lights.choiceReadsNumber());
-                        const Vec2f uLightPoint = sampler.get2D();
-                        L += beta * directLight(
-                                        {p, Vec3f(0.0f), Vec3f(0.0f), nullptr, medium, d},
-                                        [&](const Vec3f& wi) { return S(phase(wi)); }, phase, rU,
-                                        uLight, uLightPoint, path, stats);
-                    } else {
-                        sampler.skip();
-                        sampler.skip();
-                    }
                     sampler.skip();
-                    const Vec3f wi = sampleHenyeyGreenstein(d, m.g, sampler.get2D());
-                    // The phase function is its own density: the throughput keeps sigma_s.
-                    prevPdf = phase(wi);
-                    rL = rU / prevPdf;
-                    const float rrBeta = (beta / rU.average()).maxValue() * etaScale;
-                    if (rouletteApplies(rrBeta, depth + 1, settings_.russianRouletteDepth)) {
-                        if (!russianRoulette(beta, rrBeta, depth + 1,
-                                             settings_.russianRouletteDepth, sampler.get1D()))
-                            break;
-                    } else {
-                        sampler.skip();
-                    }
-                    if (!beta.isFinite()) break;
-                    specularBounce = false;
-                    crossings = 0;
-                    prevPoint = p;
-                    prevNormal = Vec3f(0.0f);
-                    o = p;
-                    d = wi;
-                    ++depth;
-                    continue;
+                    sampler.skip();
                 }
+                sampler.skip();
+                const Vec3f wi = sampleHenyeyGreenstein(d, g, sampler.get2D());
+                // The phase function is its own density: the throughput keeps sigma_s.
+                prevPdf = phase(wi);
+                rL = rU / prevPdf;
+                const float rrBeta = (beta / rU.average()).maxValue() * etaScale;
+                if (rouletteApplies(rrBeta, depth + 1, settings_.russianRouletteDepth)) {
+                    if (!russianRoulette(beta, rrBeta, depth + 1, settings_.russianRouletteDepth,
+                                         sampler.get1D()))
+                        break;
+                } else {
+                    sampler.skip();
+                }
+                if (!beta.isFinite()) break;
+                specularBounce = false;
+                crossings = 0;
+                prevPoint = p;
+                prevNormal = Vec3f(0.0f);
+                o = p;
+                d = wi;
+                ++depth;
+                continue;
             }
         }
         if (!hit) {
@@ -199,7 +189,7 @@ S PathIntegrator<S>::radiance(const Vec3f& rayOrigin, const Vec3f& rayDirection,
                 return bsdf.eval(at.wo, at.frame.toLocal(wi), TransportMode::Radiance);
             };
             const auto pdf = [&](const Vec3f& wi) { return bsdf.pdf(at.wo, at.frame.toLocal(wi)); };
-            L += beta * directLight({hit->p, hit->ng, hit->ns, &shape, medium, d}, f, pdf, rU,
+            L += beta * directLight({hit->p, hit->ng, hit->ns, &shape, medium, d, hero}, f, pdf, rU,
                                     uLight, uLightPoint, path, stats);
         } else {
             sampler.skip();
@@ -284,16 +274,18 @@ S PathIntegrator<S>::directLight(const Vertex& v, Value&& value, Density&& densi
             direction = (to - from) / length;
             distance = length * (1.0f - 1e-4f);
         }
-        const auto T =
-            shadowTransmittance(c_.geometry, mode_, path, from, direction, distance, medium, stats);
+        const auto T = shadowTransmittance(c_.geometry, mode_, path, from, direction, distance,
+                                           medium, v.hero, stats);
         if (!T) return S(0.0f);
         // The balance heuristic over the two strategies and the channels: the light sample's
-        // density per channel, and the density with which scattering and free flights would
-        // have reached the same point (a channel passes the shadow ray's media with
-        // probability T). Relative to the hero's, as pathRatios are.
-        const S rLight = pathRatios * lightPdf;
-        const S denominator = ls->delta ? rLight : rLight + pathRatios * density(ls->wi) * *T;
-        return f * *T * mode_.emission(ls->radiance, path) / denominator.average();
+        // density per channel (times its ratio tracking's in grid media), and the density with
+        // which scattering and free flights would have reached the same point (a channel
+        // passes the shadow ray's homogeneous media with probability T, a grid's null
+        // collisions with T->passing). Relative to the hero's, as pathRatios are.
+        const S rLight = pathRatios * lightPdf * T->rL;
+        const S denominator =
+            ls->delta ? rLight : rLight + pathRatios * density(ls->wi) * T->passing;
+        return f * T->T * mode_.emission(ls->radiance, path) / denominator.average();
     }
     return S(0.0f);
 }

@@ -45,8 +45,8 @@ Json perChannel(const Json& a, const Json& b, F f) {
 Json translateHomogeneous(Plugin& p) {
     if (p.type() != "homogeneous")
         p.fail("the medium \"" + p.type() +
-               "\" is not supported (lamina renders homogeneous media; grid volumes are not "
-               "read yet)");
+               "\" is not supported (the importer translates homogeneous media; grid "
+               "volumes are not translated yet)");
     if (p.has("albedo") && p.tagOf("albedo") == "volume")
         p.fail("a spatially varying albedo (a volume) is not supported");
     const Json albedo = coefficient(p, "albedo", 0.75);

@@ -111,8 +111,9 @@ Json translateMedium(TranslationContext& ctx, const MediumDef& m) {
     const ParamList& params = e.params;
     if (e.type != "homogeneous")
         ctx.fail(e.location, "MakeNamedMedium \"" + m.name + "\": \"" + e.type +
-                                 "\" media are not supported (lamina renders homogeneous "
-                                 "media; grids, clouds and NanoVDB files are not read yet)");
+                                 "\" media are not supported (the importer translates "
+                                 "homogeneous media; grids, clouds and NanoVDB files are not "
+                                 "translated yet)");
     Json medium{{"type", "homogeneous"}};
     const std::string preset = params.string("preset", "");
     const MeasuredMedium* measured = nullptr;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "lamina/core/json_reader.h"
+#include "lamina/scene/grid_file.h"
 #include "lamina/scene/scene_readers.h"
 
 namespace lamina::render {
@@ -19,6 +21,40 @@ Rgb<double> readCoefficient(const JsonReader& r, const std::string& key, double 
             r.failAt(key, "times scale is " + formatNumber(sigma[c]) +
                               ", beyond float: expected a smaller coefficient or scale");
     return sigma;
+}
+
+// A grid medium's "density" (a grid file's name, or the grid inline) over its "bounds"
+// (default the unit cube, as pbrt-v4's uniformgrid's p0 and p1), with its majorants.
+std::shared_ptr<const GridDensity> readGrid(const JsonReader& r, const MediumDesc& m) {
+    auto grid = std::make_shared<GridDensity>();
+    if (!r.has("density"))
+        r.failAt("density",
+                 "missing; expected a grid file's name or {\"size\": [nx, ny, nz], "
+                 "\"values\": [...]}");
+    grid->density = r.value().at("density").is_string() ? readGridFile(r.filePath("density"))
+                                                        : readInlineGrid(r.child("density"));
+    if (const auto bounds = r.optionalChild("bounds")) {
+        bounds->expectObject();
+        const auto lo = bounds->requiredArray<3>("min"), hi = bounds->requiredArray<3>("max");
+        for (int c = 0; c < 3; ++c)
+            if (!(float(hi[c]) > float(lo[c])))
+                bounds->failAt("max", "expected every coordinate greater than min's, got " +
+                                          formatNumber(hi[c]) + " <= " + formatNumber(lo[c]));
+        bounds->finish();
+        grid->boxMin = Vec3f(float(lo[0]), float(lo[1]), float(lo[2]));
+        grid->boxMax = Vec3f(float(hi[0]), float(hi[1]), float(hi[2]));
+    }
+    float densest = 0.0f;
+    for (const float v : grid->density.values)
+        densest = std::max(densest, v);
+    // The majorants are the densest value times sigma_t: a path multiplies them by distances.
+    const Rgb<double> sigmaT = m.sigmaA + m.sigmaS;
+    if (!std::isfinite(float(double(densest) * sigmaT.maxValue())))
+        r.failAt("density", "the largest density " + formatNumber(densest) +
+                                " times sigma_a + sigma_s is beyond float: expected smaller "
+                                "densities or coefficients");
+    grid->majorants = MajorantGrid::build(grid->density);
+    return grid;
 }
 
 MediumDesc readMedium(const JsonReader& r, const std::string& name) {
@@ -38,6 +74,7 @@ MediumDesc readMedium(const JsonReader& r, const std::string& name) {
     // which the Henyey-Greenstein density cannot express.
     m.g = r.number("g", 0.0, {-1.0, 1.0, true, true});
     if (r.has("Le")) std::tie(m.emission, m.emissionSpectrum) = readEmissionValue(r, "Le");
+    if (m.kind == MediumKind::Grid) m.grid = readGrid(r, m);
     r.finish();
     return m;
 }

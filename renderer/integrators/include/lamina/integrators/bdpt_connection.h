@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "lamina/integrators/bdpt_mis.h"
+#include "lamina/integrators/grid_tracking.h"
 
 namespace lamina::render {
 
@@ -45,10 +46,12 @@ class BdptConnector {
           media_(Mode::kRendersMedia && context.scene.hasMedia()) {}
 
     /// Strategy (s, t) of the two subpaths; s = 1 and t = 1 draw their fresh vertex from
-    /// `sampler` (a light point: 1D + 2D; a lens point: 2D).
+    /// `sampler` (a light point: 1D + 2D; a lens point: 2D). `hero`: the subpaths' hero channel
+    /// (with media), which tracks the connection through grid media.
     BdptConnection<S> connect(const std::vector<Vertex>& lightPath, int s,
-                              const std::vector<Vertex>& cameraPath, int t, PixelSampler& sampler,
-                              typename Mode::Path& path, PathStatistics& stats) const;
+                              const std::vector<Vertex>& cameraPath, int t, int hero,
+                              PixelSampler& sampler, typename Mode::Path& path,
+                              PathStatistics& stats) const;
 
   private:
     S evalAt(const Vertex& v, const Vec3f& wPrev, const Vec3f& wNext, bool lightSubpath,
@@ -58,12 +61,15 @@ class BdptConnector {
     /// and with media the transmittance of the segment, which starts in the medium on the side
     /// of `from` it leaves to (`before`: the vertex its subpath came to `from` from; none for
     /// a lens); without media 1 when nothing blocks it.
-    std::optional<S> passes(const Vertex& from, const Vertex* before, const Vertex& to,
-                            typename Mode::Path& path, PathStatistics& stats) const;
+    std::optional<Transmittance<S>> passes(const Vertex& from, const Vertex* before,
+                                           const Vertex& to, int hero, typename Mode::Path& path,
+                                           PathStatistics& stats) const;
     /// With media: `value` times the connection's transmittance `T`, over the average of the
-    /// product of the density ratios of the two subpaths' last vertices (the balance heuristic
-    /// over the channels); without, `value`.
-    S throughMedia(const S& value, const S& T, const S& rUCamera, const S& rULight) const;
+    /// product of the density ratios of the two subpaths' last vertices and of the connection's
+    /// ratio tracking (1 through homogeneous media; the balance heuristic over the channels);
+    /// without, `value`.
+    S throughMedia(const S& value, const Transmittance<S>& T, const S& rUCamera,
+                   const S& rULight) const;
 
     SceneContext c_;
     const Mode& mode_;

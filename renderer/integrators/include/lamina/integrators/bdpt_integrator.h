@@ -44,6 +44,7 @@ class BdptIntegrator final : public Integrator<S> {
         S beta;
         float pdfDir;
         int medium, hero;
+        S rU{1.0f};  ///< the subpath's densities per channel so far (medium_transport.h)
     };
     /// Extends a subpath from its last vertex until `maxVertices` vertices are added.
     void randomWalk(WalkStart start, int maxVertices, TransportMode mode, PixelSampler& sampler,

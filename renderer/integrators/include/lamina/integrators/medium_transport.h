@@ -1,6 +1,7 @@
-// Transport through homogeneous media (docs/media.md): which medium a path is in after it
-// crosses a surface, free-flight distances, and the transmittance of a shadow ray through
-// every medium and index-matched interface on its way.
+// Transport through media (docs/media.md): which medium a path is in after it crosses a
+// surface, free-flight distances, and the transmittance of a shadow ray through every medium
+// and index-matched interface on its way. Grid media are tracked (grid_tracking.h); this file
+// holds the homogeneous media's exact steps and what both kinds share.
 //
 // Spectral MIS (Miller, Georgiev and Jarosz 2019, "A null-scattering path integral
 // formulation of light transport", section 5.2; pbrt-v4's VolPathIntegrator): a path samples
@@ -21,6 +22,7 @@
 #include <optional>
 
 #include "lamina/geometry/geometry.h"
+#include "lamina/integrators/grid_tracking.h"
 #include "lamina/integrators/integrator.h"
 
 namespace lamina::render {
@@ -81,12 +83,46 @@ FreeFlight<S> sampleFreeFlight(const S& sigmaT, int hero, float u, float tMax) {
 }
 
 /// A free flight of a path through the medium it is in: the medium's coefficients, its
-/// extinction, and the flight sampled towards the surface the path's ray hit.
+/// extinction, and the flight sampled towards the surface the path's ray hit. A grid medium's
+/// flight is not sampled here: `track` delta-tracks it (`flight` is unused).
 template <SpectrumType S>
 struct MediumFlight {
     MediumCoefficients<S> coefficients;
     S sigmaT;
     FreeFlight<S> flight;
+    float u;     ///< the flight's number from the pixel sampler
+    float tMax;  ///< the distance to the surface (infinity: none)
+
+    bool tracked() const { return coefficients.grid != nullptr; }
+
+    /// The flight of a path along o + t d (the ray it was sampled for), applied to the path's
+    /// throughput `beta`, its densities per channel relative to the hero's `rU` and, if given,
+    /// the path integrator's light-sampling densities `rL` and radiance `L` (the medium's
+    /// emission): where the path goes on, or that it ends (the outcome had no density).
+    /// Homogeneous: `weigh`, rL over the hero's probability of passing (a shadow ray's
+    /// transmittance is exact: it has no density of its own), the emission by the collision
+    /// estimator at a medium vertex. Grid: delta tracking (grid_tracking.h).
+    FlightOutcome apply(const Vec3f& o, const Vec3f& d, int hero, S& beta, S& rU, S* rL,
+                        S* L) const {
+        if (tracked())
+            return deltaTrack(coefficients, o, d, tMax, hero, trackingSeed(o, d, u), beta, rU, rL,
+                              L);
+        if (!(flight.pdf > 0.0f)) return {FlightOutcome::Outcome::Ends, flight.t};
+        if (!flight.scatters) {
+            weigh(beta, rU);
+            if (rL) *rL /= flight.pdf;
+            return {FlightOutcome::Outcome::Passes, flight.t};
+        }
+        if (L && coefficients.emits) {
+            // A scattering event at t, of density sigma_t T(t) per channel: the medium's
+            // emission along the flight, by the collision estimator.
+            const S rE = rU * sigmaT * flight.T / flight.pdf;
+            *L += beta * flight.T * coefficients.sigmaA * coefficients.emission /
+                  (flight.pdf * rE.average());
+        }
+        weigh(beta, rU);
+        return {FlightOutcome::Outcome::Scatters, flight.t};
+    }
 
     /// The flight's factors on a path's throughput `beta` and its densities per channel
     /// relative to the hero's `rU`: T / p_h when it passes, T sigma_s / p_h (the phase function
@@ -116,30 +152,45 @@ std::optional<MediumFlight<S>> sampleMediumFlight(const RenderMode<S>& mode,
     }
     const MediumCoefficients<S> m = mode.medium(medium, path);
     const S sigmaT = m.sigmaT();
-    return MediumFlight<S>{m, sigmaT,
-                           sampleFreeFlight(sigmaT, hero, sampler.get1D(),
-                                            hit ? hit->t : std::numeric_limits<float>::infinity())};
+    const float u = sampler.get1D(), tMax = hit ? hit->t : std::numeric_limits<float>::infinity();
+    if (m.grid) return MediumFlight<S>{m, sigmaT, {false, tMax, S(1.0f), 1.0f}, u, tMax};
+    return MediumFlight<S>{m, sigmaT, sampleFreeFlight(sigmaT, hero, u, tMax), u, tMax};
 }
 
 /// The transmittance from `from` (already off its surface) along the unit `direction` for
 /// `distance` (infinity: out of the scene), starting in `medium`, through every index-matched
-/// interface it crosses (the product of exp(-sigma_t d) over its segments); nothing when
-/// another surface blocks it or no channel gets through.
+/// interface it crosses: the product over its segments of exp(-sigma_t d) in homogeneous media
+/// and of ratio tracking's estimate (with the path's `hero`) in grid media, with the densities
+/// of grid_tracking.h's Transmittance; nothing when another surface blocks it or no channel
+/// gets through.
 template <SpectrumType S>
-std::optional<S> shadowTransmittance(const Geometry& geometry, const RenderMode<S>& mode,
-                                     typename RenderMode<S>::Path& path, Vec3f from,
-                                     const Vec3f& direction, float distance, int medium,
-                                     PathStatistics& stats);
+std::optional<Transmittance<S>> shadowTransmittance(const Geometry& geometry,
+                                                    const RenderMode<S>& mode,
+                                                    typename RenderMode<S>::Path& path, Vec3f from,
+                                                    const Vec3f& direction, float distance,
+                                                    int medium, int hero, PathStatistics& stats);
 
 /// The transmittance of the segment between two points, each moved off its surface along its
 /// normal on the side facing the other as segmentUnoccluded moves them (a zero normal: a point
 /// not on a surface, such as a lens or a medium vertex), starting in `medium` at `a`: a
 /// camera connection of a light path (shadowTransmittance).
 template <SpectrumType S>
-std::optional<S> segmentTransmittance(const Geometry& geometry, const RenderMode<S>& mode,
-                                      typename RenderMode<S>::Path& path, const Vec3f& a,
-                                      const Vec3f& na, const Vec3f& b, const Vec3f& nb, int medium,
-                                      PathStatistics& stats);
+std::optional<Transmittance<S>> segmentTransmittance(const Geometry& geometry,
+                                                     const RenderMode<S>& mode,
+                                                     typename RenderMode<S>::Path& path,
+                                                     const Vec3f& a, const Vec3f& na,
+                                                     const Vec3f& b, const Vec3f& nb, int medium,
+                                                     int hero, PathStatistics& stats);
+
+/// Light from infinity that reaches `origin` travelling along `d` through `medium`, a medium
+/// that reaches infinity (a particle of an infinite light starting in it): beta times
+/// exp(-sigma_t infinity) in a homogeneous medium (0 where the extinction is not); in a grid
+/// medium, whose density is 0 outside its box, beta times ratio tracking's estimate along the
+/// ray back from `origin` and rU times the tracking's densities (its null collisions are the
+/// particle path's).
+template <SpectrumType S>
+void fromInfinity(const RenderMode<S>& mode, typename RenderMode<S>::Path& path, int medium,
+                  int hero, const Vec3f& origin, const Vec3f& d, S& beta, S& rU);
 
 /// The medium at `point`, found by following the segment from the camera (at `cameraPosition`,
 /// in `cameraMedium`) to it and switching medium at every boundary it crosses (mediumAfter):

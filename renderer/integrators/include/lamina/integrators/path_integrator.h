@@ -4,7 +4,8 @@
 // delta lights handled. The same code runs in every render mode. With `next_event` false
 // (RenderSettings::nextEvent) BSDF sampling is the only strategy: a reference that no light
 // sample and no MIS weight touches (delta lights, which no ray hits, then light nothing).
-// Through homogeneous media (docs/media.md): free flights sampled by a hero channel with
+// Through media (docs/media.md): free flights sampled by a hero channel (delta tracking in grid
+// media) with
 // spectral MIS over the channels, Henyey-Greenstein scattering, next-event estimation through
 // the media and interfaces on the way, emission in the media (medium_transport.h); there, light
 // and scattering samples are combined by the balance heuristic over strategies and channels
@@ -32,13 +33,14 @@ class PathIntegrator final : public Integrator<S> {
     S radiance(const Vec3f& rayOrigin, const Vec3f& rayDirection, PixelSampler& sampler,
                typename Mode::Path& path, PathStatistics& stats, PixelAovs* aovs) const;
     /// Where next-event estimation starts: a surface point (`shape` set, normals ng and ns),
-    /// or a point in a medium (no shape, zero normals), with the medium the path is in there
-    /// and the direction it arrived along.
+    /// or a point in a medium (no shape, zero normals), with the medium the path is in there,
+    /// the direction it arrived along and the path's hero channel (medium_transport.h).
     struct Vertex {
         Vec3f p, ng, ns;
         const ShapeInfo* shape;
         int medium;
         Vec3f arrival;
+        int hero;
     };
     /// Next-event estimation at `v`: one light sample, weighted against sampling the vertex's
     /// scattering. `value(wi)` is the scattering's f |cos| (the phase function in a medium),

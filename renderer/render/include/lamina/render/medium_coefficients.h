@@ -1,8 +1,10 @@
-// A homogeneous medium's coefficients in a render mode's spectrum (docs/media.md), as the
-// path integrator reads them at every segment in the medium: RenderMode<S>::medium.
+// A medium's coefficients in a render mode's spectrum (docs/media.md), as the integrators read
+// them at every segment in the medium: RenderMode<S>::medium. A grid medium's are per unit of
+// its density (grid_tracking.h scales them at each point).
 #pragma once
 
 #include "lamina/core/spectrum.h"
+#include "lamina/scene/density_grid.h"
 
 namespace lamina::render {
 
@@ -12,6 +14,7 @@ struct MediumCoefficients {
     S emission{0.0f};              ///< Le: the source term is sigma_a Le
     float g = 0;                   ///< Henyey-Greenstein asymmetry
     bool emits = false;
+    const GridDensity* grid = nullptr;  ///< a grid medium's density; null: homogeneous
     S sigmaT() const { return sigmaA + sigmaS; }
 };
 

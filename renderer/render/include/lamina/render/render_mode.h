@@ -47,8 +47,8 @@ class RenderMode<Rgb<float>> {
         for (const MediumDesc& m : scene.media) {
             // A medium's emission spectrum, if given, is reduced to RGB as an emitter's is.
             const EmitterColor le(m.emission, m.emissionSpectrum);
-            media_.push_back(
-                {Spectrum(m.sigmaA), Spectrum(m.sigmaS), le.rgb(), float(m.g), m.emits()});
+            media_.push_back({Spectrum(m.sigmaA), Spectrum(m.sigmaS), le.rgb(), float(m.g),
+                              m.emits(), m.grid.get()});
         }
     }
 
@@ -126,7 +126,7 @@ class RenderMode<SampledSpectrum<float>> {
         for (const MediumDesc& m : scene.media)
             media_.push_back(SpectralMedium{
                 UnboundedSpectrum(m.sigmaA), UnboundedSpectrum(m.sigmaS),
-                EmitterColor(m.emission, m.emissionSpectrum), float(m.g), m.emits()});
+                EmitterColor(m.emission, m.emissionSpectrum), float(m.g), m.emits(), m.grid.get()});
     }
 
     static constexpr FilmSpace kFilmSpace = FilmSpace::Xyz;
@@ -205,6 +205,7 @@ class RenderMode<SampledSpectrum<float>> {
         out.emission = m.emission.spectral(path.at);
         out.g = m.g;
         out.emits = m.emits;
+        out.grid = m.grid;
         return out;
     }
 
@@ -232,6 +233,7 @@ class RenderMode<SampledSpectrum<float>> {
         EmitterColor emission;
         float g;
         bool emits;
+        const GridDensity* grid;
     };
 
     struct BsdfCache {

@@ -10,19 +10,22 @@
 
 #include "lamina/core/name_table.h"
 #include "lamina/core/spectrum.h"
+#include "lamina/scene/density_grid.h"
 #include "lamina/spectral/emission_spectrum.h"
 
 namespace lamina::render {
 
-/// The `type` of a medium. Only homogeneous media exist yet (docs/media.md, "not yet").
-enum class MediumKind { Homogeneous };
-inline constexpr NameTable kMediumKindNames{
-    std::array{NameEntry{MediumKind::Homogeneous, "homogeneous"}}};
+/// The `type` of a medium: constant coefficients, or coefficients scaled by a density grid.
+enum class MediumKind { Homogeneous, Grid };
+inline constexpr NameTable kMediumKindNames{std::array{
+    NameEntry{MediumKind::Homogeneous, "homogeneous"}, NameEntry{MediumKind::Grid, "grid"}}};
 
-/// A medium of constant coefficients, in 1 / scene unit, already multiplied by the file's
-/// `scale`. RGB coefficients are linear Rec.709 values; spectral mode upsamples them as
-/// unbounded spectra (pbrt-v4's RGBUnboundedSpectrum), as it does a material's unbounded
-/// parameters, so a grey coefficient is the same constant at every wavelength.
+/// A medium's coefficients, in 1 / scene unit, already multiplied by the file's `scale`: of
+/// the whole medium (homogeneous), or per unit of the grid's density (grid: the coefficient at
+/// a point is the density there times these). RGB coefficients are linear Rec.709 values;
+/// spectral mode upsamples them as unbounded spectra (pbrt-v4's RGBUnboundedSpectrum), as it
+/// does a material's unbounded parameters, so a grey coefficient is the same constant at every
+/// wavelength.
 struct MediumDesc {
     std::string name;
     MediumKind kind = MediumKind::Homogeneous;
@@ -34,6 +37,8 @@ struct MediumDesc {
     /// radiative transfer equation): RGB upsampled as an illuminant, or a spectrum.
     Rgb<double> emission{0.0};
     std::shared_ptr<const EmissionSpectrum> emissionSpectrum;
+    /// A grid medium's density and majorants (null for a homogeneous medium).
+    std::shared_ptr<const GridDensity> grid;
     bool emits() const { return emissionSpectrum || emission.maxValue() > 0; }
 };
 
