@@ -186,13 +186,22 @@ void standardSpectra(const MaterialModel& model, std::vector<std::string>& out) 
         out.push_back(s.conductorBase->optics.spectrum->name() + " (n, k)");
 }
 
+bool standardTransmits(const MaterialModel& model) {
+    return model.as<StandardMaterial>().transmission > 0;
+}
+
+// Multiscatter's albedo table and the albedo coupling's are computed from the roughness once.
+bool standardTabulatesRoughness(const MaterialModel& model) {
+    const auto& s = model.as<StandardMaterial>();
+    return s.microfacet.multiscatter || s.coupling == LayerCoupling::Albedo;
+}
+
 }  // namespace
 
-extern const MaterialKind kStandardMaterial{
-    .name = "standard",
-    .listPosition = 10,
-    .read = readStandard,
-    .schema = R"json({
+extern const MaterialKind kStandardMaterial{.name = "standard",
+                                            .listPosition = 10,
+                                            .read = readStandard,
+                                            .schema = R"json({
   "type": "object",
   "description": "A specular interface over a diffuse base with transmission (docs/bsdf.md).",
   "required": ["type"],
@@ -247,21 +256,16 @@ extern const MaterialKind kStandardMaterial{
     }
   ]
 })json",
-    .texturable = kStandardTextured,
-    .applyTextures = texturedStandard,
-    .spectralData = standardSpectra,
-    .transmits = [](const MaterialModel& m) { return m.as<StandardMaterial>().transmission > 0; },
-    .tabulatesRoughness =
-        [](const MaterialModel& m) {
-            const auto& s = m.as<StandardMaterial>();
-            return s.microfacet.multiscatter || s.coupling == LayerCoupling::Albedo;
-        }};
+                                            .texturable = kStandardTextured,
+                                            .applyTextures = texturedStandard,
+                                            .spectralData = standardSpectra,
+                                            .transmits = standardTransmits,
+                                            .tabulatesRoughness = standardTabulatesRoughness};
 
-extern const MaterialKind kLayeredMaterial{
-    .name = "layered",
-    .listPosition = 110,
-    .read = readLayered,
-    .schema = R"json({
+extern const MaterialKind kLayeredMaterial{.name = "layered",
+                                           .listPosition = 110,
+                                           .read = readLayered,
+                                           .schema = R"json({
   "type": "object",
   "description": "The stack spelled out: an interface over a base, with transmission and a coupling.",
   "required": ["type"],
@@ -368,12 +372,8 @@ extern const MaterialKind kLayeredMaterial{
     }
   ]
 })json",
-    .spectralData = standardSpectra,
-    .transmits = [](const MaterialModel& m) { return m.as<StandardMaterial>().transmission > 0; },
-    .tabulatesRoughness =
-        [](const MaterialModel& m) {
-            const auto& s = m.as<StandardMaterial>();
-            return s.microfacet.multiscatter || s.coupling == LayerCoupling::Albedo;
-        }};
+                                           .spectralData = standardSpectra,
+                                           .transmits = standardTransmits,
+                                           .tabulatesRoughness = standardTabulatesRoughness};
 
 }  // namespace lamina
