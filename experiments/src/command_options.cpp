@@ -57,6 +57,7 @@ render::RenderOptions renderOptionsFrom(const OptionValues& values) {
     o.mis = values.choice(render::kMisHeuristicNames, "mis");
     applyRenderOverrides(values, o);
     o.aovs = values.flag("aovs");
+    if (const auto bins = values.integer("spectral-film")) o.spectralBins = int(*bins);
     return o;
 }
 
