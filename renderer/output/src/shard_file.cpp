@@ -312,6 +312,9 @@ ShardFile readShardExr(const std::filesystem::path& path) {
             }
             shard.film->addStokesSums(c.x0 + x, c.y0 + y, camera, splat);
         }
+    if (const auto rejected = shard.metadata.ints.find("rejected_samples");
+        rejected != shard.metadata.ints.end() && rejected->second > 0)
+        shard.film->addRejectedSamples(std::uint64_t(rejected->second));
     return shard;
 }
 
