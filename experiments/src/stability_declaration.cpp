@@ -2,6 +2,7 @@
 // them, the report, and the result as data.
 #include "declarations.h"
 #include "lamina/experiments/command_options.h"
+#include "lamina/experiments/kept_renders.h"
 #include "lamina/experiments/stability.h"
 #include "lamina/render/render_limits.h"
 
@@ -15,51 +16,16 @@ StabilityInputs stabilityInputs(const OptionValues& v, const CommandContext& con
     in.scenes = v.texts("scenes");
     in.spp = int(*v.integer("spp"));
     in.samples = int(*v.integer("samples"));
+    applyRenderOverrides(v, in.overrides);
     in.progress = context.progress;
     return in;
-}
-
-Data modelData(const AuditedModel& m) {
-    const StabilityReport& a = m.audit;
-    std::vector<int> issues;
-    std::vector<double> floatError;
-    for (std::size_t i = 0; i < a.alphas.size(); ++i)
-        for (std::size_t j = 0; j < a.cosines.size(); ++j) {
-            issues.push_back(a.at(i, j).issues());
-            floatError.push_back(a.at(i, j).worstFloatError);
-        }
-    const std::vector<std::size_t> shape = {a.alphas.size(), a.cosines.size()};
-    const StabilityCell t = a.total();
-    Data d = Data::dict();
-    d.set("material", m.json);
-    d.set("alphas", Data::numbers(a.alphas));
-    d.set("cosines", Data::numbers(a.cosines));
-    d.set("issues", Data::array(std::move(issues), shape));
-    d.set("worst_float_error", Data::array(std::move(floatError), shape));
-    d.set("nan", t.nan);
-    d.set("inf", t.inf);
-    d.set("negative", t.negative);
-    d.set("weight_mismatch", t.weightMismatch);
-    d.set("energy_gain", t.energyGain);
-    d.set("evaluations", t.evaluations);
-    d.set("samples", t.samples);
-    const PolarisedStabilityReport& p = m.polarised;
-    Data polarised = Data::dict();
-    polarised.set("evaluations", p.evaluations);
-    polarised.set("nan", p.nan);
-    polarised.set("inf", p.inf);
-    polarised.set("worst_jump_float", p.worstJumpFloat);
-    polarised.set("worst_jump_double", p.worstJumpDouble);
-    polarised.set("discontinuities", p.discontinuities);
-    d.set("polarised", std::move(polarised));
-    return d;
 }
 
 Data stabilityData(const OptionValues& v, const CommandContext& context) {
     const StabilityResult r = runStability(stabilityInputs(v, context));
     Data out = Data::list();
     for (const auto& m : r.models)
-        out.append(modelData(m));
+        out.append(auditedModelData(m));
     return out;
 }
 
@@ -92,12 +58,20 @@ CommandDecl stabilityDeclaration() {
         integerOption("spp", "Samples per pixel of the scene renders", 1, render::kMaxSppOverride)
             .byDefault(defaults.spp)
             .commandLineOnly("of --scenes' renders"),
+        resolutionOverrideOption().commandLineOnly("of --scenes' renders"),
+        threadsOption().commandLineOnly("of --scenes' renders"),
+        maxDepthOption().commandLineOnly("of --scenes' renders"),
+        resumeOption(),
     };
     c.report = [](const OptionValues& v, const CommandContext& context) -> ReportWork {
-        const StabilityInputs in = stabilityInputs(v, context);
+        StabilityInputs in = stabilityInputs(v, context);
+        in.resume = v.flag("resume");
         return {[in](Report& report) {
-            writeStabilityReport(runStability(in), report);
+            StabilityInputs run = in;
+            run.keepDirectory = report.directory();
+            writeStabilityReport(runStability(run), report);
             report.finish();
+            removeKeptRenders(report.directory());
             return 0;
         }};
     };

@@ -5,7 +5,8 @@
 // and names it with the way to resume; the resumed run takes it back, renders the rest, and
 // reports exactly the numbers of an uninterrupted run with the same seed (renders are
 // deterministic per seed, and both runs compute from the films as kept); a resume against
-// renders of other settings is refused on one line naming the setting.
+// renders of other settings is refused on one line naming the setting. `stability` keeps its
+// audits as well as its scene renders.
 #include "lamina/experiments/kept_renders.h"
 
 #include <gmock/gmock.h>
@@ -17,6 +18,7 @@
 #include "lamina/experiments/layering.h"
 #include "lamina/experiments/polarisation.h"
 #include "lamina/experiments/reciprocity.h"
+#include "lamina/experiments/stability.h"
 #include "scratch_directory.h"
 #include "source_files.h"
 
@@ -246,6 +248,106 @@ TEST_F(ExperimentResume, ReciprocityResumesFromItsKeptBatchesWithTheSameNumbers)
     EXPECT_THAT(refusal([&] { runReciprocity(in); }),
                 HasSubstr("path_batch00.exr: rendered with mode=rgb, this run asks for "
                           "mode=spectral"));
+}
+
+void expectSameAudit(const AuditedModel& a, const AuditedModel& b) {
+    EXPECT_EQ(a.json, b.json);
+    EXPECT_EQ(a.audit.alphas, b.audit.alphas);
+    EXPECT_EQ(a.audit.cosines, b.audit.cosines);
+    ASSERT_EQ(a.audit.cells.size(), b.audit.cells.size());
+    for (std::size_t i = 0; i < a.audit.cells.size(); ++i) {
+        const StabilityCell &x = a.audit.cells[i], &y = b.audit.cells[i];
+        EXPECT_EQ(x.evaluations, y.evaluations);
+        EXPECT_EQ(x.samples, y.samples);
+        EXPECT_EQ(x.issues(), y.issues());
+        EXPECT_EQ(x.negative, y.negative);
+        EXPECT_EQ(x.worstFloatError, y.worstFloatError);
+    }
+    ASSERT_EQ(a.polarised.probes.size(), b.polarised.probes.size());
+    for (std::size_t i = 0; i < a.polarised.probes.size(); ++i) {
+        EXPECT_EQ(a.polarised.probes[i].what, b.polarised.probes[i].what);
+        EXPECT_EQ(a.polarised.probes[i].cosTheta, b.polarised.probes[i].cosTheta);
+        EXPECT_EQ(a.polarised.probes[i].jumpFloat, b.polarised.probes[i].jumpFloat);
+        EXPECT_EQ(a.polarised.probes[i].jumpDouble, b.polarised.probes[i].jumpDouble);
+    }
+    EXPECT_EQ(a.polarised.evaluations, b.polarised.evaluations);
+    EXPECT_EQ(a.polarised.worstJumpFloat, b.polarised.worstJumpFloat);
+    EXPECT_EQ(a.polarised.discontinuities, b.polarised.discontinuities);
+}
+
+void expectSameStability(const StabilityResult& a, const StabilityResult& b) {
+    ASSERT_EQ(a.models.size(), b.models.size());
+    for (std::size_t m = 0; m < a.models.size(); ++m)
+        expectSameAudit(a.models[m], b.models[m]);
+    ASSERT_EQ(a.scenes.size(), b.scenes.size());
+    for (std::size_t s = 0; s < a.scenes.size(); ++s) {
+        EXPECT_EQ(a.scenes[s].rejectedSamples, b.scenes[s].rejectedSamples);
+        EXPECT_EQ(a.scenes[s].largestSample, b.scenes[s].largestSample);
+        EXPECT_EQ(a.scenes[s].meanLuminance, b.scenes[s].meanLuminance);
+    }
+}
+
+// Interrupted after its first audit, and again after its first scene render: each resume takes
+// back what was kept (an audit to the last bit, a render as a shard with its rejected-sample
+// count) and reports what an uninterrupted run reports.
+TEST_F(ExperimentResume, StabilityResumesFromItsKeptAuditsAndRendersWithTheSameNumbers) {
+    StabilityInputs in;
+    in.materials = {R"({"type":"dielectric","ior":1.5})",
+                    R"({"type":"conductor","eta":0.5,"k":20})"};
+    in.samples = 16;
+    in.scenes = {lamina::testing::sourceFile("scenes/stress/tiny-bright-light.json").string(),
+                 lamina::testing::sourceFile("scenes/stress/grazing-view.json").string()};
+    in.spp = 2;
+    in.overrides.resolution = {16, 12};
+    in.keepDirectory = whole();
+    const StabilityResult uninterrupted = runStability(in);
+    EXPECT_EQ(uninterrupted.scenes.size(), 2u);
+
+    in.keepDirectory = interrupted();
+    const Interrupted afterAudit = interruptAtSecondRender(
+        [&](const ProgressSink& progress) {
+            StabilityInputs run = in;
+            run.progress = progress;
+            runStability(run);
+        },
+        "audited ", 1);
+    const std::filesystem::path audit = interrupted() / "renders" / "model01_audit.json";
+    EXPECT_EQ(afterAudit.kept, audit.string() +
+                                   " (the same command with --resume continues from them without "
+                                   "auditing them again)");
+    ASSERT_TRUE(afterAudit.partial.has_value());
+    const auto& dict = std::get<Data::Dict>(afterAudit.partial->value());
+    ASSERT_EQ(dict.size(), 2u);  // renders (none yet) and models (one)
+    EXPECT_EQ(std::get<std::string>(dict[1].key.value()), "models");
+    EXPECT_EQ(std::get<Data::List>(dict[1].value.value()).size(), 1u);
+
+    in.resume = true;
+    const Interrupted afterRender = interruptAtSecondRender([&](const ProgressSink& progress) {
+        StabilityInputs run = in;
+        run.progress = progress;
+        runStability(run);
+    });
+    EXPECT_THAT(afterRender.kept, HasSubstr("model02_audit.json, "));
+    EXPECT_THAT(afterRender.kept, HasSubstr("scene01_tiny-bright-light.exr (the same command"));
+
+    std::string log;
+    in.progress = [&](const std::string& text) { log += text; };
+    const StabilityResult resumed = runStability(in);
+    EXPECT_THAT(log, HasSubstr(": kept from renders/model01_audit.json"));
+    EXPECT_THAT(log, HasSubstr(": kept from renders/model02_audit.json"));
+    EXPECT_THAT(log, HasSubstr(": kept from renders/scene01_tiny-bright-light.exr"));
+    EXPECT_THAT(log, HasSubstr("rendering " + in.scenes[1]));
+    expectSameStability(uninterrupted, resumed);
+
+    in.samples = 32;
+    EXPECT_THAT(refusal([&] { runStability(in); }),
+                HasSubstr("model01_audit.json: audited with samples=16, this run asks for "
+                          "samples=32: resume with the same options"));
+    in.samples = 16;
+    std::swap(in.materials[0], in.materials[1]);
+    EXPECT_THAT(refusal([&] { runStability(in); }),
+                HasSubstr("model01_audit.json: audited {\"type\":\"dielectric\",\"ior\":1.5}, "
+                          "this run asks for {\"type\":\"conductor\""));
 }
 
 // Another scene file: refused by its hash, before anything is rendered.

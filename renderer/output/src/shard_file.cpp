@@ -302,6 +302,9 @@ ShardFile readShardExr(const std::filesystem::path& path) {
             }
             addLayerSums(*shard.film, c.x0 + x, c.y0 + y, layerValues.data());
         }
+    if (const auto rejected = shard.metadata.ints.find("rejected_samples");
+        rejected != shard.metadata.ints.end() && rejected->second > 0)
+        shard.film->addRejectedSamples(std::uint64_t(rejected->second));
     return shard;
 }
 

@@ -7,16 +7,22 @@
 // With scenes, renders stiff scenes (tiny bright lights, near-smooth glass, grazing views,
 // high indices) and reports rejected samples and firefly statistics (the largest sample's
 // luminance over the image's mean).
+// With a report directory it keeps each finished audit and scene render in DIR/renders/
+// (stability_kept.h, kept_renders.h): interrupted, it stops at the next model or render and
+// `--resume` continues from what it kept.
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <string>
 #include <vector>
 
 #include "lamina/experiments/polarised_stability.h"
 #include "lamina/experiments/progress.h"
 #include "lamina/experiments/report.h"
+#include "lamina/experiments/result_data.h"
 #include "lamina/experiments/stability_audit.h"
+#include "lamina/render/renderer.h"
 
 namespace lamina::experiments {
 
@@ -32,6 +38,11 @@ struct StabilityInputs {
     std::vector<std::string> scenes;  ///< stiff scenes to render
     int spp = 64;                     ///< of the scene renders
     int samples = 4096;               ///< BSDF samples per (alpha, angle) cell
+    /// Of the scene renders: --threads, --max-depth and --resolution as given.
+    render::RenderOptions overrides;
+    /// Where the finished audits and renders are kept (DIR/renders/); empty: nowhere (Python).
+    std::filesystem::path keepDirectory;
+    bool resume = false;  ///< take back what keepDirectory holds instead of redoing it
     ProgressSink progress;
 };
 
@@ -59,7 +70,13 @@ struct StabilityResult {
     std::vector<StiffSceneRender> scenes;
 };
 
+/// Interrupted (interrupted.h) between models and renders, carrying as `partial` the models
+/// audited so far ({"models": [auditedModelData...], "renders": [...]}).
 StabilityResult runStability(const StabilityInputs& inputs);
+
+/// One audited model as data: material, alphas, cosines, issues and worst_float_error over
+/// (alpha, cos theta), the totals, and the polarised probes' totals.
+Data auditedModelData(const AuditedModel& model);
 
 /// Per model modelN_issues.png and modelN_float_error.png; the summary.
 void writeStabilityReport(const StabilityResult& result, Report& report);

@@ -167,6 +167,9 @@ class Film {
     }
 
     std::uint64_t rejectedSamples() const { return rejected_.load(); }
+    /// Counts `n` samples rejected elsewhere: a film read back from a shard file takes its count
+    /// from the file's metadata.
+    void addRejectedSamples(std::uint64_t n) { rejected_.fetch_add(n); }
     /// The largest luminance (Y) of any camera sample added (fireflies).
     double largestSampleLuminance() const;
 
