@@ -4,8 +4,9 @@
 //   nowhere near the sphere it fills until the transform is applied) renders the image of the
 //   homogeneous medium of the same coefficients; so does a constant rgbgrid, in RGB and spectral
 //   mode (per-cell unbounded spectra); and a Mitsuba 3 heterogeneous medium whose sigma_t is a
-//   constant .vol grid placed by to_world. Blockwise Welch t-tests of 32 batches (4x4-pixel
-//   blocks, alpha 0.01: at most 3% of the blocks reject, the means' p >= 0.0027 and within 1%);
+//   constant .vol grid placed by to_world. Blockwise Welch t-tests of 32 batches (2x2-pixel
+//   blocks of a 32 x 32 image, alpha 0.01: at most 3% of the blocks reject, the means' p >=
+//   0.0027 and within 1%);
 // - a uniformgrid slab whose density varies along its normal, imported, transmits
 //   exp(-sigma_t integral of the density) (z-test at two-sided 0.001 per channel), the integral
 //   taken over pbrt-v4's profile, which fades to 0 over the outer half cells (SampledGrid);
@@ -43,7 +44,7 @@ constexpr const char* kDye =
 std::string pbrtSphere(const std::string& medium) {
     return std::string(R"(LookAt 0 1 -4  0 0.4 0  0 1 0
 Camera "perspective" "float fov" 40
-Film "rgb" "integer xresolution" 16 "integer yresolution" 16
+Film "rgb" "integer xresolution" 32 "integer yresolution" 32
 Sampler "independent" "integer pixelsamples" 16
 Integrator "volpath" "integer maxdepth" 100
 PixelFilter "box"
@@ -82,12 +83,12 @@ class GridMediaImport : public testing::ScratchDirectoryTest {
         RenderOptions o;
         o.mode = mode;
         o.seed = 1;
-        const BatchImages ia = renderBatches(sa, o, 512, 32);
+        const BatchImages ia = renderBatches(sa, o, 256, 32);
         o.seed = 7919;
-        const BatchImages ib = renderBatches(sb, o, 512, 32);
+        const BatchImages ib = renderBatches(sb, o, 256, 32);
         AgreementTest test;
         test.alpha = 0.01;
-        test.blockSize = 4;
+        test.blockSize = 2;
         const AgreementResult r = testAgreement(ia, ib, test);
         std::printf("  blocks %.2f%% rejected; mean rel. diff %+.4f +- %.4f (p %.3f)\n",
                     100 * r.blockRejectionRate(), r.relativeDifference, r.standardError,
@@ -141,7 +142,7 @@ std::string mitsubaSphere(const std::string& medium) {
     return R"(<scene version="3.0.0">
   <sensor type="perspective"><float name="fov" value="40"/>
     <transform name="to_world"><lookat origin="0, 1, -4" target="0, 0.4, 0" up="0, 1, 0"/></transform>
-    <film type="hdrfilm"><integer name="width" value="16"/><integer name="height" value="16"/>
+    <film type="hdrfilm"><integer name="width" value="32"/><integer name="height" value="32"/>
       <rfilter type="box"/></film>
     <sampler type="independent"><integer name="sample_count" value="16"/></sampler>
   </sensor>
@@ -259,7 +260,7 @@ TEST_F(GridMediaImport, RefusedAndApproximatedConstructsSayWhy) {
         return errorOf([&] { importScene(f, dir_); });
     };
     EXPECT_NE(pbrtError(R"("string type" "cloud" "float density" 2)")
-                  .find("r.pbrt:10: MakeNamedMedium \"dye\": \"cloud\" is not translated: its "
+                  .find("r.pbrt:11: MakeNamedMedium \"dye\": \"cloud\" is not translated: its "
                         "density is pbrt-v4's own procedural noise"),
               std::string::npos);
     EXPECT_NE(pbrtError(R"("string type" "uniformgrid" "float density" [1]

@@ -90,8 +90,8 @@ TEST_F(GridFiles, ThreeChannelVolumeReadsBack) {
     ASSERT_EQ(m.grid.channels, 3);
     // Cell (1, 0, 1) is cell 5; its channels follow each other.
     const ColourGrid g = ColourGrid::fromGrid(m.grid, Rgb<double>(1.0, 2.0, 0.5));
-    EXPECT_EQ(g.rgb[5], Rgb<float>(50.0f, 102.0f, 51.0f));
-    EXPECT_EQ(g.lookupRgb(Vec3f(0.75f, 0.25f, 0.75f)), Rgb<float>(50.0f, 102.0f, 51.0f));
+    EXPECT_EQ(g.rgb[5], Rgb<float>(50.0f, 102.0f, 26.0f));
+    EXPECT_EQ(g.lookupRgb(Vec3f(0.75f, 0.25f, 0.75f)), Rgb<float>(50.0f, 102.0f, 26.0f));
 }
 
 TEST_F(GridFiles, HostileVolumesAreRefused) {
@@ -171,10 +171,12 @@ TEST(ColourGrids, BoundsAreAboveEveryWavelength) {
 
 #ifdef LAMINA_HAS_NANOVDB
 
-/// A NanoVDB float grid "density" (and "other") with voxel size 0.5 and origin (1, 2, 3):
-/// voxel (i, j, k)'s centre is at (1 + i / 2, 2 + j / 2, 3 + k / 2). Values 1 + i + 10 j + 100 k
-/// over i in [-2, 5], j in [0, 3], k in [7, 9] (a box across leaf nodes: i < 0).
-std::filesystem::path writeNanoVdb(const std::filesystem::path& path) {
+/// A NanoVDB float grid "density" with voxel size 0.5 and origin (1, 2, 3): voxel (i, j, k)'s
+/// centre is at (1 + i / 2, 2 + j / 2, 3 + k / 2). Values 1 + i + 10 j + 100 k over i in
+/// [-2, 5], j in [0, 3], k in [7, 9] (a box across leaf nodes: i < 0). `childOffsetAt`
+/// receives where in the file the root's first child tile keeps its node's offset.
+std::filesystem::path writeNanoVdb(const std::filesystem::path& path,
+                                   std::size_t* childOffsetAt = nullptr) {
     nanovdb::GridBuilder<float> builder(0.0f, nanovdb::GridClass::FogVolume);
     auto acc = builder.getAccessor();
     for (int k = 7; k <= 9; ++k)
@@ -183,6 +185,16 @@ std::filesystem::path writeNanoVdb(const std::filesystem::path& path) {
                 acc.setValue(nanovdb::Coord(i, j, k), float(1 + i + 10 * j + 100 * k));
     auto handle = builder.getHandle<>(0.5, nanovdb::Vec3d(1, 2, 3), "density");
     nanovdb::io::writeGrid(path.string(), handle);
+    if (childOffsetAt) {
+        const auto* root = handle.grid<float>()->tree().root().data();
+        const auto* tile = root->tile(0);
+        for (std::uint32_t t = 0; !tile->isChild(); )
+            tile = root->tile(++t);
+        // One grid: the file is its segment's headers, then the grid's buffer.
+        *childOffsetAt = std::size_t(std::filesystem::file_size(path)) - handle.size() +
+                         std::size_t(reinterpret_cast<const char*>(&tile->child) -
+                                     reinterpret_cast<const char*>(handle.data()));
+    }
     return path;
 }
 
@@ -201,6 +213,7 @@ TEST_F(GridFiles, NanoVdbGridReadsBackAndPlacesItsVoxels) {
     // (2.5, 3, 7) in the file's space, (4.5, 3, 7) after the translation.
     const SceneDesc scene = testing::sceneFromText(
         R"({"camera": {"position": [0, 0, -5], "look_at": [0, 0, 0]},
+            "lights": [{"type": "point", "position": [0, 9, 0], "intensity": 1}],
             "media": {"smoke": {"type": "grid", "sigma_s": 1, "edges": "zero",
                                 "density": ")" +
         p.string() + R"(", "transform": [{"translate": [2, 0, 0]}]}},
@@ -216,7 +229,8 @@ TEST_F(GridFiles, NanoVdbGridReadsBackAndPlacesItsVoxels) {
 }
 
 TEST_F(GridFiles, DamagedNanoVdbFilesAreRefused) {
-    const auto p = writeNanoVdb(dir_ / "good.nvdb");
+    std::size_t childAt = 0;
+    const auto p = writeNanoVdb(dir_ / "good.nvdb", &childAt);
     std::ifstream in(p, std::ios::binary);
     const std::string good((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     // Every truncation within the headers and the root, then 200 lengths spread over the rest.
@@ -229,13 +243,30 @@ TEST_F(GridFiles, DamagedNanoVdbFilesAreRefused) {
         const auto t = write("t.nvdb", good.substr(0, n));
         EXPECT_NE(errorOf([&] { readNanoVdbFile(t, "density"); }), "(accepted)") << n << " bytes";
     }
-    // Random bytes overwritten, 100 times at fixed seeds: accepted or one line, never a crash.
+    // The root's child offset pointing far outside the file, back into the root, or off by 8:
+    // each refused, never followed.
+    for (const std::int64_t offset : {std::int64_t(1) << 40, std::int64_t(-64), std::int64_t(-1) << 40}) {
+        std::string bad = good;
+        std::memcpy(bad.data() + childAt, &offset, 8);
+        const auto t = write("c.nvdb", bad);
+        const std::string e = errorOf([&] { readNanoVdbFile(t, "density"); });
+        EXPECT_NE(e.find("node"), std::string::npos) << offset << ": " << e;
+    }
+    std::string shifted = good;
+    std::int64_t offset;
+    std::memcpy(&offset, shifted.data() + childAt, 8);
+    offset += 8;
+    std::memcpy(shifted.data() + childAt, &offset, 8);
+    EXPECT_NE(errorOf([&] { readNanoVdbFile(write("s.nvdb", shifted), "density"); }).find("node"),
+              std::string::npos);
+    // Random bytes of the headers, the grid's and tree's data and the root overwritten, 100
+    // times at fixed seeds: accepted or one line, never a crash.
     std::mt19937 rng(5);
     int refusedCount = 0;
     for (int trial = 0; trial < 100; ++trial) {
         std::string bad = good;
         for (int k = 0; k < 4; ++k)
-            bad[rng() % bad.size()] = char(rng());
+            bad[rng() % std::min<std::size_t>(bad.size(), childAt + 256)] = char(rng());
         const auto t = write("d.nvdb", bad);
         const std::string e = errorOf([&] { readNanoVdbFile(t, "density"); });
         EXPECT_EQ(e.find('\n'), std::string::npos) << e;

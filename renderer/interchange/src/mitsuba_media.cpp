@@ -162,6 +162,8 @@ Json translateHeterogeneous(Translation& t, Plugin& p) {
         }
     }
     p.objects("volume");  // read above
+    // A sigma_t grid is the density: sigma_t is 1 per unit of it.
+    if (grid) constants["sigma_t"] = 1.0;
     Json medium = translateHomogeneous(p, constants);
     if (!grid) return medium;  // constant volumes: the homogeneous medium
     medium["type"] = "grid";
