@@ -27,7 +27,8 @@ std::string validNanoVdb() {
             for (int i = 6; i < 10; ++i)
                 acc.setValue(nanovdb::Coord(i, j, k), float(i + j + k) + 0.5f);
     const auto handle = builder.getHandle<>(0.25, nanovdb::Vec3d(1, 0, -1), "density");
-    const std::string path = (std::filesystem::temp_directory_path() / "lamina-fuzz-seed.nvdb").string();
+    const std::string path =
+        (std::filesystem::temp_directory_path() / "lamina-fuzz-seed.nvdb").string();
     nanovdb::io::writeGrid(path, handle);
     std::ifstream in(path, std::ios::binary);
     std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

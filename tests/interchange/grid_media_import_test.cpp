@@ -105,7 +105,8 @@ TEST_F(GridMediaImport, ConstantUniformGridUnderATransformRendersTheHomogeneousM
         pbrtSphere(std::string(R"("string type" "homogeneous" )") + kDye),
         pbrtSphere(std::string(R"("string type" "uniformgrid" "integer nx" 2 "integer ny" 2
             "integer nz" 2 "float density" [1 1 1 1 1 1 1 1] "point3 p0" [3 -2 -2]
-            "point3 p1" [7 2 2] )") + kDye),
+            "point3 p1" [7 2 2] )") +
+                   kDye),
         ".pbrt");
 }
 
@@ -120,7 +121,8 @@ TEST_P(RgbGridImport, ConstantRgbGridRendersTheHomogeneousMedium) {
     }
     expectSameImage(pbrtSphere(std::string(R"("string type" "homogeneous" )") + kDye),
                     pbrtSphere(R"("string type" "rgbgrid" "integer nx" 2 "integer ny" 2
-            "integer nz" 2 "rgb sigma_a" [)" + a + R"(] "rgb sigma_s" [)" + s +
+            "integer nz" 2 "rgb sigma_a" [)" +
+                               a + R"(] "rgb sigma_s" [)" + s +
                                R"(] "point3 p0" [3 -2 -2] "point3 p1" [7 2 2] "float g" 0.5)"),
                     ".pbrt", GetParam());
 }
@@ -147,7 +149,8 @@ std::string mitsubaSphere(const std::string& medium) {
     <sampler type="independent"><integer name="sample_count" value="16"/></sampler>
   </sensor>
   <integrator type="volpath"><integer name="max_depth" value="101"/></integrator>
-  )" + medium + R"(
+  )" + medium +
+           R"(
   <shape type="rectangle">
     <transform name="to_world"><scale value="0.75"/><rotate x="1" angle="90"/>
       <translate x="0.5" y="3"/></transform>
@@ -177,17 +180,16 @@ TEST_F(GridMediaImport, ConstantGridVolumeUnderToWorldRendersTheHomogeneousMediu
     const std::string phase = R"(<phase type="hg"><float name="g" value="0.3"/></phase>)";
     const std::string albedo = R"(<rgb name="albedo" value="0.9, 0.5, 0.2"/>)";
     // The unit cube scaled by 4, rotated, and moved so that it holds the sphere.
-    expectSameImage(
-        mitsubaSphere(R"(<medium type="homogeneous" id="dye">)" + albedo +
-                      R"(<float name="sigma_t" value="2"/>)" + phase + "</medium>"),
-        mitsubaSphere(R"(<medium type="heterogeneous" id="dye">)" + albedo + phase +
-                      R"(<volume type="gridvolume" name="sigma_t">
+    expectSameImage(mitsubaSphere(R"(<medium type="homogeneous" id="dye">)" + albedo +
+                                  R"(<float name="sigma_t" value="2"/>)" + phase + "</medium>"),
+                    mitsubaSphere(R"(<medium type="heterogeneous" id="dye">)" + albedo + phase +
+                                  R"(<volume type="gridvolume" name="sigma_t">
                            <string name="filename" value="sigma_t.vol"/>
                            <transform name="to_world"><translate x="-0.5" y="-0.5" z="-0.5"/>
                              <scale value="4"/><rotate y="1" angle="30"/>
                              <translate y="0.5"/></transform>
                          </volume></medium>)"),
-        ".xml");
+                    ".xml");
 }
 
 // A slab 1.5 thick between two interfaces, seen along its normal (z) in front of an emitter,
@@ -221,7 +223,8 @@ TEST_F(GridMediaImport, ImportedSlabFollowsBeerLambert) {
 Camera "orthographic"
 WorldBegin
 MakeNamedMedium "slab" "string type" "uniformgrid" "integer nx" 4 "integer ny" 4
-    "integer nz" 4 "float density" [)" + density + R"(] "point3 p0" [-3 -3 0]
+    "integer nz" 4 "float density" [)" + density +
+                                             R"(] "point3 p0" [-3 -3 0]
     "point3 p1" [3 3 1.5] "rgb sigma_a" [0.2 0.7 1.5] "rgb sigma_s" [0 0 0]
 AttributeBegin
   MediumInterface "slab" ""
@@ -233,8 +236,8 @@ AttributeEnd
     const Json medium = imported.scene.at("media").at("slab");
     EXPECT_EQ(medium.at("edges"), "zero");
     const SceneDesc slab = testing::sceneFromText(slabScene(medium));
-    const SceneDesc vacuum = testing::sceneFromText(slabScene(
-        Json{{"type", "homogeneous"}, {"sigma_a", 0}}));
+    const SceneDesc vacuum =
+        testing::sceneFromText(slabScene(Json{{"type", "homogeneous"}, {"sigma_a", 0}}));
     const testing::Rendered m = testing::renderMeans(slab, RenderModeKind::Rgb, 256, 3);
     const testing::Rendered e = testing::renderMeans(vacuum, RenderModeKind::Rgb, 64, 4);
     // The integral of pbrt-v4's profile over [0, L], L = 1.5, cells of h = L / 4: the half
@@ -285,9 +288,7 @@ TEST_F(GridMediaImport, RefusedAndApproximatedConstructsSayWhy) {
         warned = warned || w.find("a \"temperature\" grid in the file") != std::string::npos;
     EXPECT_TRUE(warned);
     EXPECT_EQ(nano.scene.at("media").at("dye").at("density"), "smoke.nvdb");
-    const auto mitsuba = write(
-        "m.xml",
-        mitsubaSphere(R"(<medium type="heterogeneous" id="dye">
+    const auto mitsuba = write("m.xml", mitsubaSphere(R"(<medium type="heterogeneous" id="dye">
           <volume type="gridvolume" name="albedo"><string name="filename" value="a.vol"/></volume>
         </medium>)"));
     write("a.vol", "stand-in");

@@ -132,11 +132,13 @@ TEST(ColourGrids, SpectralLookupIsTheCellsUnboundedSpectrum) {
         float out = 0;
         // The first cell's centre (x = 1/4): its own spectrum alone.
         c.lookupSpectral(Vec3f(0.25f, 0.5f, 0.5f), &nm, 1, &out);
-        const double expected = RgbSpectrum(Rgb<double>(0.2, 0.9, 0.1), RgbSpectrumKind::Unbounded)(nm);
+        const double expected =
+            RgbSpectrum(Rgb<double>(0.2, 0.9, 0.1), RgbSpectrumKind::Unbounded)(nm);
         EXPECT_NEAR(out, expected, 1e-4 * expected + 1e-6) << nm << " nm";
         // Halfway between the centres: the average of the two spectra.
         c.lookupSpectral(Vec3f(0.5f, 0.5f, 0.5f), &nm, 1, &out);
-        const double other = RgbSpectrum(Rgb<double>(3.0, 1.0, 0.5), RgbSpectrumKind::Unbounded)(nm);
+        const double other =
+            RgbSpectrum(Rgb<double>(3.0, 1.0, 0.5), RgbSpectrumKind::Unbounded)(nm);
         EXPECT_NEAR(out, 0.5 * (expected + other), 1e-4 * other) << nm << " nm";
     }
     const Rgb<float> mid = c.lookupRgb(Vec3f(0.5f, 0.1f, 0.9f));
@@ -188,7 +190,7 @@ std::filesystem::path writeNanoVdb(const std::filesystem::path& path,
     if (childOffsetAt) {
         const auto* root = handle.grid<float>()->tree().root().data();
         const auto* tile = root->tile(0);
-        for (std::uint32_t t = 0; !tile->isChild(); )
+        for (std::uint32_t t = 0; !tile->isChild();)
             tile = root->tile(++t);
         // One grid: the file is its segment's headers, then the grid's buffer.
         *childOffsetAt = std::size_t(std::filesystem::file_size(path)) - handle.size() +
@@ -245,7 +247,8 @@ TEST_F(GridFiles, DamagedNanoVdbFilesAreRefused) {
     }
     // The root's child offset pointing far outside the file, back into the root, or off by 8:
     // each refused, never followed.
-    for (const std::int64_t offset : {std::int64_t(1) << 40, std::int64_t(-64), std::int64_t(-1) << 40}) {
+    for (const std::int64_t offset :
+         {std::int64_t(1) << 40, std::int64_t(-64), std::int64_t(-1) << 40}) {
         std::string bad = good;
         std::memcpy(bad.data() + childAt, &offset, 8);
         const auto t = write("c.nvdb", bad);

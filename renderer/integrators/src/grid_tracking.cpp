@@ -6,8 +6,8 @@
 #include "lamina/core/hash.h"
 #include "lamina/core/pcg32.h"
 #include "lamina/integrators/majorant_walk.h"
-#include "lamina/scene/colour_grid.h"
 #include "lamina/integrators/medium_transport.h"
+#include "lamina/scene/colour_grid.h"
 
 namespace lamina::render {
 

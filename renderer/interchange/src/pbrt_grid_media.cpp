@@ -17,9 +17,9 @@ Json gridSize(const ParamList& params, const Param& values, std::size_t count) {
     for (const int v : n)
         if (v < 1) params.fail(values, "nx, ny and nz must be >= 1");
     if (std::size_t(n[0]) * std::size_t(n[1]) * std::size_t(n[2]) != count)
-        params.fail(values, "has " + std::to_string(count) + " values; expected nx * ny * nz = " +
-                                std::to_string(std::size_t(n[0]) * std::size_t(n[1]) *
-                                               std::size_t(n[2])));
+        params.fail(values,
+                    "has " + std::to_string(count) + " values; expected nx * ny * nz = " +
+                        std::to_string(std::size_t(n[0]) * std::size_t(n[1]) * std::size_t(n[2])));
     return Json::array({n[0], n[1], n[2]});
 }
 
@@ -53,7 +53,9 @@ void place(const Entity& e, Json& medium) {
         medium["transform"] = Json::array({Json{{"matrix", rowMajor(e.transform)}}});
 }
 
-std::string named(const MediumDef& m) { return "MakeNamedMedium \"" + m.name + "\": "; }
+std::string named(const MediumDef& m) {
+    return "MakeNamedMedium \"" + m.name + "\": ";
+}
 
 Json uniformGrid(TranslationContext& ctx, const MediumDef& m) {
     const ParamList& params = m.entity.params;
@@ -84,8 +86,9 @@ Json uniformGrid(TranslationContext& ctx, const MediumDef& m) {
             gridSize(params, *s, v.size());
             for (const double x : v)
                 if (x != v[0])
-                    params.fail(*s, "varies in space: an emission grid apart from the density is "
-                                    "not translated (lamina's grid media emit sigma_a Le)");
+                    params.fail(*s,
+                                "varies in space: an emission grid apart from the density is "
+                                "not translated (lamina's grid media emit sigma_a Le)");
             scale = v.empty() ? 1.0 : v[0];
         }
         if (scale > 0) medium["Le"] = emissionValue(ctx, params, "Le", scale);
@@ -114,8 +117,9 @@ Json rgbGrid(TranslationContext& ctx, const MediumDef& m) {
             {"values", v}};
     }
     if (!any)
-        ctx.fail(m.entity.location, named(m) + "an rgbgrid needs \"rgb sigma_a\" and/or "
-                                                "\"rgb sigma_s\" values (as pbrt-v4)");
+        ctx.fail(m.entity.location, named(m) +
+                                        "an rgbgrid needs \"rgb sigma_a\" and/or "
+                                        "\"rgb sigma_s\" values (as pbrt-v4)");
     mediumScaleAndPhase(params, medium);
     if (const Param* le = params.find("Le")) {
         const std::vector<double> v = gridValues(params, "Le", "rgb", 3);
@@ -123,8 +127,9 @@ Json rgbGrid(TranslationContext& ctx, const MediumDef& m) {
         for (const double x : v)
             dark = dark && x == 0;
         if (!dark || params.number("Lescale", 1.0) < 0)
-            params.fail(*le, "an emission grid (rgb Le per cell) is not translated: lamina's grid "
-                             "media emit sigma_a Le with one Le");
+            params.fail(*le,
+                        "an emission grid (rgb Le per cell) is not translated: lamina's grid "
+                        "media emit sigma_a Le with one Le");
     }
     params.number("Lescale", 1.0);
     place(m.entity, medium);
@@ -147,9 +152,10 @@ Json nanoVdb(TranslationContext& ctx, const MediumDef& m) {
     params.number("temperaturescale", 1.0);
     if (leScale > 0)
         ctx.warn(m.entity.location,
-                 named(m) + "a \"temperature\" grid in the file, if it has one, is not rendered "
-                            "(pbrt-v4 makes it glow as a blackbody; lamina reads the density "
-                            "grid only)");
+                 named(m) +
+                     "a \"temperature\" grid in the file, if it has one, is not rendered "
+                     "(pbrt-v4 makes it glow as a blackbody; lamina reads the density "
+                     "grid only)");
     place(m.entity, medium);
     return medium;
 }
@@ -167,9 +173,11 @@ Json translateGridMedium(TranslationContext& ctx, const MediumDef& m) {
         medium = nanoVdb(ctx, m);
     else if (e.type == "cloud")
         ctx.fail(e.location,
-                 named(m) + "\"cloud\" is not translated: its density is pbrt-v4's own "
-                            "procedural noise, which pbrt-v4's documentation does not define, so "
-                            "lamina cannot sample it onto a grid faithfully");
+                 named(m) +
+                     "\"cloud\" is not translated: its density is pbrt-v4's own "
+                     "procedural noise (its Perlin noise and tables), which the file format "
+                     "leaves to pbrt-v4's source, so lamina cannot sample the same cloud onto "
+                     "a grid");
     else
         ctx.fail(e.location, named(m) + "\"" + e.type +
                                  "\" media are not supported (homogeneous, uniformgrid, rgbgrid, "

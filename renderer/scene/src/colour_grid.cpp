@@ -38,9 +38,10 @@ ColourGrid ColourGrid::fromGrid(const DensityGrid& g, const Rgb<double>& factor)
     c.rgb.resize(g.count());
     for (std::size_t i = 0; i < c.rgb.size(); ++i)
         for (int ch = 0; ch < 3; ++ch)
-            c.rgb[i][ch] = float(double(g.values[i * std::size_t(g.channels) +
-                                                 std::size_t(g.channels == 3 ? ch : 0)]) *
-                                 factor[ch]);
+            c.rgb[i][ch] = float(
+                double(
+                    g.values[i * std::size_t(g.channels) + std::size_t(g.channels == 3 ? ch : 0)]) *
+                factor[ch]);
     c.finish();
     return c;
 }
@@ -73,7 +74,8 @@ Rgb<float> ColourGrid::lookupRgb(Vec3f u) const {
     const TrilinearCorners c = trilinearCorners(u, nx, ny, nz, zeroOutside);
     Rgb<float> out(0.0f);
     for (int k = 0; k < 8; ++k)
-        if (c.index[k] >= 0 && c.weight[k] > 0.0f) out += rgb[std::size_t(c.index[k])] * c.weight[k];
+        if (c.index[k] >= 0 && c.weight[k] > 0.0f)
+            out += rgb[std::size_t(c.index[k])] * c.weight[k];
     return out;
 }
 

@@ -50,8 +50,8 @@ TrilinearCorners trilinearCorners(Vec3f u, int nx, int ny, int nz, bool zeroOuts
         const int i = k & 1 ? x.i1 : x.i0, j = k & 2 ? y.i1 : y.i0, l = k & 4 ? z.i1 : z.i0;
         const bool inside = i >= 0 && i < nx && j >= 0 && j < ny && l >= 0 && l < nz;
         c.index[k] = inside ? long(i) + long(nx) * (long(j) + long(ny) * long(l)) : -1;
-        c.weight[k] = (k & 1 ? x.f : 1.0f - x.f) * (k & 2 ? y.f : 1.0f - y.f) *
-                      (k & 4 ? z.f : 1.0f - z.f);
+        c.weight[k] =
+            (k & 1 ? x.f : 1.0f - x.f) * (k & 2 ? y.f : 1.0f - y.f) * (k & 4 ? z.f : 1.0f - z.f);
     }
     return c;
 }
@@ -67,7 +67,9 @@ float DensityGrid::lookup(Vec3f u) const {
         const auto lerp = [](float a, float b, float f) {
             return std::clamp((1.0f - f) * a + f * b, std::min(a, b), std::max(a, b));
         };
-        const auto row = [&](int j, int k) { return lerp(value(x.i0, j, k), value(x.i1, j, k), x.f); };
+        const auto row = [&](int j, int k) {
+            return lerp(value(x.i0, j, k), value(x.i1, j, k), x.f);
+        };
         const auto plane = [&](int k) { return lerp(row(y.i0, k), row(y.i1, k), y.f); };
         return lerp(plane(z.i0), plane(z.i1), z.f);
     }

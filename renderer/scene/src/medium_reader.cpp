@@ -6,8 +6,8 @@
 #include "lamina/core/json_reader.h"
 #include "lamina/scene/colour_grid.h"
 #include "lamina/scene/grid_file.h"
-#include "lamina/scene/volume_files.h"
 #include "lamina/scene/scene_readers.h"
+#include "lamina/scene/volume_files.h"
 
 namespace lamina::render {
 
@@ -62,8 +62,9 @@ void placeGrid(const JsonReader& r, GridDensity& grid, const Mat4& mediumToWorld
         for (int col = 0; col < 4; ++col) {
             const double v = inverse[col][row];  // glm is column-major
             if (!std::isfinite(float(v)))
-                r.failAt("transform", "cannot be inverted in float: expected a transform that "
-                                      "places the grid at a finite, non-zero size");
+                r.failAt("transform",
+                         "cannot be inverted in float: expected a transform that "
+                         "places the grid at a finite, non-zero size");
             grid.worldToMedium[row][col] = float(v);
         }
     grid.transformed = true;
@@ -72,13 +73,14 @@ void placeGrid(const JsonReader& r, GridDensity& grid, const Mat4& mediumToWorld
 // A grid medium: its grids (docs/media.md, "Grid media"), box, edges and transform, with its
 // majorants. `m`'s coefficients multiply a density grid; with per-cell colour grids they are
 // folded into the cells' values.
-std::shared_ptr<const GridDensity> readGrid(const JsonReader& r, MediumDesc& m,
-                                            bool hasSigmaA, bool hasSigmaS) {
+std::shared_ptr<const GridDensity> readGrid(const JsonReader& r, MediumDesc& m, bool hasSigmaA,
+                                            bool hasSigmaS) {
     auto grid = std::make_shared<GridDensity>();
     const bool colourKeys = r.has("sigma_a_grid") || r.has("sigma_s_grid");
     if (colourKeys && r.has("density"))
-        r.failAt("density", "a grid medium has a density grid or sigma_a_grid / sigma_s_grid, "
-                            "not both");
+        r.failAt("density",
+                 "a grid medium has a density grid or sigma_a_grid / sigma_s_grid, "
+                 "not both");
     if (!colourKeys && !r.has("density"))
         r.failAt("density",
                  "missing; expected a grid file's name or {\"size\": [nx, ny, nz], "
@@ -120,9 +122,9 @@ std::shared_ptr<const GridDensity> readGrid(const JsonReader& r, MediumDesc& m,
         for (const float v : grid->majorants.maxima)
             largest = std::max(largest, v);
         if (!std::isfinite(largest))
-            r.failAt(colourKeys ? (r.has("sigma_a_grid") ? "sigma_a_grid" : "sigma_s_grid")
-                                : "density",
-                     "the largest sigma_a + sigma_s is beyond float: expected smaller values");
+            r.failAt(
+                colourKeys ? (r.has("sigma_a_grid") ? "sigma_a_grid" : "sigma_s_grid") : "density",
+                "the largest sigma_a + sigma_s is beyond float: expected smaller values");
         grid->colours = std::move(colours);
         grid->density = DensityGrid{};
         grid->density.values = {0.0f};

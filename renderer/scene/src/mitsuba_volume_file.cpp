@@ -44,9 +44,11 @@ MitsubaVolume readMitsubaVolume(const std::filesystem::path& path) {
         throw InputError(name + ": expected a Mitsuba volume: a 48-byte header, got " +
                          std::to_string(bytes) + " bytes");
     if (std::memcmp(h, "VOL", 3) != 0 || h[3] != 3)
-        throw InputError(name + ": expected a Mitsuba volume: the bytes 'V', 'O', 'L', 3 (version 3)");
+        throw InputError(name +
+                         ": expected a Mitsuba volume: the bytes 'V', 'O', 'L', 3 (version 3)");
     if (littleEndian32(h + 4) != 1)
-        throw InputError(name + ": encoding " + std::to_string(std::int32_t(littleEndian32(h + 4))) +
+        throw InputError(name + ": encoding " +
+                         std::to_string(std::int32_t(littleEndian32(h + 4))) +
                          ": expected 1 (float32), the only encoding Mitsuba 3 reads");
     std::int64_t n[3];
     for (int a = 0; a < 3; ++a) {
@@ -87,13 +89,14 @@ MitsubaVolume readMitsubaVolume(const std::filesystem::path& path) {
         const float value = littleEndianFloat(raw.data() + 4 * i);
         if (!(value >= 0.0f) || !std::isfinite(value)) {
             const std::size_t cell = i / std::size_t(channels);
-            throw InputError(name + ": value " + std::to_string(i) + " (x " +
-                             std::to_string(cell % std::size_t(n[0])) + ", y " +
-                             std::to_string(cell / std::size_t(n[0]) % std::size_t(n[1])) +
-                             ", z " + std::to_string(cell / std::size_t(n[0] * n[1])) +
-                             ", channel " + std::to_string(i % std::size_t(channels)) + ") is " +
-                             (std::isnan(value) ? std::string("NaN") : formatNumber(double(value))) +
-                             ": expected a finite value >= 0");
+            throw InputError(
+                name + ": value " + std::to_string(i) + " (x " +
+                std::to_string(cell % std::size_t(n[0])) + ", y " +
+                std::to_string(cell / std::size_t(n[0]) % std::size_t(n[1])) + ", z " +
+                std::to_string(cell / std::size_t(n[0] * n[1])) + ", channel " +
+                std::to_string(i % std::size_t(channels)) + ") is " +
+                (std::isnan(value) ? std::string("NaN") : formatNumber(double(value))) +
+                ": expected a finite value >= 0");
         }
         v.grid.values[i] = value;
     }

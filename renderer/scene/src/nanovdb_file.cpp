@@ -46,7 +46,9 @@ bool isNanoVdbFile(const std::filesystem::path& path) {
 
 #ifndef LAMINA_HAS_NANOVDB
 
-bool readsNanoVdb() { return false; }
+bool readsNanoVdb() {
+    return false;
+}
 
 NanoVdbGrid readNanoVdbFile(const std::filesystem::path& path, const std::string&) {
     throw InputError(path.string() +
@@ -56,7 +58,9 @@ NanoVdbGrid readNanoVdbFile(const std::filesystem::path& path, const std::string
 
 #else
 
-bool readsNanoVdb() { return true; }
+bool readsNanoVdb() {
+    return true;
+}
 
 namespace {
 
@@ -189,8 +193,9 @@ NanoVdbGrid readNanoVdbFile(const std::filesystem::path& path, const std::string
                              std::to_string(NANOVDB_MAJOR_VERSION_NUMBER) +
                              ".x (convert it with NanoVDB's tools of that version)");
         if (header.codec != nanovdb::io::Codec::NONE)
-            throw InputError(file + ": the grids are compressed (zip or blosc); lamina reads "
-                                    "uncompressed NanoVDB files (convert it with nanovdb_convert)");
+            throw InputError(file +
+                             ": the grids are compressed (zip or blosc); lamina reads "
+                             "uncompressed NanoVDB files (convert it with nanovdb_convert)");
         std::vector<nanovdb::io::MetaData> metas(header.gridCount);
         std::vector<std::string> names(header.gridCount);
         for (std::size_t i = 0; i < metas.size(); ++i) {
@@ -215,8 +220,8 @@ NanoVdbGrid readNanoVdbFile(const std::filesystem::path& path, const std::string
             if (m.gridType != nanovdb::GridType::Float)
                 throw InputError(file + ": grid \"" + name + "\" is not a float grid");
             if (m.gridSize != m.fileSize || m.fileSize < sizeof(nanovdb::GridData) +
-                                                            sizeof(nanovdb::TreeData<3>) +
-                                                            sizeof(Root))
+                                                             sizeof(nanovdb::TreeData<3>) +
+                                                             sizeof(Root))
                 throw InputError(file + ": grid \"" + name + "\" has an inconsistent size");
             // NanoVDB's nodes want 32-byte alignment: a buffer of 32-byte blocks.
             std::vector<nanovdb::Vec4d> storage((m.fileSize + 31) / 32);
@@ -228,8 +233,8 @@ NanoVdbGrid readNanoVdbFile(const std::filesystem::path& path, const std::string
                 grid.gridType() != nanovdb::GridType::Float || grid.gridSize() != m.fileSize)
                 throw InputError(file + ": grid \"" + name + "\" has a damaged header");
             const auto& tree = grid.tree();
-            const Root& root = *childAt<Root>(b, &tree, std::int64_t(tree.data()->mNodeOffset[3]),
-                                              "root");
+            const Root& root =
+                *childAt<Root>(b, &tree, std::int64_t(tree.data()->mNodeOffset[3]), "root");
             const std::uint32_t tiles = root.tileCount();
             if (std::uint64_t(tiles) * sizeof(Root::Tile) >
                 b.size - std::size_t(reinterpret_cast<const char*>(&root) - b.begin) - sizeof(Root))
@@ -243,8 +248,10 @@ NanoVdbGrid readNanoVdbFile(const std::filesystem::path& path, const std::string
                 if (n[a] < 3 || n[a] > kMaxGridAxis)
                     throw InputError(file + ": grid \"" + name + "\" has " +
                                      (n[a] < 3 ? std::string("no active voxels")
-                                               : std::to_string(n[a]) + " voxels along an axis; at "
-                                                 "most " + std::to_string(kMaxGridAxis) + " are read"));
+                                               : std::to_string(n[a]) +
+                                                     " voxels along an axis; at "
+                                                     "most " +
+                                                     std::to_string(kMaxGridAxis) + " are read"));
             }
             if (std::uint64_t(n[0] * n[1] * n[2]) > kMaxGridValues)
                 throw InputError(file + ": grid \"" + name + "\" spans " +
@@ -266,16 +273,16 @@ NanoVdbGrid readNanoVdbFile(const std::filesystem::path& path, const std::string
                     continue;
                 }
                 const Upper& upper = *childAt<Upper>(b, rootData, tile.child, "upper");
-                readInternal<Upper, Lower>(
-                    b, upper, origin, d, "upper", "lower",
-                    [&](const Lower& lower, const nanovdb::Coord& o) {
-                        readInternal<Lower, Leaf>(b, lower, o, d, "lower", "leaf",
-                                                  [&](const Leaf& leaf, const nanovdb::Coord& lo) {
-                                                      if (leaf.origin() != lo)
-                                                          misplaced(file, "leaf");
-                                                      readLeaf(leaf, d);
-                                                  });
-                    });
+                readInternal<Upper, Lower>(b, upper, origin, d, "upper", "lower",
+                                           [&](const Lower& lower, const nanovdb::Coord& o) {
+                                               readInternal<Lower, Leaf>(
+                                                   b, lower, o, d, "lower", "leaf",
+                                                   [&](const Leaf& leaf, const nanovdb::Coord& lo) {
+                                                       if (leaf.origin() != lo)
+                                                           misplaced(file, "leaf");
+                                                       readLeaf(leaf, d);
+                                                   });
+                                           });
             }
             out.grid.nx = d.nx;
             out.grid.ny = d.ny;
