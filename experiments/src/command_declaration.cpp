@@ -148,7 +148,7 @@ const std::vector<CommandDecl>& commandDeclarations() {
     static const std::vector<CommandDecl> commands = {
         renderDeclaration(),      compareDeclaration(),     reciprocityDeclaration(),
         convergenceDeclaration(), fresnelDeclaration(),     stabilityDeclaration(),
-        layeringDeclaration(),    polarisationDeclaration()};
+        layeringDeclaration(),    polarisationDeclaration(), mediaDeclaration()};
     return commands;
 }
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "lamina/core/name_table.h"
+#include "lamina/image/image_io.h"
 #include "lamina/render/renderer.h"
 
 namespace lamina::experiments {
@@ -48,6 +49,17 @@ struct ReferenceFacts {
     /// none (empty: no variance channels).
     std::string noiseSource;
 };
+
+/// The reference in `path` (already read as `image`) with what the premises read of it: size,
+/// metadata, and the noise floor from its variance channels (Variance.R/G/B, else Variance.Y for
+/// every channel; none for a reference of one sample per pixel, whose channels hold no estimate).
+ReferenceFacts readReferenceFacts(const std::string& path, ReferenceSource source,
+                                  const render::RgbImage& image);
+
+/// The facts of a reference rendered by the experiment (`name` for messages): its noise from the
+/// film's own per-pixel variance of the mean.
+ReferenceFacts renderedReferenceFacts(const std::string& name, const render::Film& film,
+                                      const render::RgbImage& image);
 
 /// The checks that need no render, for the measured renders of `mode` with the integrators
 /// `integrators` and the options `measured` (the overrides of every measured render) on
