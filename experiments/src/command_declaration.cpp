@@ -146,8 +146,8 @@ const OptionDecl& CommandDecl::option(std::string_view optionName) const {
 
 const std::vector<CommandDecl>& commandDeclarations() {
     static const std::vector<CommandDecl> commands = {
-        renderDeclaration(),      compareDeclaration(),     reciprocityDeclaration(),
-        convergenceDeclaration(), fresnelDeclaration(),     stabilityDeclaration(),
+        renderDeclaration(),      compareDeclaration(),      reciprocityDeclaration(),
+        convergenceDeclaration(), fresnelDeclaration(),      stabilityDeclaration(),
         layeringDeclaration(),    polarisationDeclaration(), mediaDeclaration()};
     return commands;
 }

@@ -119,7 +119,8 @@ double referenceNoiseFloor(const std::vector<float>& reference,
     return n ? sum / double(n) : NAN;
 }
 
-Premise noisePremise(const ReferenceFacts& reference, double smallestFinalRelMse, bool allowNoisy) {
+Premise noisePremise(const ReferenceFacts& reference, double smallestFinalRelMse, bool allowNoisy,
+                     const NoiseConsequence& consequence) {
     if (!reference.noiseFloor || !std::isfinite(*reference.noiseFloor))
         return {"reference noise", PremiseOutcome::NotChecked,
                 !reference.noiseSource.empty()
@@ -144,18 +145,20 @@ Premise noisePremise(const ReferenceFacts& reference, double smallestFinalRelMse
         return {"reference noise", PremiseOutcome::Holds,
                 measured + formatText(" (at most %.0f%%)", 100 * kMaxReferenceNoiseShare)};
     const std::string flattens =
-        share < 1 ? formatText(
-                        "; above %.0f%% it flattens the slopes (to about %.2f at the "
-                        "end of the run)",
-                        100 * kMaxReferenceNoiseShare, -(1 - share))
-                  : std::string("; the runs' errors are the reference's noise (slopes near 0)");
+        !consequence.flattensSlopes ? formatText("; above %.0f%% %s", 100 * kMaxReferenceNoiseShare,
+                                                 consequence.otherwise.c_str())
+        : share < 1                 ? formatText(
+                                          "; above %.0f%% it flattens the slopes (to about %.2f at the "
+                                                          "end of the run)",
+                                          100 * kMaxReferenceNoiseShare, -(1 - share))
+                    : std::string("; the runs' errors are the reference's noise (slopes near 0)");
     if (reference.source == ReferenceSource::Given && !allowNoisy)
         return {
             "reference noise", PremiseOutcome::Refused,
             measured + flattens + ": render a longer reference or pass --allow-noisy-reference"};
     const std::string why = reference.source == ReferenceSource::Given
                                 ? " (allowed by --allow-noisy-reference)"
-                                : ": a longer --reference-time makes a quieter reference";
+                                : ": " + consequence.quieter;
     return {"reference noise", PremiseOutcome::Flagged, measured + flattens + why};
 }
 

@@ -103,8 +103,8 @@ MediaSceneResult measureScene(const MediaInputs& in, const std::string& file,
     const std::uint64_t seed = o.seed.value_or(scene.settings.seed);
     const std::uint64_t seed2 = hashValues({seed, kSecondSeed});
     using render::RenderModeKind;
-    render::RenderResult spectral = renderIn(RenderModeKind::Spectral, false, seed, "spectral",
-                                             "in spectral mode");
+    render::RenderResult spectral =
+        renderIn(RenderModeKind::Spectral, false, seed, "spectral", "in spectral mode");
     r.rgb = renderIn(RenderModeKind::Rgb, false, seed, "rgb", "in RGB mode");
     const render::RenderResult spectral2 =
         renderIn(RenderModeKind::Spectral, false, seed2, "spectral_seed2",
@@ -117,8 +117,8 @@ MediaSceneResult measureScene(const MediaInputs& in, const std::string& file,
 
     if (in.reference.empty()) {
         render::RenderOptions ro = o;
-        ro.spp = in.referenceSpp > 0 ? in.referenceSpp
-                                     : kReferenceSppFactor * spectral.settings.spp;
+        ro.spp =
+            in.referenceSpp > 0 ? in.referenceSpp : kReferenceSppFactor * spectral.settings.spp;
         ro.seed = hashValues({seed, kReferenceSeed});
         render::RenderResult ref = kept.render(name + "_reference", scene, ro, in.progress,
                                                file + " reference in spectral mode");
@@ -141,8 +141,7 @@ MediaSceneResult measureScene(const MediaInputs& in, const std::string& file,
     const NoiseOnlyPair noiseOnly = pairedNoise(c1, s1, c2, s2);
     r.relative = flooredMap(relativeDifferenceMap, c1, s1, c2, s2, noiseOnly);
     r.ciede2000 = flooredMap(ciede2000Map, c1, s1, c2, s2, noiseOnly);
-    r.comparedPixels = std::size_t(std::count_if(r.relative.values.begin(),
-                                                 r.relative.values.end(),
+    r.comparedPixels = std::size_t(std::count_if(r.relative.values.begin(), r.relative.values.end(),
                                                  [](float v) { return std::isfinite(v); }));
     // Two independent spectral renders: the floor a comparison of independent renders has.
     const std::vector<float> independentRelative = relativeDifferenceMap(s2, s1);
@@ -153,10 +152,15 @@ MediaSceneResult measureScene(const MediaInputs& in, const std::string& file,
     r.spectralMis = scored(std::move(spectral), r.reference, "the spectral render");
     r.heroOnly = scored(std::move(heroOnly), r.reference, "the render without spectral MIS");
     const double smallest = std::min(r.spectralMis.metrics.relmse, r.heroOnly.metrics.relmse);
-    const Premise noise = noisePremise(facts, smallest, in.allowNoisyReference);
+    // The noise adds to both relMSEs alike: it shrinks their ratio, the gain of spectral MIS.
+    const Premise noise = noisePremise(
+        facts, smallest, in.allowNoisyReference,
+        {false,
+         "it makes the two relMSEs' ratio (spectral MIS's gain) noticeably smaller than it is",
+         "a larger --reference-spp makes a quieter reference"});
     r.premises.push_back(noise);
-    if (noise.outcome == PremiseOutcome::Refused) throw InputError(in.reference + ": " +
-                                                                   describePremise(noise));
+    if (noise.outcome == PremiseOutcome::Refused)
+        throw InputError(in.reference + ": " + describePremise(noise));
     return r;
 }
 

@@ -112,7 +112,9 @@ CommandDecl mediaDeclaration() {
         "Ctrl-C raises KeyboardInterrupt with .partial: {\"renders\": the finished renders "
         "(name, mode, integrator, seed, spp, rgb as an (H, W, 3) array)}";
     c.options = {
-        textListOption("scenes", "Scene files with participating media").asPositional().asRequired(),
+        textListOption("scenes", "Scene files with participating media")
+            .asPositional()
+            .asRequired(),
         outputDirectoryOption(),
         integerOption("spp", "Samples per pixel of the compared renders (default: the scene's)", 1,
                       render::kMaxSppOverride),

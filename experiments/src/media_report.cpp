@@ -13,14 +13,11 @@ namespace lamina::experiments {
 
 namespace {
 
+/// A per-pixel map of a distance (sequential from 0).
 MapFigure pixelMap(const MediaSceneResult& r, std::vector<float> values, std::string title,
                    std::string quantity) {
-    MapFigure map;
-    map.title = std::move(title) + " (" + r.scene + ")";
-    map.quantity = std::move(quantity);
-    map.width = r.width;
-    map.height = r.height;
-    map.values = std::move(values);
+    MapFigure map = pixelMapFigure(std::move(values), r.width, r.height,
+                                   title + " (" + r.scene + ")", std::move(quantity));
     map.fromZero = true;
     return map;
 }
@@ -41,14 +38,13 @@ void writeRenders(const MediaSceneResult& r, Report& report) {
                                   "The scene in spectral and in RGB mode (" + r.scene + ")"));
     report.addImagePair(
         r.name + "_spectral_mis",
-        imagePair(filmImage(*r.heroOnly.render.film), "without spectral MIS", spectral,
-                  "spectral MIS",
-                  "Spectral mode without and with spectral MIS over the wavelengths (" + r.scene +
-                      ")"));
-    report.addImagePair(r.name + "_reference",
-                        imagePair(spectral, "spectral MIS", r.reference, "reference",
-                                  "Spectral mode with spectral MIS against the reference (" +
-                                      r.scene + ")"));
+        imagePair(
+            filmImage(*r.heroOnly.render.film), "without spectral MIS", spectral, "spectral MIS",
+            "Spectral mode without and with spectral MIS over the wavelengths (" + r.scene + ")"));
+    report.addImagePair(
+        r.name + "_reference",
+        imagePair(spectral, "spectral MIS", r.reference, "reference",
+                  "Spectral mode with spectral MIS against the reference (" + r.scene + ")"));
 }
 
 void writeFigures(const MediaSceneResult& r, Report& report) {
@@ -68,14 +64,13 @@ void writeFigures(const MediaSceneResult& r, Report& report) {
 
     // The two estimators' errors on one scale, so that the maps compare: the larger of the two
     // 99th percentiles.
-    MapFigure mis = differenceFigure(filmImage(*r.spectralMis.render.film), r.reference,
-                                     "Error of spectral MIS against the reference (" + r.scene +
-                                         ")");
+    MapFigure mis =
+        differenceFigure(filmImage(*r.spectralMis.render.film), r.reference,
+                         "Error of spectral MIS against the reference (" + r.scene + ")");
     MapFigure hero =
         differenceFigure(filmImage(*r.heroOnly.render.film), r.reference,
                          "Error without spectral MIS against the reference (" + r.scene + ")");
-    const double upper =
-        std::max(percentileOf(mis.values, 99), percentileOf(hero.values, 99));
+    const double upper = std::max(percentileOf(mis.values, 99), percentileOf(hero.values, 99));
     if (upper > 0) {
         mis.upper = upper;
         hero.upper = upper;
@@ -130,8 +125,8 @@ std::string sceneSummary(const MediaSceneResult& r) {
         "difference.png) ![CIEDE2000](%s_ciede2000.png)\n\n",
         r.comparedPixels, r.name.c_str(), r.name.c_str());
 
-    const double ratio = r.heroOnly.efficiency > 0 ? r.spectralMis.efficiency / r.heroOnly.efficiency
-                                                   : NAN;
+    const double ratio =
+        r.heroOnly.efficiency > 0 ? r.spectralMis.efficiency / r.heroOnly.efficiency : NAN;
     const double variance = r.spectralMis.metrics.relmse > 0
                                 ? r.heroOnly.metrics.relmse / r.spectralMis.metrics.relmse
                                 : NAN;
@@ -153,9 +148,8 @@ std::string sceneSummary(const MediaSceneResult& r) {
         r.spectralMis.render.seconds, r.spectralMis.efficiency, r.heroOnly.metrics.relmse,
         r.heroOnly.metrics.relmseStandardError, r.heroOnly.render.seconds, r.heroOnly.efficiency,
         std::isfinite(ratio) ? formatText("%.3g times", ratio).c_str() : "(not measured)",
-        std::isfinite(variance)
-            ? formatText("%.3g times smaller", variance).c_str()
-            : "not measured",
+        std::isfinite(variance) ? formatText("%.3g times smaller", variance).c_str()
+                                : "not measured",
         r.name.c_str(), r.name.c_str());
     md += "Premises of the reference:\n\n";
     for (const Premise& p : r.premises)

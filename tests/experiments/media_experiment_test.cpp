@@ -63,8 +63,8 @@ std::string sphereScene(const std::string& sigmaA, const std::string& sigmaS) {
 
 class MediaExperiment : public lamina::testing::ScratchDirectoryTest {
   protected:
-    MediaResult run(const std::string& name, const std::string& sigmaA,
-                    const std::string& sigmaS, int size = 12) {
+    MediaResult run(const std::string& name, const std::string& sigmaA, const std::string& sigmaS,
+                    int size = 12) {
         MediaInputs in;
         in.scenes = {write(name, sphereScene(sigmaA, sigmaS)).string()};
         in.overrides.resolution = std::make_pair(size, size);
@@ -82,8 +82,8 @@ TEST_F(MediaExperiment, AGreyMediumIsTheSameInRgbAndSpectralMode) {
     ASSERT_EQ(r.scenes.size(), 1u);
     const MediaSceneResult& s = r.scenes[0];
     EXPECT_EQ(s.comparedPixels, 144u);
-    for (const FlooredStatistic* f : {&s.relative.mean, &s.relative.p95, &s.ciede2000.mean,
-                                      &s.ciede2000.p95})
+    for (const FlooredStatistic* f :
+         {&s.relative.mean, &s.relative.p95, &s.ciede2000.mean, &s.ciede2000.p95})
         EXPECT_FALSE(resolved(*f, s.spp)) << f->value << " against a floor of " << f->floor;
     // The floor is of the noise that is there: spectral mode's colour noise.
     EXPECT_GT(s.relative.mean.floor, 0.0);
@@ -96,8 +96,8 @@ TEST_F(MediaExperiment, AGreyMediumIsTheSameInRgbAndSpectralMode) {
 TEST_F(MediaExperiment, AChromaticMediumDiffersBetweenRgbAndSpectralModeAboveTheFloor) {
     const MediaResult r = run("chromatic.json", "[0.05, 1, 2]", "[0.05, 1, 2]");
     const MediaSceneResult& s = r.scenes[0];
-    for (const FlooredStatistic* f : {&s.relative.mean, &s.relative.p95, &s.ciede2000.mean,
-                                      &s.ciede2000.p95})
+    for (const FlooredStatistic* f :
+         {&s.relative.mean, &s.relative.p95, &s.ciede2000.mean, &s.ciede2000.p95})
         EXPECT_TRUE(resolved(*f, s.spp)) << f->value << " against a floor of " << f->floor;
     // A difference that is real shows in the second pair too.
     EXPECT_GT(s.relative.mean.otherSeed, 2 * s.relative.mean.floor);
@@ -129,8 +129,10 @@ TEST_F(MediaExperiment, AReferenceOfAnotherModeOrSizeIsRefusedBeforeRendering) {
         render::RenderOptions o;
         o.spp = 2;
         o.seed = 5;
-        if (options == "rgb") o.mode = render::RenderModeKind::Rgb;
-        else o.mode = render::RenderModeKind::Spectral;
+        if (options == "rgb")
+            o.mode = render::RenderModeKind::Rgb;
+        else
+            o.mode = render::RenderModeKind::Spectral;
         if (options == "size") o.resolution = std::make_pair(8, 8);
         const render::RenderResult rr = render::renderScene(scene, o);
         render::writeExr(ref, *rr.film, false, render::renderMetadata(scene, o, rr, {}));

@@ -113,8 +113,8 @@ INSTANTIATE_TEST_SUITE_P(
 
 // Spectral MIS (medium_transport.h) matters for bias, not only noise, when a channel has no
 // extinction: a particle (or a BDPT sample) whose hero is that channel never scatters in the
-// medium, so the single-hero estimator misses the other channels' scattered light. The chromatic sphere with
-// red passing unattenuated (RGB mode: an RGB zero is not zero at every wavelength of an
+// medium, so the single-hero estimator misses the other channels' scattered light. The chromatic
+// sphere with red passing unattenuated (RGB mode: an RGB zero is not zero at every wavelength of an
 // upsampled spectrum).
 TEST(MediaIntegratorsAgree, ChromaticSphereWithAClearChannel) {
     std::ifstream in(testing::sourceFile("scenes/media/chromatic-sphere.json"));
@@ -177,12 +177,12 @@ TEST(MediaSpectralMis, WithoutItEveryIntegratorConvergesToTheSameImage) {
     heroOnly.noMediaSpectralMis = true;
     for (const IntegratorKind integrator :
          {IntegratorKind::Path, IntegratorKind::Light, IntegratorKind::Bdpt}) {
-        const BatchImages without = render(scene, integrator, RenderModeKind::Spectral, 44,
-                                           heroOnly);
-        expectAgreement(path, without,
-                        "path vs " + std::string(kIntegratorNames.name(integrator)) +
-                            " without spectral MIS",
-                        150);
+        const BatchImages without =
+            render(scene, integrator, RenderModeKind::Spectral, 44, heroOnly);
+        expectAgreement(
+            path, without,
+            "path vs " + std::string(kIntegratorNames.name(integrator)) + " without spectral MIS",
+            150);
     }
 }
 

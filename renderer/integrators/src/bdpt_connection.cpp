@@ -80,8 +80,7 @@ S BdptConnector<S>::throughMedia(const S& value, [[maybe_unused]] const Transmit
                                  [[maybe_unused]] const S& rULight,
                                  [[maybe_unused]] int hero) const {
     if constexpr (Mode::kRendersMedia) {
-        if (media_)
-            return value * T.T / ablations_.channelDensity(rUCamera * rULight * T.rL, hero);
+        if (media_) return value * T.T / ablations_.channelDensity(rUCamera * rULight * T.rL, hero);
     }
     return value;
 }

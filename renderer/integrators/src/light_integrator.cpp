@@ -113,7 +113,8 @@ void LightIntegrator<S>::traceParticle(PixelSampler& sampler, typename Mode::Pat
             // The flight passes, ends, or scatters at a medium vertex (medium_transport.h).
             std::optional<float> scatterAt;
             if (mf) {
-                const FlightOutcome f = mf->apply(o, d, hero, beta, rU, nullptr, nullptr, ablations_);
+                const FlightOutcome f =
+                    mf->apply(o, d, hero, beta, rU, nullptr, nullptr, ablations_);
                 if (f.outcome == FlightOutcome::Outcome::Ends) break;
                 if (f.outcome == FlightOutcome::Outcome::Scatters) scatterAt = f.t;
             }

@@ -88,9 +88,8 @@ S PathIntegrator<S>::radiance(const Vec3f& rayOrigin, const Vec3f& rayDirection,
             // and the emission at its collisions in a grid).
             std::optional<float> scatterAt;
             if (mf) {
-                const FlightOutcome f =
-                    mf->apply(o, d, hero, beta, rU, &rL, mf->coefficients.emits ? &L : nullptr,
-                              ablations_);
+                const FlightOutcome f = mf->apply(
+                    o, d, hero, beta, rU, &rL, mf->coefficients.emits ? &L : nullptr, ablations_);
                 if (f.outcome == FlightOutcome::Outcome::Ends) break;
                 if (f.outcome == FlightOutcome::Outcome::Scatters) scatterAt = f.t;
             }

@@ -90,7 +90,16 @@ inline constexpr double kMaxReferenceNoiseShare = 0.1;
 /// of the runs: Holds within kMaxReferenceNoiseShare; beyond it Refused for a given reference
 /// unless `allowNoisy` (then Flagged), and Flagged for a rendered or resumed one (its own
 /// settings made it: the remedy is a longer --reference-time). NotChecked without a floor.
-Premise noisePremise(const ReferenceFacts& reference, double smallestFinalRelMse, bool allowNoisy);
+///
+/// `consequence`: what the premise says such noise does (`convergence`'s fitted slopes by
+/// default) and how a rendered reference is made quieter.
+struct NoiseConsequence {
+    bool flattensSlopes = true;  ///< the measurement fits slopes: say how far they flatten
+    std::string otherwise;       ///< what it does instead (without slopes)
+    std::string quieter = "a longer --reference-time makes a quieter reference";
+};
+Premise noisePremise(const ReferenceFacts& reference, double smallestFinalRelMse, bool allowNoisy,
+                     const NoiseConsequence& consequence = {});
 
 /// "mode rgb: " and the premise's check and detail in one line (messages, the summary).
 std::string describePremise(const Premise& premise);

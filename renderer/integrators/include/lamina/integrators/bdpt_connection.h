@@ -69,8 +69,8 @@ class BdptConnector {
     /// ratio tracking (1 through homogeneous media; the balance heuristic over the channels,
     /// or the `hero`'s density alone with the ablation: TransportAblations::channelDensity);
     /// without, `value`.
-    S throughMedia(const S& value, const Transmittance<S>& T, const S& rUCamera,
-                   const S& rULight, int hero) const;
+    S throughMedia(const S& value, const Transmittance<S>& T, const S& rUCamera, const S& rULight,
+                   int hero) const;
 
     SceneContext c_;
     const Mode& mode_;
