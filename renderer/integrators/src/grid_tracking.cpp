@@ -98,7 +98,8 @@ std::uint64_t trackingSeed(const Vec3f& o, const Vec3f& d, float u) {
 
 template <SpectrumType S>
 FlightOutcome deltaTrack(const MediumCoefficients<S>& m, const Vec3f& o, const Vec3f& d, float tMax,
-                         int hero, std::uint64_t seed, S& beta, S& rU, S* rL, S* L) {
+                         int hero, std::uint64_t seed, S& beta, S& rU, S* rL, S* L,
+                         const TransportAblations& ablations) {
     const GridDensity& grid = *m.grid;
     const S sigmaT = majorantUnit(m);
     // The ray in medium space: the same t, so the distances stay the scene's.
@@ -120,7 +121,8 @@ FlightOutcome deltaTrack(const MediumCoefficients<S>& m, const Vec3f& o, const V
                 const float pdf = Tmaj[hero] * sigmaMaj[hero];
                 const S rE = rU * sigmaMaj * Tmaj / pdf;
                 if (rE.maxValue() > 0.0f)
-                    *L += beta * Tmaj * here.sigmaA * density * m.emission / (pdf * rE.average());
+                    *L += beta * Tmaj * here.sigmaA * density * m.emission /
+                          (pdf * ablations.channelDensity(rE, hero));
             }
             const S sigmaTHere = (here.sigmaA + here.sigmaS) * density;
             if (rng.nextFloat() * sigmaMaj[hero] < sigmaTHere[hero]) {
@@ -198,7 +200,8 @@ void ratioTrack(const MediumCoefficients<S>& m, const Vec3f& o, const Vec3f& d, 
 
 #define LAMINA_GRID_TRACKING(S)                                                                    \
     template FlightOutcome deltaTrack(const MediumCoefficients<S>&, const Vec3f&, const Vec3f&,    \
-                                      float, int, std::uint64_t, S&, S&, S*, S*);                  \
+                                      float, int, std::uint64_t, S&, S&, S*, S*,                   \
+                                      const TransportAblations&);                                  \
     template void ratioTrack(const MediumCoefficients<S>&, const Vec3f&, const Vec3f&, float, int, \
                              std::uint64_t, Transmittance<S>&);
 LAMINA_GRID_TRACKING(Rgb<float>)
