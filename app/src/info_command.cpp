@@ -6,6 +6,7 @@
 
 #include "lamina/render/render_memory.h"
 #include "lamina/render/scene_statistics.h"
+#include "lamina/scene/colour_grid.h"
 #include "lamina/scene/scene_description.h"
 
 namespace lamina::app {
@@ -89,7 +90,15 @@ void run(const std::string& file) {
                         m.name.c_str(), std::string(render::kMediumKindNames.name(m.kind)).c_str(),
                         m.sigmaA[0], m.sigmaA[1], m.sigmaA[2], m.sigmaS[0], m.sigmaS[1],
                         m.sigmaS[2], m.g, m.emits() ? ", emits" : "");
-            if (m.grid)
+            if (m.grid && m.grid->colours)
+                std::printf(
+                    ", RGB grids sigma_a %d x %d x %d, sigma_s %d x %d x %d, majorants "
+                    "%d x %d x %d",
+                    m.grid->colours->sigmaA.nx, m.grid->colours->sigmaA.ny,
+                    m.grid->colours->sigmaA.nz, m.grid->colours->sigmaS.nx,
+                    m.grid->colours->sigmaS.ny, m.grid->colours->sigmaS.nz, m.grid->majorants.nx,
+                    m.grid->majorants.ny, m.grid->majorants.nz);
+            else if (m.grid)
                 std::printf(", density grid %d x %d x %d, majorants %d x %d x %d",
                             m.grid->density.nx, m.grid->density.ny, m.grid->density.nz,
                             m.grid->majorants.nx, m.grid->majorants.ny, m.grid->majorants.nz);

@@ -146,9 +146,9 @@ const OptionDecl& CommandDecl::option(std::string_view optionName) const {
 
 const std::vector<CommandDecl>& commandDeclarations() {
     static const std::vector<CommandDecl> commands = {
-        renderDeclaration(),      compareDeclaration(),     reciprocityDeclaration(),
-        convergenceDeclaration(), fresnelDeclaration(),     stabilityDeclaration(),
-        layeringDeclaration(),    polarisationDeclaration()};
+        renderDeclaration(),      compareDeclaration(),      reciprocityDeclaration(),
+        convergenceDeclaration(), fresnelDeclaration(),      stabilityDeclaration(),
+        layeringDeclaration(),    polarisationDeclaration(), mediaDeclaration()};
     return commands;
 }
 

@@ -87,63 +87,6 @@ std::optional<std::string> referenceCorrelation(const render::RgbImage& referenc
 
 namespace {
 
-/// The reference in `path` with what the premises read of it: size, metadata, and the noise
-/// floor from its variance channels (Variance.R/G/B, else Variance.Y for every channel).
-ReferenceFacts readReferenceFacts(const std::string& path, ReferenceSource source,
-                                  const render::RgbImage& image) {
-    ReferenceFacts facts;
-    facts.name = path;
-    facts.source = source;
-    facts.width = image.width;
-    facts.height = image.height;
-    facts.metadata = image.metadata;
-    const render::FloatImage all = render::readFloatImage(path);
-    if (all.width != image.width || all.height != image.height) return facts;
-    const int r = all.channel("Variance.R"), g = all.channel("Variance.G"),
-              b = all.channel("Variance.B"), y = all.channel("Variance.Y");
-    const bool rgb = r >= 0 && g >= 0 && b >= 0;
-    if (!rgb && y < 0) return facts;
-    // A pixel of one sample has no variance estimate (the film writes 0).
-    const std::string spp = metadataValue(image, "spp");
-    if (!spp.empty() && std::atoi(spp.c_str()) < 2) {
-        facts.noiseSource =
-            "the reference has " + spp +
-            " sample per pixel: its variance channels hold no estimate of its noise";
-        return facts;
-    }
-    std::vector<float> variance;
-    variance.reserve(image.pixels.size());
-    for (int py = 0; py < all.height; ++py)
-        for (int px = 0; px < all.width; ++px)
-            for (const int c : {r, g, b})
-                variance.push_back(all.at(px, py, rgb ? c : y));
-    facts.noiseFloor = referenceNoiseFloor(image.pixels, variance);
-    facts.noiseSource = rgb ? "Variance.R/G/B channels" : "Variance.Y channel, for every channel";
-    return facts;
-}
-
-/// The premises of a rendered reference: what it is, and its noise from the film's own
-/// per-pixel variance.
-ReferenceFacts renderedReferenceFacts(const std::string& name, const render::Film& film,
-                                      const render::RgbImage& image) {
-    ReferenceFacts facts;
-    facts.name = name;
-    facts.source = ReferenceSource::Rendered;
-    facts.width = image.width;
-    facts.height = image.height;
-    std::vector<float> variance;
-    variance.reserve(image.pixels.size());
-    for (int y = 0; y < film.height(); ++y)
-        for (int x = 0; x < film.width(); ++x) {
-            const Rgb<double> v = film.varianceOfMeanRgb(x, y);
-            for (int c = 0; c < 3; ++c)
-                variance.push_back(float(v[c]));
-        }
-    facts.noiseFloor = referenceNoiseFloor(image.pixels, variance);
-    facts.noiseSource = "per-pixel variance of its samples";
-    return facts;
-}
-
 /// The independence premise of a given reference (referenceCorrelation), and the note the
 /// summary prints.
 Premise independencePremise(const ConvergenceInputs& in, const render::RgbImage& ref,

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <variant>
 
 #include "lamina/experiments/image_metrics.h"
@@ -118,7 +119,8 @@ double referenceNoiseFloor(const std::vector<float>& reference,
     return n ? sum / double(n) : NAN;
 }
 
-Premise noisePremise(const ReferenceFacts& reference, double smallestFinalRelMse, bool allowNoisy) {
+Premise noisePremise(const ReferenceFacts& reference, double smallestFinalRelMse, bool allowNoisy,
+                     const NoiseConsequence& consequence) {
     if (!reference.noiseFloor || !std::isfinite(*reference.noiseFloor))
         return {"reference noise", PremiseOutcome::NotChecked,
                 !reference.noiseSource.empty()
@@ -143,19 +145,75 @@ Premise noisePremise(const ReferenceFacts& reference, double smallestFinalRelMse
         return {"reference noise", PremiseOutcome::Holds,
                 measured + formatText(" (at most %.0f%%)", 100 * kMaxReferenceNoiseShare)};
     const std::string flattens =
-        share < 1 ? formatText(
-                        "; above %.0f%% it flattens the slopes (to about %.2f at the "
-                        "end of the run)",
-                        100 * kMaxReferenceNoiseShare, -(1 - share))
-                  : std::string("; the runs' errors are the reference's noise (slopes near 0)");
+        !consequence.flattensSlopes ? formatText("; above %.0f%% %s", 100 * kMaxReferenceNoiseShare,
+                                                 consequence.otherwise.c_str())
+        : share < 1                 ? formatText(
+                                          "; above %.0f%% it flattens the slopes (to about %.2f at the "
+                                                          "end of the run)",
+                                          100 * kMaxReferenceNoiseShare, -(1 - share))
+                    : std::string("; the runs' errors are the reference's noise (slopes near 0)");
     if (reference.source == ReferenceSource::Given && !allowNoisy)
         return {
             "reference noise", PremiseOutcome::Refused,
             measured + flattens + ": render a longer reference or pass --allow-noisy-reference"};
     const std::string why = reference.source == ReferenceSource::Given
                                 ? " (allowed by --allow-noisy-reference)"
-                                : ": a longer --reference-time makes a quieter reference";
+                                : ": " + consequence.quieter;
     return {"reference noise", PremiseOutcome::Flagged, measured + flattens + why};
+}
+
+ReferenceFacts readReferenceFacts(const std::string& path, ReferenceSource source,
+                                  const render::RgbImage& image) {
+    ReferenceFacts facts;
+    facts.name = path;
+    facts.source = source;
+    facts.width = image.width;
+    facts.height = image.height;
+    facts.metadata = image.metadata;
+    const render::FloatImage all = render::readFloatImage(path);
+    if (all.width != image.width || all.height != image.height) return facts;
+    const int r = all.channel("Variance.R"), g = all.channel("Variance.G"),
+              b = all.channel("Variance.B"), y = all.channel("Variance.Y");
+    const bool rgb = r >= 0 && g >= 0 && b >= 0;
+    if (!rgb && y < 0) return facts;
+    // A pixel of one sample has no variance estimate (the film writes 0).
+    const auto sppEntry = image.metadata.find("lamina:spp");
+    const std::string spp = sppEntry == image.metadata.end() ? std::string() : sppEntry->second;
+    if (!spp.empty() && std::atoi(spp.c_str()) < 2) {
+        facts.noiseSource =
+            "the reference has " + spp +
+            " sample per pixel: its variance channels hold no estimate of its noise";
+        return facts;
+    }
+    std::vector<float> variance;
+    variance.reserve(image.pixels.size());
+    for (int py = 0; py < all.height; ++py)
+        for (int px = 0; px < all.width; ++px)
+            for (const int c : {r, g, b})
+                variance.push_back(all.at(px, py, rgb ? c : y));
+    facts.noiseFloor = referenceNoiseFloor(image.pixels, variance);
+    facts.noiseSource = rgb ? "Variance.R/G/B channels" : "Variance.Y channel, for every channel";
+    return facts;
+}
+
+ReferenceFacts renderedReferenceFacts(const std::string& name, const render::Film& film,
+                                      const render::RgbImage& image) {
+    ReferenceFacts facts;
+    facts.name = name;
+    facts.source = ReferenceSource::Rendered;
+    facts.width = image.width;
+    facts.height = image.height;
+    std::vector<float> variance;
+    variance.reserve(image.pixels.size());
+    for (int y = 0; y < film.height(); ++y)
+        for (int x = 0; x < film.width(); ++x) {
+            const Rgb<double> v = film.varianceOfMeanRgb(x, y);
+            for (int c = 0; c < 3; ++c)
+                variance.push_back(float(v[c]));
+        }
+    facts.noiseFloor = referenceNoiseFloor(image.pixels, variance);
+    facts.noiseSource = "per-pixel variance of its samples";
+    return facts;
 }
 
 std::string describePremise(const Premise& premise) {

@@ -15,5 +15,6 @@ CommandDecl fresnelDeclaration();       // fresnel_declaration.cpp
 CommandDecl stabilityDeclaration();     // stability_declaration.cpp
 CommandDecl layeringDeclaration();      // layering_declaration.cpp
 CommandDecl polarisationDeclaration();  // polarisation_declaration.cpp
+CommandDecl mediaDeclaration();         // media_declaration.cpp
 
 }  // namespace lamina::experiments

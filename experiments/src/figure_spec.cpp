@@ -157,4 +157,15 @@ void writeImagePairSpec(const std::filesystem::path& directory, const std::strin
     writeTextFile(directory / (name + ".pair.json"), j.dump(1) + "\n");
 }
 
+MapFigure pixelMapFigure(std::vector<float> values, int width, int height, std::string title,
+                         std::string quantity) {
+    MapFigure map;
+    map.title = std::move(title);
+    map.quantity = std::move(quantity);
+    map.width = width;
+    map.height = height;
+    map.values = std::move(values);
+    return map;
+}
+
 }  // namespace lamina::experiments

@@ -159,6 +159,35 @@ std::vector<float> ciede2000Map(const render::RgbImage& a, const render::RgbImag
     return map;
 }
 
+double pixelLuminance(const render::RgbImage& image, std::size_t i) {
+    return luminance(
+        Rgb<double>(image.pixels[3 * i], image.pixels[3 * i + 1], image.pixels[3 * i + 2]));
+}
+
+std::vector<float> relativeDifferenceMap(const render::RgbImage& a, const render::RgbImage& b) {
+    double brightest = 0;
+    for (std::size_t i = 0; i < a.pixels.size() / 3; ++i)
+        brightest = std::max({brightest, pixelLuminance(a, i), pixelLuminance(b, i)});
+    const auto light = [&](double y) { return y > kNoLight * brightest ? y : 0.0; };
+    std::vector<float> map(std::size_t(a.width) * a.height);
+    for (std::size_t i = 0; i < map.size(); ++i) {
+        const double ya = light(pixelLuminance(a, i)), yb = light(pixelLuminance(b, i));
+        map[i] = ya + yb > 0 ? float(std::abs(ya - yb) / ((ya + yb) / 2)) : std::nanf("");
+    }
+    return map;
+}
+
+double meanOfFinite(const std::vector<float>& values) {
+    double sum = 0;
+    std::size_t n = 0;
+    for (const float v : values)
+        if (std::isfinite(v)) {
+            sum += v;
+            ++n;
+        }
+    return n == 0 ? 0 : sum / double(n);
+}
+
 double percentileOf(std::vector<float> values, double p) {
     std::erase_if(values, [](float v) { return !std::isfinite(v); });
     if (values.empty()) return 0;

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "lamina/core/error.h"
+#include "lamina/experiments/image_metrics.h"
 #include "lamina/experiments/text_format.h"
 
 namespace lamina::experiments {
@@ -32,6 +33,19 @@ NoiseOnlyPair pairedNoise(const render::RgbImage& a1, const render::RgbImage& b1
         pair.b.pixels[i] = float(mean - noise / 2);
     }
     return pair;
+}
+
+FlooredMap flooredMap(
+    const std::function<std::vector<float>(const render::RgbImage&, const render::RgbImage&)>& map,
+    const render::RgbImage& a1, const render::RgbImage& b1, const render::RgbImage& a2,
+    const render::RgbImage& b2, const NoiseOnlyPair& noiseOnly) {
+    FlooredMap m;
+    m.values = map(a1, b1);
+    const std::vector<float> floor = map(noiseOnly.a, noiseOnly.b);
+    const std::vector<float> other = map(a2, b2);
+    m.mean = {meanOfFinite(m.values), meanOfFinite(floor), meanOfFinite(other)};
+    m.p95 = {percentileOf(m.values, 95), percentileOf(floor, 95), percentileOf(other, 95)};
+    return m;
 }
 
 NoiseFloorReading readAgainstFloor(double difference, double floor, int spp) {

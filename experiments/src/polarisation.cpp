@@ -14,26 +14,8 @@ namespace lamina::experiments {
 
 namespace {
 
-double meanOf(const std::vector<float>& values) {
-    double sum = 0;
-    std::size_t n = 0;
-    for (const float v : values)
-        if (std::isfinite(v)) {
-            sum += v;
-            ++n;
-        }
-    return n == 0 ? 0 : sum / double(n);
-}
-
-double pixelLuminance(const render::RgbImage& image, std::size_t i) {
-    return luminance(
-        Rgb<double>(image.pixels[3 * i], image.pixels[3 * i + 1], image.pixels[3 * i + 2]));
-}
-
-/// The pixels with light: S0's luminance above kNoLight times the brightest pixel's. A pixel
-/// whose light all cancels (crossed mirrors at Brewster's angle) keeps S0 of about 1e-15 of the
-/// light from float rounding, whose polarisation means nothing.
-constexpr double kNoLight = 1e-6;
+/// The pixels with light: S0's luminance above kNoLight times the brightest pixel's (whose
+/// polarisation means something).
 
 std::vector<bool> litPixels(const render::RgbImage& image) {
     double brightest = 0;
@@ -43,23 +25,6 @@ std::vector<bool> litPixels(const render::RgbImage& image) {
     for (std::size_t i = 0; i < lit.size(); ++i)
         lit[i] = brightest > 0 && pixelLuminance(image, i) > kNoLight * brightest;
     return lit;
-}
-
-/// |Y_a - Y_b| / ((Y_a + Y_b) / 2) per pixel, NaN where both are black. Black is a luminance
-/// of at most kNoLight times the brightest pixel's of the two images (a negative luminance, of
-/// a colour outside the gamut, counts as 0): otherwise two renders of light that cancels to
-/// float rounding would differ by O(1) relative to 1e-15.
-std::vector<float> relativeDifferenceMap(const render::RgbImage& a, const render::RgbImage& b) {
-    double brightest = 0;
-    for (std::size_t i = 0; i < a.pixels.size() / 3; ++i)
-        brightest = std::max({brightest, pixelLuminance(a, i), pixelLuminance(b, i)});
-    const auto light = [&](double y) { return y > kNoLight * brightest ? y : 0.0; };
-    std::vector<float> map(std::size_t(a.width) * a.height);
-    for (std::size_t i = 0; i < map.size(); ++i) {
-        const double ya = light(pixelLuminance(a, i)), yb = light(pixelLuminance(b, i));
-        map[i] = ya + yb > 0 ? float(std::abs(ya - yb) / ((ya + yb) / 2)) : std::nanf("");
-    }
-    return map;
 }
 
 /// DoLP and AoLP (degrees) of each lit pixel from the luminance of its Stokes layers; 0 in the
@@ -91,20 +56,17 @@ AgainstPolarised againstPolarised(render::RenderResult mode, const render::Rende
     a.metrics = compareImages(s, p);
     requireComparedValues(a.metrics, s, what, p, "the polarised render");
 
-    // A per-pixel statistic of the pair, its mean and 95th percentile against their floors: the
-    // same statistic of two images that differ by that difference's noise alone (pairedNoise),
-    // and of the pair of the second seed.
+    // A per-pixel statistic of the pair, its mean and 95th percentile against their floors
+    // (noise_floor.h).
     const NoiseOnlyPair noiseOnly = pairedNoise(s, p, sTwin, pTwin);
-    const auto measure = [&](auto map, std::vector<float>& values, FlooredStatistic& mean,
-                             FlooredStatistic& p95) {
-        values = map(s, p);
-        const std::vector<float> floor = map(noiseOnly.a, noiseOnly.b);
-        const std::vector<float> other = map(sTwin, pTwin);
-        mean = {meanOf(values), meanOf(floor), meanOf(other)};
-        p95 = {percentileOf(values, 95), percentileOf(floor, 95), percentileOf(other, 95)};
-    };
-    measure(relativeDifferenceMap, a.relative, a.meanRelative, a.p95Relative);
-    measure(ciede2000Map, a.ciede2000, a.meanDeltaE, a.p95DeltaE);
+    FlooredMap relative = flooredMap(relativeDifferenceMap, s, p, sTwin, pTwin, noiseOnly);
+    FlooredMap de = flooredMap(ciede2000Map, s, p, sTwin, pTwin, noiseOnly);
+    a.relative = std::move(relative.values);
+    a.meanRelative = relative.mean;
+    a.p95Relative = relative.p95;
+    a.ciede2000 = std::move(de.values);
+    a.meanDeltaE = de.mean;
+    a.p95DeltaE = de.p95;
     a.comparedPixels = std::size_t(std::count_if(a.relative.begin(), a.relative.end(),
                                                  [](float v) { return std::isfinite(v); }));
     return a;

@@ -15,13 +15,8 @@ namespace {
 
 MapFigure pixelMap(const PolarisationResult& r, std::vector<float> values, std::string title,
                    std::string quantity) {
-    MapFigure map;
-    map.title = std::move(title) + " (" + r.scene + ")";
-    map.quantity = std::move(quantity);
-    map.width = r.width;
-    map.height = r.height;
-    map.values = std::move(values);
-    return map;
+    return pixelMapFigure(std::move(values), r.width, r.height, title + " (" + r.scene + ")",
+                          std::move(quantity));
 }
 
 /// The relative difference and CIEDE2000 maps of one mode against the polarised render, named

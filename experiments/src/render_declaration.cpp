@@ -62,6 +62,11 @@ CommandDecl renderDeclaration() {
         numberOption("exposure", "Exposure of the preview in stops")
             .byDefault(0.0)
             .commandLineOnly("of the preview: Image.save(path, exposure) takes it"),
+        nameListOption("ablate",
+                       "Render with a worse estimator on purpose: media-spectral-mis weights "
+                       "every channel of a path through media by its hero channel's density "
+                       "alone, without the spectral MIS over the channels (docs/media.md)",
+                       render::kRenderAblationNames, "ablation"),
         flagOption("aovs",
                    "Add AOV layers: Albedo.RGB, N.XYZ (shading normal), Z (depth), Variance.Y"),
         integerOption("spectral-film",

@@ -87,7 +87,13 @@ INSTANTIATE_TEST_SUITE_P(
                "", 1, "--spp applies to a scene's renders, not to materials"},
         BadRun{"polarisation_wavelength_out_of_range",
                "polarisation Au --wavelengths 550,1000 -o DIR/p", "", "", 1,
-               "--wavelengths: 1000 nm: expected 360 to 830 nm"}),
+               "--wavelengths: 1000 nm: expected 360 to 830 nm"},
+        BadRun{"media_scene_without_media", "media SCENE -o DIR/m", "", "", 1,
+               "scene.json: the scene has no participating media"},
+        BadRun{"media_reference_with_two_scenes", "media SCENE SCENE --reference SCENE -o DIR/m",
+               "", "", 1, ": a reference is one scene's; give one scene with it"},
+        BadRun{"render_unknown_ablation", "render SCENE --ablate gravity -o DIR/x.exr", "", "", 2,
+               "--ablate"}),
     [](const auto& paramInfo) { return std::string(paramInfo.param.name); });
 
 }  // namespace

@@ -21,8 +21,9 @@ TEST(CommandDeclarations, NameEveryCommandBothFrontEndsHave) {
     std::vector<std::string> names;
     for (const CommandDecl& c : commandDeclarations())
         names.push_back(c.name);
-    EXPECT_THAT(names, ::testing::ElementsAre("render", "compare", "reciprocity", "convergence",
-                                              "fresnel", "stability", "layering", "polarisation"));
+    EXPECT_THAT(names,
+                ::testing::ElementsAre("render", "compare", "reciprocity", "convergence", "fresnel",
+                                       "stability", "layering", "polarisation", "media"));
     // The experiments run from both front ends; render and compare have front ends of their
     // own.
     for (const CommandDecl& c : commandDeclarations())

@@ -500,12 +500,11 @@ TEST_F(MitsubaImport, HomogeneousMediaAndTheirBoundaries) {
 }
 
 TEST_F(MitsubaImport, MediaErrorsNameTheLine) {
-    EXPECT_EQ(error("<shape type=\"sphere\"><medium type=\"heterogeneous\" name=\"interior\"/>"
+    EXPECT_EQ(error("<shape type=\"sphere\"><medium type=\"spectra\" name=\"interior\"/>"
                     "</shape>"),
               where(2) +
-                  ": <medium type=\"heterogeneous\">: the medium \"heterogeneous\" is "
-                  "not supported (the importer translates homogeneous media; grid volumes "
-                  "are not translated yet)");
+                  ": <medium type=\"spectra\">: the medium \"spectra\" is "
+                  "not supported (homogeneous, heterogeneous)");
     EXPECT_EQ(error("<shape type=\"sphere\"><medium type=\"homogeneous\" name=\"inside\"/>"
                     "</shape>"),
               where(2) +

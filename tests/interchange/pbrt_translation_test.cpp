@@ -587,10 +587,7 @@ TEST_F(PbrtTranslation, MediaErrorsNameFileAndLine) {
         "AttributeBegin\nMediumInterface \"m\" \"\"\nMaterial \"interface\"\n"
         "Shape \"sphere\"\nAttributeEnd\n";
     EXPECT_EQ(importError("MakeNamedMedium \"m\" \"string type\" \"nanovdb\"\n" + box),
-              at(1) +
-                  ": MakeNamedMedium \"m\": \"nanovdb\" media are not supported (the "
-                  "importer translates homogeneous media; grids, clouds and NanoVDB files are "
-                  "not translated yet)");
+              at(1) + ": MakeNamedMedium \"m\": nanovdb needs a \"string filename\"");
     EXPECT_EQ(importError(box), at(2) +
                                     ": MediumInterface: no medium \"m\" (MakeNamedMedium "
                                     "defines one; \"\" is vacuum)");

@@ -78,6 +78,23 @@ def test_polarisation_of_materials():
         lamina.polarisation("Unobtainium")
 
 
+def test_media(source_dir):
+    # One scene alone is the list of it; the result of each scene with its maps and premises.
+    sphere = os.path.join(source_dir, "scenes", "media", "chromatic-sphere.json")
+    (r,) = lamina.media(sphere, spp=2, reference_spp=8, resolution=(16, 12))
+    assert r["spp"] == 2 and r["reference_spp"] == 8
+    assert r["relative_difference"].shape == (12, 16) and r["delta_e"].shape == (12, 16)
+    for estimator in ("spectral_mis", "hero_only"):
+        e = r[estimator]
+        assert e["relmse"] > 0 and e["efficiency"] == pytest.approx(
+            1 / (e["relmse"] * e["seconds"]))
+    assert [p["check"] for p in r["premises"]][0] == "reference"
+    assert set(r["mean_delta_e"]) == {"value", "noise_floor", "resolved", "other_seed"}
+    cornell = os.path.join(source_dir, "scenes", "cornell-box.json")
+    with pytest.raises(ValueError, match="has no participating media"):
+        lamina.media(cornell, spp=1)
+
+
 def test_convergence(scene):
     r = lamina.convergence(scene, integrators=["path"], seconds=0.4, reference_seconds=1.0,
                            resolution=(16, 16))

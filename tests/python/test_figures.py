@@ -370,6 +370,31 @@ def test_polarisation_figures(figures, lamina_exe, source_dir, tmp_path):
     assert {"rgb_relative_difference.figure.json", "rgb_ciede2000.figure.json"} <= set(specs)
 
 
+def test_media_figures(figures, lamina_exe, source_dir, tmp_path):
+    scene = os.path.join(source_dir, "scenes", "media", "chromatic-sphere.json")
+    out = tmp_path / "report"
+    code, _, err = run_cli(lamina_exe, "media", scene, "--spp", "4", "--resolution", "32x32",
+                           "-o", str(out))
+    assert code == 0, err
+    specs = assert_drawn_without_problems(figures, str(out))
+    assert {"chromatic-sphere_relative_difference.figure.json",
+            "chromatic-sphere_ciede2000.figure.json",
+            "chromatic-sphere_error_spectral_mis.figure.json",
+            "chromatic-sphere_error_hero_only.figure.json"} <= set(specs)
+    # The relative difference over its whole range 0..2; the two error maps on one scale.
+    relative = figures.load(str(out / "chromatic-sphere_relative_difference.figure.json"))
+    norm = figures.draw(relative).axes[0].images[0].norm
+    assert (norm.vmin, norm.vmax) == (0, 2)
+    limits = [figures.draw(figures.load(str(out / f"chromatic-sphere_error_{n}.figure.json")))
+              .axes[0].images[0].norm.vmax for n in ("spectral_mis", "hero_only")]
+    assert limits[0] == limits[1] and limits[0] > 0
+    summary = (out / "summary.md").read_text()
+    # Four statistics of RGB against spectral, each with its floor, and the premises.
+    assert summary.count("(noise floor ") == 4, summary
+    assert "reference noise (" in summary
+    assert not (out / "renders").exists()
+
+
 def test_polarisation_material_figures(figures, lamina_exe, tmp_path):
     out = tmp_path / "materials"
     code, _, err = run_cli(lamina_exe, "polarisation", "Au", "bk7", "-o", str(out))

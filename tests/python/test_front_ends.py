@@ -108,7 +108,8 @@ def test_every_difference_between_the_front_ends_has_a_reason(command):
 def test_python_has_every_experiment_declared():
     experiments = [c["name"] for c in lamina.commands() if c["experiment"]]
     assert experiments == [
-        "reciprocity", "convergence", "fresnel", "stability", "layering", "polarisation"]
+        "reciprocity", "convergence", "fresnel", "stability", "layering", "polarisation",
+        "media"]
     for name in experiments:
         assert callable(getattr(lamina, name)) and name in lamina.__all__
         assert getattr(lamina, name).__doc__.startswith(

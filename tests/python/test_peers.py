@@ -90,3 +90,42 @@ def test_summary_line_not_progress_line():
     assert pe.parse_render_summary(stderr) == (483, 20.01)
     with pytest.raises(pe.PeerError):
         pe.parse_render_summary("progress: 50% (240 spp, 10.0 s, ETA 10 s)\n")
+
+
+# benchmarks/peers/mesh_loading.py: the meshes it writes are the ones it claims (every triangle
+# read back by lamina from both formats, normals on the side the winding faces) and its table's
+# arithmetic.
+import mesh_loading as ml  # noqa: E402
+
+
+def test_height_field_winding_faces_its_normals():
+    positions, normals, tris = ml.height_field(7, 0.0)
+    assert len(tris) == 2 * 7 * 7 and len(positions) == 8 * 8
+    p = positions.astype(np.float64)
+    face = np.cross(p[tris[:, 1]] - p[tris[:, 0]], p[tris[:, 2]] - p[tris[:, 0]])
+    for k in range(3):
+        assert (np.einsum("ij,ij->i", face, normals[tris[:, k]]) > 0).all()
+    assert np.allclose(np.linalg.norm(normals, axis=1), 1, atol=1e-6)
+
+
+@pytest.mark.parametrize("fmt", ["ply", "obj"])
+def test_lamina_reads_every_triangle_written(tmp_path, fmt):
+    import subprocess
+
+    paths, triangles = ml.make_meshes(str(tmp_path), fmt, 3000, 2)
+    assert triangles == 2 * 2 * ml.grid_size(1500) ** 2
+    scene = ml.lamina_scene(str(tmp_path), fmt, paths, 2)
+    info = subprocess.run([os.environ["LAMINA_EXECUTABLE"], "info", scene], check=True,
+                          capture_output=True, text=True).stdout
+    assert ml.lamina_triangles(info) == triangles + 2  # and the light's rectangle
+
+
+def test_mesh_loading_table_divides_as_stated():
+    row = {"format": "ply", "triangles": 1000, "MB": 50.0,
+           "lamina": {"read": 0.5, "first_pixel": 1.0, "bytes_per_triangle": 100.0},
+           "blender": {"read": 5.0, "first_pixel": 8.0, "bytes_per_triangle": 400.0}}
+    table = ml.report([row])
+    assert "| ply | 1,000 | 50 | lamina | 100.0 | 1.00 | 100 |" in table
+    assert "| ply | | | Blender / lamina | 10.00x (time) | 8.00x | 4.00x |" in table
+    row["lamina"]["bytes_per_triangle"] = -3.0
+    assert "not resolved" in ml.report([row])

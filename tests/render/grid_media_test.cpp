@@ -122,7 +122,7 @@ TEST(GridTracking, DeltaTrackingPassesAndScattersWithBeerLambert) {
         Rgb<float> beta(1.0f), rU(1.0f), rL(1.0f);
         const FlightOutcome f =
             deltaTrack(tc.m, tc.o, tc.d, std::numeric_limits<float>::infinity(), hero, rng(), beta,
-                       rU, &rL, static_cast<Rgb<float>*>(nullptr));
+                       rU, &rL, static_cast<Rgb<float>*>(nullptr), TransportAblations{});
         // The path integrator's estimate of a flight: beta over the average density ratio.
         for (int c = 0; c < 3; ++c) {
             const double v = double(beta[c] / rU.average());
@@ -154,7 +154,7 @@ TEST(GridTracking, DeltaAndRatioTrackingCombineByTheBalanceHeuristic) {
         Rgb<float> beta(1.0f), rU(1.0f), rL(1.0f);
         const FlightOutcome f =
             deltaTrack(tc.m, tc.o, tc.d, std::numeric_limits<float>::infinity(), hero, rng(), beta,
-                       rU, &rL, static_cast<Rgb<float>*>(nullptr));
+                       rU, &rL, static_cast<Rgb<float>*>(nullptr), TransportAblations{});
         Transmittance<Rgb<float>> tr;
         ratioTrack(tc.m, tc.o, tc.d, std::numeric_limits<float>::infinity(), hero, rng(), tr);
         for (int c = 0; c < 3; ++c) {

@@ -40,8 +40,9 @@ struct MediaCase {
 };
 
 BatchImages render(const SceneDesc& scene, IntegratorKind integrator, RenderModeKind mode,
-                   std::uint64_t seed) {
+                   std::uint64_t seed, const TransportAblations& ablations = {}) {
     RenderOptions o;
+    o.ablations = ablations;
     o.integrator = integrator;
     o.mode = mode;
     o.seed = seed;
@@ -112,8 +113,8 @@ INSTANTIATE_TEST_SUITE_P(
 
 // Spectral MIS (medium_transport.h) matters for bias, not only noise, when a channel has no
 // extinction: a particle (or a BDPT sample) whose hero is that channel never scatters in the
-// medium, so the single-hero estimator misses the other channels' scattered light. The chromatic sphere with
-// red passing unattenuated (RGB mode: an RGB zero is not zero at every wavelength of an
+// medium, so the single-hero estimator misses the other channels' scattered light. The chromatic
+// sphere with red passing unattenuated (RGB mode: an RGB zero is not zero at every wavelength of an
 // upsampled spectrum).
 TEST(MediaIntegratorsAgree, ChromaticSphereWithAClearChannel) {
     std::ifstream in(testing::sourceFile("scenes/media/chromatic-sphere.json"));
@@ -159,6 +160,30 @@ TEST(MediaIntegratorsAgree, PointLightInsideAMediumSphere) {
     ASSERT_GT(path.region(0, 0, 32, 32).mean, 0.0) << "the scene renders black";
     expectAgreement(path, light, "path vs light");
     expectAgreement(path, bdpt, "path vs bdpt");
+}
+
+// Spectral MIS over the wavelengths switched off (`--ablate media-spectral-mis`,
+// TransportAblations::noMediaSpectralMis: every wavelength weighted by the hero's free-flight
+// density alone) is a worse estimator, not a biased one, where every channel has extinction: each
+// integrator without it converges to the image of path tracing with it, in spectral mode through
+// the chromatic sphere. Broken once: weighting by wavelength 0's density instead of the hero's
+// (a biased estimator) fails it.
+TEST(MediaSpectralMis, WithoutItEveryIntegratorConvergesToTheSameImage) {
+    const SceneDesc scene =
+        loadScene(testing::sourceFile("scenes/media/chromatic-sphere.json").string());
+    const BatchImages path = render(scene, IntegratorKind::Path, RenderModeKind::Spectral, 11);
+    ASSERT_GT(path.region(0, 0, 32, 32).mean, 0.0) << "the scene renders black";
+    TransportAblations heroOnly;
+    heroOnly.noMediaSpectralMis = true;
+    for (const IntegratorKind integrator :
+         {IntegratorKind::Path, IntegratorKind::Light, IntegratorKind::Bdpt}) {
+        const BatchImages without =
+            render(scene, integrator, RenderModeKind::Spectral, 44, heroOnly);
+        expectAgreement(
+            path, without,
+            "path vs " + std::string(kIntegratorNames.name(integrator)) + " without spectral MIS",
+            150);
+    }
 }
 
 }  // namespace

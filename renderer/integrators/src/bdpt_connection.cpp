@@ -77,9 +77,10 @@ std::optional<Transmittance<S>> BdptConnector<S>::passes(const Vertex& from, con
 template <SpectrumType S>
 S BdptConnector<S>::throughMedia(const S& value, [[maybe_unused]] const Transmittance<S>& T,
                                  [[maybe_unused]] const S& rUCamera,
-                                 [[maybe_unused]] const S& rULight) const {
+                                 [[maybe_unused]] const S& rULight,
+                                 [[maybe_unused]] int hero) const {
     if constexpr (Mode::kRendersMedia) {
-        if (media_) return value * T.T / (rUCamera * rULight * T.rL).average();
+        if (media_) return value * T.T / ablations_.channelDensity(rUCamera * rULight * T.rL, hero);
     }
     return value;
 }
@@ -99,7 +100,7 @@ BdptConnection<S> BdptConnector<S>::connect(const std::vector<Vertex>& lightPath
         const Vertex& prev = cameraPath[std::size_t(t - 2)];
         value =
             throughMedia(cv.beta * emitted(cv, cv.infinite ? -cv.p : directionTo(cv, prev), path),
-                         Transmittance<S>{}, cv.rU, S(1.0f));
+                         Transmittance<S>{}, cv.rU, S(1.0f), hero);
     } else if (t == 1) {
         // Light vertex s-1 (a surface or medium vertex: s >= 2, since (1, 1) is skipped)
         // seen by the camera.
@@ -121,7 +122,7 @@ BdptConnection<S> BdptConnector<S>::connect(const std::vector<Vertex>& lightPath
         result.toLens = cc->wi;
         const auto T = passes(lv, &before, sampled, hero, path, stats);
         if (!T) return BdptConnection<S>{};
-        value = throughMedia(value, *T, S(1.0f), lv.rU);
+        value = throughMedia(value, *T, S(1.0f), lv.rU, hero);
     } else if (s == 1) {
         // Next-event estimation: a fresh point on a light.
         if (!cv.scatters() || cv.delta) return result;
@@ -156,7 +157,7 @@ BdptConnection<S> BdptConnector<S>::connect(const std::vector<Vertex>& lightPath
         value = cv.beta * f * sampled.beta;
         const auto T = passes(cv, &before, sampled, hero, path, stats);
         if (!T) return BdptConnection<S>{};
-        value = throughMedia(value, *T, cv.rU, S(1.0f));
+        value = throughMedia(value, *T, cv.rU, S(1.0f), hero);
     } else {
         // Both ends scatter (surface or medium vertices): connect them.
         const Vertex& lv = lightPath[std::size_t(s - 1)];
@@ -174,7 +175,7 @@ BdptConnection<S> BdptConnector<S>::connect(const std::vector<Vertex>& lightPath
         value = cv.beta * fc * fl * lv.beta * (1.0f / dist2);
         const auto T = passes(cv, &before, lv, hero, path, stats);
         if (!T) return BdptConnection<S>{};
-        value = throughMedia(value, *T, cv.rU, lv.rU);
+        value = throughMedia(value, *T, cv.rU, lv.rU, hero);
     }
     if (value.maxValue() <= 0.0f) return result;
     result.misWeight = mis_.weight(lightPath, s, cameraPath, t, sampled, path);

@@ -173,7 +173,8 @@ void BdptIntegrator<S>::randomWalk(WalkStart start, int maxVertices, TransportMo
             // The flight passes, ends, or scatters at a medium vertex (medium_transport.h).
             std::optional<float> scatterAt;
             if (mf) {
-                const FlightOutcome f = mf->apply(o, d, start.hero, beta, rU, nullptr, nullptr);
+                const FlightOutcome f =
+                    mf->apply(o, d, start.hero, beta, rU, nullptr, nullptr, ablations_);
                 if (f.outcome == FlightOutcome::Outcome::Ends) return;
                 if (f.outcome == FlightOutcome::Outcome::Scatters) scatterAt = f.t;
             }

@@ -1,11 +1,13 @@
 #include "lamina/integrators/grid_tracking.h"
 
 #include <bit>
+#include <type_traits>
 
 #include "lamina/core/hash.h"
 #include "lamina/core/pcg32.h"
 #include "lamina/integrators/majorant_walk.h"
 #include "lamina/integrators/medium_transport.h"
+#include "lamina/scene/colour_grid.h"
 
 namespace lamina::render {
 
@@ -18,6 +20,39 @@ S clampZero(S a) {
     for (int i = 0; i < S::kSize; ++i)
         a[i] = std::max(a[i], 0.0f);
     return a;
+}
+
+/// A grid medium's coefficients at a point of medium space: sigma_a and sigma_s per unit
+/// density and the density (a density grid), or the cells' own coefficients at density 1
+/// (per-cell colour grids, in RGB or at the path's wavelengths).
+template <SpectrumType S>
+struct LocalCoefficients {
+    S sigmaA, sigmaS;
+    float density;
+};
+
+template <SpectrumType S>
+LocalCoefficients<S> coefficientsAt(const MediumCoefficients<S>& m, const Vec3f& p) {
+    const GridDensity& grid = *m.grid;
+    if (!grid.colours) return {m.sigmaA, m.sigmaS, grid.densityAt(p)};
+    const Vec3f u = grid.local(p);
+    LocalCoefficients<S> c{S(0.0f), S(0.0f), 1.0f};
+    if constexpr (std::is_same_v<S, Rgb<float>>) {
+        c.sigmaA = grid.colours->sigmaA.lookupRgb(u);
+        c.sigmaS = grid.colours->sigmaS.lookupRgb(u);
+    } else {
+        grid.colours->sigmaA.lookupSpectral(u, m.lambda.data(), S::kSize, &c.sigmaA[0]);
+        grid.colours->sigmaS.lookupSpectral(u, m.lambda.data(), S::kSize, &c.sigmaS[0]);
+    }
+    return c;
+}
+
+/// What a majorant cell's maximum multiplies: sigma_t per unit density for a density grid;
+/// 1 in every channel for colour grids, whose majorants bound sigma_t itself over the channels
+/// and wavelengths (as pbrt-v4's RGBGridMedium's majorants are the same at every wavelength).
+template <SpectrumType S>
+S majorantUnit(const MediumCoefficients<S>& m) {
+    return m.grid->colours ? S(1.0f) : m.sigmaT();
 }
 
 /// The tentative collisions of both trackings: in each piece of the majorant walk, distances
@@ -63,32 +98,37 @@ std::uint64_t trackingSeed(const Vec3f& o, const Vec3f& d, float u) {
 
 template <SpectrumType S>
 FlightOutcome deltaTrack(const MediumCoefficients<S>& m, const Vec3f& o, const Vec3f& d, float tMax,
-                         int hero, std::uint64_t seed, S& beta, S& rU, S* rL, S* L) {
+                         int hero, std::uint64_t seed, S& beta, S& rU, S* rL, S* L,
+                         const TransportAblations& ablations) {
     const GridDensity& grid = *m.grid;
-    const S sigmaT = m.sigmaT();
+    const S sigmaT = majorantUnit(m);
+    // The ray in medium space: the same t, so the distances stay the scene's.
+    const Vec3f mo = grid.pointToMedium(o), md = grid.directionToMedium(d);
     Pcg32 rng(seed);
     FlightOutcome result{FlightOutcome::Outcome::Passes, tMax};
     const float tau = trackCollisions(
-        grid, sigmaT, o, d, tMax, hero, rng, [&](float t, float maximum, float since) {
+        grid, sigmaT, mo, md, tMax, hero, rng, [&](float t, float maximum, float since) {
             const S Tmaj = transmittance(sigmaT, since);
             const S sigmaMaj = sigmaT * maximum;
             if (!(Tmaj[hero] > 0.0f)) {
                 result.outcome = FlightOutcome::Outcome::Ends;
                 return false;
             }
-            const float density = grid.densityAt(o + d * t);
+            const LocalCoefficients<S> here = coefficientsAt(m, mo + md * t);
+            const float density = here.density;
             if (L && m.emits && density > 0.0f) {
                 // The emission at every tentative collision, weighted over the channels.
                 const float pdf = Tmaj[hero] * sigmaMaj[hero];
                 const S rE = rU * sigmaMaj * Tmaj / pdf;
                 if (rE.maxValue() > 0.0f)
-                    *L += beta * Tmaj * m.sigmaA * density * m.emission / (pdf * rE.average());
+                    *L += beta * Tmaj * here.sigmaA * density * m.emission /
+                          (pdf * ablations.channelDensity(rE, hero));
             }
-            const S sigmaTHere = sigmaT * density;
+            const S sigmaTHere = (here.sigmaA + here.sigmaS) * density;
             if (rng.nextFloat() * sigmaMaj[hero] < sigmaTHere[hero]) {
                 // A real collision: the path scatters here (its absorption in the weight sigma_s).
                 const float pdf = Tmaj[hero] * sigmaTHere[hero];
-                beta *= Tmaj * m.sigmaS * density / pdf;
+                beta *= Tmaj * here.sigmaS * density / pdf;
                 rU *= Tmaj * sigmaTHere / pdf;
                 result = {FlightOutcome::Outcome::Scatters, t};
                 return false;
@@ -121,10 +161,11 @@ template <SpectrumType S>
 void ratioTrack(const MediumCoefficients<S>& m, const Vec3f& o, const Vec3f& d, float tMax,
                 int hero, std::uint64_t seed, Transmittance<S>& tr) {
     const GridDensity& grid = *m.grid;
-    const S sigmaT = m.sigmaT();
+    const S sigmaT = majorantUnit(m);
+    const Vec3f mo = grid.pointToMedium(o), md = grid.directionToMedium(d);
     Pcg32 rng(seed);
     const float tau = trackCollisions(
-        grid, sigmaT, o, d, tMax, hero, rng, [&](float t, float maximum, float since) {
+        grid, sigmaT, mo, md, tMax, hero, rng, [&](float t, float maximum, float since) {
             const S Tmaj = transmittance(sigmaT, since);
             const S sigmaMaj = sigmaT * maximum;
             const float pdf = Tmaj[hero] * sigmaMaj[hero];
@@ -132,7 +173,8 @@ void ratioTrack(const MediumCoefficients<S>& m, const Vec3f& o, const Vec3f& d, 
                 tr.T = S(0.0f);
                 return false;
             }
-            const S sigmaN = clampZero(sigmaMaj - sigmaT * grid.densityAt(o + d * t));
+            const LocalCoefficients<S> here = coefficientsAt(m, mo + md * t);
+            const S sigmaN = clampZero(sigmaMaj - (here.sigmaA + here.sigmaS) * here.density);
             tr.T *= Tmaj * sigmaN / pdf;
             tr.passing *= Tmaj * sigmaN / pdf;
             tr.rL *= Tmaj * sigmaMaj / pdf;
@@ -158,7 +200,8 @@ void ratioTrack(const MediumCoefficients<S>& m, const Vec3f& o, const Vec3f& d, 
 
 #define LAMINA_GRID_TRACKING(S)                                                                    \
     template FlightOutcome deltaTrack(const MediumCoefficients<S>&, const Vec3f&, const Vec3f&,    \
-                                      float, int, std::uint64_t, S&, S&, S*, S*);                  \
+                                      float, int, std::uint64_t, S&, S&, S*, S*,                   \
+                                      const TransportAblations&);                                  \
     template void ratioTrack(const MediumCoefficients<S>&, const Vec3f&, const Vec3f&, float, int, \
                              std::uint64_t, Transmittance<S>&);
 LAMINA_GRID_TRACKING(Rgb<float>)

@@ -60,7 +60,7 @@ void LightIntegrator<S>::traceParticle(PixelSampler& sampler, typename Mode::Pat
     // homogeneous media).
     const auto throughMedia = [&](const S& value, [[maybe_unused]] const Transmittance<S>& T) {
         if constexpr (Mode::kRendersMedia) {
-            if (media_) return S(value * T.T / (rU * T.rL).average());
+            if (media_) return S(value * T.T / ablations_.channelDensity(rU * T.rL, hero));
         }
         return value;
     };
@@ -113,7 +113,8 @@ void LightIntegrator<S>::traceParticle(PixelSampler& sampler, typename Mode::Pat
             // The flight passes, ends, or scatters at a medium vertex (medium_transport.h).
             std::optional<float> scatterAt;
             if (mf) {
-                const FlightOutcome f = mf->apply(o, d, hero, beta, rU, nullptr, nullptr);
+                const FlightOutcome f =
+                    mf->apply(o, d, hero, beta, rU, nullptr, nullptr, ablations_);
                 if (f.outcome == FlightOutcome::Outcome::Ends) break;
                 if (f.outcome == FlightOutcome::Outcome::Scatters) scatterAt = f.t;
             }

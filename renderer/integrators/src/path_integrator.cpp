@@ -25,6 +25,7 @@ PathIntegrator<S>::PathIntegrator(const IntegratorSetup<S>& setup)
       settings_(setup.settings),
       filter_(setup.filter),
       aovs_(setup.aovs),
+      ablations_(setup.ablations),
       media_(Mode::kRendersMedia && setup.context.scene.hasMedia()) {}
 
 template <SpectrumType S>
@@ -67,8 +68,9 @@ S PathIntegrator<S>::radiance(const Vec3f& rayOrigin, const Vec3f& rayDirection,
     const auto reached = [&](const S& Le, float lightPdf) -> S {
         if constexpr (Mode::kRendersMedia) {
             if (media_) {
-                if (specularBounce || !nextEvent) return beta * Le / rU.average();
-                return beta * Le / (rU + rL * lightPdf).average();
+                if (specularBounce || !nextEvent)
+                    return beta * Le / ablations_.channelDensity(rU, hero);
+                return beta * Le / ablations_.channelDensity(rU + rL * lightPdf, hero);
             }
         }
         const float w = specularBounce || !nextEvent ? 1.0f : powerHeuristic(prevPdf, lightPdf);
@@ -86,8 +88,8 @@ S PathIntegrator<S>::radiance(const Vec3f& rayOrigin, const Vec3f& rayDirection,
             // and the emission at its collisions in a grid).
             std::optional<float> scatterAt;
             if (mf) {
-                const FlightOutcome f =
-                    mf->apply(o, d, hero, beta, rU, &rL, mf->coefficients.emits ? &L : nullptr);
+                const FlightOutcome f = mf->apply(
+                    o, d, hero, beta, rU, &rL, mf->coefficients.emits ? &L : nullptr, ablations_);
                 if (f.outcome == FlightOutcome::Outcome::Ends) break;
                 if (f.outcome == FlightOutcome::Outcome::Scatters) scatterAt = f.t;
             }
@@ -285,7 +287,8 @@ S PathIntegrator<S>::directLight(const Vertex& v, Value&& value, Density&& densi
         const S rLight = pathRatios * lightPdf * T->rL;
         const S denominator =
             ls->delta ? rLight : rLight + pathRatios * density(ls->wi) * T->passing;
-        return f * T->T * mode_.emission(ls->radiance, path) / denominator.average();
+        return f * T->T * mode_.emission(ls->radiance, path) /
+               ablations_.channelDensity(denominator, v.hero);
     }
     return S(0.0f);
 }

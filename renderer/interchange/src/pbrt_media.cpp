@@ -1,7 +1,7 @@
 // pbrt-v4's MakeNamedMedium -> the lamina document's `media` (docs/interchange.md, "Media").
 // Homogeneous media translate exactly (pbrt-v4's HomogeneousMedium: sigma_a and sigma_s,
 // `scale` on both, Henyey-Greenstein `g`, emission `Le` times `Lescale`); grid, cloud and
-// NanoVDB media are refused at their line.
+// NanoVDB media in pbrt_grid_media.cpp.
 #include <array>
 #include <cmath>
 
@@ -78,10 +78,12 @@ Json triple(const std::array<double, 3>& v) {
     return Json::array({v[0], v[1], v[2]});
 }
 
+}  // namespace
+
 // A scattering coefficient: a float, an rgb triple (both as lamina reads them: spectral mode
 // upsamples an rgb coefficient as an unbounded spectrum, as pbrt-v4 does) or spectrum pairs of
 // one value (a constant). Pairs that vary are refused: lamina's media take RGB coefficients.
-Json coefficient(TranslationContext& ctx, const ParamList& params, const std::string& name) {
+Json mediumCoefficient(TranslationContext& ctx, const ParamList& params, const std::string& name) {
     const Param* p = params.find(name);
     if (!p) return 1.0;  // pbrt-v4's default for both coefficients
     Json v = numericSpectrum(ctx, params, *p, 1.0);
@@ -106,14 +108,25 @@ Json coefficient(TranslationContext& ctx, const ParamList& params, const std::st
     return v;
 }
 
+void mediumScaleAndPhase(const ParamList& params, Json& medium) {
+    const double scale = params.number("scale", 1.0);
+    if (!(scale >= 0) || !std::isfinite(scale))
+        params.fail(*params.find("scale"), "must be finite and >= 0");
+    medium["scale"] = scale;
+    const double g = params.number("g", 0.0);
+    if (!(std::abs(g) < 1))
+        params.fail(*params.find("g"),
+                    "must lie in (-1, 1): lamina's Henyey-Greenstein phase function has no "
+                    "delta limit");
+    medium["g"] = g;
+}
+
+namespace {
+
 Json translateMedium(TranslationContext& ctx, const MediumDef& m) {
     const Entity& e = m.entity;
     const ParamList& params = e.params;
-    if (e.type != "homogeneous")
-        ctx.fail(e.location, "MakeNamedMedium \"" + m.name + "\": \"" + e.type +
-                                 "\" media are not supported (the importer translates "
-                                 "homogeneous media; grids, clouds and NanoVDB files are not "
-                                 "translated yet)");
+    if (e.type != "homogeneous") return translateGridMedium(ctx, m);
     Json medium{{"type", "homogeneous"}};
     const std::string preset = params.string("preset", "");
     const MeasuredMedium* measured = nullptr;
@@ -133,19 +146,10 @@ Json translateMedium(TranslationContext& ctx, const MediumDef& m) {
                                          ignored +
                                          "\" ignored: the preset sets it (as in pbrt-v4)");
     } else {
-        medium["sigma_a"] = coefficient(ctx, params, "sigma_a");
-        medium["sigma_s"] = coefficient(ctx, params, "sigma_s");
+        medium["sigma_a"] = mediumCoefficient(ctx, params, "sigma_a");
+        medium["sigma_s"] = mediumCoefficient(ctx, params, "sigma_s");
     }
-    const double scale = params.number("scale", 1.0);
-    if (!(scale >= 0) || !std::isfinite(scale))
-        params.fail(*params.find("scale"), "must be finite and >= 0");
-    medium["scale"] = scale;
-    const double g = params.number("g", 0.0);
-    if (!(std::abs(g) < 1))
-        params.fail(*params.find("g"),
-                    "must lie in (-1, 1): lamina's Henyey-Greenstein phase function has no "
-                    "delta limit");
-    medium["g"] = g;
+    mediumScaleAndPhase(params, medium);
     const double leScale = params.number("Lescale", 1.0);
     if (const Param* le = params.find("Le")) {
         // An illuminant spectrum normalised to one nit and times Lescale, as pbrt-v4

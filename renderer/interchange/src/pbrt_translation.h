@@ -77,6 +77,14 @@ std::string useTexture(TranslationContext& context, const std::string& name,
 std::string useMedium(TranslationContext& context, const std::string& name, const Location& usedAt);
 /// Warns of each MakeNamedMedium no shape or camera used (it is not translated).
 void warnUnusedMedia(TranslationContext& context);
+/// A medium's sigma_a or sigma_s (default 1, pbrt-v4's): a number or rgb (pbrt_media.cpp).
+Json mediumCoefficient(TranslationContext& context, const ParamList& params,
+                       const std::string& name);
+/// A medium's `scale` and Henyey-Greenstein `g` into `medium` (pbrt_media.cpp).
+void mediumScaleAndPhase(const ParamList& params, Json& medium);
+/// MakeNamedMedium "uniformgrid", "rgbgrid", "cloud" or "nanovdb" -> a lamina grid medium, placed
+/// by the transform in effect at MakeNamedMedium (pbrt_grid_media.cpp).
+Json translateGridMedium(TranslationContext& context, const MediumDef& medium);
 
 // Spectra (pbrt_spectra.cpp).
 

@@ -76,6 +76,10 @@ ImageMetadata renderMetadata(const SceneDesc& scene, const RenderOptions& option
     meta.ints["max_depth"] = s.maxDepth;
     meta.ints["rr_depth"] = s.russianRouletteDepth;
     if (s.integrator == IntegratorKind::Path) meta.ints["next_event"] = s.nextEvent ? 1 : 0;
+    // Only when set: an estimator worse on purpose (transport_ablations.h).
+    if (options.ablations.noMediaSpectralMis)
+        meta.strings["ablations"] =
+            std::string(kRenderAblationNames.name(RenderAblation::MediaSpectralMis));
     meta.ints["partial"] = r.partial ? 1 : 0;
     meta.ints["rejected_samples"] =
         int(std::min<std::uint64_t>(r.film->rejectedSamples(), 1u << 30));

@@ -84,6 +84,7 @@ std::string settingsLine(const SceneDesc& scene, const RenderOptions& options,
         << " ablations=" << options.ablations.noAdjointCorrection
         << options.ablations.radianceOnLightPaths << options.ablations.swappedConnections;
     // Only when given, so that the settings of shards rendered before the key existed match.
+    if (options.ablations.noMediaSpectralMis) out << " media_spectral_mis=0";
     if (scene.film.filterSigma) out << " filter_sigma=" << *scene.film.filterSigma;
     if (scene.film.imagingRatio() != 1) out << " imaging_ratio=" << scene.film.imagingRatio();
     if (scene.film.whiteBalance > 0) out << " white_balance=" << scene.film.whiteBalance;

@@ -29,9 +29,50 @@ std::pair<int, int> support(int c, int cells, int n) {
     return {std::max(int(std::floor(a)) - 1, 0), std::min(int(std::floor(b)) + 2, n - 1)};
 }
 
+/// Where `v` of [0, 1] falls between the centres of `n` cells when the values beyond the grid
+/// are 0: the two cells (-1 or n beyond it) and the weight of the second.
+Between betweenUnclamped(float v, int n) {
+    v = v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;
+    const float s = v * float(n) - 0.5f;
+    const float below = std::floor(s);
+    return {int(below), int(below) + 1, s - below};
+}
+
 }  // namespace
 
+TrilinearCorners trilinearCorners(Vec3f u, int nx, int ny, int nz, bool zeroOutside) {
+    const auto axis = [&](float v, int n) {
+        return zeroOutside ? betweenUnclamped(v, n) : between(v, n);
+    };
+    const Between x = axis(u.x, nx), y = axis(u.y, ny), z = axis(u.z, nz);
+    TrilinearCorners c;
+    for (int k = 0; k < 8; ++k) {
+        const int i = k & 1 ? x.i1 : x.i0, j = k & 2 ? y.i1 : y.i0, l = k & 4 ? z.i1 : z.i0;
+        const bool inside = i >= 0 && i < nx && j >= 0 && j < ny && l >= 0 && l < nz;
+        c.index[k] = inside ? long(i) + long(nx) * (long(j) + long(ny) * long(l)) : -1;
+        c.weight[k] =
+            (k & 1 ? x.f : 1.0f - x.f) * (k & 2 ? y.f : 1.0f - y.f) * (k & 4 ? z.f : 1.0f - z.f);
+    }
+    return c;
+}
+
 float DensityGrid::lookup(Vec3f u) const {
+    if (zeroOutside) {
+        // pbrt-v4's lookups beyond the grid read 0. The lerps are clamped as below.
+        const Between x = betweenUnclamped(u.x, nx), y = betweenUnclamped(u.y, ny),
+                      z = betweenUnclamped(u.z, nz);
+        const auto value = [&](int i, int j, int k) {
+            return i < 0 || i >= nx || j < 0 || j >= ny || k < 0 || k >= nz ? 0.0f : at(i, j, k);
+        };
+        const auto lerp = [](float a, float b, float f) {
+            return std::clamp((1.0f - f) * a + f * b, std::min(a, b), std::max(a, b));
+        };
+        const auto row = [&](int j, int k) {
+            return lerp(value(x.i0, j, k), value(x.i1, j, k), x.f);
+        };
+        const auto plane = [&](int k) { return lerp(row(y.i0, k), row(y.i1, k), y.f); };
+        return lerp(plane(z.i0), plane(z.i1), z.f);
+    }
     const Between x = between(u.x, nx), y = between(u.y, ny), z = between(u.z, nz);
     // Clamped to the two values: rounding cannot take an interpolation above the larger, which
     // the majorants assume.
@@ -44,10 +85,15 @@ float DensityGrid::lookup(Vec3f u) const {
 }
 
 MajorantGrid MajorantGrid::build(const DensityGrid& grid, int resolution) {
+    return build(grid, std::min(resolution, grid.nx), std::min(resolution, grid.ny),
+                 std::min(resolution, grid.nz));
+}
+
+MajorantGrid MajorantGrid::build(const DensityGrid& grid, int cellsX, int cellsY, int cellsZ) {
     MajorantGrid m;
-    m.nx = std::min(resolution, grid.nx);
-    m.ny = std::min(resolution, grid.ny);
-    m.nz = std::min(resolution, grid.nz);
+    m.nx = cellsX;
+    m.ny = cellsY;
+    m.nz = cellsZ;
     m.maxima.resize(std::size_t(m.nx) * std::size_t(m.ny) * std::size_t(m.nz));
     std::size_t out = 0;
     for (int cz = 0; cz < m.nz; ++cz) {

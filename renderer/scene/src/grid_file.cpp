@@ -35,11 +35,16 @@ DensityGrid readSize(const JsonReader& r) {
     g.nx = int(n[0]);
     g.ny = int(n[1]);
     g.nz = int(n[2]);
+    // An RGB value per cell (per-channel coefficients, colour_grid.h), the channels together.
+    g.channels = int(r.integer("channels", 1, 1, 3));
+    if (g.channels == 2) r.failAt("channels", "expected 1 or 3, got 2");
     return g;
 }
 
+/// The numbers a grid holds: nx ny nz times its channels.
 std::uint64_t count(const DensityGrid& g) {
-    return std::uint64_t(g.nx) * std::uint64_t(g.ny) * std::uint64_t(g.nz);
+    return std::uint64_t(g.nx) * std::uint64_t(g.ny) * std::uint64_t(g.nz) *
+           std::uint64_t(g.channels);
 }
 
 }  // namespace
@@ -51,7 +56,7 @@ DensityGrid readInlineGrid(const JsonReader& r) {
     const Json& values = r.value().at("values");
     if (!values.is_array() || values.size() != count(g))
         r.failAt("values", "expected an array of " + std::to_string(count(g)) +
-                               " densities (nx * ny * nz), got " +
+                               " densities (nx * ny * nz times channels), got " +
                                (values.is_array() ? std::to_string(values.size()) + " values"
                                                   : shortDump(values)));
     g.values.reserve(values.size());
@@ -83,6 +88,9 @@ DensityGrid readGridFile(const std::filesystem::path& path) {
         r.failAt("lamina_grid", "missing; expected 1 (the version of the format)");
     DensityGrid g = readSize(r);
     r.finish();
+    if (count(g) > kMaxGridValues)
+        r.failAt("channels", "make " + std::to_string(count(g)) + " values; at most " +
+                                 std::to_string(kMaxGridValues) + " are read");
     const std::uint64_t dataBytes = 4 * count(g), headerBytes = header.size() + 1;
     if (bytes != headerBytes + dataBytes)
         throw InputError(name + ": expected " + std::to_string(dataBytes) + " bytes of float32 (" +
@@ -101,9 +109,10 @@ DensityGrid readGridFile(const std::filesystem::path& path) {
             std::memcpy(&v, &b, 4);
         }
         if (!(v >= 0.0f) || !std::isfinite(v)) {
-            const std::size_t x = i % std::size_t(g.nx),
-                              y = i / std::size_t(g.nx) % std::size_t(g.ny),
-                              z = i / (std::size_t(g.nx) * std::size_t(g.ny));
+            const std::size_t cell = i / std::size_t(g.channels);
+            const std::size_t x = cell % std::size_t(g.nx),
+                              y = cell / std::size_t(g.nx) % std::size_t(g.ny),
+                              z = cell / (std::size_t(g.nx) * std::size_t(g.ny));
             throw InputError(name + ": value " + std::to_string(i) + " (x " + std::to_string(x) +
                              ", y " + std::to_string(y) + ", z " + std::to_string(z) + ") is " +
                              (std::isnan(v) ? std::string("NaN") : formatNumber(double(v))) +

@@ -104,13 +104,14 @@ void readTriangles(const JsonReader& r, ShapeKind kind, MeshDesc& mesh) {
 
 void finishMesh(const JsonReader& r, MeshDesc mesh, const Mat4& m, const ShapeDestination& to) {
     const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(m)));
+    // The key a coordinate out of range is reported at, found once (not per vertex: a mesh
+    // file has millions); the message is made only for the vertex that fails.
+    const char* key = r.has("transform") ? "transform" : r.has("file") ? "file" : "positions";
     for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
         const Vec3d p = Vec3d(m * glm::dvec4(Vec3d(mesh.positions[i]), 1.0));
-        checkCoordinates(r,
-                         r.has("transform") ? "transform"
-                         : r.has("file")    ? "file"
-                                            : "positions",
-                         p, "vertex " + std::to_string(i) + " at");
+        if (!(std::abs(p.x) <= kMaxSceneCoordinate && std::abs(p.y) <= kMaxSceneCoordinate &&
+              std::abs(p.z) <= kMaxSceneCoordinate))
+            checkCoordinates(r, key, p, "vertex " + std::to_string(i) + " at");
         mesh.positions[i] = Vec3<float>(p);
     }
     for (auto& n : mesh.normals)

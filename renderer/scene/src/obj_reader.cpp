@@ -1,11 +1,15 @@
 #include <tiny_obj_loader.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <map>
 #include <set>
 #include <sstream>
+#include <string_view>
+#include <unordered_map>
 
 #include "lamina/core/error.h"
 #include "lamina/core/input_file.h"
@@ -36,14 +40,62 @@ void refuseGeometryWarnings(const std::filesystem::path& file, const std::string
 }
 
 // Checks one index of a face corner against its array: `optional` arrays (normals, uvs)
-// may be absent at a corner (index -1).
-void checkIndex(const std::filesystem::path& file, const std::string& face, const char* what,
+// may be absent at a corner (index -1). `face()` names the face, made only for a message.
+template <typename FaceName>
+void checkIndex(const std::filesystem::path& file, const FaceName& face, const char* what,
                 int index, std::size_t count, bool optional) {
     if ((optional && index == -1) || (index >= 0 && std::size_t(index) < count)) return;
-    throw InputError(file.string() + ": " + face + ": " + what + " index " +
+    throw InputError(file.string() + ": " + face() + ": " + what + " index " +
                      std::to_string(index >= 0 ? std::int64_t(index) + 1 : std::int64_t(index)) +
                      " is out of range (the file has " + std::to_string(count) + ")");
 }
+
+// A face corner's (position, normal, uv) indices, the key under which a mesh shares one
+// vertex.
+struct CornerKey {
+    int position, normal, uv;
+    bool operator==(const CornerKey&) const = default;
+};
+struct CornerKeyHash {
+    std::size_t operator()(const CornerKey& k) const {
+        std::uint64_t h = std::uint32_t(k.position);
+        h = h * 0x9E3779B97F4A7C15ull ^ std::uint32_t(k.normal);
+        h = h * 0x9E3779B97F4A7C15ull ^ std::uint32_t(k.uv);
+        return std::size_t(h ^ (h >> 29));
+    }
+};
+
+// The mesh vertex of each corner key seen so far. A position's first key is kept in an array
+// indexed by the position (one look-up, no hashing: most files give a position one normal and
+// one uv); a position met again with another normal or uv goes to a hash map.
+class SharedCorners {
+  public:
+    explicit SharedCorners(std::size_t positions) : first_(positions) {}
+
+    /// The vertex of `key`, or a new one numbered `next` (`added` says which).
+    std::uint32_t vertexOf(const CornerKey& key, std::uint32_t next, bool& added) {
+        First& f = first_[std::size_t(key.position)];
+        added = false;
+        if (f.vertex == kNone) {
+            f = {next, key.normal, key.uv};
+            added = true;
+            return next;
+        }
+        if (f.normal == key.normal && f.uv == key.uv) return f.vertex;
+        const auto [it, inserted] = others_.emplace(key, next);
+        added = inserted;
+        return it->second;
+    }
+
+  private:
+    static constexpr std::uint32_t kNone = 0xffffffffu;
+    struct First {
+        std::uint32_t vertex = kNone;
+        int normal = -1, uv = -1;
+    };
+    std::vector<First> first_;
+    std::unordered_map<CornerKey, std::uint32_t, CornerKeyHash> others_;
+};
 
 // The first NaN or infinite number of an attribute array (v, vn or vt lines, `n` numbers
 // each; 1e39 overflows to infinity in float), or a zero normal: geometry that would silently
@@ -66,22 +118,47 @@ void checkValues(const std::filesystem::path& file, const std::vector<tinyobj::r
 // or infinity would become a vertex at the origin. The numbers of the v, vn and vt lines are
 // read here first: each must be a finite number (the PLY reader refuses the same).
 void checkAttributeNumbers(const std::filesystem::path& file, const std::string& text) {
-    std::istringstream in(text);
-    std::size_t lineNumber = 0;
-    for (std::string line; std::getline(in, line);) {
-        ++lineNumber;
-        std::istringstream tokens(line);
-        std::string keyword;
-        tokens >> keyword;
-        const char* what = keyword == "v"    ? "vertex position (v)"
-                           : keyword == "vn" ? "normal (vn)"
-                           : keyword == "vt" ? "texture coordinate (vt)"
-                                             : nullptr;
+    // A scan over the text with pointers: a stream per line took most of a big file's time.
+    const char* at = text.data();
+    const char* const end = text.data() + text.size();
+    const auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
+    for (std::size_t lineNumber = 1; at < end; ++lineNumber) {
+        const char* lineEnd =
+            static_cast<const char*>(std::memchr(at, '\n', std::size_t(end - at)));
+        if (!lineEnd) lineEnd = end;
+        const char* p = at;
+        at = lineEnd + 1;
+        while (p < lineEnd && blank(*p))
+            ++p;
+        const char* keyword = p;
+        while (p < lineEnd && !blank(*p))
+            ++p;
+        const std::string_view k(keyword, std::size_t(p - keyword));
+        const char* what = k == "v"    ? "vertex position (v)"
+                           : k == "vn" ? "normal (vn)"
+                           : k == "vt" ? "texture coordinate (vt)"
+                                       : nullptr;
         if (!what) continue;
-        for (std::string token; tokens >> token;) {
-            char* end = nullptr;
-            const double v = std::strtod(token.c_str(), &end);
-            const bool number = end == token.c_str() + token.size();
+        for (;;) {
+            while (p < lineEnd && blank(*p))
+                ++p;
+            if (p == lineEnd) break;
+            const char* tokenEnd = p;
+            while (tokenEnd < lineEnd && !blank(*tokenEnd))
+                ++tokenEnd;
+            // std::from_chars first (several times faster than strtod); what it does not take
+            // whole (a leading '+', hexadecimal floats) is read by strtod, as before.
+            double v = 0;
+            const auto [ptr, ec] = std::from_chars(p, tokenEnd, v);
+            if (ec == std::errc() && ptr == tokenEnd && std::isfinite(v)) {
+                p = tokenEnd;
+                continue;
+            }
+            const std::string token(p, tokenEnd);
+            p = tokenEnd;
+            char* parsed = nullptr;
+            v = std::strtod(token.c_str(), &parsed);
+            const bool number = parsed == token.c_str() + token.size();
             if (number && std::isfinite(v)) continue;
             throw InputError(file.string() + ": line " + std::to_string(lineNumber) + ": " + what +
                              ": \"" + token.substr(0, 40) + "\" is " +
@@ -118,7 +195,7 @@ std::vector<std::pair<int, MeshDesc>> buildMeshes(const std::filesystem::path& f
     checkValues(file, attrib.texcoords, 2, "texture coordinate (vt)", false);
     const std::size_t positions = attrib.vertices.size() / 3, normals = attrib.normals.size() / 3,
                       uvs = attrib.texcoords.size() / 2;
-    std::map<int, std::map<std::array<int, 3>, std::uint32_t>> unique;  // per key
+    std::map<int, SharedCorners> unique;  // per key
     bool hasNormals = normals > 0, hasUvs = uvs > 0;
     for (const auto& shape : reader.GetShapes())
         for (const auto& index : shape.mesh.indices) {
@@ -128,14 +205,15 @@ std::vector<std::pair<int, MeshDesc>> buildMeshes(const std::filesystem::path& f
     for (const auto& shape : reader.GetShapes()) {
         const auto& idx = shape.mesh.indices;
         for (std::size_t t = 0; t + 2 < idx.size(); t += 3) {
-            const std::string face =
-                (shape.name.empty() ? std::string() : "object \"" + shape.name + "\", ") +
-                "triangle " + std::to_string(t / 3);
+            const auto face = [&] {
+                return (shape.name.empty() ? std::string() : "object \"" + shape.name + "\", ") +
+                       "triangle " + std::to_string(t / 3);
+            };
             const int meshKey = keyOf(shape, t / 3);
             const auto [at, added] = meshOfKey.emplace(meshKey, meshes.size());
             if (added) meshes.emplace_back(meshKey, MeshDesc{});
             MeshDesc& mesh = meshes[at->second].second;
-            auto& shared = unique[meshKey];
+            SharedCorners& shared = unique.try_emplace(meshKey, positions).first->second;
             std::array<std::uint32_t, 3> tri{};
             for (int k = 0; k < 3; ++k) {
                 const auto& i = idx[t + std::size_t(k)];
@@ -143,9 +221,11 @@ std::vector<std::pair<int, MeshDesc>> buildMeshes(const std::filesystem::path& f
                 checkIndex(file, face, "vertex", i.vertex_index, positions, false);
                 checkIndex(file, face, "normal", i.normal_index, normals, true);
                 checkIndex(file, face, "texture coordinate", i.texcoord_index, uvs, true);
-                const std::array<int, 3> key{i.vertex_index, hasNormals ? i.normal_index : -1,
-                                             hasUvs ? i.texcoord_index : -1};
-                auto [it, inserted] = shared.emplace(key, std::uint32_t(mesh.positions.size()));
+                const CornerKey key{i.vertex_index, hasNormals ? i.normal_index : -1,
+                                    hasUvs ? i.texcoord_index : -1};
+                bool inserted = false;
+                const std::uint32_t vertex =
+                    shared.vertexOf(key, std::uint32_t(mesh.positions.size()), inserted);
                 if (inserted) {
                     const auto v = std::size_t(i.vertex_index) * 3;
                     mesh.positions.emplace_back(attrib.vertices[v], attrib.vertices[v + 1],
@@ -160,7 +240,7 @@ std::vector<std::pair<int, MeshDesc>> buildMeshes(const std::filesystem::path& f
                         mesh.uvs.emplace_back(attrib.texcoords[u], attrib.texcoords[u + 1]);
                     }
                 }
-                tri[std::size_t(k)] = it->second;
+                tri[std::size_t(k)] = vertex;
             }
             mesh.triangles.push_back(tri);
         }

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include <zlib.h>
@@ -36,10 +37,57 @@ std::unique_ptr<std::istream> openPly(const std::filesystem::path& file, std::ui
 
 enum class Format { Ascii, BinaryLittle, BinaryBig };
 
+// A scalar type of the header, resolved once: the body is read by a switch, not by comparing
+// type names for every number (which took most of a 10-million-triangle file's reading time).
+enum class Scalar : std::uint8_t {
+    None,
+    Int8,
+    UInt8,
+    Int16,
+    UInt16,
+    Int32,
+    UInt32,
+    Float32,
+    Float64
+};
+
+Scalar scalarType(const std::string& t) {
+    if (t == "char" || t == "int8") return Scalar::Int8;
+    if (t == "uchar" || t == "uint8") return Scalar::UInt8;
+    if (t == "short" || t == "int16") return Scalar::Int16;
+    if (t == "ushort" || t == "uint16") return Scalar::UInt16;
+    if (t == "int" || t == "int32") return Scalar::Int32;
+    if (t == "uint" || t == "uint32") return Scalar::UInt32;
+    if (t == "float" || t == "float32") return Scalar::Float32;
+    if (t == "double" || t == "float64") return Scalar::Float64;
+    return Scalar::None;
+}
+
+std::size_t scalarSize(Scalar s) {
+    switch (s) {
+        case Scalar::Int8:
+        case Scalar::UInt8:
+            return 1;
+        case Scalar::Int16:
+        case Scalar::UInt16:
+            return 2;
+        case Scalar::Int32:
+        case Scalar::UInt32:
+        case Scalar::Float32:
+            return 4;
+        case Scalar::Float64:
+            return 8;
+        case Scalar::None:
+            break;
+    }
+    return 0;
+}
+
 struct Property {
     std::string name;
-    std::string type;       // scalar type, or the item type of a list
-    std::string countType;  // list: the count's type; empty for scalars
+    Scalar type = Scalar::None;       // scalar type, or the item type of a list
+    Scalar countType = Scalar::None;  // list: the count's type; None for scalars
+    bool isList() const { return countType != Scalar::None; }
 };
 
 struct Element {
@@ -48,15 +96,34 @@ struct Element {
     std::vector<Property> properties;
 };
 
-std::size_t typeSize(const std::string& t) {
-    if (t == "char" || t == "uchar" || t == "int8" || t == "uint8") return 1;
-    if (t == "short" || t == "ushort" || t == "int16" || t == "uint16") return 2;
-    if (t == "int" || t == "uint" || t == "int32" || t == "uint32" || t == "float" ||
-        t == "float32")
-        return 4;
-    if (t == "double" || t == "float64") return 8;
-    return 0;
-}
+// The binary body, read through a buffer of its own: a number is a few bytes copied out of it,
+// not a call through the stream.
+class ByteSource {
+  public:
+    explicit ByteSource(std::istream& in) : in_(in), buffer_(kChunk) {}
+
+    /// Copies the next n (<= 8) bytes to `out`; false at the end of the data.
+    bool take(unsigned char* out, std::size_t n) {
+        if (size_ - position_ < n && !refill(n)) return false;
+        std::memcpy(out, buffer_.data() + position_, n);
+        position_ += n;
+        return true;
+    }
+
+  private:
+    static constexpr std::size_t kChunk = 1 << 20;
+    bool refill(std::size_t n) {
+        const std::size_t left = size_ - position_;
+        std::memmove(buffer_.data(), buffer_.data() + position_, left);
+        in_.read(reinterpret_cast<char*>(buffer_.data() + left), std::streamsize(kChunk - left));
+        size_ = left + std::size_t(in_.gcount());
+        position_ = 0;
+        return size_ >= n;
+    }
+    std::istream& in_;
+    std::vector<unsigned char> buffer_;
+    std::size_t position_ = 0, size_ = 0;
+};
 
 // An integer read from a file, for messages: "99999999999", never a wrapped 32-bit value.
 std::string integerText(double v) {
@@ -114,16 +181,18 @@ class PlyReader {
             } else if (word == "property") {
                 if (elements_.empty()) fail("property before any element");
                 Property p;
-                std::string t;
+                std::string t, countType, itemType;
                 s >> t;
-                if (t == "list")
-                    s >> p.countType >> p.type >> p.name;
-                else {
-                    p.type = t;
+                if (t == "list") {
+                    s >> countType >> itemType >> p.name;
+                    p.countType = scalarType(countType);
+                    p.type = scalarType(itemType);
+                    if (p.countType == Scalar::None) p.type = Scalar::None;
+                } else {
+                    p.type = scalarType(t);
                     s >> p.name;
                 }
-                if (!s || typeSize(p.type) == 0 ||
-                    (!p.countType.empty() && typeSize(p.countType) == 0))
+                if (!s || p.type == Scalar::None)
                     fail("malformed or unsupported property line: " + line);
                 elements_.back().properties.push_back(p);
             } else if (word == "end_header") {
@@ -144,9 +213,8 @@ class PlyReader {
         for (const Element& e : elements_) {
             std::uintmax_t perElement = 0;
             for (const Property& p : e.properties)
-                perElement += format_ == Format::Ascii
-                                  ? 2
-                                  : typeSize(p.countType.empty() ? p.type : p.countType);
+                perElement +=
+                    format_ == Format::Ascii ? 2 : scalarSize(p.isList() ? p.countType : p.type);
             const std::uintmax_t room = body - std::min(body, needed) + 1;
             if (perElement > 0 && e.count > room / perElement)
                 fail("element " + e.name + ": unexpected end of data: the header says " +
@@ -162,35 +230,53 @@ class PlyReader {
         return 0;
     }
 
-    double readScalar(const std::string& type) {
+    double readScalar(Scalar type) {
         if (format_ == Format::Ascii) {
             double v;
-            if (!(in_ >> v)) fail(where_ + ": unexpected end of data or a non-number");
+            if (!(in_ >> v)) fail(location() + ": unexpected end of data or a non-number");
             return v;
         }
         unsigned char buf[8];
-        const std::size_t n = typeSize(type);
-        if (!in_.read(reinterpret_cast<char*>(buf), std::streamsize(n)))
-            fail(where_ + ": unexpected end of data");
-        const bool swap =
-            (format_ == Format::BinaryBig) == (std::endian::native == std::endian::little);
-        if (swap) std::reverse(buf, buf + n);
+        const std::size_t n = scalarSize(type);
+        if (!bytes_->take(buf, n)) fail(location() + ": unexpected end of data");
+        if (swap_) std::reverse(buf, buf + n);
         auto as = [&](auto v) {
             std::memcpy(&v, buf, sizeof v);
             return double(v);
         };
-        if (type == "char" || type == "int8") return as(std::int8_t{});
-        if (type == "uchar" || type == "uint8") return as(std::uint8_t{});
-        if (type == "short" || type == "int16") return as(std::int16_t{});
-        if (type == "ushort" || type == "uint16") return as(std::uint16_t{});
-        if (type == "int" || type == "int32") return as(std::int32_t{});
-        if (type == "uint" || type == "uint32") return as(std::uint32_t{});
-        if (type == "float" || type == "float32") return as(float{});
+        switch (type) {
+            case Scalar::Int8:
+                return as(std::int8_t{});
+            case Scalar::UInt8:
+                return as(std::uint8_t{});
+            case Scalar::Int16:
+                return as(std::int16_t{});
+            case Scalar::UInt16:
+                return as(std::uint16_t{});
+            case Scalar::Int32:
+                return as(std::int32_t{});
+            case Scalar::UInt32:
+                return as(std::uint32_t{});
+            case Scalar::Float32:
+                return as(float{});
+            case Scalar::Float64:
+            case Scalar::None:
+                break;
+        }
         return as(double{});
+    }
+
+    /// "face 12": the element being read, for messages (made only when one is written).
+    std::string location() const {
+        return element_ ? element_->name + " " + std::to_string(index_) : std::string("header");
     }
 
     void read(MeshDesc& mesh) {
         readHeader();
+        if (format_ != Format::Ascii) {
+            bytes_.emplace(in_);
+            swap_ = (format_ == Format::BinaryBig) == (std::endian::native == std::endian::little);
+        }
         const std::uint32_t base = std::uint32_t(mesh.positions.size());
         const std::size_t vertices = vertexCount();
         if (vertices > std::numeric_limits<std::uint32_t>::max() - base)
@@ -213,14 +299,22 @@ class PlyReader {
             const bool normals = vertex && nx >= 0 && ny >= 0 && nz >= 0;
             const bool uvs = vertex && tu >= 0 && tv >= 0;
             std::vector<double> values(e.properties.size());
+            std::vector<std::uint32_t> polygon;
+            element_ = &e;
+            if (vertex) {
+                mesh.positions.reserve(mesh.positions.size() + e.count);
+                if (normals) mesh.normals.reserve(mesh.normals.size() + e.count);
+                if (uvs) mesh.uvs.reserve(mesh.uvs.size() + e.count);
+            }
+            if (face) mesh.triangles.reserve(mesh.triangles.size() + e.count);
             // An element without properties occupies no bytes: nothing to read, however many.
             const std::size_t count = e.properties.empty() ? 0 : e.count;
             for (std::size_t k = 0; k < count; ++k) {
-                where_ = e.name + " " + std::to_string(k);
-                std::vector<std::uint32_t> polygon;
+                index_ = k;
+                polygon.clear();
                 for (std::size_t p = 0; p < e.properties.size(); ++p) {
                     const Property& prop = e.properties[p];
-                    if (prop.countType.empty()) {
+                    if (!prop.isList()) {
                         values[p] = readScalar(prop.type);
                         continue;
                     }
@@ -276,7 +370,10 @@ class PlyReader {
     std::istream& in_;
     Format format_ = Format::Ascii;
     std::vector<Element> elements_;
-    std::string where_ = "header";  ///< the element being read, for messages
+    std::optional<ByteSource> bytes_;   ///< the binary body
+    bool swap_ = false;                 ///< the body's byte order is not this machine's
+    const Element* element_ = nullptr;  ///< being read, for messages (none: the header)
+    std::size_t index_ = 0;             ///< of the element being read
 };
 
 }  // namespace

@@ -1,8 +1,8 @@
 // The commands that both front ends have (`lamina render|compare|reciprocity|convergence|
-// fresnel|stability|layering` and the Python functions of the same names), each declared once:
-// its name and help, and per option its name, kind, default, range or names, help text, and
-// where the front ends differ, with the reason. The command line adds its options from these
-// (app/src/declared_options.h), the Python module takes its keywords and defaults from them
+// fresnel|stability|layering|polarisation|media` and the Python functions of the same names), each
+// declared once: its name and help, and per option its name, kind, default, range or names, help
+// text, and where the front ends differ, with the reason. The command line adds its options from
+// these (app/src/declared_options.h), the Python module takes its keywords and defaults from them
 // (python/src/experiments_binding.cpp), and tests/python/test_front_ends.py fails when either
 // front end has an option the declaration does not list for it.
 //

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "lamina/core/name_table.h"
+#include "lamina/image/image_io.h"
 #include "lamina/render/renderer.h"
 
 namespace lamina::experiments {
@@ -49,6 +50,17 @@ struct ReferenceFacts {
     std::string noiseSource;
 };
 
+/// The reference in `path` (already read as `image`) with what the premises read of it: size,
+/// metadata, and the noise floor from its variance channels (Variance.R/G/B, else Variance.Y for
+/// every channel; none for a reference of one sample per pixel, whose channels hold no estimate).
+ReferenceFacts readReferenceFacts(const std::string& path, ReferenceSource source,
+                                  const render::RgbImage& image);
+
+/// The facts of a reference rendered by the experiment (`name` for messages): its noise from the
+/// film's own per-pixel variance of the mean.
+ReferenceFacts renderedReferenceFacts(const std::string& name, const render::Film& film,
+                                      const render::RgbImage& image);
+
 /// The checks that need no render, for the measured renders of `mode` with the integrators
 /// `integrators` and the options `measured` (the overrides of every measured render) on
 /// `scene`: mode, resolution, scene, max_depth, settings that converge elsewhere (next-event
@@ -78,7 +90,16 @@ inline constexpr double kMaxReferenceNoiseShare = 0.1;
 /// of the runs: Holds within kMaxReferenceNoiseShare; beyond it Refused for a given reference
 /// unless `allowNoisy` (then Flagged), and Flagged for a rendered or resumed one (its own
 /// settings made it: the remedy is a longer --reference-time). NotChecked without a floor.
-Premise noisePremise(const ReferenceFacts& reference, double smallestFinalRelMse, bool allowNoisy);
+///
+/// `consequence`: what the premise says such noise does (`convergence`'s fitted slopes by
+/// default) and how a rendered reference is made quieter.
+struct NoiseConsequence {
+    bool flattensSlopes = true;  ///< the measurement fits slopes: say how far they flatten
+    std::string otherwise;       ///< what it does instead (without slopes)
+    std::string quieter = "a longer --reference-time makes a quieter reference";
+};
+Premise noisePremise(const ReferenceFacts& reference, double smallestFinalRelMse, bool allowNoisy,
+                     const NoiseConsequence& consequence = {});
 
 /// "mode rgb: " and the premise's check and detail in one line (messages, the summary).
 std::string describePremise(const Premise& premise);

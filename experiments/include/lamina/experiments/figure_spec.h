@@ -75,6 +75,12 @@ struct MapFigure {
     std::string clipReason;       ///< why more than 5% of the values may lie beyond the limits
 };
 
+/// A map of one value per pixel of a `width` x `height` image (row-major from the top row),
+/// titled `title`, its colour bar labelled `quantity`: the per-pixel maps of the experiments that
+/// compare renders.
+MapFigure pixelMapFigure(std::vector<float> values, int width, int height, std::string title,
+                         std::string quantity);
+
 /// A grid of true colours (not a false-colour map): what models look like side by side.
 struct SwatchFigure {
     std::string title, xLabel, yLabel;

@@ -73,6 +73,23 @@ void writeDifferenceImage(const std::filesystem::path& path, const render::RgbIm
 /// the top row: the colour difference maps of `fresnel --scene` and `polarisation`.
 std::vector<float> ciede2000Map(const render::RgbImage& a, const render::RgbImage& b);
 
+/// Black, for relativeDifferenceMap: a luminance of at most this times the brightest pixel's.
+/// Light that cancels (crossed mirrors at Brewster's angle) leaves about 1e-15 of the light from
+/// float rounding, whose relative difference would be O(1) of nothing.
+inline constexpr double kNoLight = 1e-6;
+
+/// The luminance Y of pixel i (linear Rec.709).
+double pixelLuminance(const render::RgbImage& image, std::size_t i);
+
+/// The symmetric relative difference of the luminance of each pixel, |Y_a - Y_b| / ((Y_a + Y_b)
+/// / 2), in [0, 2], NaN where both are black (kNoLight of the brightest pixel of the two images;
+/// a negative luminance, of a colour outside the gamut, counts as 0): `polarisation`'s and
+/// `media`'s relative difference maps.
+std::vector<float> relativeDifferenceMap(const render::RgbImage& a, const render::RgbImage& b);
+
+/// The mean of the finite values; 0 when none is finite.
+double meanOfFinite(const std::vector<float>& values);
+
 /// The p-th percentile (0-100) of the finite values, interpolated linearly between the two
 /// nearest ranks (NumPy's default, which the figure module uses); 0 when none is finite.
 double percentileOf(std::vector<float> values, double p);

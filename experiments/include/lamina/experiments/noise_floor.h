@@ -6,7 +6,9 @@
 // reported as not resolved at this sample count, with the count that would resolve it.
 #pragma once
 
+#include <functional>
 #include <string>
+#include <vector>
 
 #include "lamina/image/image_io.h"
 #include "lamina/scene/scene_description.h"
@@ -36,6 +38,32 @@ struct NoiseOnlyPair {
 /// statistic relative to one side (black in one mode: light that cancels) stays finite.
 NoiseOnlyPair pairedNoise(const render::RgbImage& a1, const render::RgbImage& b1,
                           const render::RgbImage& a2, const render::RgbImage& b2);
+
+/// A statistic of a per-pixel difference and its noise floor.
+struct FlooredStatistic {
+    /// `floor`: the statistic of the difference's own noise (pairedNoise): the two compared
+    /// renders share their seed (common random numbers: the same paths), so their difference
+    /// carries much less noise than two independent renders.
+    double value = 0, floor = 0;
+    /// The same statistic between the two renders of the second seed: a real difference shows
+    /// in both pairs.
+    double otherSeed = 0;
+};
+
+/// A per-pixel difference map of two renders that share their seed, and its mean and 95th
+/// percentile (of the finite values) against their floors.
+struct FlooredMap {
+    std::vector<float> values;  ///< the map of a1 against b1
+    FlooredStatistic mean, p95;
+};
+
+/// `map` (relativeDifferenceMap, ciede2000Map, ...) of `a1` against `b1`, its statistics' floors
+/// the same statistics of `noiseOnly` (pairedNoise of the two pairs) and, as otherSeed, of the
+/// second pair `a2`, `b2`.
+FlooredMap flooredMap(
+    const std::function<std::vector<float>(const render::RgbImage&, const render::RgbImage&)>& map,
+    const render::RgbImage& a1, const render::RgbImage& b1, const render::RgbImage& a2,
+    const render::RgbImage& b2, const NoiseOnlyPair& noiseOnly);
 
 /// A difference is resolved when it exceeds this many times its floor.
 inline constexpr double kResolvedOverFloor = 2.0;

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "lamina/experiments/image_metrics.h"
+#include "lamina/experiments/noise_floor.h"
 #include "lamina/experiments/progress.h"
 #include "lamina/experiments/report.h"
 #include "lamina/render/renderer.h"
@@ -45,17 +46,6 @@ struct PolarisationInputs {
     /// there are taken back (kept_renders.h).
     std::filesystem::path keepDirectory;
     bool resume = false;
-};
-
-/// A statistic of a per-pixel difference and its noise floor.
-struct FlooredStatistic {
-    /// `floor`: the statistic of the difference's own noise (pairedNoise): the two compared
-    /// renders share their seed (common random numbers: the same paths), so their difference
-    /// carries much less noise than two independent renders.
-    double value = 0, floor = 0;
-    /// The same statistic between the two renders of the second seed: a real difference shows
-    /// in both pairs.
-    double otherSeed = 0;
 };
 
 /// An unpolarised mode's render of the scene against the polarised one.

@@ -66,10 +66,11 @@ class BdptConnector {
                                            PathStatistics& stats) const;
     /// With media: `value` times the connection's transmittance `T`, over the average of the
     /// product of the density ratios of the two subpaths' last vertices and of the connection's
-    /// ratio tracking (1 through homogeneous media; the balance heuristic over the channels);
+    /// ratio tracking (1 through homogeneous media; the balance heuristic over the channels,
+    /// or the `hero`'s density alone with the ablation: TransportAblations::channelDensity);
     /// without, `value`.
-    S throughMedia(const S& value, const Transmittance<S>& T, const S& rUCamera,
-                   const S& rULight) const;
+    S throughMedia(const S& value, const Transmittance<S>& T, const S& rUCamera, const S& rULight,
+                   int hero) const;
 
     SceneContext c_;
     const Mode& mode_;

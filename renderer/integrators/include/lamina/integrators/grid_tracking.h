@@ -40,6 +40,7 @@
 
 #include <cstdint>
 
+#include "lamina/integrators/transport_ablations.h"
 #include "lamina/render/medium_coefficients.h"
 
 namespace lamina::render {
@@ -63,7 +64,8 @@ struct FlightOutcome {
 /// of pdf 0 does).
 template <SpectrumType S>
 FlightOutcome deltaTrack(const MediumCoefficients<S>& m, const Vec3f& o, const Vec3f& d, float tMax,
-                         int hero, std::uint64_t seed, S& beta, S& rU, S* rL, S* L);
+                         int hero, std::uint64_t seed, S& beta, S& rU, S* rL, S* L,
+                         const TransportAblations& ablations);
 
 /// A transmittance through media, for a shadow ray or a connection (medium_transport.h).
 template <SpectrumType S>

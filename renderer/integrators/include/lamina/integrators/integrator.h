@@ -98,7 +98,7 @@ struct IntegratorSetup {
     const RenderMode<S>& mode;
     RenderSettings settings;  ///< the integrator's kind, depth, Russian roulette, MIS
     const PixelFilter& filter;
-    TransportAblations ablations;          ///< light and bdpt
+    TransportAblations ablations;          ///< light and bdpt; all three through media
     bool aovs = false;                     ///< path only
     StrategyImages* strategies = nullptr;  ///< bdpt only, optional
 };

@@ -101,12 +101,13 @@ struct MediumFlight {
     /// emission): where the path goes on, or that it ends (the outcome had no density).
     /// Homogeneous: `weigh`, rL over the hero's probability of passing (a shadow ray's
     /// transmittance is exact: it has no density of its own), the emission by the collision
-    /// estimator at a medium vertex. Grid: delta tracking (grid_tracking.h).
-    FlightOutcome apply(const Vec3f& o, const Vec3f& d, int hero, S& beta, S& rU, S* rL,
-                        S* L) const {
+    /// estimator at a medium vertex. Grid: delta tracking (grid_tracking.h). The emission is
+    /// weighted over the channels as `ablations` says (TransportAblations::channelDensity).
+    FlightOutcome apply(const Vec3f& o, const Vec3f& d, int hero, S& beta, S& rU, S* rL, S* L,
+                        const TransportAblations& ablations) const {
         if (tracked())
             return deltaTrack(coefficients, o, d, tMax, hero, trackingSeed(o, d, u), beta, rU, rL,
-                              L);
+                              L, ablations);
         if (!(flight.pdf > 0.0f)) return {FlightOutcome::Outcome::Ends, flight.t};
         if (!flight.scatters) {
             weigh(beta, rU);
@@ -118,7 +119,7 @@ struct MediumFlight {
             // emission along the flight, by the collision estimator.
             const S rE = rU * sigmaT * flight.T / flight.pdf;
             *L += beta * flight.T * coefficients.sigmaA * coefficients.emission /
-                  (flight.pdf * rE.average());
+                  (flight.pdf * ablations.channelDensity(rE, hero));
         }
         weigh(beta, rU);
         return {FlightOutcome::Outcome::Scatters, flight.t};

@@ -57,6 +57,7 @@ class PathIntegrator final : public Integrator<S> {
     RenderSettings settings_;
     const PixelFilter& filter_;
     bool aovs_;
+    TransportAblations ablations_;  ///< of media: the spectral MIS over the channels, or not
     bool media_;  ///< the scene has media (SceneDesc::hasMedia) and the mode renders them
 };
 

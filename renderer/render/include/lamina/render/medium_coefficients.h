@@ -3,6 +3,8 @@
 // its density (grid_tracking.h scales them at each point).
 #pragma once
 
+#include <array>
+
 #include "lamina/core/spectrum.h"
 #include "lamina/scene/density_grid.h"
 
@@ -15,6 +17,9 @@ struct MediumCoefficients {
     float g = 0;                   ///< Henyey-Greenstein asymmetry
     bool emits = false;
     const GridDensity* grid = nullptr;  ///< a grid medium's density; null: homogeneous
+    /// The path's wavelengths in nm (spectral mode), where a grid of per-cell colours
+    /// (GridDensity::colours) evaluates its cells' spectra.
+    std::array<float, S::kSize> lambda{};
     S sigmaT() const { return sigmaA + sigmaS; }
 };
 

@@ -212,6 +212,8 @@ class RenderMode<SampledSpectrum<float>> {
         out.g = m.g;
         out.emits = m.emits;
         out.grid = m.grid;
+        for (int i = 0; i < Spectrum::kSize; ++i)
+            out.lambda[std::size_t(i)] = path.lambda[i];
         return out;
     }
 
