@@ -136,10 +136,6 @@ void runRender(const experiments::OptionValues& values) {
     if (const auto samples = values.text("samples")) o.samples = parseSampleRange(*samples);
     if (const auto crop = values.text("crop")) o.crop = parsePixelBounds(*crop);
     const bool shard = o.samples || o.crop;
-    if (shard && o.mode == render::RenderModeKind::Polarised)
-        throw CLI::ValidationError(o.samples ? "--samples" : "--crop",
-                                   "writes a shard, and shard files do not carry the polarised "
-                                   "mode's Stokes layers yet: render it whole");
     if (shard && !a.reference.empty())
         throw CLI::ValidationError("--error-log",
                                    "measures whole renders: not with --samples "

@@ -59,6 +59,7 @@ render::RenderOptions renderOptionsFrom(const OptionValues& values) {
     o.aovs = values.flag("aovs");
     for (const render::RenderAblation a : values.choices(render::kRenderAblationNames, "ablate"))
         render::applyRenderAblation(a, o.ablations);
+    if (const auto bins = values.integer("spectral-film")) o.spectralBins = int(*bins);
     return o;
 }
 

@@ -69,6 +69,11 @@ CommandDecl renderDeclaration() {
                        render::kRenderAblationNames, "ablation"),
         flagOption("aovs",
                    "Add AOV layers: Albedo.RGB, N.XYZ (shading normal), Z (depth), Variance.Y"),
+        integerOption("spectral-film",
+                      "Also keep N bins of spectral radiance over 360-830 nm per pixel: EXR "
+                      "layers S0.<nm>nm (S0..S3 in polarised mode), the spectral OpenEXR layout "
+                      "(spectral and polarised modes)",
+                      1, render::kMaxSpectralFilmBins),
         flagOption("quiet", "No progress or summary on stderr")
             .shortFlag('q')
             .commandLineOnly("Python prints nothing; its progress report is progress="),

@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <map>
+#include <vector>
 
 #include "arrays.h"
 #include "bindings.h"
@@ -98,6 +99,39 @@ class RenderedImage {
                     for (int c = 0; c < 3; ++c)
                         p[i * layer + at + std::size_t(c)] = float(s[i][c]);
             }
+        return out;
+    }
+
+    /// The spectral film (spectral_film=N), (C, N, H, W): each pixel's mean spectral radiance
+    /// (per nm) in N bins over 360-830 nm, C = 1 (S0) in spectral mode and 4 (S0..S3, in the
+    /// image frame) in polarised mode: the EXR's S<c>.<nm>nm layers; None without one.
+    py::object spectralFilm() const {
+        const render::Film& film = *result_->film;
+        const render::SpectralFilm* s = film.spectralFilm();
+        if (!s) return py::none();
+        const py::ssize_t w = film.width(), h = film.height(), n = s->bins().count,
+                          components = s->components();
+        py::array_t<float> out({components, n, h, w});
+        float* p = out.mutable_data();
+        std::vector<double> bins(s->valuesPerPixel());
+        const std::size_t plane = std::size_t(w) * std::size_t(h);
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                film.spectralMean(x, y, bins.data());
+                const std::size_t at = std::size_t(y) * std::size_t(w) + std::size_t(x);
+                for (std::size_t i = 0; i < bins.size(); ++i)
+                    p[i * plane + at] = float(bins[i]);
+            }
+        return out;
+    }
+
+    /// The centres of the spectral film's bins in nm, (N,); None without one.
+    py::object spectralFilmNm() const {
+        const render::SpectralFilm* s = result_->film->spectralFilm();
+        if (!s) return py::none();
+        py::array_t<double> out(py::ssize_t(s->bins().count));
+        for (int b = 0; b < s->bins().count; ++b)
+            out.mutable_data()[b] = s->bins().centre(b);
         return out;
     }
 
@@ -216,6 +250,12 @@ void bindRender(py::module_& m) {
         .def_property_readonly("stokes", &RenderedImage::stokes,
                                "Polarised mode: S0..S3, (4, H, W, 3) float32 in the image frame; "
                                "else None")
+        .def_property_readonly("spectral_film", &RenderedImage::spectralFilm,
+                               "With spectral_film=N: (C, N, H, W) float32, each pixel's mean "
+                               "spectral radiance per bin (C = 1: S0; polarised mode C = 4: "
+                               "S0..S3); else None")
+        .def_property_readonly("spectral_film_nm", &RenderedImage::spectralFilmNm,
+                               "The bins' centres in nm, (N,); else None")
         .def_property_readonly("metadata", &RenderedImage::metadata)
         .def_property_readonly("spp", &RenderedImage::spp)
         .def_property_readonly("seconds", &RenderedImage::seconds)

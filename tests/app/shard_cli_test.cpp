@@ -1,12 +1,15 @@
 // `lamina render --samples/--crop` and `lamina merge` end to end: four shards merged on the
-// command line give the single render's R, G, B and Variance.Y (relative 1e-6); conflicting
+// command line give the single render's R, G, B and Variance.Y (relative 1e-6), polarised
+// shards its Stokes and spectral film layers too; conflicting
 // shards and malformed ranges end with one error line and the documented exit status.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <map>
 
 #include "cli_helpers.h"
 #include "lamina/output/image_output.h"
@@ -71,6 +74,80 @@ TEST_F(CliTest, FourShardsMergeToTheSingleRender) {
     EXPECT_EQ(b.metadata.at("lamina:merged_shards"), "4");
     EXPECT_EQ(b.metadata.at("lamina:samples_missing"), "none");
     EXPECT_EQ(b.metadata.at("lamina:partial_shards"), "none");
+}
+
+// A polarised render with a spectral film (two gold mirrors: every Stokes component is
+// non-zero), split by samples and crops: the merge holds the single render's image, Stokes
+// layers and spectral layers (relative 1e-6), and both files carry the spectral layout's
+// channel names and attributes, which OpenImageIO's oiiotool lists.
+TEST_F(CliTest, PolarisedShardsWithASpectralFilmMergeToTheSingleRender) {
+    const std::string kGold = testing::sourceFile("scenes/polarisation/gold-mirrors.json");
+    const std::string opts = " --resolution 16x16 -q --mode polarised --spectral-film 4 ";
+    const std::string full = (dir_ / "full.exr").string();
+    const CommandRun one = runLamina("render " + kGold + opts + "--spp 4 -o " + full);
+    ASSERT_EQ(one.exitCode, 0) << one.output;
+    std::string shards;
+    const char* const parts[] = {"--samples 0:2 --crop 0,16,0,9", "--samples 0:2 --crop 0,16,9,16",
+                                 "--samples 2:2"};
+    for (int i = 0; i < 3; ++i) {
+        const std::string shard = (dir_ / ("shard" + std::to_string(i) + ".exr")).string();
+        const CommandRun r = runLamina("render " + kGold + opts + parts[i] + " -o " + shard);
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+        shards += " " + shard;
+    }
+    const std::string merged = (dir_ / "merged.exr").string();
+    const CommandRun m = runLamina("merge" + shards + " -o " + merged);
+    ASSERT_EQ(m.exitCode, 0) << m.output;
+    const Channels a = readChannels(full), b = readChannels(merged);
+    // 470 nm in 4 bins of 117.5 nm: centres 418.75, 536.25, 653.75 and 771.25 nm.
+    std::vector<std::string> names = {"R", "G", "B"};
+    for (const char* s : {"S0", "S1", "S2", "S3"}) {
+        for (const char* c : {".R", ".G", ".B"})
+            names.push_back(std::string(s) + c);
+        for (const char* nm : {".418,750000nm", ".536,250000nm", ".653,750000nm", ".771,250000nm"})
+            names.push_back(std::string(s) + nm);
+    }
+    std::map<char, double> largestOf;  // per Stokes component, over its channels
+    for (const std::string& name : names) {
+        ASSERT_TRUE(a.values.contains(name)) << name;
+        ASSERT_TRUE(b.values.contains(name)) << name;
+        const auto& x = a.values.at(name);
+        const auto& y = b.values.at(name);
+        ASSERT_EQ(x.size(), y.size());
+        double largest = 0;
+        for (const float v : x)
+            largest = std::max(largest, double(std::abs(v)));
+        if (name[0] == 'S') largestOf[name[1]] = std::max(largestOf[name[1]], largest);
+        for (std::size_t i = 0; i < x.size(); ++i)
+            ASSERT_LE(std::abs(x[i] - y[i]), 1e-6 * std::abs(x[i]) + 1e-9 * largest)
+                << name << " pixel " << i;
+    }
+    for (const char k : {'0', '1', '2', '3'})
+        EXPECT_GT(largestOf[k], 0) << "S" << k << ": the comparison needs light in it";
+    for (const Channels* c : {&a, &b}) {
+        EXPECT_EQ(c->metadata.at("spectralLayoutVersion"), "1.0");
+        EXPECT_EQ(c->metadata.at("emissiveUnits"), "W.m^-2.sr^-1");
+        EXPECT_EQ(c->metadata.at("polarisationHandedness"), "right");
+        EXPECT_EQ(c->metadata.at("lamina:spectral_film"), "4");
+    }
+    if (std::system("command -v oiiotool > /dev/null 2>&1") == 0) {
+        FILE* pipe = ::popen(("oiiotool --info -v " + merged + " 2>&1").c_str(), "r");
+        std::string info;
+        std::array<char, 4096> buf{};
+        while (pipe && std::fgets(buf.data(), int(buf.size()), pipe))
+            info += buf.data();
+        ASSERT_EQ(pipe ? ::pclose(pipe) : -1, 0) << info;
+        for (const char* want : {"S0.418,750000nm", "S3.771,250000nm", "spectralLayoutVersion",
+                                 "polarisationHandedness"})
+            EXPECT_NE(info.find(want), std::string::npos) << want << " in\n" << info;
+    }
+    // The rgb mode has no spectrum to bin: one line, exit 1.
+    const CommandRun rgb = runLamina("render " + kCornell + kSmall + "--spectral-film 4 -o " +
+                                     (dir_ / "rgb.exr").string());
+    EXPECT_EQ(rgb.exitCode, 1);
+    EXPECT_EQ(rgb.output,
+              "lamina: error: --spectral-film: the rgb mode carries no spectrum; use --mode "
+              "spectral or polarised\n");
 }
 
 TEST_F(CliTest, MergeRefusesOverlappingShardsInOneLine) {

@@ -183,3 +183,24 @@ def test_a_polarised_render_returns_its_stokes_layers():
     np.testing.assert_allclose(s[3], -s[0], rtol=1e-3, atol=1e-6)
     assert np.abs(s[1:3]).max() < 1e-3 * s[0].max()
     assert lamina.render(scene, spp=1, mode="spectral").stokes is None
+
+
+def test_a_polarised_render_returns_its_spectral_film():
+    """spectral_film=N adds (4, N, H, W) per-bin S0..S3 beside the Stokes layers: the light
+    behind the quarter-wave plate (the same at every wavelength) is circular in every bin,
+    S3 = -S0; the bins' centres divide 360-830 nm; the rgb mode refuses the keyword."""
+    scene = _through_two_sheets({"type": "retarder", "axis": [1, 1, 0], "retardance": 90})
+    img = lamina.render(scene, spp=2, mode="polarised", spectral_film=5)
+    f = img.spectral_film
+    assert f.dtype == np.float32 and f.shape == (4, 5, 4, 4)
+    np.testing.assert_allclose(img.spectral_film_nm, 360 + 94 * (np.arange(5) + 0.5))
+    assert (f[0].sum(axis=(1, 2)) > 0).all()
+    np.testing.assert_allclose(f[3], -f[0], rtol=1e-3, atol=1e-6)
+    assert np.abs(f[1:3]).max() < 1e-3 * f[0].max()
+    assert img.metadata["spectral_film"] == 5
+    plain = lamina.render(scene, spp=1, mode="polarised")
+    assert plain.spectral_film is None and plain.spectral_film_nm is None
+    assert lamina.render(scene, spp=1, mode="spectral", spectral_film=3).spectral_film.shape \
+        == (1, 3, 4, 4)
+    with pytest.raises(ValueError, match="--spectral-film: the rgb mode carries no spectrum"):
+        lamina.render(scene, spp=1, spectral_film=3)

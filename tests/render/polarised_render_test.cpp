@@ -149,7 +149,8 @@ INSTANTIATE_TEST_SUITE_P(
 // Every value is checked per channel (the mirror is grey) with a z-test at significance 0.001
 // against the spread of the 64 pixels, plus the Fresnel spread over the 0.5 degree field of
 // view.
-std::string oneMirror(double theta, double psi, std::optional<double> analyserDegrees) {
+std::string oneMirror(double theta, double psi, std::optional<double> analyserDegrees,
+                      const std::string& optics = R"("eta": 1.5, "k": 0)") {
     const Vec3d d0(0, 0, -1);
     const Vec3d n1(std::sin(theta) * std::cos(psi), std::sin(theta) * std::sin(psi),
                    std::cos(theta));
@@ -159,7 +160,8 @@ std::string oneMirror(double theta, double psi, std::optional<double> analyserDe
     if (analyserDegrees) s << R"(, "analyser": )" << *analyserDegrees;
     s << R"(},
       "film": {"resolution": [8, 8]},
-      "materials": {"mirror": {"type": "conductor", "eta": 1.5, "k": 0},
+      "materials": {"mirror": {"type": "conductor", )"
+      << optics << R"(},
                     "lamp": {"type": "lambert", "reflectance": 0}},
       "shapes": [)"
       << rectangle(Vec3d(0), n1, 0.5, R"("material": "mirror")") << ",\n"
@@ -332,6 +334,84 @@ TEST(PolarisedRender, AQuarterWavePlateAt45DegreesMakesLinearLightCircular) {
             EXPECT_NEAR(s[2][ch], 0.0, 1e-4 * l);
             EXPECT_NEAR(s[3][ch], -sign * 0.5 * l, 1e-4 * l)
                 << "fast axis at " << sign * 45 << " degrees";
+        }
+    }
+}
+
+// The polarised mode's spectral film (`render --spectral-film`): per bin, the light of the one
+// mirror above has S1 / S0 = -(Rs - Rp) / (Rs + Rp) cos(2 psi) and S2 / S0 the same with
+// sin(2 psi) at the bin's wavelengths, and S3 = 0. A bin's S1 and S0 sum the same samples, each
+// sample's S1 its S0 times that ratio at its wavelength and angle of incidence, so their
+// quotient is a positively weighted mean of the ratio over the bin's wavelengths and the 0.5
+// degree field of view: it lies between the ratio's least and greatest value there, with no
+// noise term (checked to 1e-4 for the float arithmetic). A dispersionless glass has the same
+// ratio in every bin; a conductor whose n rises from 0.5 to 3 and k falls from 3 to 0.5 over
+// 360 to 830 nm has one that changes from -0.12 to -0.80 across the bins, far more than the
+// margin, which the test checks too.
+TEST(PolarisedRender, TheSpectralFilmHoldsEachBinsDiattenuation) {
+    struct Optics {
+        const char* name;
+        std::string json;
+        double n360, n830, k360, k830;
+    };
+    const double deg = std::numbers::pi / 180.0;
+    const double theta = 60 * deg, psi = 30 * deg;
+    for (const Optics& optics :
+         {Optics{"glass", R"("eta": 1.5, "k": 0)", 1.5, 1.5, 0, 0},
+          Optics{"conductor", R"("eta": [[360, 0.5], [830, 3]], "k": [[360, 3], [830, 0.5]])", 0.5,
+                 3, 3, 0.5}}) {
+        render::RenderOptions o;
+        o.mode = render::RenderModeKind::Polarised;
+        o.spp = 16;
+        o.spectralBins = 10;
+        const auto r =
+            render::renderScene(sceneFromText(oneMirror(theta, psi, std::nullopt, optics.json)), o);
+        const render::SpectralFilm& s = *r.film->spectralFilm();
+        ASSERT_EQ(s.components(), 4);
+        const int n = s.bins().count;
+        std::vector<double> sum(s.valuesPerPixel(), 0.0), pixel(s.valuesPerPixel());
+        for (int y = 0; y < r.film->height(); ++y)
+            for (int x = 0; x < r.film->width(); ++x) {
+                r.film->spectralMean(x, y, pixel.data());
+                for (std::size_t i = 0; i < pixel.size(); ++i)
+                    sum[i] += pixel[i];
+            }
+        // The diattenuation -(Rs - Rp) / (Rs + Rp) at a wavelength and angle of incidence.
+        const auto diattenuation = [&](double nm, double t) {
+            const double f = (nm - 360) / 470;
+            const auto [rs, rp] = reflectances(t, optics.n360 + f * (optics.n830 - optics.n360),
+                                               optics.k360 + f * (optics.k830 - optics.k360));
+            return -(rs - rp) / (rs + rp);
+        };
+        double first = 0, last = 0;
+        for (int b = 0; b < n; ++b) {
+            double lo = 1e9, hi = -1e9;
+            for (int i = 0; i <= 40; ++i)
+                for (int j = -2; j <= 2; ++j) {
+                    const double d = diattenuation(s.bins().start(b) + s.bins().width() * i / 40,
+                                                   theta + j * 0.125 * deg);
+                    lo = std::min(lo, d);
+                    hi = std::max(hi, d);
+                }
+            const double s0 = sum[std::size_t(b)];
+            ASSERT_GT(s0, 0) << optics.name << " bin " << b;
+            const double q1 = sum[std::size_t(n + b)] / s0 / std::cos(2 * psi),
+                         q2 = sum[std::size_t(2 * n + b)] / s0 / std::sin(2 * psi),
+                         q3 = sum[std::size_t(3 * n + b)] / s0;
+            const std::string at = std::string(optics.name) + " bin " + std::to_string(b) + " at " +
+                                   std::to_string(s.bins().centre(b)) + " nm";
+            EXPECT_GT(q1, lo - 1e-4)
+                << at << ": S1 / S0 / cos(2 psi) " << q1 << " in [" << lo << ", " << hi << "]";
+            EXPECT_LT(q1, hi + 1e-4)
+                << at << ": S1 / S0 / cos(2 psi) " << q1 << " in [" << lo << ", " << hi << "]";
+            EXPECT_GT(q2, lo - 1e-4) << at << ": S2 / S0 / sin(2 psi) " << q2;
+            EXPECT_LT(q2, hi + 1e-4) << at << ": S2 / S0 / sin(2 psi) " << q2;
+            EXPECT_LT(std::abs(q3), 1e-4) << at << ": S3 / S0";
+            if (b == 0) first = q1;
+            last = q1;
+        }
+        if (optics.n360 != optics.n830) {
+            EXPECT_GT(std::abs(last - first), 0.5) << "the conductor's bins differ";
         }
     }
 }

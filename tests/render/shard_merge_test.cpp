@@ -1,6 +1,7 @@
 // Sample-range shards and crops (`render --samples`, `--crop`) and their merge (`lamina
 // merge`): the merge of shards is the image one render of all their samples gives, up to the
-// order of floating-point summation (relative 1e-6), for every integrator in both modes; crops
+// order of floating-point summation (relative 1e-6), for every integrator in every mode, with
+// the polarised mode's Stokes layers and the spectral film's bins (`--spectral-film`); crops
 // of the path integrator are the full render's pixels bit for bit; shards that do not belong
 // together are refused, naming the files.
 #include <gtest/gtest.h>
@@ -55,11 +56,13 @@ TEST_F(Shards, EveryIntegratorAndModeMergesToTheSingleRender) {
     const SceneDesc scene = loadScene(testing::sharedCornellBox());
     for (const IntegratorKind integrator :
          {IntegratorKind::Path, IntegratorKind::Light, IntegratorKind::Bdpt})
-        for (const RenderModeKind mode : {RenderModeKind::Rgb, RenderModeKind::Spectral}) {
+        for (const RenderModeKind mode :
+             {RenderModeKind::Rgb, RenderModeKind::Spectral, RenderModeKind::Polarised}) {
             const std::string label = std::string(kIntegratorNames.name(integrator)) + " " +
                                       std::string(kRenderModeNames.name(mode));
             RenderOptions o = optionsFor(integrator, mode);
             o.spp = 5;
+            if (mode != RenderModeKind::Rgb) o.spectralBins = 6;
             const RenderResult full = renderScene(scene, o);
             o.spp.reset();
             // Samples 0:2 of the whole film, samples 2:3 in three crops tiling it.
@@ -91,6 +94,21 @@ TEST_F(Shards, EveryIntegratorAndModeMergesToTheSingleRender) {
                     EXPECT_EQ(m.samples(x, y), full.film->samples(x, y)) << at;
                     EXPECT_EQ(m.sums(x, y).splatCount, full.film->sums(x, y).splatCount) << at;
                     sum += full.film->pixel(x, y)[1];
+                    ASSERT_EQ(m.hasStokes(), mode == RenderModeKind::Polarised) << label;
+                    if (m.hasStokes())
+                        for (std::size_t i = 1; i < 4; ++i)
+                            for (int c = 0; c < 3; ++c)
+                                expectClose(m.stokes(x, y)[i][c], full.film->stokes(x, y)[i][c],
+                                            at + " S" + std::to_string(i));
+                    ASSERT_EQ(m.spectralFilm() != nullptr, mode != RenderModeKind::Rgb) << label;
+                    if (!m.spectralFilm()) continue;
+                    const std::size_t n = m.spectralFilm()->valuesPerPixel();
+                    ASSERT_EQ(n, std::size_t(mode == RenderModeKind::Polarised ? 24 : 6));
+                    std::vector<double> got(n), want(n);
+                    m.spectralMean(x, y, got.data());
+                    full.film->spectralMean(x, y, want.data());
+                    for (std::size_t i = 0; i < n; ++i)
+                        expectClose(got[i], want[i], at + " spectral value " + std::to_string(i));
                 }
             EXPECT_GT(sum, 0) << label << ": the comparison needs a lit image";
         }

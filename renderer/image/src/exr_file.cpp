@@ -58,6 +58,8 @@ bool writeExrFile(const std::string& file, const ImageToWrite& image, std::strin
             header.insert("lamina:" + k, Imf::FloatAttribute(v));
         for (const auto& [k, v] : m.ints)
             header.insert("lamina:" + k, Imf::IntAttribute(v));
+        for (const auto& [k, v] : image.attributes)
+            header.insert(k, Imf::StringAttribute(v));
         for (const auto& [k, v] : m.matrices)
             header.insert("lamina:" + k, Imf::M44fAttribute(Imath::M44f(
                                              v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8],

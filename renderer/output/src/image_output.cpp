@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "lamina/image/image_files.h"
+#include "lamina/output/spectral_layout.h"
 #include "lamina/spectral/color_space.h"
 
 namespace lamina::render {
@@ -24,6 +25,14 @@ void writeExr(const std::filesystem::path& path, const Film& film, bool aovs,
         for (const char* s : {"S0", "S1", "S2", "S3"})
             for (const char* c : {".R", ".G", ".B"})
                 channels.push_back(std::string(s) + c);
+    // Then the spectral film's, in the spectral layout (spectral_layout.h).
+    const std::size_t spectralAt = channels.size();
+    const SpectralFilm* spectral = film.spectralFilm();
+    if (spectral)
+        for (const std::string& name :
+             spectralChannelNames(spectral->bins(), spectral->components()))
+            channels.push_back(name);
+    std::vector<double> bins(spectral ? spectral->valuesPerPixel() : 0);
     const std::size_t nc = channels.size();
     std::vector<float> data(std::size_t(w) * h * nc);
     ImageToWrite image = floatImage(w, h, channels, data, metadata);
@@ -35,6 +44,7 @@ void writeExr(const std::filesystem::path& path, const Film& film, bool aovs,
     image.chromaticities = std::array<float, 8>{
         float(cs.red().x),  float(cs.red().y),  float(cs.green().x),  float(cs.green().y),
         float(cs.blue().x), float(cs.blue().y), float(white.x / sum), float(white.y / sum)};
+    if (spectral) image.attributes = spectralLayoutAttributes(spectral->components());
 
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
@@ -52,6 +62,11 @@ void writeExr(const std::filesystem::path& path, const Film& film, bool aovs,
                 for (std::size_t i = 0; i < 4; ++i)
                     for (std::size_t c = 0; c < 3; ++c)
                         p[stokesAt + 3 * i + c] = float(s[i][int(c)]);
+            }
+            if (spectral) {
+                film.spectralMean(x, y, bins.data());
+                for (std::size_t i = 0; i < bins.size(); ++i)
+                    p[spectralAt + i] = float(bins[i]);
             }
             if (!aovs) {
                 if (variance) p[3] = float(film.varianceOfMean(x, y));

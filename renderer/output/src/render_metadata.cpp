@@ -94,6 +94,12 @@ ImageMetadata renderMetadata(const SceneDesc& scene, const RenderOptions& option
         meta.floats["max_component_value"] = float(*film.maxComponentValue);
         meta.strings["clamp"] = "on: every sample's largest CIE XYZ component clamped (biased)";
     }
+    // The spectral film's bins (spectral_film.h): N equal bins over [min, max] nm.
+    if (const SpectralFilm* spectral = r.film->spectralFilm()) {
+        meta.ints["spectral_film"] = spectral->bins().count;
+        meta.floats["spectral_film_min_nm"] = float(kLambdaMin);
+        meta.floats["spectral_film_max_nm"] = float(kLambdaMax);
+    }
     // The camera of the whole image, also for a crop.
     const Camera camera(scene.camera, r.film->fullWidth(), r.film->fullHeight());
     meta.matrices["camera_to_world"] = camera.cameraToWorld();

@@ -4,11 +4,15 @@
 #include <cmath>
 #include <functional>
 #include <sstream>
+#include <stdexcept>
 
 #include "lamina/core/error.h"
 #include "lamina/core/input_file.h"
 #include "lamina/image/image_files.h"
 #include "lamina/output/render_metadata.h"
+#include "lamina/output/spectral_layout.h"
+#include "lamina/render/render_limits.h"
+#include "shard_layers.h"
 
 namespace lamina::render {
 
@@ -51,27 +55,6 @@ const std::vector<SumChannel>& sumChannels() {
     return channels;
 }
 
-/// The polarised mode's Stokes sums of S1..S3 (Film::stokesCameraSums, stokesSplatSums), in
-/// shards of a film with Stokes layers: "S1.Sum.R", ..., "S3.Splat.B".
-std::vector<std::string> stokesChannels() {
-    std::vector<std::string> names;
-    for (const char* kind : {"Sum", "Splat"})
-        for (int k = 1; k <= 3; ++k)
-            for (const char* c : {"R", "G", "B"})
-                names.push_back("S" + std::to_string(k) + "." + kind + "." + c);
-    return names;
-}
-
-/// The Stokes sums of pixel (x, y) of the film's window in stokesChannels()' order.
-std::vector<double> stokesValues(const Film& film, int x, int y) {
-    std::vector<double> values;
-    for (const StokesSums* sums : {&film.stokesCameraSums(x, y), &film.stokesSplatSums(x, y)})
-        for (std::size_t k = 0; k < 3; ++k)
-            for (int c = 0; c < 3; ++c)
-                values.push_back((*sums)[k][c]);
-    return values;
-}
-
 // The two counts, stored the same way (exact below 2^48).
 constexpr const char* kCountChannel = "Count.N";
 constexpr const char* kSplatCountChannel = "Splat.Count";
@@ -107,6 +90,7 @@ std::string settingsLine(const SceneDesc& scene, const RenderOptions& options,
     if (scene.film.whiteBalance > 0) out << " white_balance=" << scene.film.whiteBalance;
     if (scene.film.maxComponentValue)
         out << " max_component_value=" << *scene.film.maxComponentValue;
+    if (options.spectralBins > 0) out << " spectral_film=" << options.spectralBins;
     return out.str();
 }
 
@@ -146,9 +130,8 @@ void writeShardExr(const std::filesystem::path& path, const Film& film,
         names.push_back(c.name);
     names.push_back(kCountChannel);
     names.push_back(kSplatCountChannel);
-    if (film.hasStokes())
-        for (const std::string& name : stokesChannels())
-            names.push_back(name);
+    for (const std::string& name : layerSumNames(film))
+        names.push_back(name);
     const std::size_t doubles = names.size() - 3;
     for (std::size_t i = 3; i < 3 + doubles; ++i)
         names.push_back(kLowPrefix + names[i]);
@@ -167,9 +150,7 @@ void writeShardExr(const std::filesystem::path& path, const Film& film,
                 values.push_back(c.field(p));
             values.push_back(double(p.count));
             values.push_back(double(p.splatCount));
-            if (film.hasStokes())
-                for (const double s : stokesValues(film, x, y))
-                    values.push_back(s);
+            appendLayerSums(film, x, y, values);
             for (std::size_t i = 0; i < doubles; ++i) {
                 const float high = float(values[i]);
                 if (!std::isfinite(high))
@@ -266,18 +247,29 @@ ShardFile readShardExr(const std::filesystem::path& path) {
                              channel(kLowPrefix + std::string(kSplatCountChannel))};
     shard.film = std::make_unique<Film>(shard.fullWidth, shard.fullHeight, c,
                                         space == "xyz" ? FilmSpace::Xyz : FilmSpace::Rec709);
-    // Stokes sums where the shard has them (a polarised render): all of them or none.
-    std::vector<int> stokesHigh, stokesLow;
-    const std::vector<std::string> stokesNames = stokesChannels();
-    const bool stokes = std::find(spec.channels.begin(), spec.channels.end(),
-                                  stokesNames.front()) != spec.channels.end();
-    if (stokes) {
-        shard.film->enableStokes();
-        for (const std::string& name : stokesNames) {
-            stokesHigh.push_back(channel(name));
-            stokesLow.push_back(channel(kLowPrefix + name));
-        }
+    // The layers' sums where the shard has them: the Stokes sums of a polarised render, the
+    // spectral film's (lamina:spectral_film bins, a splat layer if the render splatted).
+    const auto has = [&](const std::string& name) {
+        return std::find(spec.channels.begin(), spec.channels.end(), name) != spec.channels.end();
+    };
+    const bool stokes = has("S1.Sum.R");
+    if (stokes) shard.film->enableStokes();
+    if (m.ints.contains("spectral_film")) {
+        const SpectralBins bins{m.ints.at("spectral_film")};
+        if (bins.count < 1 || bins.count > kMaxSpectralFilmBins)
+            throw InputError(file + ": lamina:spectral_film: expected 1 to " +
+                             std::to_string(kMaxSpectralFilmBins) + " bins");
+        const int components = stokes ? 4 : 1;
+        shard.film->enableSpectralFilm(
+            bins, components, has("S0.Splat." + spectralChannelName(0, bins.centre(0)).substr(3)));
     }
+    const std::vector<std::string> layerNames = layerSumNames(*shard.film);
+    std::vector<int> layerHigh, layerLow;
+    for (const std::string& name : layerNames) {
+        layerHigh.push_back(channel(name));
+        layerLow.push_back(channel(kLowPrefix + name));
+    }
+    std::vector<double> layerValues(layerNames.size());
     const std::size_t nc = std::size_t(nchannels);
     for (int y = 0; y < spec.height; ++y)
         for (int x = 0; x < spec.width; ++x) {
@@ -301,17 +293,15 @@ ShardFile readShardExr(const std::filesystem::path& path) {
                                      std::to_string(c.y0 + y) + "): " + sums[i].name +
                                      " is not finite");
             shard.film->addSums(c.x0 + x, c.y0 + y, p);
-            if (!stokes) continue;
-            StokesSums camera, splat;
-            for (std::size_t i = 0; i < stokesHigh.size(); ++i) {
-                const double value = double(v[stokesHigh[i]]) + double(v[stokesLow[i]]);
-                if (!std::isfinite(value))
+            if (layerNames.empty()) continue;
+            for (std::size_t i = 0; i < layerNames.size(); ++i) {
+                layerValues[i] = double(v[layerHigh[i]]) + double(v[layerLow[i]]);
+                if (!std::isfinite(layerValues[i]))
                     throw InputError(file + ": pixel (" + std::to_string(c.x0 + x) + ", " +
-                                     std::to_string(c.y0 + y) + "): " + stokesNames[i] +
+                                     std::to_string(c.y0 + y) + "): " + layerNames[i] +
                                      " is not finite");
-                (i < 9 ? camera : splat)[(i % 9) / 3][int(i % 3)] = value;
             }
-            shard.film->addStokesSums(c.x0 + x, c.y0 + y, camera, splat);
+            addLayerSums(*shard.film, c.x0 + x, c.y0 + y, layerValues.data());
         }
     if (const auto rejected = shard.metadata.ints.find("rejected_samples");
         rejected != shard.metadata.ints.end() && rejected->second > 0)
@@ -326,9 +316,21 @@ void addShardSums(Film& film, const ShardFile& earlier) {
         film.fullWidth() != earlier.fullWidth || film.fullHeight() != earlier.fullHeight)
         throw InputError(earlier.path.string() + ": lamina:crop " + boundsText(c) +
                          ": another window than the render's " + boundsText(w));
-    for (int y = 0; y < film.height(); ++y)
-        for (int x = 0; x < film.width(); ++x)
-            film.addSums(w.x0 + x, w.y0 + y, earlier.film->sums(x, y));
+    addFilmSums(film, *earlier.film);
+}
+
+void addFilmSums(Film& film, const Film& other) {
+    if (layerSumNames(film) != layerSumNames(other))
+        throw std::logic_error("addFilmSums: films of different layers");
+    const PixelBounds& w = other.window();
+    std::vector<double> layers;
+    for (int y = 0; y < other.height(); ++y)
+        for (int x = 0; x < other.width(); ++x) {
+            film.addSums(w.x0 + x, w.y0 + y, other.sums(x, y));
+            layers.clear();
+            appendLayerSums(other, x, y, layers);
+            if (!layers.empty()) addLayerSums(film, w.x0 + x, w.y0 + y, layers.data());
+        }
 }
 
 }  // namespace lamina::render

@@ -94,6 +94,10 @@ MergedShards mergeShards(const std::vector<std::filesystem::path>& paths) {
     const int width = first.fullWidth, height = first.fullHeight;
     MergedShards out;
     out.film = std::make_unique<Film>(width, height, first.film->space());
+    // The layers of the shards (equal settings: the same mode, integrator and spectral film).
+    if (first.film->hasStokes()) out.film->enableStokes();
+    if (const SpectralFilm* s = first.film->spectralFilm())
+        out.film->enableSpectralFilm(s->bins(), s->components(), s->splats());
     std::vector<long long> held(std::size_t(width) * height, 0);
     std::vector<std::pair<int, int>> ranges;
     std::string partialShards;
@@ -101,11 +105,10 @@ MergedShards mergeShards(const std::vector<std::filesystem::path>& paths) {
     long long rejected = 0;
     for (const ShardFile& s : shards) {
         const PixelBounds& c = s.crop;
+        addFilmSums(*out.film, *s.film);
         for (int y = 0; y < c.height(); ++y)
-            for (int x = 0; x < c.width(); ++x) {
-                out.film->addSums(c.x0 + x, c.y0 + y, s.film->sums(x, y));
+            for (int x = 0; x < c.width(); ++x)
                 held[std::size_t(c.y0 + y) * width + std::size_t(c.x0 + x)] += s.samplesDone;
-            }
         ranges.push_back(heldRange(s));
         seconds += s.seconds;
         longest = std::max(longest, s.seconds);

@@ -39,7 +39,20 @@ Film::Film(int fullWidth, int fullHeight, const PixelBounds& window, FilmSpace s
       pixels_(std::size_t(width_) * std::size_t(height_)),
       splatIteration_(std::size_t(width_) * std::size_t(height_), Rgb<double>(0.0)) {}
 
-bool Film::addSample(int x, int y, const Rgb<double>& value, double weight) {
+bool Film::addSample(int x, int y, const Rgb<double>& value, double weight,
+                     const SpectralFilmSample* spectral) {
+    if (!spectral) return addValue(x, y, value, weight);
+    if (!window_.contains(x, y)) return false;
+    if (!spectral->isFinite()) {
+        rejected_.fetch_add(1, std::memory_order_relaxed);
+        return false;
+    }
+    if (!addValue(x, y, value, weight)) return false;
+    spectral_->addSample(windowIndex(x, y), *spectral, weight * response_.scaleAlongside(value));
+    return true;
+}
+
+bool Film::addValue(int x, int y, const Rgb<double>& value, double weight) {
     if (!window_.contains(x, y)) return false;
     // XYZ may legitimately have no negative components either: reject both the same way.
     if (!value.isFinite() || value.hasNegative() || !std::isfinite(weight)) {
@@ -65,20 +78,20 @@ bool Film::polarisationFinite(const std::array<Rgb<double>, 4>& stokes) {
     return true;
 }
 
-bool Film::addPolarisedSample(int x, int y, const std::array<Rgb<double>, 4>& stokes,
-                              double weight) {
+bool Film::addPolarisedSample(int x, int y, const std::array<Rgb<double>, 4>& stokes, double weight,
+                              const SpectralFilmSample* spectral) {
     if (!window_.contains(x, y) || !polarisationFinite(stokes)) return false;
-    if (!addSample(x, y, stokes[0], weight)) return false;
+    if (!addSample(x, y, stokes[0], weight, spectral)) return false;
     StokesSums& sums = stokes_[std::size_t(y - window_.y0) * width_ + std::size_t(x - window_.x0)];
     for (std::size_t i = 0; i < 3; ++i)
         sums[i] += response_.applyAlongside(stokes[0], stokes[i + 1]) * weight;
     return true;
 }
 
-bool Film::addPolarisedSplat(int x, int y, const std::array<Rgb<double>, 4>& stokes,
-                             double weight) {
+bool Film::addPolarisedSplat(int x, int y, const std::array<Rgb<double>, 4>& stokes, double weight,
+                             const SpectralFilmSample* spectral) {
     if (!window_.contains(x, y) || !polarisationFinite(stokes)) return false;
-    if (!addSplat(x, y, stokes[0], weight)) return false;
+    if (!addSplat(x, y, stokes[0], weight, spectral)) return false;
     StokesSums& target =
         stokesSplatIteration_[std::size_t(y - window_.y0) * width_ + std::size_t(x - window_.x0)];
     for (std::size_t i = 0; i < 3; ++i) {
@@ -139,9 +152,10 @@ void Film::addAovs(int x, int y, const PixelAovs& a) {
     p.aovSum.depth += a.depth;
 }
 
-bool Film::addSplat(int x, int y, const Rgb<double>& value, double weight) {
+bool Film::addSplat(int x, int y, const Rgb<double>& value, double weight,
+                    const SpectralFilmSample* spectral) {
     if (!window_.contains(x, y)) return false;
-    if (!value.isFinite() || value.hasNegative()) {
+    if (!value.isFinite() || value.hasNegative() || (spectral && !spectral->isFinite())) {
         rejected_.fetch_add(1, std::memory_order_relaxed);
         return false;
     }
@@ -154,6 +168,8 @@ bool Film::addSplat(int x, int y, const Rgb<double>& value, double weight) {
         splatIteration_[std::size_t(y - window_.y0) * width_ + std::size_t(x - window_.x0)];
     for (int c = 0; c < 3; ++c)
         std::atomic_ref<double>(target[c]).fetch_add(v[c], std::memory_order_relaxed);
+    if (spectral)
+        spectral_->addSplat(windowIndex(x, y), *spectral, weight * response_.scaleAlongside(value));
     return true;
 }
 
@@ -175,6 +191,7 @@ void Film::endSplatIteration(double scale) {
                 stokesSplatIteration_[i][k] = Rgb<double>(0.0);
             }
     }
+    if (spectral_ && spectral_->splats()) spectral_->endSplatIteration(scale);
     ++splatIterations_;
 }
 

@@ -38,10 +38,15 @@ double FilmResponse::clampRatio(const Vec3d& c) const {
 
 Rgb<double> FilmResponse::applyAlongside(const Rgb<double>& v, const Rgb<double>& other) const {
     if (identity_) return other;
-    const double k = scale_ * clampRatio(Vec3d(v[0] * scale_, v[1] * scale_, v[2] * scale_));
+    const double k = scaleAlongside(v);
     Vec3d c(other[0] * k, other[1] * k, other[2] * k);
     if (balance_) c = *balance_ * c;
     return {c.x, c.y, c.z};
+}
+
+double FilmResponse::scaleAlongside(const Rgb<double>& v) const {
+    if (identity_) return 1.0;
+    return scale_ * clampRatio(Vec3d(v[0] * scale_, v[1] * scale_, v[2] * scale_));
 }
 
 }  // namespace lamina::render

@@ -7,11 +7,8 @@
 
 namespace lamina::render {
 
-std::array<Rgb<double>, 4> RenderMode<PolarisedSpectrum>::filmStokes(const Spectrum& L,
-                                                                     const Vec3f& rayDirection,
-                                                                     const Vec3f& imageRight,
-                                                                     const Path& path) const {
-    using Element = Spectrum::Element;
+std::array<PolarisedSpectrum::Element, 4> RenderMode<PolarisedSpectrum>::imageStokes(
+    const Spectrum& L, const Vec3f& rayDirection, const Vec3f& imageRight) const {
     // The light travels towards the lens, against the camera ray; the path's matrices end in
     // the canonical frame of that direction (polarised_bxdf.h).
     const Vec3f d = -rayDirection;
@@ -35,10 +32,7 @@ std::array<Rgb<double>, 4> RenderMode<PolarisedSpectrum>::filmStokes(const Spect
                 s[0] * a.m[i][0] + s[1] * a.m[i][1] + s[2] * a.m[i][2] + s[3] * a.m[i][3];
         s = out;
     }
-    std::array<Rgb<double>, 4> film;
-    for (std::size_t i = 0; i < 4; ++i)
-        film[i] = spectral_.filmValue(s[i], path);
-    return film;
+    return s;
 }
 
 }  // namespace lamina::render

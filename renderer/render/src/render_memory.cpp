@@ -7,17 +7,21 @@
 #include <sstream>
 
 #include "lamina/core/error.h"
-#include "lamina/render/film.h"
 #include "lamina/integrators/strategy_images.h"
+#include "lamina/render/film.h"
 
 namespace lamina::render {
 
-RenderMemory estimateRenderMemory(int width, int height, bool aovs, bool strategies) {
+RenderMemory estimateRenderMemory(int width, int height, bool aovs, bool strategies,
+                                  int spectralValues, bool splats) {
     const std::uint64_t pixels = std::uint64_t(width) * std::uint64_t(height);
     RenderMemory m;
     m.film = pixels * Film::bytesPerPixel();
     m.output = pixels * (aovs ? 11 : 3) * sizeof(float);  // writeExr's channels
     if (strategies) m.strategies = pixels * StrategyImages::bytesPerPixel();
+    // Camera sums (and a splat iteration and the splat sums), then the layers' floats.
+    m.spectral = pixels * std::uint64_t(spectralValues) *
+                 ((splats ? 3 : 1) * sizeof(double) + sizeof(float));
     return m;
 }
 
@@ -50,6 +54,7 @@ void checkRenderMemory(const RenderMemory& memory, int width, int height, const 
     std::string parts =
         "film " + formatBytes(memory.film) + ", image " + formatBytes(memory.output);
     if (memory.strategies) parts += ", strategy images " + formatBytes(memory.strategies);
+    if (memory.spectral) parts += ", spectral film " + formatBytes(memory.spectral);
     throw InputError(where + ": " + std::to_string(width) + "x" + std::to_string(height) +
                      " needs ~" + formatBytes(memory.total()) + " (" + parts + "), more than the " +
                      formatBytes(*available) + " of memory available");

@@ -12,6 +12,7 @@
 #include "lamina/integrators/integrator.h"
 #include "lamina/render/global_sobol_net.h"
 #include "lamina/render/pass_schedule.h"
+#include "lamina/render/render_limits.h"
 #include "lamina/render/render_memory.h"
 
 namespace lamina::render {
@@ -60,6 +61,10 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
                                                options.aovs, result.strategies.get()});
 
     const bool splats = integrator->splats();
+    constexpr bool kPolarised = std::is_same_v<S, PolarisedSpectrum>;
+    if (options.spectralBins > 0)
+        film.enableSpectralFilm(SpectralBins{options.spectralBins}, kPolarised ? 4 : 1, splats);
+    const SpectralFilm* spectralFilm = film.spectralFilm();
     // Particles from every pixel may land in a crop, so a splatting integrator traces the
     // whole film (the film keeps what falls in its window); the path integrator only the crop.
     const PixelBounds traced = splats ? PixelBounds{0, width, 0, height} : window;
@@ -88,12 +93,30 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
         auto path = mode.startPath(sampler);
         const auto estimate = integrator->sample({x, y, sampler, path, film, stats});
         if (!estimate) return;
-        if constexpr (std::is_same_v<S, PolarisedSpectrum>)
-            film.addPolarisedSample(
-                x, y, mode.filmStokes(estimate->value, estimate->rayDirection, imageRight, path),
-                estimate->filterWeight);
-        else
+        if constexpr (kPolarised) {
+            const auto stokes =
+                mode.imageStokes(estimate->value, estimate->rayDirection, imageRight);
+            if (spectralFilm) {
+                const SpectralFilmSample bins =
+                    mode.filmSpectrum(stokes, path, spectralFilm->bins());
+                film.addPolarisedSample(x, y, mode.filmStokes(stokes, path), estimate->filterWeight,
+                                        &bins);
+            } else {
+                film.addPolarisedSample(x, y, mode.filmStokes(stokes, path),
+                                        estimate->filterWeight);
+            }
+        } else if constexpr (std::is_same_v<S, SampledSpectrum<float>>) {
+            if (spectralFilm) {
+                const SpectralFilmSample bins =
+                    mode.filmSpectrum(estimate->value, path, spectralFilm->bins());
+                film.addSample(x, y, mode.filmValue(estimate->value, path), estimate->filterWeight,
+                               &bins);
+            } else {
+                film.addSample(x, y, mode.filmValue(estimate->value, path), estimate->filterWeight);
+            }
+        } else {
             film.addSample(x, y, mode.filmValue(estimate->value, path), estimate->filterWeight);
+        }
         if (estimate->aovs) film.addAovs(x, y, *estimate->aovs);
     };
     // Samples [first, first + count) of every pixel, tile by tile in parallel.
@@ -217,6 +240,13 @@ RenderResult renderScene(const SceneDesc& scene, const RenderOptions& options,
                              std::to_string(r.count) +
                              ": expected FIRST >= 0 and COUNT >= 1 with FIRST + COUNT < 2^31");
     }
+    if (options.spectralBins < 0 || options.spectralBins > kMaxSpectralFilmBins)
+        throw InputError("--spectral-film " + std::to_string(options.spectralBins) +
+                         ": expected 1 to " + std::to_string(kMaxSpectralFilmBins) + " bins");
+    if (options.spectralBins > 0 && options.mode == RenderModeKind::Rgb)
+        throw InputError(
+            "--spectral-film: the rgb mode carries no spectrum; use --mode spectral "
+            "or polarised");
     int width = scene.film.width, height = scene.film.height;
     if (options.resolution) std::tie(width, height) = *options.resolution;
     // The scene's crop, unless the command line gives one (a shard of a render: the whole
@@ -238,9 +268,12 @@ RenderResult renderScene(const SceneDesc& scene, const RenderOptions& options,
     }
     const int filmWidth = options.crop ? options.crop->width() : width;
     const int filmHeight = options.crop ? options.crop->height() : height;
+    const int spectralValues =
+        options.spectralBins * (options.mode == RenderModeKind::Polarised ? 4 : 1);
     checkRenderMemory(
         estimateRenderMemory(filmWidth, filmHeight, options.aovs,
-                             options.strategies && settings.integrator == IntegratorKind::Bdpt),
+                             options.strategies && settings.integrator == IntegratorKind::Bdpt,
+                             spectralValues, settings.integrator != IntegratorKind::Path),
         width, height,
         options.resolution ? "--resolution" : scene.file.string() + ": film.resolution");
 

@@ -51,6 +51,8 @@ bool write(const std::string& formatPath, const std::string& file, const ImageTo
     spec.channelnames = image.channels;
     if (image.zip) spec.attribute("compression", "zip");
     addMetadata(spec, image.metadata);
+    for (const auto& [k, v] : image.attributes)
+        spec.attribute(k, v);
     if (image.chromaticities)
         spec.attribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8),
                        image.chromaticities->data());

@@ -29,6 +29,8 @@ struct ImageToWrite {
     ImageMetadata metadata;
     /// The EXR "chromaticities" attribute: red, green, blue and white x, y.
     std::optional<std::array<float, 8>> chromaticities;
+    /// String attributes of other conventions, under their own names (the spectral layout's).
+    std::map<std::string, std::string> attributes;
     const float* samples = nullptr;  ///< width * height * channels.size(), interleaved
 };
 
@@ -67,7 +69,7 @@ struct Functions {
     void (*close)(Reader* reader);
 };
 
-inline constexpr int kAbiVersion = 1;
+inline constexpr int kAbiVersion = 2;
 inline constexpr const char* kEntryPoint = "lamina_oiio_images";
 
 }  // namespace lamina::render::oiio_images

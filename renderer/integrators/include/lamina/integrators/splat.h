@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include <optional>
 #include <type_traits>
 
 #include "lamina/render/film.h"
@@ -39,16 +40,28 @@ inline void splatFiltered(Film& film, const PixelFilter& filter, const Vec2<floa
 
 /// Splats a light-path contribution `value` that reaches the lens travelling along `toLens`:
 /// the mode's film value, or in the polarised mode its Stokes vector in the image frame
-/// (RenderMode<PolarisedSpectrum>::filmStokes) with the Stokes layers.
+/// (RenderMode<PolarisedSpectrum>::filmStokes) with the Stokes layers; with a spectral film,
+/// its per-bin deposits too.
 template <SpectrumType S>
 void splatContribution(Film& film, const PixelFilter& filter, const Vec2<float>& raster,
                        const RenderMode<S>& mode, const S& value, const Vec3<float>& toLens,
                        const Vec3<float>& imageRight, const typename RenderMode<S>::Path& path) {
+    const SpectralFilm* spectral = film.spectralFilm();
     if constexpr (std::is_same_v<S, PolarisedSpectrum>) {
-        const std::array<Rgb<double>, 4> stokes = mode.filmStokes(value, -toLens, imageRight, path);
-        forEachFilteredPixel(
-            filter, raster, film.fullWidth(), film.fullHeight(),
-            [&](int x, int y, double w) { film.addPolarisedSplat(x, y, stokes, w); });
+        const auto image = mode.imageStokes(value, -toLens, imageRight);
+        const std::array<Rgb<double>, 4> stokes = mode.filmStokes(image, path);
+        std::optional<SpectralFilmSample> bins;
+        if (spectral) bins = mode.filmSpectrum(image, path, spectral->bins());
+        forEachFilteredPixel(filter, raster, film.fullWidth(), film.fullHeight(),
+                             [&](int x, int y, double w) {
+                                 film.addPolarisedSplat(x, y, stokes, w, bins ? &*bins : nullptr);
+                             });
+    } else if constexpr (std::is_same_v<S, SampledSpectrum<float>>) {
+        if (!spectral) return splatFiltered(film, filter, raster, mode.filmValue(value, path));
+        const Rgb<double> v = mode.filmValue(value, path);
+        const SpectralFilmSample bins = mode.filmSpectrum(value, path, spectral->bins());
+        forEachFilteredPixel(filter, raster, film.fullWidth(), film.fullHeight(),
+                             [&](int x, int y, double w) { film.addSplat(x, y, v, w, &bins); });
     } else {
         splatFiltered(film, filter, raster, mode.filmValue(value, path));
     }

@@ -2,7 +2,8 @@
 // FIRST:COUNT`, `--crop X0,X1,Y0,Y1`), carrying what an exact merge needs. Beside R, G, B (the
 // shard's own image, for a look) it holds every per-pixel sum of the film (PixelSums: weighted
 // sums per channel, weight sum, sample count, luminance moments, AOV sums, the splat layer's
-// sums and its count; a polarised render's Stokes sums of S1..S3 too), each double stored as two
+// sums and its count; a polarised render's Stokes sums of S1..S3 and the spectral film's sums
+// too, shard_layers.h), each double stored as two
 // floats (the value rounded to float, then the rounding error; 48 bits together, so the merge is
 // exact up to the order of summation), and metadata: the scene hash, the settings that decide a
 // pixel's numbers, the sample range and the crop (also the EXR data window).
@@ -53,5 +54,9 @@ ShardFile readShardExr(const std::filesystem::path& path);
 /// restarted after an interruption renders the rest of its range and adds what it had.
 /// InputError naming the file if the windows differ.
 void addShardSums(Film& film, const ShardFile& earlier);
+
+/// Adds every sum of `other`'s window (PixelSums, the Stokes and spectral film's sums, where
+/// `film` has those layers too) to the same pixels of `film`.
+void addFilmSums(Film& film, const Film& other);
 
 }  // namespace lamina::render

@@ -10,11 +10,14 @@
 // coordinates on the whole image and ignore what falls outside the window, every reader takes
 // coordinates in the window (0 <= x < width()). Every pixel keeps its own sums and counts
 // (PixelSums), so films of disjoint sample ranges or windows add up exactly (`lamina merge`).
+// With a spectral film (enableSpectralFilm, `render --spectral-film`) every sample and splat
+// also deposits its per-bin spectral radiance (spectral_film.h), passed beside its value.
 #pragma once
 
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -22,6 +25,7 @@
 #include "lamina/core/vector.h"
 #include "lamina/image/pixel_bounds.h"
 #include "lamina/render/film_response.h"
+#include "lamina/render/spectral_film.h"
 
 namespace lamina::render {
 
@@ -75,9 +79,11 @@ class Film {
     void setResponse(const FilmResponse& response) { response_ = response; }
     const FilmResponse& response() const { return response_; }
 
-    /// Adds a camera sample to pixel (x, y) of the whole image, through the response. Returns
-    /// false if it is outside the window, or if rejected (and counts it).
-    bool addSample(int x, int y, const Rgb<double>& value, double weight);
+    /// Adds a camera sample to pixel (x, y) of the whole image, through the response, and with
+    /// a spectral film its deposits `spectral` (which it needs then). Returns false if it is
+    /// outside the window, or if rejected (and counts it): then nothing is added.
+    bool addSample(int x, int y, const Rgb<double>& value, double weight,
+                   const SpectralFilmSample* spectral = nullptr);
     void addAovs(int x, int y, const PixelAovs& aovs);
 
     /// Gives the film Stokes layers (the polarised mode): S1..S3 beside the image, which is S0.
@@ -91,9 +97,11 @@ class Film {
     /// sample's value, as addSample takes it; S1..S3 may be negative). All four go through the
     /// response as one (FilmResponse::applyAlongside). Returns false, and adds nothing, if it
     /// is outside the window or rejected (and counts it). Needs enableStokes().
-    bool addPolarisedSample(int x, int y, const std::array<Rgb<double>, 4>& stokes, double weight);
+    bool addPolarisedSample(int x, int y, const std::array<Rgb<double>, 4>& stokes, double weight,
+                            const SpectralFilmSample* spectral = nullptr);
     /// The same for a splat (light tracing, BDPT), as addSplat takes it. Thread-safe.
-    bool addPolarisedSplat(int x, int y, const std::array<Rgb<double>, 4>& stokes, double weight);
+    bool addPolarisedSplat(int x, int y, const std::array<Rgb<double>, 4>& stokes, double weight,
+                           const SpectralFilmSample* spectral = nullptr);
     /// The pixel's Stokes vector in linear Rec.709 (each component converted as the image is):
     /// S0 is pixel(x, y). Needs enableStokes().
     std::array<Rgb<double>, 4> stokes(int x, int y) const;
@@ -108,10 +116,32 @@ class Film {
     /// Adds another film's Stokes sums to pixel (x, y) of the whole image, as addSums adds
     /// the image's; ignored outside the window. Needs enableStokes().
     void addStokesSums(int x, int y, const StokesSums& camera, const StokesSums& splat);
+
+    /// Gives the film a spectral film of `components` Stokes components (1 or 4) per bin, with
+    /// a splat layer if the render splats (spectral_film.h).
+    void enableSpectralFilm(SpectralBins bins, int components, bool splats) {
+        spectral_ = std::make_unique<SpectralFilm>(bins, components, pixels_.size(), splats);
+    }
+    /// Null without one.
+    const SpectralFilm* spectralFilm() const { return spectral_.get(); }
+    /// Pixel (x, y)'s mean spectral radiance per bin, [component][bin]: valuesPerPixel()
+    /// doubles into `out`. Needs a spectral film.
+    void spectralMean(int x, int y, double* out) const {
+        const Pixel& p = at(x, y);
+        spectral_->mean(std::size_t(y) * width_ + std::size_t(x), p.weightSum, p.splatCount, out);
+    }
+    /// Adds another film's spectral sums to pixel (x, y) of the whole image (`splat` may be
+    /// null); ignored outside the window. Needs a spectral film.
+    void addSpectralSums(int x, int y, const double* camera, const double* splat) {
+        if (!window_.contains(x, y)) return;
+        spectral_->addSums(std::size_t(y - window_.y0) * width_ + std::size_t(x - window_.x0),
+                           camera, splat);
+    }
     /// Adds a value times `weight` (its filter weight: the response sees the value before it)
     /// to pixel (x, y) of the whole image in the current splat iteration (thread-safe).
     /// Returns false if it is outside the window, or if rejected (and counts it).
-    bool addSplat(int x, int y, const Rgb<double>& value, double weight = 1.0);
+    bool addSplat(int x, int y, const Rgb<double>& value, double weight = 1.0,
+                  const SpectralFilmSample* spectral = nullptr);
     /// Ends a splat iteration: its image times `scale` becomes one more sample of the splat
     /// layer's per-pixel mean and variance. Not thread-safe (call between iterations).
     void endSplatIteration(double scale);
@@ -149,6 +179,11 @@ class Film {
     Pixel& at(int x, int y) { return pixels_[std::size_t(y) * width_ + x]; }
     Rgb<double> toRec709(const Rgb<double>& v) const;
     bool accumulate(int x, int y, const Rgb<double>& value, double weight);
+    /// addSample without the spectral film.
+    bool addValue(int x, int y, const Rgb<double>& value, double weight);
+    std::size_t windowIndex(int x, int y) const {
+        return std::size_t(y - window_.y0) * width_ + std::size_t(x - window_.x0);
+    }
     /// Whether S1..S3 are finite; counts a rejection if not (S0 is checked as a sample's value).
     bool polarisationFinite(const std::array<Rgb<double>, 4>& stokes);
 
@@ -163,6 +198,7 @@ class Film {
     /// per pixel, empty unless enableStokes(): the camera samples' sums, the current splat
     /// iteration's and the sum of the finished iterations'
     std::vector<StokesSums> stokes_, stokesSplatIteration_, stokesSplatSum_;
+    std::unique_ptr<SpectralFilm> spectral_;  ///< null unless enableSpectralFilm()
     int splatIterations_ = 0;
     std::atomic<std::uint64_t> rejected_{0};
 };

@@ -34,6 +34,10 @@ class FilmResponse {
     /// (a Stokes component S1..S3 of a polarised sample whose S0 is v): the same linear map,
     /// with the clamp's ratio of v, so that the pair keeps its proportion.
     Rgb<double> applyAlongside(const Rgb<double>& v, const Rgb<double>& other) const;
+    /// The factor of the imaging ratio and the clamp for a sample of value `v` (1 for the
+    /// identity): what the spectral film scales that sample's bins by. The white balance, a
+    /// transform of XYZ, has no meaning for a spectrum and is not applied to them.
+    double scaleAlongside(const Rgb<double>& v) const;
 
   private:
     /// The factor by which the clamp scales a value c (already times scale_): 1 unless its

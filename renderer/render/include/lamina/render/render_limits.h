@@ -17,6 +17,9 @@ inline constexpr long long kMaxSeedOverride = 2147483647LL;
 /// Each side of an image, as the scene's film.resolution (the memory a render needs is
 /// checked when it starts, render_memory.h).
 inline constexpr int kMaxResolutionOverride = 65536;
+/// `render --spectral-film N`: bins no narrower than 1 nm, the resolution of lamina's spectral
+/// tables, over the 470 nm the spectral mode samples.
+inline constexpr int kMaxSpectralFilmBins = 470;
 
 /// "WIDTHxHEIGHT", each in [1, kMaxResolutionOverride]; nullopt for anything else.
 inline std::optional<std::pair<int, int>> parseResolutionText(const std::string& text) {

@@ -14,10 +14,14 @@ struct RenderMemory {
     std::uint64_t film = 0;        ///< Film: sums, variance sums, AOVs, splat layer
     std::uint64_t output = 0;      ///< the float image image_output writes from
     std::uint64_t strategies = 0;  ///< StrategyImages (bdpt --strategies), else 0
-    std::uint64_t total() const { return film + output + strategies; }
+    std::uint64_t spectral = 0;    ///< the spectral film's sums and its layers' floats, else 0
+    std::uint64_t total() const { return film + output + strategies + spectral; }
 };
 
-RenderMemory estimateRenderMemory(int width, int height, bool aovs, bool strategies);
+/// `spectralValues`: the spectral film's bins times Stokes components per pixel (0: none);
+/// `splats`: the integrator splats (the spectral film then keeps a splat layer too).
+RenderMemory estimateRenderMemory(int width, int height, bool aovs, bool strategies,
+                                  int spectralValues = 0, bool splats = false);
 
 /// The memory the system can give without swapping: MemAvailable of /proc/meminfo, else the
 /// free physical pages (sysconf); nullopt when neither is known.

@@ -26,6 +26,7 @@
 #include "lamina/render/medium_coefficients.h"
 #include "lamina/render/polarised_bxdf.h"
 #include "lamina/render/sampler.h"
+#include "lamina/render/spectral_film.h"
 #include "lamina/spectral/cie_xyz_table.h"
 
 namespace lamina::render {
@@ -194,6 +195,11 @@ class RenderMode<SampledSpectrum<float>> {
         constexpr double kInverseN = 1.0 / Spectrum::kSize;
         return {double(xyz[0]) * kInverseN, double(xyz[1]) * kInverseN, double(xyz[2]) * kInverseN};
     }
+    /// What the spectral film receives from a sample of value L (spectral_film.h).
+    SpectralFilmSample filmSpectrum(const Spectrum& L, const Path& path,
+                                    const SpectralBins& bins) const {
+        return spectralFilmSample(bins, path.lambda, &L, 1);
+    }
 
     /// The coefficients of SceneDesc::media[index] at the path's wavelengths: the RGB
     /// coefficients as unbounded spectra, the emission as an emitter's (an illuminant).
@@ -305,15 +311,31 @@ class RenderMode<PolarisedSpectrum> {
     Rgb<double> filmValue(const Spectrum& L, const Path& path) const {
         return spectral_.filmValue(L.unpolarised(), path);
     }
-    /// What a camera sample gives the film's Stokes layers (Film::addPolarisedSample): the
-    /// Stokes vector of the light arriving against `rayDirection` (L's first column: the
-    /// emitters are unpolarised), turned into the image frame (x the image's right, projected
-    /// perpendicular to the light; y = d x x with d the light's direction, towards the lens),
-    /// through the camera's analyser if it has one, each component in the film's space as
-    /// filmValue converts S0 (docs/polarisation.md, "Stokes images"). Defined in
-    /// polarised_film_value.cpp.
+    using Element = Spectrum::Element;
+    /// The Stokes vector, at the path's wavelengths, of the light arriving against
+    /// `rayDirection` (L's first column: the emitters are unpolarised), turned into the image
+    /// frame (x the image's right, projected perpendicular to the light; y = d x x with d the
+    /// light's direction, towards the lens) and through the camera's analyser if it has one
+    /// (docs/polarisation.md, "Stokes images"). Defined in polarised_film_value.cpp.
+    std::array<Element, 4> imageStokes(const Spectrum& L, const Vec3f& rayDirection,
+                                       const Vec3f& imageRight) const;
+    /// What a camera sample gives the film's Stokes layers (Film::addPolarisedSample): each
+    /// component of imageStokes in the film's space, as filmValue converts S0.
+    std::array<Rgb<double>, 4> filmStokes(const std::array<Element, 4>& s, const Path& path) const {
+        std::array<Rgb<double>, 4> film;
+        for (std::size_t i = 0; i < 4; ++i)
+            film[i] = spectral_.filmValue(s[i], path);
+        return film;
+    }
     std::array<Rgb<double>, 4> filmStokes(const Spectrum& L, const Vec3f& rayDirection,
-                                          const Vec3f& imageRight, const Path& path) const;
+                                          const Vec3f& imageRight, const Path& path) const {
+        return filmStokes(imageStokes(L, rayDirection, imageRight), path);
+    }
+    /// What the spectral film receives: S0..S3 of imageStokes per bin (spectral_film.h).
+    SpectralFilmSample filmSpectrum(const std::array<Element, 4>& s, const Path& path,
+                                    const SpectralBins& bins) const {
+        return spectralFilmSample(bins, path.lambda, s.data(), 4);
+    }
 
   private:
     const SceneDesc& scene_;

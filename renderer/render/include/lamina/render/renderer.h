@@ -47,6 +47,9 @@ struct RenderOptions {
     /// Renders only these pixels of the film, with the numbers of the whole render: light
     /// particles still start from every pixel, so a crop saves only the path integrator time.
     std::optional<PixelBounds> crop;
+    /// `render --spectral-film N`: the film also keeps N bins of spectral radiance over
+    /// [360, 830] nm (spectral_film.h; 0: none). The spectral and polarised modes only.
+    int spectralBins = 0;
 };
 
 struct RenderProgress {
