@@ -139,6 +139,8 @@ fmt, out = args[0], args[1]
 paths = args[2:]
 for o in list(bpy.data.objects):
     bpy.data.objects.remove(o)
+for m in list(bpy.data.meshes):  # the start-up cube's mesh
+    bpy.data.meshes.remove(m)
 start = time.perf_counter()
 for p in paths:
     if fmt == "obj":
