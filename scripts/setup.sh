@@ -8,7 +8,7 @@ packages=(
   cmake g++ make pkg-config
   libembree-dev libtbb-dev
   libopenimageio-dev openimageio-tools libopenexr-dev
-  libglm-dev nlohmann-json3-dev libcli11-dev libyaml-cpp-dev libnanovdb-dev
+  libglm-dev nlohmann-json3-dev libcli11-dev libyaml-cpp-dev libnanovdb-dev libboost-dev
   colord-data libtinyobjloader-dev libpugixml-dev zlib1g-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-matplotlib python3-numpy python3-jsonschema

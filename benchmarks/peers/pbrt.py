@@ -121,6 +121,11 @@ def main():
     budget.add_argument("--spp", type=int, nargs="+",
                         help="lamina's sample counts instead: a Sobol sampler stratifies best at "
                              "powers of two, where a time budget seldom ends")
+    parser.add_argument("--samplers", nargs="+", metavar="SAMPLER",
+                        help="render every budget with each of these lamina samplers "
+                             "(`--sampler`), interleaved so that they share the machine's "
+                             "conditions, and print one table per sampler (default: the "
+                             "scene's, which the importer makes sobol-global for pbrt's sobol)")
     parser.add_argument("--seed", type=int, default=5, help="lamina's first seed (one per budget)")
     parser.add_argument("--lamina-args", nargs=argparse.REMAINDER, default=[],
                         help="further `lamina render` options (last on the line)")
@@ -134,16 +139,24 @@ def main():
         os.makedirs(work, exist_ok=True)
         references = [pe.read_rgb(r, args.python) for r in args.reference]
         pbrt_image = pe.read_rgb(args.pbrt_image, args.python)
-        images = []
+        samplers = args.samplers or [None]
+        images = {sampler: [] for sampler in samplers}
         budgets = [("spp", n) for n in args.spp] if args.spp else [
             ("seconds", t) for t in (args.times or [20.0])]
         for i, (kind, budget) in enumerate(budgets):
-            out, spp, seconds = pe.run_lamina(
-                args.lamina, args.scene, os.path.join(work, f"lamina-{budget:g}{kind}.exr"),
-                seed=args.seed + i, mode=args.mode, extra=args.lamina_args, **{kind: budget})
-            images.append((pe.read_rgb(out, args.python), spp, seconds))
+            for sampler in samplers:
+                extra = (["--sampler", sampler] if sampler else []) + args.lamina_args
+                name = f"lamina-{sampler or 'scene'}-{budget:g}{kind}-{i}.exr"
+                out, spp, seconds = pe.run_lamina(
+                    args.lamina, args.scene, os.path.join(work, name), seed=args.seed + i,
+                    mode=args.mode, extra=extra, **{kind: budget})
+                images[sampler].append((pe.read_rgb(out, args.python), spp, seconds))
         own = args.reference_spp if len(args.reference) == 1 else None
-        print_rows(measure(images, pbrt_image, args.pbrt_spp, args.pbrt_seconds, references, own))
+        for sampler in samplers:
+            if sampler:
+                print(f"\nlamina's sampler: {sampler}")
+            print_rows(measure(images[sampler], pbrt_image, args.pbrt_spp, args.pbrt_seconds,
+                               references, own))
         print(f"at the end, {pe.load_note()}")
     except pe.PeerError as e:
         sys.exit(f"pbrt.py: {e}")

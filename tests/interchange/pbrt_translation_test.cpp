@@ -114,8 +114,8 @@ TEST_F(PbrtTranslation, OptionsBlock) {
     ASSERT_EQ(g.warnings.size(), 1u);
     EXPECT_EQ(g.warnings[0], file_.string() +
                                  ":1: Sampler \"sobol\" became lamina's sobol-global sampler "
-                                 "(pbrt-v4's film positions; the other dimensions Owen-scrambled "
-                                 "per pixel; same sample count)");
+                                 "(pbrt-v4's global Sobol points; Owen-scrambled per pixel "
+                                 "where pbrt-v4 scrambles per dimension; same sample count)");
 }
 
 TEST_F(PbrtTranslation, FovSpansTheShorterAxis) {

@@ -125,12 +125,15 @@ TEST(SobolSampler, AlignedBlocksBeyondTwoToTheTwentyAreNets) {
 }
 
 // skip() moves past a dimension without computing it: every later number is the one the
-// sampler gives when the skipped dimension is drawn (1D or 2D), for both kinds of sampler.
+// sampler gives when the skipped dimension is drawn (1D or 2D), for every kind of sampler.
 TEST(PixelSamplerSkip, LaterDimensionsAreTheSameAsWhenTheSkippedOneIsDrawn) {
-    for (const SamplerKind kind : {SamplerKind::Sobol, SamplerKind::Independent}) {
+    const GlobalSobolNet net(8, 8);
+    for (const SamplerKind kind :
+         {SamplerKind::Sobol, SamplerKind::Independent, SamplerKind::SobolGlobal}) {
         for (const std::uint32_t index : {0u, 1u, 6u, 1000u}) {
             for (int skipped = 0; skipped < 8; ++skipped) {
-                PixelSampler drawn(kind, 9, 4, 2, index), skipping(kind, 9, 4, 2, index);
+                PixelSampler drawn(kind, 9, 4, 2, index, &net),
+                    skipping(kind, 9, 4, 2, index, &net);
                 for (int dim = 0; dim < 12; ++dim) {
                     if (dim == skipped) {
                         if (dim % 2)
@@ -312,41 +315,6 @@ TEST(GlobalSobolNet, FilmPositionAndWavelengthAreAOneKThreeNetInEachPixel) {
                                             << " box " << a << "," << b << "," << c;
                 }
         }
-}
-
-// sobol-global changes the film position and the wavelength number only: getPixel2D is the
-// net's point (whatever the seed), and every later dimension is the Sobol sampler's, bit for
-// bit; for sobol and independent getPixel2D is get2D and getWavelength1D get1D.
-TEST(GlobalSobolNet, OnlyTheFilmPositionDiffersFromTheSobolSampler) {
-    const GlobalSobolNet net(40, 30);
-    for (const std::uint32_t index : {0u, 5u, 1000u})
-        for (const std::uint64_t seed : {1u, 2u}) {
-            PixelSampler global(SamplerKind::SobolGlobal, seed, 7, 29, index, &net);
-            PixelSampler sobol(SamplerKind::Sobol, seed, 7, 29, index);
-            const float w = global.getWavelength1D();
-            EXPECT_EQ(w, unitFloat(reverseBits(laineKarrasPermutation(
-                             reverseBits(kSobolDimension2(net.globalIndex(7, 29, index))),
-                             std::uint32_t(hashValues({hashValues({seed, 7, 29}), 0}) >> 32)))));
-            const Vec2<float> p = global.getPixel2D();
-            const Vec2<float> expected = net.pixelPosition(net.globalIndex(7, 29, index));
-            EXPECT_EQ(p.x, expected.x);
-            EXPECT_EQ(p.y, expected.y);
-            sobol.get1D();
-            sobol.get2D();
-            for (int dim = 2; dim < 12; ++dim) {
-                const Vec2<float> a = global.get2D(), b = sobol.get2D();
-                ASSERT_EQ(a.x, b.x) << dim;
-                ASSERT_EQ(a.y, b.y) << dim;
-            }
-        }
-    for (const SamplerKind kind : {SamplerKind::Sobol, SamplerKind::Independent}) {
-        PixelSampler a(kind, 3, 1, 2, 9), b(kind, 3, 1, 2, 9);
-        EXPECT_EQ(a.getWavelength1D(), b.get1D());
-        const Vec2<float> p = a.getPixel2D(), q = b.get2D();
-        EXPECT_EQ(p.x, q.x);
-        EXPECT_EQ(p.y, q.y);
-    }
-    EXPECT_THROW(PixelSampler(SamplerKind::SobolGlobal, 3, 1, 2, 9), std::invalid_argument);
 }
 
 // The Sobol sampler's scramble is a proper nested uniform (Owen) scramble where it matters

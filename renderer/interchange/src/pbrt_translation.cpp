@@ -85,12 +85,13 @@ Json translateSampler(TranslationContext& ctx, const Entity& e) {
                  "sampler with xsamples x ysamples = " +
                      std::to_string(spp) + " samples per pixel");
     } else if (e.type == "sobol") {
-        // pbrt-v4's SobolSampler: film positions from one global Sobol sequence, unscrambled.
+        // pbrt-v4's SobolSampler: every dimension from one global Sobol sequence.
         type = "sobol-global";
         if (p.has("randomization")) p.string("randomization", "");
         ctx.warn(e.location,
-                 "Sampler \"sobol\" became lamina's sobol-global sampler (pbrt-v4's film "
-                 "positions; the other dimensions Owen-scrambled per pixel; same sample count)");
+                 "Sampler \"sobol\" became lamina's sobol-global sampler (pbrt-v4's global "
+                 "Sobol points; Owen-scrambled per pixel where pbrt-v4 scrambles per "
+                 "dimension; same sample count)");
     } else if (e.type == "zsobol" || e.type == "paddedsobol" || e.type == "halton" ||
                e.type == "pmj02bn") {
         if (p.has("randomization")) p.string("randomization", "");

@@ -6,11 +6,20 @@
 //                       dimensions gets its own shuffle of the sample index and its own
 //                       scramble ("padding", so every 2D pair is a (0, 2)-sequence); the
 //                       three seeds of a pair come from one 64-bit hash of (pixel, pair).
-//   sobol-global        the Sobol sampler, but, as pbrt-v4's SobolSampler, the film position
-//                       (getPixel2D) from one global, unscrambled Sobol sequence over the image
-//                       (global_sobol_net.h: a fixed pattern, the same for every seed) and the
-//                       wavelengths (getWavelength1D) from dimension 2 of the same global point,
-//                       Owen-scrambled: the two are stratified together within a pixel.
+//   sobol-global        as pbrt-v4's SobolSampler, every number of a sample is a coordinate of
+//                       one point of a single Sobol sequence over the whole image: the film
+//                       position (getPixel2D) is its dimensions 0 and 1, unscrambled
+//                       (global_sobol_net.h: a fixed pattern, the same for every seed), the
+//                       wavelength number (getWavelength1D) dimension 2, and every later
+//                       get1D/get2D the next pair of dimensions (sobol_matrices.h, 1024 of
+//                       them, Joe and Kuo's direction numbers), each Owen-scrambled with this
+//                       pixel's and dimension pair's seeds. So film position, wavelength, light
+//                       and BSDF samples are stratified together within a pixel, where the
+//                       Sobol sampler pairs its 2D points at random: a light's sharp reflection
+//                       in a smooth plate, which depends on film position and light sample
+//                       jointly, has about a third of the Sobol sampler's variance on Veach's
+//                       MIS scene (docs/performance.md). Past the table's dimensions the numbers
+//                       are the Sobol sampler's.
 #pragma once
 
 #include <bit>
@@ -21,6 +30,7 @@
 #include "lamina/core/pcg32.h"
 #include "lamina/core/vector.h"
 #include "lamina/render/global_sobol_net.h"
+#include "lamina/render/sobol_matrices.h"
 #include "lamina/scene/scene_description.h"
 
 namespace lamina::render {
@@ -44,33 +54,6 @@ constexpr std::uint32_t sobolDimension1(std::uint64_t index) {
         if (index & 1u) result ^= v;
     return result;
 }
-
-/// Sobol dimension 2: primitive polynomial x^2 + x + 1 and initial direction numbers m_1 = 1,
-/// m_2 = 3 (Joe and Kuo 2008, "Constructing Sobol sequences with better two-dimensional
-/// projections", the second dimension of their table; the first is dimension 1 above), the
-/// others by the recurrence m_k = 2 m_{k-1} ^ 4 m_{k-2} ^ m_{k-2} (their section 2); v_k =
-/// m_k / 2^k as a 32-bit fraction. Any 64-bit index.
-class SobolDimension2 {
-  public:
-    constexpr SobolDimension2() {
-        std::uint64_t m[65] = {0, 1, 3};
-        for (int k = 3; k <= 64; ++k)
-            m[k] = (m[k - 1] << 1) ^ (m[k - 2] << 2) ^ m[k - 2];
-        for (int k = 1; k <= 64; ++k)
-            direction_[k - 1] = std::uint32_t(k <= 32 ? m[k] << (32 - k) : m[k] >> (k - 32));
-    }
-    constexpr std::uint32_t operator()(std::uint64_t index) const {
-        std::uint32_t result = 0;
-        for (int k = 0; index; index >>= 1, ++k)
-            if (index & 1u) result ^= direction_[k];
-        return result;
-    }
-
-  private:
-    std::uint32_t direction_[64] = {};
-};
-
-inline constexpr SobolDimension2 kSobolDimension2{};
 
 /// Sobol dimension 1 in the bit-reversed domain: reverseBits(sobolDimension1(reverseBits(y))).
 /// It is linear over GF(2) in y, so it is the XOR of one table entry per byte of y (the
@@ -170,8 +153,7 @@ class PixelSampler {
 
     /// The next dimension pair as the sample's position in its pixel (the camera sample's
     /// film position, before the pixel filter): get2D(), except for sobol-global, whose
-    /// position is the pixel's point of the global net (the dimension still counts, so the
-    /// later ones are the Sobol sampler's).
+    /// position is the pixel's point of the global net (its dimensions 0 and 1).
     Vec2<float> getPixel2D() {
         if (kind_ != SamplerKind::SobolGlobal) return get2D();
         ++dimension_;
@@ -179,16 +161,13 @@ class PixelSampler {
     }
 
     /// The next dimension as the number that draws the path's wavelengths (the spectral
-    /// modes): get1D(), except for sobol-global, which takes Sobol dimension 2 of the
-    /// sample's global point (pbrt-v4's SobolSampler draws its wavelengths from its dimension
-    /// 2), Owen-scrambled with this pixel's and dimension's seed, so that a pixel's film
-    /// positions and wavelengths are stratified together.
+    /// modes): get1D(), except for sobol-global, which takes dimension 2 of the sample's global
+    /// point (pbrt-v4's SobolSampler draws its wavelengths from its dimension 2), so that a
+    /// pixel's film positions and wavelengths are stratified together.
     float getWavelength1D() {
         if (kind_ != SamplerKind::SobolGlobal) return get1D();
-        using namespace sobol_detail;
         const DimensionSeeds s = dimensionSeeds(dimension_++);
-        return toFloat(reverseBits(
-            laineKarrasPermutation(reverseBits(kSobolDimension2(globalIndex_)), s.first)));
+        return toFloat(scramble(sobolSample(globalIndex_, kWavelengthDimension), s.first));
     }
 
     float get1D() {
@@ -196,6 +175,8 @@ class PixelSampler {
         // The first coordinate of the next 2D point, without computing the second.
         using namespace sobol_detail;
         const DimensionSeeds s = dimensionSeeds(dimension_++);
+        if (const int d = nextGlobalPair(); d >= 0)
+            return toFloat(scramble(sobolSample(globalIndex_, d), s.first));
         const std::uint32_t y = laineKarrasPermutation(reversedIndex_, s.shuffle);
         return toFloat(reverseBits(laineKarrasPermutation(reverseBits(y), s.first)));
     }
@@ -209,6 +190,7 @@ class PixelSampler {
             rng_.nextUint32();
             rng_.nextUint32();
         }
+        nextGlobalPair();
         ++dimension_;
     }
 
@@ -245,6 +227,9 @@ class PixelSampler {
         }
         using namespace sobol_detail;
         const DimensionSeeds s = dimensionSeeds(dimension_++);
+        if (const int d = nextGlobalPair(); d >= 0)
+            return {toFloat(scramble(sobolSample(globalIndex_, d), s.first)),
+                    toFloat(scramble(sobolSample(globalIndex_, d + 1), s.second))};
         const std::uint32_t y = laineKarrasPermutation(reversedIndex_, s.shuffle);
         const std::uint32_t a = reverseBits(laineKarrasPermutation(reverseBits(y), s.first));
         const std::uint32_t b =
@@ -276,6 +261,24 @@ class PixelSampler {
     /// multipliers for congruential pseudorandom number generators" (a 64-bit one they list).
     static constexpr std::uint64_t kSecondSeedMultiplier = 0xd1342543de82ef95ULL;
     static float toFloat(std::uint32_t v) { return sobol_detail::unitFloat(v); }
+    /// A nested uniform (Owen) scramble of a 32-bit fraction: reverse(LK(reverse(v), seed)).
+    static std::uint32_t scramble(std::uint32_t v, std::uint32_t seed) {
+        using namespace sobol_detail;
+        return reverseBits(laineKarrasPermutation(reverseBits(v), seed));
+    }
+    /// sobol-global: the first of the two Sobol dimensions the next get1D/get2D/skip takes from
+    /// the global point, and moves past them; -1 for the other samplers and past the table
+    /// (then the numbers are the Sobol sampler's). Dimensions 0 and 1 are the film position,
+    /// 2 the wavelength number; a get1D uses the first of its pair, so that skipping a number
+    /// or drawing it leaves every later one unchanged.
+    int nextGlobalPair() {
+        if (kind_ != SamplerKind::SobolGlobal || nextGlobalDimension_ + 1 >= kSobolDimensions)
+            return -1;
+        const int d = nextGlobalDimension_;
+        nextGlobalDimension_ += 2;
+        return d;
+    }
+    static constexpr int kWavelengthDimension = 2;
 
     SamplerKind kind_;
     std::uint32_t reversedIndex_;
@@ -283,6 +286,7 @@ class PixelSampler {
     Pcg32 rng_;
     const GlobalSobolNet* net_;
     std::uint64_t globalIndex_ = 0;  ///< sobol-global: the sample's index in the global net
+    int nextGlobalDimension_ = kWavelengthDimension + 1;  ///< sobol-global's next free dimension
     std::uint32_t dimension_ = 0;
 };
 

@@ -84,8 +84,9 @@ struct FilmDesc {
     double imagingRatio() const { return exposureTime * iso / 100 * scale; }
 };
 
-/// sobol-global: Sobol, with the film positions of one global unscrambled Sobol sequence (as
-/// pbrt-v4's SobolSampler; the same for every seed).
+/// sobol-global: every number of a sample a coordinate of one point of a global Sobol sequence
+/// over the image (as pbrt-v4's SobolSampler): film positions unscrambled (the same for every
+/// seed), the other dimensions Owen-scrambled per pixel (render/sampler.h).
 enum class SamplerKind { Sobol, Independent, SobolGlobal };
 inline constexpr NameTable kSamplerNames{std::array{
     NameEntry{SamplerKind::Sobol, "sobol"}, NameEntry{SamplerKind::Independent, "independent"},
