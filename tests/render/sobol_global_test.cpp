@@ -55,7 +55,7 @@ std::uint32_t scrambled(std::uint32_t v, std::uint32_t seed) {
 
 // Every number sobol-global gives is a coordinate of the sample's global point: the film
 // position its dimensions 0 and 1 (unscrambled), the wavelength number dimension 2, and the
-// k-th later get1D/get2D/skip the dimensions 3 + 2k and 4 + 2k, each Owen-scrambled with the
+// k-th later get1D/get2D/skip the dimensions 4 + 2k and 5 + 2k, each Owen-scrambled with the
 // seeds of its dimension pair (the Sobol sampler's: one hash of the pixel and the pair). Past
 // the table the numbers are the Sobol sampler's. For sobol and independent, getPixel2D is
 // get2D and getWavelength1D get1D.
@@ -80,7 +80,7 @@ TEST(SobolGlobal, EveryNumberIsACoordinateOfTheSamplesGlobalPoint) {
             sobol.get1D();
             sobol.get2D();
             std::uint32_t slot = 2;
-            for (int d = 3; d + 1 < kSobolDimensions; d += 2, ++slot) {
+            for (int d = 4; d + 1 < kSobolDimensions; d += 2, ++slot) {
                 const auto [first, second] = seeds(slot);
                 if (slot % 5 == 3) {
                     global.skip();

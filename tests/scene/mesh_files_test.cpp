@@ -83,6 +83,28 @@ TEST_F(MeshFiles, ObjAndPlyMatchTheInlineMesh) {
     }
 }
 
+// Face corners with a trailing slash and nothing after it ("1/1/", "2//"), as one of Mitsuba
+// 3's own test meshes writes them, mean no normal (and no uv): the same triangles and uvs as
+// the corners written without the slash.
+TEST_F(MeshFiles, ObjCornersWithATrailingSlashHaveNoNormal) {
+    const std::string vertices =
+        "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n";
+    const auto slashes = write("slashes.obj", vertices + "f 1/1/ 2/2/ 3/3/\nf 1/1/ 3/3/ 4/4/\n");
+    const auto plain = write("plain.obj", vertices + "f 1/1 2/2 3/3\nf 1/1 3/3 4/4\n");
+    const auto positionsOnly = write("positions.obj", vertices + "f 1// 2// 3//\r\nf 1 3 4//");
+    render::MeshDesc withSlashes, withoutSlashes, noUvs;
+    render::readObj(slashes, withSlashes);
+    render::readObj(plain, withoutSlashes);
+    render::readObj(positionsOnly, noUvs);
+    EXPECT_EQ(withSlashes.triangles, withoutSlashes.triangles);
+    EXPECT_EQ(withSlashes.uvs, withoutSlashes.uvs);
+    EXPECT_EQ(withSlashes.positions, withoutSlashes.positions);
+    EXPECT_TRUE(withSlashes.normals.empty());
+    EXPECT_EQ(withSlashes.uvs.size(), 4u);
+    EXPECT_EQ(noUvs.triangles.size(), 2u);
+    EXPECT_TRUE(noUvs.uvs.empty());
+}
+
 TEST_F(MeshFiles, BadPlyFilesAreNamed) {
     const auto truncated =
         write("truncated.ply",

@@ -1,9 +1,9 @@
 // Writes the generator matrices of the first kSobolDimensions dimensions of the Sobol sequence
-// as a C++ source file, from the primitive polynomials and initial direction numbers of Joe and
-// Kuo 2008 ("Constructing Sobol sequences with better two-dimensional projections", SIAM J. Sci.
-// Comput. 30, 2635-2654) that Debian's libboost-dev carries in
-// boost/random/detail/sobol_table.hpp. Nothing of the table is copied into lamina's sources: the
-// build reads it from the package.
+// as a C++ source file (two dimensions per 64-bit column: sobol_matrices.h), from the primitive
+// polynomials and initial direction numbers of Joe and Kuo 2008 ("Constructing Sobol sequences with
+// better two-dimensional projections", SIAM J. Sci. Comput. 30, 2635-2654) that Debian's
+// libboost-dev carries in boost/random/detail/sobol_table.hpp. Nothing of the table is copied into
+// lamina's sources: the build reads it from the package.
 //
 // Dimension 0 is the van der Corput sequence (every m_k = 1); dimension d >= 1 uses polynomial
 // d - 1 of the table. For a primitive polynomial x^s + a_1 x^(s-1) + ... + a_(s-1) x + 1 (Boost
@@ -62,15 +62,16 @@ int main(int argc, char** argv) {
            "table.\n"
            "#include \"lamina/render/sobol_matrices.h\"\n\n"
            "namespace lamina::render {\n\n"
-           "const std::uint32_t kSobolMatrices[kSobolDimensions][kSobolIndexBits] = {\n";
-    char hex[16];
-    for (unsigned d = 0; d < unsigned(kSobolDimensions); ++d) {
-        std::uint32_t column[kSobolIndexBits];
-        columns(d, column);
+           "const std::uint64_t kSobolPairMatrices[kSobolDimensions / 2][kSobolIndexBits] = {\n";
+    char hex[24];
+    for (unsigned pair = 0; pair < unsigned(kSobolDimensions / 2); ++pair) {
+        std::uint32_t low[kSobolIndexBits], high[kSobolIndexBits];
+        columns(2 * pair, low);
+        columns(2 * pair + 1, high);
         out << "    {";
         for (int k = 0; k < kSobolIndexBits; ++k) {
-            std::snprintf(hex, sizeof hex, "0x%08xu", column[k]);
-            out << hex << (k + 1 < kSobolIndexBits ? (k % 8 == 7 ? ",\n     " : ", ") : "");
+            std::snprintf(hex, sizeof hex, "0x%08x%08xull", high[k], low[k]);
+            out << hex << (k + 1 < kSobolIndexBits ? (k % 4 == 3 ? ",\n     " : ", ") : "");
         }
         out << "},\n";
     }

@@ -167,6 +167,48 @@ void checkAttributeNumbers(const std::filesystem::path& file, const std::string&
     }
 }
 
+// A face corner written with a trailing slash and nothing after it ("1/1/", "1//"), which
+// some exporters write and Mitsuba 3 reads (its test meshes hold one), means no normal (and no
+// uv): tinyobjloader refuses it as a zero index. Such slashes are dropped from the face lines;
+// the text is copied only when it has one.
+bool isSpace(char c) {
+    return c == ' ' || c == '\t' || c == '\r' || c == '\n';
+}
+
+std::string withoutTrailingCornerSlashes(const std::string& text) {
+    bool found = false;
+    for (std::size_t i = text.find('/'); i != std::string::npos && !found;
+         i = text.find('/', i + 1))
+        found = i + 1 == text.size() || isSpace(text[i + 1]);
+    if (!found) return {};
+    std::string out;
+    out.reserve(text.size());
+    std::size_t lineStart = 0;
+    while (lineStart < text.size()) {
+        std::size_t lineEnd = text.find('\n', lineStart);
+        if (lineEnd == std::string::npos) lineEnd = text.size();
+        std::size_t first = lineStart;
+        while (first < lineEnd && (text[first] == ' ' || text[first] == '\t'))
+            ++first;
+        const bool face = first + 1 < lineEnd && text[first] == 'f' && isSpace(text[first + 1]);
+        for (std::size_t i = lineStart; i < lineEnd; ++i) {
+            if (face && text[i] == '/') {
+                std::size_t j = i;
+                while (j < lineEnd && text[j] == '/')
+                    ++j;
+                if (j == lineEnd || isSpace(text[j])) {
+                    i = j - 1;  // a run of slashes ending the corner: dropped
+                    continue;
+                }
+            }
+            out += text[i];
+        }
+        if (lineEnd < text.size()) out += '\n';
+        lineStart = lineEnd + 1;
+    }
+    return out;
+}
+
 tinyobj::ObjReader parseObj(const std::filesystem::path& file, const std::string& text,
                             const std::string& mtlText) {
     checkAttributeNumbers(file, text);
@@ -174,7 +216,8 @@ tinyobj::ObjReader parseObj(const std::filesystem::path& file, const std::string
     config.triangulate = true;
     config.vertex_color = false;
     tinyobj::ObjReader reader;
-    if (!reader.ParseFromString(text, mtlText, config))
+    const std::string cleaned = withoutTrailingCornerSlashes(text);
+    if (!reader.ParseFromString(cleaned.empty() ? text : cleaned, mtlText, config))
         throw InputError(file.string() + ": " +
                          (reader.Error().empty() ? "cannot read the OBJ file" : reader.Error()));
     return reader;

@@ -11,7 +11,7 @@
 //                       position (getPixel2D) is its dimensions 0 and 1, unscrambled
 //                       (global_sobol_net.h: a fixed pattern, the same for every seed), the
 //                       wavelength number (getWavelength1D) dimension 2, and every later
-//                       get1D/get2D the next pair of dimensions (sobol_matrices.h, 1024 of
+//                       get1D/get2D the next pair of dimensions from 4 (sobol_matrices.h, 1024 of
 //                       them, Joe and Kuo's direction numbers), each Owen-scrambled with this
 //                       pixel's and dimension pair's seeds. So film position, wavelength, light
 //                       and BSDF samples are stratified together within a pixel, where the
@@ -227,9 +227,11 @@ class PixelSampler {
         }
         using namespace sobol_detail;
         const DimensionSeeds s = dimensionSeeds(dimension_++);
-        if (const int d = nextGlobalPair(); d >= 0)
-            return {toFloat(scramble(sobolSample(globalIndex_, d), s.first)),
-                    toFloat(scramble(sobolSample(globalIndex_, d + 1), s.second))};
+        if (const int d = nextGlobalPair(); d >= 0) {
+            const std::uint64_t both = sobolPairSample(globalIndex_, d / 2);
+            return {toFloat(scramble(std::uint32_t(both), s.first)),
+                    toFloat(scramble(std::uint32_t(both >> 32), s.second))};
+        }
         const std::uint32_t y = laineKarrasPermutation(reversedIndex_, s.shuffle);
         const std::uint32_t a = reverseBits(laineKarrasPermutation(reverseBits(y), s.first));
         const std::uint32_t b =
@@ -269,8 +271,9 @@ class PixelSampler {
     /// sobol-global: the first of the two Sobol dimensions the next get1D/get2D/skip takes from
     /// the global point, and moves past them; -1 for the other samplers and past the table
     /// (then the numbers are the Sobol sampler's). Dimensions 0 and 1 are the film position,
-    /// 2 the wavelength number; a get1D uses the first of its pair, so that skipping a number
-    /// or drawing it leaves every later one unchanged.
+    /// 2 the wavelength number, 3 is left out so that every later pair is a pair of the table
+    /// (2p, 2p + 1: one pass over the index's bits gives both); a get1D uses the first of its
+    /// pair, so that skipping a number or drawing it leaves every later one unchanged.
     int nextGlobalPair() {
         if (kind_ != SamplerKind::SobolGlobal || nextGlobalDimension_ + 1 >= kSobolDimensions)
             return -1;
@@ -286,7 +289,7 @@ class PixelSampler {
     Pcg32 rng_;
     const GlobalSobolNet* net_;
     std::uint64_t globalIndex_ = 0;  ///< sobol-global: the sample's index in the global net
-    int nextGlobalDimension_ = kWavelengthDimension + 1;  ///< sobol-global's next free dimension
+    int nextGlobalDimension_ = kWavelengthDimension + 2;  ///< sobol-global's next free pair
     std::uint32_t dimension_ = 0;
 };
 
