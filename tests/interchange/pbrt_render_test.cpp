@@ -1,7 +1,8 @@
 // pbrt-v4 scenes, imported, render the same images as the same scenes written by hand in
 // lamina's format (tests/data/interchange/pbrt/: a Cornell box; glass and copper spheres under
 // an environment; named metals and a coated diffuse under a blackbody light, with bdpt; an
-// instanced mesh, once lamina's reader has instances). Each is rendered as 32 independent
+// instanced mesh, once lamina's reader has instances; clipped quadrics and cylinders, emitting
+// ones among them). Each is rendered as 32 independent
 // batches from different seeds and compared with the blockwise
 // Welch t-test of the estimator-agreement experiment (4x4-pixel blocks, alpha = 0.01): pass
 // when at most 3% of the blocks reject, the image means' t-test has p >= 0.0027 and the means
@@ -73,7 +74,8 @@ INSTANTIATE_TEST_SUITE_P(Scenes, PbrtSceneAgrees,
                          ::testing::Values(PbrtCase{"cornell_box", "cornell-box", 2048},
                                            PbrtCase{"glass_sphere", "glass-sphere", 2048},
                                            PbrtCase{"conductor", "conductor", 1024},
-                                           PbrtCase{"instanced", "instanced", 1024}),
+                                           PbrtCase{"instanced", "instanced", 1024},
+                                           PbrtCase{"quadrics", "quadrics", 1024}),
                          [](const auto& p) { return std::string(p.param.name); });
 
 // The luminance of the image's four quadrants: top-left, top-right, bottom-left,
