@@ -75,7 +75,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, PbrtSceneAgrees,
                                            PbrtCase{"glass_sphere", "glass-sphere", 2048},
                                            PbrtCase{"conductor", "conductor", 1024},
                                            PbrtCase{"instanced", "instanced", 1024},
-                                           PbrtCase{"quadrics", "quadrics", 1024}),
+                                           PbrtCase{"quadrics", "quadrics", 2048}),
                          [](const auto& p) { return std::string(p.param.name); });
 
 // The luminance of the image's four quadrants: top-left, top-right, bottom-left,

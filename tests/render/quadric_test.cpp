@@ -229,10 +229,13 @@ TEST(QuadricHits, InstancesPlaceQuadricsAsTheirCopiesAreWritten) {
         ASSERT_EQ(ha.has_value(), hb.has_value()) << k;
         if (!ha) continue;
         ++hits;
-        EXPECT_NEAR(ha->t, hb->t, 2e-5f) << k;
-        expectNear(ha->ng, hb->ng, 2e-5f);
-        EXPECT_NEAR(ha->uv.x, hb->uv.x, 2e-5f) << k;
-        EXPECT_NEAR(ha->uv.y, hb->uv.y, 2e-5f) << k;
+        // Embree intersects the instance along the ray carried into the object in float: the
+        // two agree to rounding, not bit for bit (as Instancing.HitsEqualTheCopiesWrittenOut).
+        EXPECT_NEAR(ha->t, hb->t, 1e-4f * hb->t) << k;
+        EXPECT_LT(glm::length(ha->p - hb->p), 1e-4f) << k;
+        EXPECT_GT(glm::dot(ha->ng, hb->ng), 0.99999f) << k;
+        EXPECT_NEAR(ha->uv.x, hb->uv.x, 1e-4f) << k;
+        EXPECT_NEAR(ha->uv.y, hb->uv.y, 1e-4f) << k;
     }
     EXPECT_GT(hits, 1000);
 }
