@@ -176,13 +176,13 @@ TEST_F(PbrtCommandLine, ConvertWritesTheSceneThatRenders) {
 }
 
 TEST_F(PbrtCommandLine, ErrorsAndWarningsNameFileAndLine) {
-    const auto bad = write("bad.pbrt", "WorldBegin\n\nShape \"cylinder\"\n");
+    const auto bad = write("bad.pbrt", "WorldBegin\n\nShape \"hyperboloid\"\n");
     const CommandRun run =
         runLaminaStderr("render " + bad.string() + " -o " + (dir_ / "x.exr").string());
     EXPECT_EQ(run.exitCode, 1);
     EXPECT_EQ(run.output, "lamina: error: " + bad.string() +
-                              ":3: Shape \"cylinder\" is not supported (lamina reads sphere, "
-                              "disk, trianglemesh, plymesh and bilinearmesh)\n");
+                              ":3: Shape \"hyperboloid\" is not supported (lamina reads sphere, "
+                              "disk, cylinder, trianglemesh, plymesh and bilinearmesh)\n");
     const auto warned = write("warned.pbrt",
                               "Accelerator \"bvh\"\nWorldBegin\n"
                               "LightSource \"point\"\n");
