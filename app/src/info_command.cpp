@@ -51,10 +51,13 @@ void run(const std::string& file) {
                 std::string(render::kSamplerNames.name(scene.settings.sampler)).c_str(),
                 static_cast<unsigned long long>(scene.settings.seed));
     printFilm(scene.film);
-    std::printf(
-        "geometry: %zu meshes (%zu triangles, %zu vertices), %zu spheres, %zu disks, "
-        "~%.1f MiB\n",
-        s.meshes, s.triangles, s.vertices, s.spheres, s.disks, double(s.geometryBytes) / (1 << 20));
+    std::printf("geometry: %zu meshes (%zu triangles, %zu vertices), %zu spheres, %zu disks, ",
+                s.meshes, s.triangles, s.vertices, s.spheres, s.disks);
+    // pbrt-v4's clipped quadrics, where the scene has any.
+    if (s.partialSpheres + s.cylinders + s.partialDisks > 0)
+        std::printf("%zu partial spheres, %zu cylinders, %zu partial disks, ", s.partialSpheres,
+                    s.cylinders, s.partialDisks);
+    std::printf("~%.1f MiB\n", double(s.geometryBytes) / (1 << 20));
     if (!scene.objects.empty() || !scene.unusedObjectNames.empty()) {
         std::printf(
             "instances: %zu of %zu objects, referencing %zu triangles (%zu stored once in the "

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <fstream>
 
+#include "lamina/core/frame.h"
+#include "lamina/geometry/geometry.h"
 #include "lamina/interchange/scene_import.h"
 #include "lamina/lights/environment_map.h"
 #include "lamina/scene/scene_readers.h"
@@ -390,10 +392,79 @@ TEST_F(MitsubaImport, UnsupportedShapesAreRefused) {
               where(2) +
                   ": <shape type=\"serialized\">: the serialized mesh format is not supported "
                   "(convert the mesh to PLY or OBJ)");
-    EXPECT_EQ(error("\n<shape type=\"cylinder\"/>"),
+    EXPECT_EQ(error("\n<shape type=\"hyperboloid\"/>"),
               where(3) +
-                  ": <shape type=\"cylinder\">: the shape plugin \"cylinder\" is not supported "
-                  "(obj, ply, rectangle, cube, sphere, disk, instance, shapegroup)");
+                  ": <shape type=\"hyperboloid\">: the shape plugin \"hyperboloid\" is not "
+                  "supported (obj, ply, rectangle, cube, sphere, disk, cylinder, instance, "
+                  "shapegroup)");
+}
+
+// Mitsuba's cylinder (mitsuba3 src/shapes/cylinder.cpp): the unit cylinder placed by to_world *
+// translate(p0) * to_frame(Frame3f(p1 - p0)) * scale(radius, radius, |p1 - p0|), open, facing
+// outwards, uv = (phi / 2 pi, z / length) with phi from the frame's s axis. A lamina cylinder
+// of that radius, z in [0, length], in that frame: the same surface and uv.
+TEST_F(MitsubaImport, CylinderBecomesLaminasInItsPlacedFrame) {
+    const ImportedScene imported = import(R"(<shape type="cylinder">
+  <point name="p0" x="1" y="0" z="0"/><point name="p1" x="1" y="3" z="0"/>
+  <float name="radius" value="0.25"/>
+  <transform name="to_world"><scale value="2"/><translate x="0" y="0" z="1"/></transform>
+</shape>
+<shape type="cylinder"><boolean name="flip_normals" value="true"/></shape>
+<shape type="cylinder"><transform name="to_world"><scale x="-1"/></transform></shape>)" +
+                                          std::string(kLight));
+    const Json& shapes = imported.scene["shapes"];
+    ASSERT_EQ(shapes.size(), 4u);
+    const Json& c = shapes[0];
+    EXPECT_EQ(c["type"], "cylinder");
+    EXPECT_DOUBLE_EQ(c["radius"].get<double>(), 0.5);
+    EXPECT_EQ(c["z_min"], 0.0);
+    EXPECT_DOUBLE_EQ(c["z_max"].get<double>(), 6.0);
+    EXPECT_FALSE(c.contains("flip_normals"));
+    // The frame: Duff et al.'s basis about +y (Mitsuba's Frame3f), at to_world(p0) = (2, 0, 1).
+    const Frame<double> frame = Frame<double>::fromNormal(Vec3d(0, 1, 0));
+    const Json& m = c["transform"][0]["matrix"];
+    for (int row = 0; row < 3; ++row) {
+        EXPECT_NEAR(m[std::size_t(4 * row)].get<double>(), frame.s[row], 1e-12);
+        EXPECT_NEAR(m[std::size_t(4 * row + 1)].get<double>(), frame.t[row], 1e-12);
+        EXPECT_NEAR(m[std::size_t(4 * row + 2)].get<double>(), frame.n[row], 1e-12);
+    }
+    EXPECT_EQ(m[3], 2.0);
+    EXPECT_EQ(m[7], 0.0);
+    EXPECT_EQ(m[11], 1.0);
+    // Mitsuba's defaults: radius 1 from (0, 0, 0) to (0, 0, 1); flip_normals kept, and a
+    // mirroring to_world turns the normal Mitsuba takes from dp/du x dp/dv inwards.
+    EXPECT_EQ(shapes[1]["radius"], 1.0);
+    EXPECT_EQ(shapes[1]["z_max"], 1.0);
+    EXPECT_EQ(shapes[1]["flip_normals"], true);
+    EXPECT_EQ(shapes[2]["flip_normals"], true);
+    // The lamina scene hits it where Mitsuba's surface is: towards the axis at mid-height, at
+    // the radius, with v = 1/2 and u the angle from the frame's s axis (here its t: 90
+    // degrees) over 2 pi.
+    const SceneDesc scene = parseScene(imported.scene.dump(), JsonSource{"<imported>", dir_});
+    const Geometry g(scene);
+    const Vec3f t(frame.t);
+    const auto hit = g.intersect(Vec3f(2, 3, 1) + 2.0f * t, -t);
+    ASSERT_TRUE(hit);
+    EXPECT_NEAR(glm::length(hit->p - (Vec3f(2, 3, 1) + 0.5f * t)), 0.0f, 1e-5f);
+    EXPECT_NEAR(hit->uv.x, 0.25f, 1e-5f);
+    EXPECT_NEAR(hit->uv.y, 0.5f, 1e-5f);
+    EXPECT_NEAR(glm::dot(hit->ng, t), 1.0f, 1e-5f);
+}
+
+TEST_F(MitsubaImport, CylinderErrorsNameTheLine) {
+    EXPECT_EQ(error("\n<shape type=\"cylinder\"><float name=\"radius\" value=\"-1\"/></shape>"),
+              where(3) + ": <shape type=\"cylinder\">: radius must be > 0");
+    EXPECT_EQ(
+        error("<shape type=\"cylinder\"><point name=\"p1\" x=\"0\" y=\"0\" z=\"0\"/></shape>"),
+        where(2) +
+            ": <shape type=\"cylinder\">: p0 and p1 coincide: the cylinder has no "
+            "length");
+    EXPECT_EQ(error("<shape type=\"cylinder\"><transform name=\"to_world\"><scale x=\"2\"/>"
+                    "</transform></shape>"),
+              where(2) +
+                  ": <shape type=\"cylinder\">: to_world must keep the cylinder round (a "
+                  "rotation, a translation and a scale the same across its axis): lamina "
+                  "refuses a shear or an uneven scale across it");
 }
 
 TEST_F(MitsubaImport, ShapeGroupsAndInstances) {

@@ -1,7 +1,8 @@
 // pbrt-v4 scenes, imported, render the same images as the same scenes written by hand in
 // lamina's format (tests/data/interchange/pbrt/: a Cornell box; glass and copper spheres under
 // an environment; named metals and a coated diffuse under a blackbody light, with bdpt; an
-// instanced mesh, once lamina's reader has instances). Each is rendered as 32 independent
+// instanced mesh, once lamina's reader has instances; clipped quadrics and cylinders, emitting
+// ones among them). Each is rendered as 32 independent
 // batches from different seeds and compared with the blockwise
 // Welch t-test of the estimator-agreement experiment (4x4-pixel blocks, alpha = 0.01): pass
 // when at most 3% of the blocks reject, the image means' t-test has p >= 0.0027 and the means
@@ -73,7 +74,8 @@ INSTANTIATE_TEST_SUITE_P(Scenes, PbrtSceneAgrees,
                          ::testing::Values(PbrtCase{"cornell_box", "cornell-box", 2048},
                                            PbrtCase{"glass_sphere", "glass-sphere", 2048},
                                            PbrtCase{"conductor", "conductor", 1024},
-                                           PbrtCase{"instanced", "instanced", 1024}),
+                                           PbrtCase{"instanced", "instanced", 1024},
+                                           PbrtCase{"quadrics", "quadrics", 2048}),
                          [](const auto& p) { return std::string(p.param.name); });
 
 // The luminance of the image's four quadrants: top-left, top-right, bottom-left,
@@ -174,13 +176,13 @@ TEST_F(PbrtCommandLine, ConvertWritesTheSceneThatRenders) {
 }
 
 TEST_F(PbrtCommandLine, ErrorsAndWarningsNameFileAndLine) {
-    const auto bad = write("bad.pbrt", "WorldBegin\n\nShape \"cylinder\"\n");
+    const auto bad = write("bad.pbrt", "WorldBegin\n\nShape \"hyperboloid\"\n");
     const CommandRun run =
         runLaminaStderr("render " + bad.string() + " -o " + (dir_ / "x.exr").string());
     EXPECT_EQ(run.exitCode, 1);
     EXPECT_EQ(run.output, "lamina: error: " + bad.string() +
-                              ":3: Shape \"cylinder\" is not supported (lamina reads sphere, "
-                              "disk, trianglemesh, plymesh and bilinearmesh)\n");
+                              ":3: Shape \"hyperboloid\" is not supported (lamina reads sphere, "
+                              "disk, cylinder, trianglemesh, plymesh and bilinearmesh)\n");
     const auto warned = write("warned.pbrt",
                               "Accelerator \"bvh\"\nWorldBegin\n"
                               "LightSource \"point\"\n");

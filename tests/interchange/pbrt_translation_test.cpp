@@ -7,8 +7,10 @@
 #include <zlib.h>
 
 #include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
 #include <glm/matrix.hpp>
 
+#include "lamina/geometry/geometry.h"
 #include "lamina/interchange/scene_import.h"
 #include "lamina/render/perspective_camera.h"
 #include "lamina/scene/mesh_files.h"
@@ -223,6 +225,112 @@ TEST_F(PbrtTranslation, ShapesAndTheirTransforms) {
     expectLoads();
 }
 
+// The 16 numbers of a lamina "matrix" operation against `m`.
+void expectMatrix(const Json& transform, const glm::dmat4& m) {
+    ASSERT_EQ(transform.size(), 1u);
+    const Json& rows = transform[0]["matrix"];
+    ASSERT_EQ(rows.size(), 16u);
+    for (int row = 0; row < 4; ++row)
+        for (int col = 0; col < 4; ++col)
+            EXPECT_NEAR(rows[std::size_t(4 * row + col)].get<double>(), m[col][row], 1e-12)
+                << "row " << row << " column " << col;
+}
+
+// pbrt-v4's clipped spheres and disks and its cylinder (shapes.h, their constructors; shapes.cpp,
+// Create): their parameters in their own frame, placed by the transform; zmin and zmax in
+// either order, the sphere's clamped to its radius, phimax clamped to [0, 360]; the disk's
+// height in the transform.
+TEST_F(PbrtTranslation, ClippedQuadricsKeepPbrtV4sParametersInTheirFrame) {
+    const ImportedScene s = import(
+        "AttributeBegin\nTranslate 1 2 3\nRotate 90 1 0 0\nScale 2 2 2\n"
+        "Shape \"sphere\" \"float radius\" 0.5 \"float zmin\" 0.8 \"float zmax\" -0.2 "
+        "\"float phimax\" 400\n"
+        "Shape \"cylinder\" \"float zmin\" 2 \"float zmax\" 0 \"float phimax\" 90\n"
+        "ReverseOrientation\nShape \"disk\" \"float height\" 1 \"float innerradius\" 0.25 "
+        "\"float phimax\" 180\nAttributeEnd\n"
+        "Shape \"cylinder\"\n");
+    const Json& shapes = s.scene["shapes"];
+    ASSERT_EQ(shapes.size(), 4u);
+    const glm::dmat4 m = glm::translate(glm::dmat4(1.0), glm::dvec3(1, 2, 3)) *
+                         glm::rotate(glm::dmat4(1.0), glm::radians(90.0), glm::dvec3(1, 0, 0)) *
+                         glm::scale(glm::dmat4(1.0), glm::dvec3(2));
+    // zmin 0.8 and zmax -0.2 swapped, then zmax clamped to the radius: the sphere's top is
+    // whole (no z_max), and phimax 400 is 360 (no phi_max).
+    EXPECT_EQ(shapes[0]["type"], "sphere");
+    EXPECT_EQ(shapes[0]["radius"], 0.5);
+    EXPECT_EQ(shapes[0]["z_min"], -0.2);
+    EXPECT_FALSE(shapes[0].contains("z_max"));
+    EXPECT_FALSE(shapes[0].contains("phi_max"));
+    expectMatrix(shapes[0]["transform"], m);
+    EXPECT_EQ(shapes[1]["type"], "cylinder");
+    EXPECT_EQ(shapes[1]["radius"], 1);
+    EXPECT_EQ(shapes[1]["z_min"], 0);
+    EXPECT_EQ(shapes[1]["z_max"], 2);
+    EXPECT_EQ(shapes[1]["phi_max"], 90);
+    expectMatrix(shapes[1]["transform"], m);
+    EXPECT_EQ(shapes[2]["type"], "disk");
+    EXPECT_EQ(shapes[2]["inner_radius"], 0.25);
+    EXPECT_EQ(shapes[2]["phi_max"], 180);
+    EXPECT_EQ(shapes[2]["flip_normals"], true);  // ReverseOrientation
+    expectMatrix(shapes[2]["transform"], glm::translate(m, glm::dvec3(0, 0, 1)));
+    EXPECT_EQ(shapes[3], Json::parse(R"({"type": "cylinder", "radius": 1, "z_min": -1,
+        "z_max": 1, "material": "pbrt_default"})"));
+    EXPECT_TRUE(s.warnings.empty());
+    expectLoads();
+    // The lamina scene has pbrt-v4's surface and uv: the cylinder's object-space point at
+    // phi = 45 degrees, z = 1 is hit from its axis, with u = 45 / 90 and v = (1 - 0) / (2 - 0),
+    // and the disk's at phi = 90 degrees, rho = 0.625 (v = (1 - 0.625) / 0.75) faces -z in
+    // its frame (ReverseOrientation) seen from there.
+    const SceneDesc scene = loadScene(file_);
+    const Geometry g(scene);
+    const auto world = [&](const glm::dvec3& p) { return Vec3f(m * glm::dvec4(p, 1.0)); };
+    const double c = std::sqrt(0.5);
+    auto hit = g.intersect(world({0, 0, 1}), glm::normalize(world({c, c, 1}) - world({0, 0, 1})));
+    ASSERT_TRUE(hit);
+    EXPECT_LT(glm::length(hit->p - world({c, c, 1})), 1e-5f);
+    EXPECT_NEAR(hit->uv.x, 0.5f, 1e-5f);
+    EXPECT_NEAR(hit->uv.y, 0.5f, 1e-5f);
+    hit = g.intersect(world({0, 0.625, 2}),
+                      glm::normalize(world({0, 0.625, 0}) - world({0, 0.625, 2})));
+    ASSERT_TRUE(hit);
+    EXPECT_LT(glm::length(hit->p - world({0, 0.625, 1})), 1e-5f);
+    EXPECT_NEAR(hit->uv.x, 0.5f, 1e-5f);
+    EXPECT_NEAR(hit->uv.y, 0.5f, 1e-5f);
+    EXPECT_NEAR(glm::dot(hit->ng, glm::normalize(world({0, 0, 0}) - world({0, 0, 1}))), 1.0f,
+                1e-5f);
+}
+
+TEST_F(PbrtTranslation, ClippedQuadricsOfNoAreaAreOmittedAndHostileOnesRefused) {
+    // pbrt-v4 renders nothing of a shape its clipping leaves no area: omitted, with a warning.
+    const ImportedScene s = import(
+        "Shape \"sphere\" \"float zmin\" 0.5 \"float zmax\" 0.5\n"
+        "Shape \"cylinder\" \"float phimax\" 0\n"
+        "Shape \"disk\" \"float innerradius\" 1\nShape \"sphere\"\n");
+    ASSERT_EQ(s.scene["shapes"].size(), 1u);
+    ASSERT_EQ(s.warnings.size(), 3u);
+    EXPECT_EQ(s.warnings[0], at(1) +
+                                 ": Shape \"sphere\" omitted: its zmin, zmax, phimax or "
+                                 "innerradius leave it no area, and pbrt-v4 renders nothing of it");
+    EXPECT_EQ(s.warnings[2].substr(0, at(3).size()), at(3));
+    EXPECT_EQ(importError("Shape \"cylinder\" \"float radius\" -1\n"),
+              at(1) + ": Shape \"cylinder\": \"radius\" must be > 0");
+    EXPECT_EQ(importError("Shape \"sphere\" \"float radius\" 0 \"float phimax\" 90\n"),
+              at(1) + ": Shape \"sphere\": \"radius\" must be > 0");
+    EXPECT_EQ(importError("Shape \"disk\" \"float innerradius\" -0.5\n"),
+              at(1) + ": Shape \"disk\": \"innerradius\" must be >= 0");
+    EXPECT_EQ(importError("Scale 1 1 3\nShape \"cylinder\"\n"),
+              at(2) +
+                  ": Shape \"cylinder\" under a shear or an uneven scale is not supported "
+                  "(lamina's analytic shapes stay round)");
+    // An emitter's power divides by the clipped area, phi_max r (z_max - z_min) in the world.
+    const ImportedScene lit = import(
+        "AreaLightSource \"diffuse\" \"float power\" 10\nScale 2 2 2\n"
+        "Shape \"cylinder\" \"float phimax\" 180\n");
+    const double area = kPi<double> * 1 * 2 * 4;
+    EXPECT_NEAR(lit.scene["shapes"][0]["emission"]["radiance"].get<double>(),
+                10 / (kPi<double> * area), 1e-12);
+}
+
 TEST_F(PbrtTranslation, MeshesAndPatches) {
     write("m.ply",
           "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float "
@@ -251,12 +359,10 @@ TEST_F(PbrtTranslation, MeshesAndPatches) {
 }
 
 TEST_F(PbrtTranslation, UnsupportedShapesAndParametersAreRefused) {
-    EXPECT_EQ(importError("\nShape \"cylinder\"\n"),
+    EXPECT_EQ(importError("\nShape \"paraboloid\"\n"),
               at(2) +
-                  ": Shape \"cylinder\" is not supported (lamina reads sphere, disk, "
-                  "trianglemesh, plymesh and bilinearmesh)");
-    EXPECT_EQ(importError("Shape \"sphere\" \"float zmax\" 0.5\n"),
-              at(1) + ": a partial sphere (zmin, zmax, phimax) is not supported");
+                  ": Shape \"paraboloid\" is not supported (lamina reads sphere, disk, "
+                  "cylinder, trianglemesh, plymesh and bilinearmesh)");
     EXPECT_EQ(importError("Shape \"sphere\" \"float wobble\" 0.5\n"),
               at(1) + ": Shape \"sphere\": parameter \"float wobble\" is not supported");
     EXPECT_EQ(importError("Shape \"sphere\" \"integer radius\" 2\n"),

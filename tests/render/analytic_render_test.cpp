@@ -1,4 +1,5 @@
-// Renders with known answers: the white furnace and a closed emitting sphere. Each test
+// Renders with known answers: the white furnace, a closed emitting sphere and a closed can of
+// pbrt-v4's quadrics. Each test
 // checks the image mean with a z-test at significance 0.001 (|z| < 3.29), using the
 // per-pixel variance estimates of the film as the standard error.
 #include <gtest/gtest.h>
@@ -79,6 +80,56 @@ INSTANTIATE_TEST_SUITE_P(Modes, AnalyticRender,
                                            render::RenderModeKind::Polarised),
                          [](const auto& paramInfo) {
                              return std::string(render::kRenderModeNames.name(paramInfo.param));
+                         });
+
+// A closed can of pbrt-v4's quadrics facing inwards: a cylinder (radius 1, z in [-1, 1]), a
+// lid of two half-disks (phi_max 180, the second turned by 180 degrees) and a bottom of an
+// annulus (inner radius 0.5) around a whole disk, all emitting Le = 1 and reflecting
+// diffusely with albedo 0.5. Inside, the radiance is Le / (1 - rho) = 2 everywhere (truncated
+// at depth 64), by every integrator: each quadric's intersection and clipping, its emission
+// and its sampling by area (next-event estimation and MIS, particles, BDPT's connections)
+// must be right for that.
+const char* kClosedQuadricCan = R"({
+  "camera": {"position": [0, 0, -0.2], "look_at": [0.3, 0.2, 1], "fov": 80},
+  "film": {"resolution": [12, 12]},
+  "integrator": {"max_depth": 64, "rr_depth": 64},
+  "materials": {"m": {"type": "lambert", "reflectance": 0.5}},
+  "shapes": [
+    {"type": "cylinder", "flip_normals": true, "material": "m", "emission": {"radiance": 1},
+     "transform": [{"rotate": {"axis": [0, 0, 1], "angle": 20}}]},
+    {"type": "disk", "phi_max": 180, "flip_normals": true, "material": "m",
+     "emission": {"radiance": 1}, "transform": [{"translate": [0, 0, 1]}]},
+    {"type": "disk", "phi_max": 180, "flip_normals": true, "material": "m",
+     "emission": {"radiance": 1},
+     "transform": [{"rotate": {"axis": [0, 0, 1], "angle": 180}}, {"translate": [0, 0, 1]}]},
+    {"type": "disk", "inner_radius": 0.5, "material": "m", "emission": {"radiance": 1},
+     "transform": [{"translate": [0, 0, -1]}]},
+    {"type": "disk", "radius": 0.5, "material": "m", "emission": {"radiance": 1},
+     "center": [0, 0, -1]}
+  ]
+})";
+
+class ClosedQuadricCan : public ::testing::TestWithParam<render::IntegratorKind> {};
+
+TEST_P(ClosedQuadricCan, RadianceInsideIsLeOverOneMinusRho) {
+    render::RenderOptions o;
+    o.integrator = GetParam();
+    o.spp = GetParam() == render::IntegratorKind::Light ? 256 : 64;
+    const auto r = render::renderScene(sceneFromText(kClosedQuadricCan), o);
+    for (int c = 0; c < 3; ++c) {
+        const auto m = imageMean(*r.film, c);
+        EXPECT_LT(std::abs(m.mean - 2.0), kZ * m.standardError + 1e-4)
+            << "channel " << c << " mean " << m.mean << " se " << m.standardError;
+    }
+    EXPECT_EQ(r.film->rejectedSamples(), 0u);
+}
+
+INSTANTIATE_TEST_SUITE_P(Integrators, ClosedQuadricCan,
+                         ::testing::Values(render::IntegratorKind::Path,
+                                           render::IntegratorKind::Light,
+                                           render::IntegratorKind::Bdpt),
+                         [](const auto& paramInfo) {
+                             return std::string(render::kIntegratorNames.name(paramInfo.param));
                          });
 
 // Renders a scene in both modes and z-tests the image mean of each channel (|z| < 3.29).

@@ -103,7 +103,8 @@ INSTANTIATE_TEST_SUITE_P(
         AgreementCase{"OrthographicCamera", "scenes/reciprocity/orthographic.json",
                       RenderModeKind::Rgb},
         AgreementCase{"BumpAndNormalMaps", "scenes/reciprocity/bump-and-normal-maps.json",
-                      RenderModeKind::Rgb}),
+                      RenderModeKind::Rgb},
+        AgreementCase{"Quadrics", "scenes/reciprocity/quadrics.json", RenderModeKind::Rgb}),
     [](const ::testing::TestParamInfo<AgreementCase>& p) { return std::string(p.param.name); });
 
 /// Path tracing against `integrator` with one deliberate mistake switched on: must disagree.

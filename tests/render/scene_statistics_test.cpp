@@ -55,5 +55,30 @@ TEST(SceneStatistics, CountsWhatTheSceneHolds) {
     EXPECT_NE(s.spectralData[0].find("(n, k)"), std::string::npos) << s.spectralData[0];
 }
 
+// pbrt-v4's quadrics are counted by kind; a sphere or disk whose clipping keys leave it whole
+// is an analytic sphere or disk; an emitting quadric is one area light.
+TEST(SceneStatistics, CountsQuadricsByKind) {
+    const SceneDesc scene = parseScene(R"({
+      "materials": {"matte": {"type": "lambert"}},
+      "shapes": [
+        {"type": "sphere", "material": "matte", "z_max": 0.5},
+        {"type": "sphere", "material": "matte", "phi_max": 360},
+        {"type": "cylinder", "material": "matte", "emission": {"radiance": 1}},
+        {"type": "cylinder", "material": "matte", "phi_max": 90},
+        {"type": "disk", "material": "matte", "inner_radius": 0.5},
+        {"type": "disk", "material": "matte", "inner_radius": 0}
+      ]
+    })",
+                                       JsonSource{"<test>", "."});
+    const SceneStatistics s = sceneStatistics(scene);
+    EXPECT_EQ(s.spheres, 1u);
+    EXPECT_EQ(s.disks, 1u);
+    EXPECT_EQ(s.partialSpheres, 1u);
+    EXPECT_EQ(s.cylinders, 2u);
+    EXPECT_EQ(s.partialDisks, 1u);
+    EXPECT_EQ(s.emitters, 1u);
+    EXPECT_EQ(s.areaLights, 1u);
+}
+
 }  // namespace
 }  // namespace lamina::render

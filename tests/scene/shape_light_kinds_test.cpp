@@ -14,8 +14,9 @@
 namespace lamina::render {
 namespace {
 
-// Six emitters in a row along x, one every 3 units, in mixed order of kinds: a disk, a mesh,
-// a sphere, a rectangle, a disk, a sphere. Rays along +z from z = -5 hit the one at x = 3 k.
+// Seven emitters in a row along x, one every 3 units, in mixed order of kinds: a disk, a mesh,
+// a sphere, a rectangle, a disk, a sphere, a clipped disk (a quadric, read first). Rays along +z
+// from z = -5 hit the one at x = 3 k.
 constexpr const char* kMixedShapes = R"({
   "materials": {"m": {"type": "lambert", "reflectance": 0.5}},
   "objects": {"o": [
@@ -25,6 +26,8 @@ constexpr const char* kMixedShapes = R"({
      "positions": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "faces": [[0, 1, 2]]}
   ]},
   "shapes": [
+    {"type": "disk", "name": "q1", "material": "m", "radius": 0.5, "phi_max": 300,
+     "flip_normals": true, "emission": {"radiance": 1}, "transform": [{"translate": [18, 0, 0]}]},
     {"type": "disk", "name": "d1", "material": "m", "center": [0, 0, 0], "normal": [0, 0, -1],
      "radius": 0.5, "emission": {"radiance": 1}},
     {"type": "mesh", "name": "m1", "material": "m", "emission": {"radiance": 1},
@@ -48,10 +51,12 @@ std::vector<std::string> namesOf(const std::vector<ShapeDesc>& shapes) {
     return names;
 }
 
-TEST(ShapeKinds, MixedKindsAreOrderedMeshesSpheresDisksAsGeometryIdsAndLights) {
+TEST(ShapeKinds, MixedKindsAreOrderedMeshesSpheresDisksQuadricsAsGeometryIdsAndLights) {
     const SceneDesc scene = testing::sceneFromText(kMixedShapes);
-    // Every mesh, then every sphere, then every disk, each kind in the file's order.
-    EXPECT_THAT(namesOf(scene.shapes), ::testing::ElementsAre("m1", "r1", "s1", "s2", "d1", "d2"));
+    // Every mesh, then every sphere, then every disk, then every quadric, each kind in the
+    // file's order.
+    EXPECT_THAT(namesOf(scene.shapes),
+                ::testing::ElementsAre("m1", "r1", "s1", "s2", "d1", "d2", "q1"));
     EXPECT_TRUE(std::holds_alternative<MeshDesc>(scene.shapes[1]));
     EXPECT_TRUE(std::holds_alternative<SphereDesc>(scene.shapes[2]));
     EXPECT_TRUE(std::holds_alternative<DiskDesc>(scene.shapes[5]));
@@ -60,19 +65,19 @@ TEST(ShapeKinds, MixedKindsAreOrderedMeshesSpheresDisksAsGeometryIdsAndLights) {
 
     // A shape's index is its Embree geometry id, and the object's shapes follow the scene's.
     const Geometry geometry(scene);
-    ASSERT_EQ(geometry.shapes().size(), 9u);
+    ASSERT_EQ(geometry.shapes().size(), 10u);
     for (std::size_t i = 0; i < scene.shapes.size(); ++i) {
         EXPECT_EQ(geometry.shapes()[i].desc, &scene.shapes[i]) << i;
         EXPECT_EQ(geometry.shapes()[i].object, -1) << i;
     }
     for (std::size_t i = 0; i < 3; ++i)
-        EXPECT_EQ(geometry.shapes()[6 + i].desc, &scene.objects[0].shapes[i]) << i;
+        EXPECT_EQ(geometry.shapes()[7 + i].desc, &scene.objects[0].shapes[i]) << i;
 
-    // One light per shape here (a one-triangle mesh, a rectangle, spheres and disks), made in
-    // the shapes' order: the hit shape's light is the light of the same index.
+    // One light per shape here (a one-triangle mesh, a rectangle, spheres, disks and a
+    // quadric), made in the shapes' order: the hit shape's light is the light of the same index.
     const LightSet lights(scene, geometry, LightSelection::Uniform);
-    ASSERT_EQ(lights.size(), 6u);
-    const std::vector<std::string> inFile{"d1", "m1", "s1", "r1", "d2", "s2"};
+    ASSERT_EQ(lights.size(), 7u);
+    const std::vector<std::string> inFile{"d1", "m1", "s1", "r1", "d2", "s2", "q1"};
     for (std::size_t k = 0; k < inFile.size(); ++k) {
         const auto hit = geometry.intersect(Vec3f(3.0f * float(k), 0, -5), Vec3f(0, 0, 1));
         ASSERT_TRUE(hit) << inFile[k];

@@ -5,6 +5,8 @@
 #include <stdexcept>
 
 #include "lamina/core/overloaded.h"
+#include "lamina/geometry/quadric.h"
+#include "quadric_geometry.h"
 #include "surface_derivatives.h"
 
 namespace lamina::render {
@@ -115,6 +117,12 @@ RTCGeometry Geometry::newGeometry(const DiskDesc& d, int) {
     n[2] = float(d.normal.z);
     addAlphaFilter(g, d.alpha, nullptr);
     return g;
+}
+
+RTCGeometry Geometry::newGeometry(const QuadricDesc& q, int) {
+    // A cut-out is tested in the user geometry's own callbacks (quadric_geometry.h).
+    quadrics_.push_back(std::make_unique<QuadricGeometry>(QuadricGeometry{&q, q.alpha.value}));
+    return newQuadricGeometry(device_, *quadrics_.back());
 }
 
 void Geometry::addAlphaFilter(RTCGeometry g, const AlphaDesc& alpha, const MeshDesc* mesh) {
@@ -247,6 +255,23 @@ void surfaceAt(const SphereDesc& s, const Vec3<double>& origin, const Vec3<doubl
     hit.ng = hit.ns = Vec3f(n);
 }
 
+void surfaceAt(const QuadricDesc& q, const Vec3<double>& origin, const Vec3<double>& direction,
+               const RTCHit&, SurfaceHit& hit) {
+    // o + t d projected onto the surface, in double (quadricSurface).
+    const QuadricSurface s = quadricSurface(q, q.toLocal(origin + double(hit.t) * direction));
+    hit.p = Vec3f(s.p);
+    hit.ng = hit.ns = Vec3f(s.n);
+    hit.uv = Vec2f(s.uv);
+}
+
+// Whether a shape's front is a side of its plane (a disk's), which a mirroring transform
+// turns over, rather than its outside.
+bool facesOneSideOfAPlane(const ShapeDesc& shape) {
+    if (std::holds_alternative<DiskDesc>(shape)) return true;
+    const auto* q = std::get_if<QuadricDesc>(&shape);
+    return q && q->kind == Quadric::Disk;
+}
+
 void surfaceAt(const ShapeInfo& info, const Vec3<double>& origin, const Vec3<double>& direction,
                const RTCHit& h, SurfaceHit& hit) {
     std::visit([&](const auto& shape) { surfaceAt(shape, origin, direction, h, hit); }, *info.desc);
@@ -304,7 +329,7 @@ std::optional<SurfaceHit> Geometry::intersect(const Vec3f& origin, const Vec3f& 
     const Vec3<double> d(glm::dmat3(xf.toObject) * Vec3<double>(direction));
     surfaceAt(info, o, d, rh.hit, hit);
     hit.p = Vec3f(xf.toWorld * glm::dvec4(Vec3<double>(hit.p), 1.0));
-    const double flip = std::holds_alternative<DiskDesc>(*info.desc) && xf.mirrors ? -1.0 : 1.0;
+    const double flip = facesOneSideOfAPlane(*info.desc) && xf.mirrors ? -1.0 : 1.0;
     const Vec3<double> ng = flip * glm::normalize(xf.normalMatrix * Vec3<double>(hit.ng));
     const Vec3<double> nsTransformed = xf.normalMatrix * Vec3<double>(hit.ns);
     Vec3<double> ns = glm::normalize(nsTransformed) * flip;

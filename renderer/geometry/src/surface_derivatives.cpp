@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "lamina/geometry/quadric.h"
+
 namespace lamina::render {
 
 SurfaceDerivatives surfaceDerivatives(const MeshDesc& m, std::uint32_t triangle, float b1, float b2,
@@ -64,6 +66,16 @@ SurfaceDerivatives surfaceDerivatives(const DiskDesc& dk, const SurfaceHit& hit)
     if (!(rho > 0)) return d;  // the centre: v is undefined there
     d.dpdu = Vec3f(dk.radius / rho * (local.x * frame.s + local.y * frame.t));
     d.dpdv = Vec3f(2 * kPi<double> * (-local.y * frame.s + local.x * frame.t));
+    return d;
+}
+
+SurfaceDerivatives surfaceDerivatives(const QuadricDesc& q, const SurfaceHit& hit) {
+    const QuadricSurface s = quadricSurface(q, q.toLocal(Vec3<double>(hit.p)));
+    SurfaceDerivatives d;
+    d.dpdu = Vec3f(s.dpdu);
+    d.dpdv = Vec3f(s.dpdv);
+    d.dndu = Vec3f(s.dndu);
+    d.dndv = Vec3f(s.dndv);
     return d;
 }
 

@@ -22,5 +22,7 @@ SurfaceDerivatives surfaceDerivatives(const SphereDesc& s, const SurfaceHit& hit
 /// u = rho / radius, v = phi / 2 pi + 1/2 in the disk's frame: dp/du = radius (cos phi, sin
 /// phi), dp/dv = 2 pi rho (-sin phi, cos phi); zero at the centre; a flat normal.
 SurfaceDerivatives surfaceDerivatives(const DiskDesc& d, const SurfaceHit& hit);
+/// pbrt-v4's for its uv (quadricSurface, quadric.h).
+SurfaceDerivatives surfaceDerivatives(const QuadricDesc& q, const SurfaceHit& hit);
 
 }  // namespace lamina::render

@@ -8,6 +8,7 @@
 
 #include "document_names.h"
 #include "lamina/core/error.h"
+#include "lamina/core/frame.h"
 #include "mitsuba_bsdfs.h"
 #include "mitsuba_translation.h"
 #include "rounded_rotation.h"
@@ -126,6 +127,56 @@ Json environmentTransform(Plugin& p, const std::optional<Transform>& transform) 
     return operations;
 }
 
+// Mitsuba's cylinder (mitsuba3 src/shapes/cylinder.cpp): radius 1 about the segment from p0
+// (0, 0, 0) to p1 (0, 0, 1), open (no caps), facing outwards. Its to_world becomes to_world *
+// translate(p0) * to_frame(Frame3f(d / |d|)) * scale(radius, radius, |d|) for d = p1 - p0,
+// which places the unit cylinder (z in [0, 1]) with uv = (phi / 2 pi, z); Frame3f is Duff et
+// al.'s basis, as lamina's Frame::fromNormal. That is a lamina cylinder of the placed radius,
+// z in [0, length], in the placed frame. Its normal is the cross product of the placed dp/du
+// and dp/dv: under a mirroring to_world it faces inwards, where lamina's faces outwards
+// whatever the handedness, so flip_normals turns it then.
+Json cylinderShape(Plugin& p) {
+    const glm::dvec3 p0 = p.point("p0").value_or(glm::dvec3(0.0));
+    const glm::dvec3 p1 = p.point("p1").value_or(glm::dvec3(0, 0, 1));
+    const double radius = p.number("radius", 1.0);
+    const bool flip = p.boolean("flip_normals", false);
+    if (!(radius > 0)) p.fail("radius must be > 0");
+    const double length = glm::length(p1 - p0);
+    if (!(length > 0)) p.fail("p0 and p1 coincide: the cylinder has no length");
+    const auto transform = p.transform("to_world");
+    const glm::dmat4 toWorld = transform ? transform->matrix : glm::dmat4(1.0);
+    const Frame<double> frame = Frame<double>::fromNormal((p1 - p0) / length);
+    const glm::dmat3 a =
+        glm::dmat3(toWorld) * glm::dmat3(frame.s * radius, frame.t * radius, frame.n * length);
+    const double rx = glm::length(a[0]), ry = glm::length(a[1]), placedLength = glm::length(a[2]);
+    // Round: to_world may rotate, mirror and scale, along the axis as it likes, but across it
+    // alike in every direction (Mitsuba warns otherwise and renders the nearest such cylinder).
+    const glm::dmat3 unit(a[0] / rx, a[1] / ry, a[2] / placedLength);
+    const double deviation = std::max(columnSkew(unit), std::abs(rx - ry) / rx);
+    if (!(deviation <= kRoundedRotationTolerance))
+        p.fail(
+            "to_world must keep the cylinder round (a rotation, a translation and a scale the "
+            "same across its axis): lamina refuses a shear or an uneven scale across it");
+    if (deviation > 1e-9)
+        p.warn("to_world of the cylinder keeps it round to within " + deviationText(deviation) +
+               " (rounded digits): the nearest round cylinder is used");
+    const glm::dmat3 r = orthonormalised(unit);
+    const glm::dvec3 origin = transformPoint(toWorld, p0);
+    Json rows = Json::array();
+    for (int row = 0; row < 4; ++row)
+        for (int col = 0; col < 4; ++col)
+            rows.push_back(row == 3   ? (col == 3 ? 1.0 : 0.0)
+                           : col == 3 ? origin[row]
+                                      : r[col][row]);
+    Json s{{"type", "cylinder"},
+           {"radius", 0.5 * (rx + ry)},
+           {"z_min", 0.0},
+           {"z_max", placedLength},
+           {"transform", Json::array({Json{{"matrix", rows}}})}};
+    if (flip != (glm::determinant(r) < 0)) s["flip_normals"] = true;
+    return s;
+}
+
 }  // namespace
 
 void addTextures(Translation& t, const std::vector<TranslatedTexture>& textures) {
@@ -161,6 +212,8 @@ void translateShape(Translation& t, const Element& e, Json& out, bool inGroup) {
     } else if (type == "disk") {
         s = {{"type", "disk"}};
         if (p.boolean("flip_normals", false)) s["normal"] = Json::array({0.0, 0.0, -1.0});
+    } else if (type == "cylinder") {
+        s = cylinderShape(p);
     } else if (type == "instance") {
         const auto groups = p.objects("shape");
         if (groups.size() != 1 || groups[0]->attribute("type") == nullptr ||
@@ -172,11 +225,13 @@ void translateShape(Translation& t, const Element& e, Json& out, bool inGroup) {
         p.fail("the serialized mesh format is not supported (convert the mesh to PLY or OBJ)");
     } else {
         p.fail("the shape plugin \"" + type +
-               "\" is not supported (obj, ply, rectangle, cube, sphere, disk, instance, "
-               "shapegroup)");
+               "\" is not supported (obj, ply, rectangle, cube, sphere, disk, cylinder, "
+               "instance, shapegroup)");
     }
     if (const std::string* id = e.attribute("id")) s["name"] = *id;
-    if (const auto transform = p.transform("to_world")) {
+    if (type == "cylinder") {
+        // Placed by cylinderShape: its transform holds p0, p1 and radius.
+    } else if (const auto transform = p.transform("to_world")) {
         Json operations = transform->operations;
         if (type == "rectangle" && p.boolean("flip_normals", false))
             operations.insert(operations.begin(),

@@ -36,6 +36,17 @@ double similarityScale(const glm::dmat4& m, double& rounded) {
     return rounded > 1e-9 ? s : glm::length(a[0]);
 }
 
+// A similarity of uniform scale `scale` made exact: its rotation (or reflection) the nearest
+// orthonormal one (exported files round it to 6-8 digits; lamina's analytic shapes take exact
+// similarities), its translation kept.
+glm::dmat4 exactSimilarity(const glm::dmat4& m, double scale) {
+    const glm::dmat3 r = orthonormalised(glm::dmat3(m) / scale);
+    glm::dmat4 exact = m;
+    for (int c = 0; c < 3; ++c)
+        exact[c] = glm::dvec4(r[c] * scale, 0.0);
+    return exact;
+}
+
 Json point(const glm::dvec3& p) {
     return Json::array({p.x, p.y, p.z});
 }
@@ -213,31 +224,97 @@ std::optional<Json> translateShape(TranslationContext& ctx, const ShapeDef& s) {
                          " (rounded digits): the shape stays round, of the mean scale");
         return scale;
     };
+    // pbrt-v4's clipped quadrics (their constructors in shapes.h, their parameters in
+    // shapes.cpp) become lamina's in their own frame, placed by the transform (its rotation
+    // made exact); a clipping that leaves no area omits the shape (noArea), as pbrt-v4 renders
+    // nothing of it.
+    bool ownTransform = false, noArea = false;
+    const auto place = [&](const glm::dmat4& toWorld, double scale) {
+        ownTransform = true;
+        const glm::dmat4 exact = exactSimilarity(toWorld, scale);
+        if (!isIdentity(exact))
+            shape["transform"] = Json::array({Json{{"matrix", rowMajor(exact)}}});
+    };
+    const auto phiMaxParam = [&]() {
+        return std::clamp(params.number("phimax", 360.0), 0.0, 360.0);
+    };
+    const auto positiveRadius = [&](double r) {
+        if (!(r > 0)) ctx.fail(e.location, "Shape \"" + e.type + "\": \"radius\" must be > 0");
+    };
     if (e.type == "sphere") {
         const double r = params.number("radius", 1.0);
-        if (params.number("zmin", -r) > -r || params.number("zmax", r) < r ||
-            params.number("phimax", 360.0) < 360.0)
-            ctx.fail(e.location, "a partial sphere (zmin, zmax, phimax) is not supported");
-        const double radius = r * similarity();
-        shape = {
-            {"type", "sphere"}, {"center", point(apply(m, glm::dvec3(0.0)))}, {"radius", radius}};
+        // z_min and z_max in either order, clamped to the sphere; phi_max to [0, 360].
+        const double z0 = params.number("zmin", -r), z1 = params.number("zmax", r);
+        const double phiMax = phiMaxParam();
+        const double zMin = std::clamp(std::min(z0, z1), -std::abs(r), std::abs(r));
+        const double zMax = std::clamp(std::max(z0, z1), -std::abs(r), std::abs(r));
+        if (zMin > -r || zMax < r || phiMax < 360) {
+            positiveRadius(r);
+            const double scale = similarity();
+            shape = {{"type", "sphere"}, {"radius", r}};
+            place(m, scale);
+            if (zMin > -r) shape["z_min"] = zMin;
+            if (zMax < r) shape["z_max"] = zMax;
+            if (phiMax < 360) shape["phi_max"] = phiMax;
+            noArea = !(zMax > zMin) || !(phiMax > 0);
+            areas = {phiMax * kPi / 180 * r * (zMax - zMin) * scale * scale};
+        } else {
+            const double radius = r * similarity();
+            shape = {{"type", "sphere"},
+                     {"center", point(apply(m, glm::dvec3(0.0)))},
+                     {"radius", radius}};
+            areas = {4 * kPi * radius * radius};
+        }
         // pbrt's sphere faces outwards whatever the transform's handedness; ReverseOrientation
         // turns it inwards.
         if (s.reverseOrientation) shape["flip_normals"] = true;
-        areas = {4 * kPi * radius * radius};
+    } else if (e.type == "cylinder") {
+        // Open (no caps), about z; z_min and z_max in either order.
+        const double r = params.number("radius", 1.0);
+        const double z0 = params.number("zmin", -1.0), z1 = params.number("zmax", 1.0);
+        const double phiMax = phiMaxParam();
+        positiveRadius(r);
+        const double scale = similarity();
+        const double zMin = std::min(z0, z1), zMax = std::max(z0, z1);
+        shape = {{"type", "cylinder"}, {"radius", r}, {"z_min", zMin}, {"z_max", zMax}};
+        place(m, scale);
+        if (phiMax < 360) shape["phi_max"] = phiMax;
+        // Outwards, as the sphere.
+        if (s.reverseOrientation) shape["flip_normals"] = true;
+        noArea = !(zMax > zMin) || !(phiMax > 0);
+        areas = {phiMax * kPi / 180 * r * (zMax - zMin) * scale * scale};
     } else if (e.type == "disk") {
         const double r = params.number("radius", 1.0), h = params.number("height", 0.0);
-        if (params.number("innerradius", 0.0) > 0 || params.number("phimax", 360.0) < 360.0)
-            ctx.fail(e.location, "a partial disk (innerradius, phimax) is not supported");
-        const double radius = r * similarity();
+        const double innerRadius = params.number("innerradius", 0.0);
+        const double phiMax = phiMaxParam();
         // The disk faces its object space's +z, transformed as a normal (shapes.h, Disk).
-        glm::dvec3 n = glm::transpose(glm::inverse(glm::dmat3(m))) * glm::dvec3(0, 0, 1);
-        n = glm::normalize(n) * (s.reverseOrientation ? -1.0 : 1.0);
-        shape = {{"type", "disk"},
-                 {"center", point(apply(m, glm::dvec3(0, 0, h)))},
-                 {"normal", point(n)},
-                 {"radius", radius}};
-        areas = {kPi * radius * radius};
+        const bool mirrors = glm::determinant(glm::dmat3(m)) < 0;
+        if (innerRadius != 0 || phiMax < 360) {
+            positiveRadius(r);
+            if (innerRadius < 0)
+                ctx.fail(e.location, "Shape \"disk\": \"innerradius\" must be >= 0");
+            const double scale = similarity();
+            shape = {{"type", "disk"}, {"radius", r}};
+            place(m * glm::dmat4(glm::dvec4(1, 0, 0, 0), glm::dvec4(0, 1, 0, 0),
+                                 glm::dvec4(0, 0, 1, 0), glm::dvec4(0, 0, h, 1)),
+                  scale);
+            if (innerRadius > 0) shape["inner_radius"] = innerRadius;
+            if (phiMax < 360) shape["phi_max"] = phiMax;
+            // A lamina disk turns its front over under a mirroring transform; pbrt-v4's
+            // (above) does not.
+            if (s.reverseOrientation != mirrors) shape["flip_normals"] = true;
+            noArea = !(innerRadius < r) || !(phiMax > 0);
+            areas = {phiMax * kPi / 360 * (r - innerRadius) * (r + innerRadius) * scale * scale};
+        } else {
+            const double radius = r * similarity();
+            glm::dvec3 n = glm::transpose(glm::inverse(glm::dmat3(m))) * glm::dvec3(0, 0, 1);
+            n = glm::normalize(n) * (s.reverseOrientation ? -1.0 : 1.0);
+            shape = {{"type", "disk"},
+                     {"center", point(apply(m, glm::dvec3(0, 0, h)))},
+                     {"normal", point(n)},
+                     {"radius", radius}};
+            areas = {kPi * radius * radius};
+        }
     } else if (e.type == "trianglemesh" || e.type == "bilinearmesh") {
         const bool bilinear = e.type == "bilinearmesh";
         const Mesh mesh = readMesh(e, bilinear ? 4 : 3);
@@ -273,14 +350,14 @@ std::optional<Json> translateShape(TranslationContext& ctx, const ShapeDef& s) {
     } else {
         ctx.fail(e.location, "Shape \"" + e.type +
                                  "\" is not supported (lamina reads sphere, "
-                                 "disk, trianglemesh, plymesh and bilinearmesh)");
+                                 "disk, cylinder, trianglemesh, plymesh and bilinearmesh)");
     }
     shape["material"] = material.empty() ? kDocumentInterfaceMaterial : material;
     if (boundary) {
         shape["interior"] = useMedium(ctx, s.media.inside, s.media.location);
         shape["exterior"] = useMedium(ctx, s.media.outside, s.media.location);
     }
-    if (!shape.contains("center") && !isIdentity(m))
+    if (!shape.contains("center") && !ownTransform && !isIdentity(m))
         shape["transform"] = Json::array({Json{{"matrix", rowMajor(m)}}});
     // Alpha cut-outs ("float alpha" or a float texture; pbrt-v4 shapes.cpp).
     if (const Param* alpha = params.find("alpha")) {
@@ -309,6 +386,12 @@ std::optional<Json> translateShape(TranslationContext& ctx, const ShapeDef& s) {
     }
     if (s.areaLight) shape["emission"] = areaEmission(ctx, *s.areaLight, areas);
     params.refuseUnused();
+    if (noArea) {
+        ctx.warn(e.location, "Shape \"" + e.type +
+                                 "\" omitted: its zmin, zmax, phimax or innerradius leave it no "
+                                 "area, and pbrt-v4 renders nothing of it");
+        return std::nullopt;
+    }
     return shape;
 }
 

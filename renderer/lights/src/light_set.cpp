@@ -15,7 +15,7 @@ bool emits(const std::optional<EmissionDesc>& e) {
 }
 
 // The area lights of an emitting shape, one function per kind of ShapeDesc: one light per
-// triangle of a mesh (perPrimitive), one for a whole rectangle, sphere or disk.
+// triangle of a mesh (perPrimitive), one for a whole rectangle, sphere, disk or quadric.
 struct AreaLights {
     std::vector<std::unique_ptr<Light>> lights;
     bool perPrimitive = false;
@@ -42,6 +42,12 @@ AreaLights makeAreaLights(const SphereDesc& s) {
 AreaLights makeAreaLights(const DiskDesc& d) {
     AreaLights a;
     a.lights.push_back(std::make_unique<DiskLight>(d));
+    return a;
+}
+
+AreaLights makeAreaLights(const QuadricDesc& q) {
+    AreaLights a;
+    a.lights.push_back(std::make_unique<QuadricLight>(q));
     return a;
 }
 

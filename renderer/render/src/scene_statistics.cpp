@@ -25,6 +25,10 @@ SceneStatistics sceneStatistics(const SceneDesc& scene) {
     for (const auto& shape : scene.shapes) {
         const SurfaceDesc& surface = render::surface(shape);
         if (!surface.isInterface()) used[std::size_t(surface.material)] = true;
+        if (const auto* q = std::get_if<QuadricDesc>(&shape))
+            ++(q->kind == Quadric::Sphere     ? s.partialSpheres
+               : q->kind == Quadric::Cylinder ? s.cylinders
+                                              : s.partialDisks);
         if (const auto* m = std::get_if<MeshDesc>(&shape)) {
             s.triangles += m->triangles.size();
             s.vertices += m->positions.size();
@@ -52,7 +56,8 @@ SceneStatistics sceneStatistics(const SceneDesc& scene) {
         }
         s.objectTriangles += trianglesOf[o];
         objectPrimitives += trianglesOf[o] + countShapes<SphereDesc>(object.shapes) +
-                            countShapes<DiskDesc>(object.shapes);
+                            countShapes<DiskDesc>(object.shapes) +
+                            countShapes<QuadricDesc>(object.shapes);
     }
     s.objects = scene.objects.size();
     s.instances = scene.instances.size();
@@ -60,7 +65,9 @@ SceneStatistics sceneStatistics(const SceneDesc& scene) {
         s.instancedTriangles += trianglesOf[std::size_t(inst.object)];
     // Embree's BVH over triangles takes roughly 64 bytes per primitive (a rough guide), and
     // an instance about as much as one primitive.
-    s.geometryBytes += (s.triangles + s.spheres + objectPrimitives + scene.instances.size()) * 64;
+    s.geometryBytes += (s.triangles + s.spheres + s.partialSpheres + s.cylinders + s.partialDisks +
+                        objectPrimitives + scene.instances.size()) *
+                       64;
     // A crop is the film that is allocated and written.
     const int w = scene.film.crop ? scene.film.crop->width() : scene.film.width;
     const int h = scene.film.crop ? scene.film.crop->height() : scene.film.height;

@@ -97,6 +97,7 @@ void readTriangles(const JsonReader& r, ShapeKind kind, MeshDesc& mesh) {
             break;
         case ShapeKind::Sphere:
         case ShapeKind::Disk:
+        case ShapeKind::Cylinder:
         case ShapeKind::Instance:
             break;  // analytic, or an object's: no triangles of its own
     }

@@ -6,6 +6,26 @@
 
 namespace lamina::render {
 
+double QuadricDesc::area() const {
+    if (kind == Quadric::Disk)
+        return 0.5 * phiMax * (radius - innerRadius) * (radius + innerRadius);
+    return phiMax * radius * (zMax - zMin);
+}
+
+void QuadricDesc::bounds(Vec3d& lo, Vec3d& hi) const {
+    // The frame's box (the disk's is flat), its corners carried to the shape's space.
+    const double z0 = kind == Quadric::Disk ? 0.0 : zMin, z1 = kind == Quadric::Disk ? 0.0 : zMax;
+    lo = Vec3d(std::numeric_limits<double>::infinity());
+    hi = -lo;
+    for (int corner = 0; corner < 8; ++corner) {
+        const Vec3d p =
+            toShapeSpace(Vec3d((corner & 1) ? radius : -radius, (corner & 2) ? radius : -radius,
+                               (corner & 4) ? z1 : z0));
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+}
+
 void boundingBox(const std::vector<ShapeDesc>& shapes, Vec3d& lo, Vec3d& hi) {
     lo = Vec3d(std::numeric_limits<double>::infinity());
     hi = -lo;
@@ -23,6 +43,12 @@ void boundingBox(const std::vector<ShapeDesc>& shapes, Vec3d& lo, Vec3d& hi) {
                               [&](const DiskDesc& d) {
                                   lo = glm::min(lo, d.center - d.radius);
                                   hi = glm::max(hi, d.center + d.radius);
+                              },
+                              [&](const QuadricDesc& q) {
+                                  Vec3d qlo, qhi;
+                                  q.bounds(qlo, qhi);
+                                  lo = glm::min(lo, qlo);
+                                  hi = glm::max(hi, qhi);
                               }},
                    shape);
 }

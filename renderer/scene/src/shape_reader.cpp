@@ -1,5 +1,5 @@
-// The entries of "shapes" and "objects": the type, the analytic shapes (spheres, disks),
-// instances and the objects they place; the triangle meshes are mesh_shape_reader.cpp's.
+// The entries of "shapes" and "objects": the type, instances and the objects they place; the
+// analytic shapes are analytic_shape_reader.cpp's, the triangle meshes mesh_shape_reader.cpp's.
 #include <algorithm>
 
 #include "shape_readers.h"
@@ -26,65 +26,6 @@ AlphaDesc readAlpha(const JsonReader& r, SceneMaterials& materials) {
 }
 
 namespace {
-
-// Analytic shapes take similarity transforms only: returns the uniform scale.
-double uniformScale(const JsonReader& r, const Mat4& m, const std::string& what) {
-    const double sx = glm::length(Vec3d(m[0])), sy = glm::length(Vec3d(m[1])),
-                 sz = glm::length(Vec3d(m[2]));
-    if (std::abs(sx - sy) > 1e-9 * sx || std::abs(sx - sz) > 1e-9 * sx)
-        r.failAt("transform", what + " takes translate, rotate and uniform scale only");
-    return sx;
-}
-
-SphereDesc readSphere(const JsonReader& r, const std::string& name, SceneMaterials& materials) {
-    SphereDesc s;
-    s.name = name;
-    s.center = readVec3(r, "center", Vec3d(0.0));
-    s.radius = r.number("radius", 1.0, Range::positive());
-    s.flipNormals = r.boolean("flip_normals", false);
-    s.material = materials.materialOf(r);
-    s.emission = readEmission(r);
-    s.alpha = readAlpha(r, materials);
-    if (s.alpha.texture >= 0)
-        r.failAt("alpha",
-                 "a texture alpha is read at a triangle shape's uv; a sphere takes a number");
-    const Mat4 m = readTransform(r);
-    const double sx = uniformScale(r, m, "a sphere");
-    s.center = Vec3d(m * glm::dvec4(s.center, 1.0));
-    s.radius *= sx;
-    checkCoordinates(r, "center", glm::abs(s.center) + s.radius,
-                     "the sphere's bounding box corner");
-    if (s.emission) checkEmitterArea(r, 4.0 * kPi<double> * s.radius * s.radius);
-    r.finish();
-    return s;
-}
-
-DiskDesc readDisk(const JsonReader& r, const std::string& name, SceneMaterials& materials) {
-    // The unit disk in the plane z = 0 facing +z, or centre / normal / radius.
-    DiskDesc d;
-    d.name = name;
-    d.center = readVec3(r, "center", Vec3d(0.0));
-    d.normal = readVec3(r, "normal", Vec3d(0, 0, 1));
-    if (glm::length(d.normal) == 0) r.failAt("normal", "expected a non-zero vector");
-    d.normal = glm::normalize(d.normal);
-    d.radius = r.number("radius", 1.0, Range::positive());
-    d.material = materials.materialOf(r);
-    d.emission = readEmission(r);
-    d.alpha = readAlpha(r, materials);
-    if (d.alpha.texture >= 0)
-        r.failAt("alpha",
-                 "a texture alpha is read at a triangle shape's uv; a disk takes a number");
-    const Mat4 m = readTransform(r);
-    const double sx = uniformScale(r, m, "a disk");
-    d.center = Vec3d(m * glm::dvec4(d.center, 1.0));
-    d.normal = glm::normalize(glm::dmat3(m) * d.normal) *
-               (glm::determinant(glm::dmat3(m)) < 0 ? -1.0 : 1.0);
-    d.radius *= sx;
-    checkCoordinates(r, "center", glm::abs(d.center) + d.radius, "the disk's bounding box corner");
-    if (d.emission) checkEmitterArea(r, kPi<double> * d.radius * d.radius);
-    r.finish();
-    return d;
-}
 
 // An "instance": an object placed by "transform". Its transformed bounding box must stay
 // within float range, as every shape's coordinates do.
@@ -136,6 +77,8 @@ void readShapeInto(const JsonReader& r, SceneMaterials& materials, const ShapeDe
         to.shapes.push_back(readSphere(r, name, materials));
     else if (*kind == ShapeKind::Disk)
         to.shapes.push_back(readDisk(r, name, materials));
+    else if (*kind == ShapeKind::Cylinder)
+        to.shapes.push_back(readCylinder(r, name, materials));
     else
         readMeshShape(r, *kind, name, materials, to);
     for (std::size_t i = first; i < to.shapes.size(); ++i) {

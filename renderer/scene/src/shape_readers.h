@@ -1,5 +1,6 @@
 // The readers of an entry of "shapes", private to lamina_scene: shape_reader.cpp reads the
-// type, the analytic shapes, instances and objects; mesh_shape_reader.cpp the triangle meshes.
+// type, instances and objects; analytic_shape_reader.cpp the spheres, disks and cylinders;
+// mesh_shape_reader.cpp the triangle meshes.
 #pragma once
 
 #include <string>
@@ -19,6 +20,12 @@ struct ShapeDestination {
 
 /// A shape's "alpha": a number in [0, 1] or {"texture": "name"} (its first channel).
 AlphaDesc readAlpha(const JsonReader& r, SceneMaterials& materials);
+
+/// A `sphere`, `disk` or `cylinder` named `name`: a SphereDesc or DiskDesc when whole, else a
+/// QuadricDesc (every cylinder).
+ShapeDesc readSphere(const JsonReader& r, const std::string& name, SceneMaterials& materials);
+ShapeDesc readDisk(const JsonReader& r, const std::string& name, SceneMaterials& materials);
+ShapeDesc readCylinder(const JsonReader& r, const std::string& name, SceneMaterials& materials);
 
 /// A triangle-mesh shape (`mesh`, `rectangle`, `obj`, `ply`) named `name`: one MeshDesc, or
 /// for an `obj` without a `material` one per usemtl group (obj_materials.h).

@@ -1,12 +1,12 @@
-// The scene's geometry in Embree 3: triangle meshes, analytic spheres and disks, one Embree
-// geometry per shape, and the surface interaction at a hit (position recomputed from the
-// primitive for accuracy, geometric and shading normals, uv; where the shape's material has a
-// bump or normal map, the uv derivatives and the shading normal that map makes,
-// shading_normal_maps.h). Objects (SceneDesc::objects)
-// are Embree scenes of their own, built once and placed by Embree instance geometries, never
-// copied. Shapes with an alpha cut-out carry Embree filter functions, so closest-hit and
-// shadow rays alike pass through their holes (alpha_filter.h). Which shapes emit is the light
-// set's business (lights.h).
+// The scene's geometry in Embree 3: triangle meshes, analytic spheres and disks, pbrt-v4's
+// clipped quadrics (Embree user geometry, quadric.h), one Embree geometry per shape, and the
+// surface interaction at a hit (position recomputed from the primitive for accuracy, geometric and
+// shading normals, uv; where the shape's material has a bump or normal map, the uv derivatives and
+// the shading normal that map makes, shading_normal_maps.h). Objects (SceneDesc::objects) are
+// Embree scenes of their own, built once and placed by Embree instance geometries, never copied.
+// Shapes with an alpha cut-out carry Embree filter functions, so closest-hit and shadow rays alike
+// pass through their holes (alpha_filter.h). Which shapes emit is the light set's business
+// (lights.h).
 #pragma once
 
 #include <embree3/rtcore.h>
@@ -24,6 +24,8 @@ namespace lamina::render {
 
 using Vec3f = Vec3<float>;
 using Vec2f = Vec2<float>;
+
+struct QuadricGeometry;  // quadric_geometry.h
 
 /// A point on a surface hit by a ray.
 struct SurfaceHit {
@@ -105,6 +107,7 @@ class Geometry {
     RTCGeometry newGeometry(const MeshDesc& m, int object);
     RTCGeometry newGeometry(const SphereDesc& s, int object);
     RTCGeometry newGeometry(const DiskDesc& d, int object);
+    RTCGeometry newGeometry(const QuadricDesc& q, int object);
     void addAlphaFilter(RTCGeometry g, const AlphaDesc& alpha, const MeshDesc* mesh);
     void addInstances(Vec3<double>& lo, Vec3<double>& hi);
 
@@ -114,7 +117,8 @@ class Geometry {
     std::vector<RTCScene> objectScenes_;  ///< by object; null: placed by no instance
     std::vector<int> objectFirstShape_;   ///< by object: its first entry in shapes_
     std::vector<InstanceTransform> instanceTransforms_;
-    std::vector<std::unique_ptr<AlphaTest>> alphaTests_;  ///< the filters' user data
+    std::vector<std::unique_ptr<AlphaTest>> alphaTests_;      ///< the filters' user data
+    std::vector<std::unique_ptr<QuadricGeometry>> quadrics_;  ///< the user geometries' data
     std::vector<ShapeInfo> shapes_;
     unsigned sceneShapes_ = 0;  ///< shapes of the scene's own list: the instances' ids follow
     GeometryCounts counts_;

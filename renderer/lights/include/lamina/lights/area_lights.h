@@ -161,4 +161,25 @@ class SphereLight final : public AreaLight {
     SphereDesc sphere_;
 };
 
+/// An emitting partial sphere, cylinder or partial disk (QuadricDesc), sampled uniformly by
+/// area in double precision (sampleQuadric, quadric.h). pbrt-v4 samples a partial sphere and
+/// disk over the whole shape with the density of the clipped one (Sphere::Sample, Disk::Sample);
+/// here every point lies on the clipped shape.
+class QuadricLight final : public AreaLight {
+  public:
+    explicit QuadricLight(const QuadricDesc& q);
+
+    std::optional<LightSample> sample(const Vec3f& ref, const Vec2f& u) const override;
+    /// Its box; a disk's normal and intensity L A as any flat light, a sphere's or a
+    /// cylinder's normals in every direction (theta_o = pi) and intensity L times its largest
+    /// projected area, bounded by its area and the silhouette of the whole shape (pi r^2, or
+    /// 2 r (z_max - z_min)).
+    std::optional<LightBounds> bounds() const override;
+
+  private:
+    AreaPoint samplePoint(const Vec2f& u) const override;
+
+    QuadricDesc quadric_;
+};
+
 }  // namespace lamina::render

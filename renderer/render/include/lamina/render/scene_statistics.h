@@ -14,6 +14,8 @@ namespace lamina::render {
 
 struct SceneStatistics {
     std::size_t meshes = 0, triangles = 0, vertices = 0, spheres = 0, disks = 0;
+    /// pbrt-v4's clipped quadrics (QuadricDesc), by kind.
+    std::size_t partialSpheres = 0, cylinders = 0, partialDisks = 0;
     /// The meshes' arrays (the scene's and the objects') and Embree's BVH, roughly.
     std::size_t geometryBytes = 0;
     /// Instancing: an object's shapes are stored once and its instances reference them.
@@ -22,10 +24,12 @@ struct SceneStatistics {
     std::size_t objectTriangles = 0;                         ///< stored in the objects
     RenderMemory film;                                       ///< the film at the scene's resolution
     std::uint64_t filmWithAovs = 0, filmWithStrategies = 0;  ///< totals
-    /// Emitting shapes as the scene wrote them (a rectangle, a mesh, a sphere, a disk: one each).
+    /// Emitting shapes as the scene wrote them (a rectangle, a mesh, a sphere, a disk, a
+    /// quadric: one each).
     std::size_t emitters = 0;
     /// The area lights the renderer samples for them: one per triangle of an emitting mesh,
-    /// one for a rectangle (also a mesh of two triangles that form one), a sphere or a disk.
+    /// one for a rectangle (also a mesh of two triangles that form one), a sphere, a disk or a
+    /// quadric.
     std::size_t areaLights = 0;
     std::size_t lights = 0;  ///< the other lights
     struct Material {

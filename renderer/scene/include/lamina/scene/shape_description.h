@@ -31,13 +31,14 @@ struct EmissionDesc {
 };
 
 /// The `type` of a scene file's shape: analytic spheres and disks become SphereDesc and
-/// DiskDesc, an instance an InstanceDesc, the others triangle meshes.
-enum class ShapeKind { Sphere, Disk, Rectangle, Mesh, Obj, Ply, Instance };
-inline constexpr NameTable kShapeKindNames{
-    std::array{NameEntry{ShapeKind::Sphere, "sphere"}, NameEntry{ShapeKind::Disk, "disk"},
-               NameEntry{ShapeKind::Rectangle, "rectangle"}, NameEntry{ShapeKind::Mesh, "mesh"},
-               NameEntry{ShapeKind::Obj, "obj"}, NameEntry{ShapeKind::Ply, "ply"},
-               NameEntry{ShapeKind::Instance, "instance"}}};
+/// DiskDesc (QuadricDesc when clipped), a cylinder a QuadricDesc, an instance an InstanceDesc,
+/// the others triangle meshes.
+enum class ShapeKind { Sphere, Disk, Cylinder, Rectangle, Mesh, Obj, Ply, Instance };
+inline constexpr NameTable kShapeKindNames{std::array{
+    NameEntry{ShapeKind::Sphere, "sphere"}, NameEntry{ShapeKind::Disk, "disk"},
+    NameEntry{ShapeKind::Cylinder, "cylinder"}, NameEntry{ShapeKind::Rectangle, "rectangle"},
+    NameEntry{ShapeKind::Mesh, "mesh"}, NameEntry{ShapeKind::Obj, "obj"},
+    NameEntry{ShapeKind::Ply, "ply"}, NameEntry{ShapeKind::Instance, "instance"}}};
 
 /// A shape's `alpha` cut-out: a constant in [0, 1] or a texture's first channel at the hit's
 /// uv. A hit where alpha < 1 is kept only when alpha reaches a hash of the ray and the hit
@@ -87,9 +88,42 @@ struct DiskDesc : SurfaceDesc {
     double radius = 1;
 };
 
+/// Which of pbrt-v4's quadrics a QuadricDesc is.
+enum class Quadric { Sphere, Cylinder, Disk };
+
+/// A partial sphere, a cylinder or a partial disk: pbrt-v4's quadrics (Pharr, Jakob and
+/// Humphreys, "Physically Based Rendering", 4th edition, sections 6.2-6.4) in a frame of their
+/// own, z the axis and phi = atan2(y, x) in [0, 2 pi) turning from +x towards +y. The sphere
+/// (centred at the origin) is clipped to z_min <= z <= z_max and phi <= phi_max; the cylinder
+/// (about the z axis, open: no caps) likewise; the disk (in the plane z = 0) to
+/// inner_radius <= rho <= radius and phi <= phi_max. The frame is a similarity's: `axes` is
+/// orthonormal (a rotation, or a rotation and a mirroring) and lengths are in the shape's
+/// space. A sphere or disk that is not clipped is a SphereDesc or DiskDesc (Embree's own
+/// primitives); these are Embree user geometry with an exact intersection (quadric.h).
+struct QuadricDesc : SurfaceDesc {
+    Quadric kind = Quadric::Cylinder;
+    Vec3d origin{0.0};     ///< the frame's origin
+    glm::dmat3 axes{1.0};  ///< the frame's x, y and z axes (columns), orthonormal
+    double radius = 1;
+    double zMin = -1, zMax = 1;       ///< the sphere's and the cylinder's clipping along z
+    double innerRadius = 0;           ///< the disk's
+    double phiMax = 2 * kPi<double>;  ///< radians, in (0, 2 pi]
+    /// The normal faces the axis (sphere, cylinder) or the frame's -z (disk) instead of away
+    /// from it or +z.
+    bool flipNormals = false;
+
+    Vec3d toShapeSpace(const Vec3d& local) const { return origin + axes * local; }
+    Vec3d toLocal(const Vec3d& p) const { return glm::transpose(axes) * (p - origin); }
+    /// The area: phi_max r (z_max - z_min) for the sphere (Archimedes) and the cylinder,
+    /// phi_max (r^2 - r_inner^2) / 2 for the disk.
+    double area() const;
+    /// The axis-aligned box [lo, hi] in the shape's space (the frame's box, transformed).
+    void bounds(Vec3d& lo, Vec3d& hi) const;
+};
+
 /// One shape. The order of the alternatives is the order of the kinds in a list of shapes
 /// (orderShapesByKind), and so of their Embree geometry ids and of the emitters' lights.
-using ShapeDesc = std::variant<MeshDesc, SphereDesc, DiskDesc>;
+using ShapeDesc = std::variant<MeshDesc, SphereDesc, DiskDesc, QuadricDesc>;
 
 /// The fields every kind has.
 inline const SurfaceDesc& surface(const ShapeDesc& shape) {
@@ -99,7 +133,7 @@ inline SurfaceDesc& surface(ShapeDesc& shape) {
     return std::visit([](SurfaceDesc& s) -> SurfaceDesc& { return s; }, shape);
 }
 
-/// How many of `shapes` are of the kind `Kind` (MeshDesc, SphereDesc, DiskDesc).
+/// How many of `shapes` are of the kind `Kind` (MeshDesc, SphereDesc, DiskDesc, QuadricDesc).
 template <class Kind>
 std::size_t countShapes(const std::vector<ShapeDesc>& shapes) {
     return std::size_t(std::count_if(shapes.begin(), shapes.end(), [](const ShapeDesc& s) {
@@ -108,10 +142,10 @@ std::size_t countShapes(const std::vector<ShapeDesc>& shapes) {
 }
 
 /// Orders a list of shapes by kind, in the order of ShapeDesc's alternatives (every mesh,
-/// then every sphere, then every disk), keeping the order of each kind's shapes. The scene
-/// loader leaves SceneDesc::shapes and every ObjectDesc::shapes so: a shape's index is then
-/// its Embree geometry id (geometry.h), and the light set makes the emitters' lights in this
-/// order, as they were made when each kind had a list of its own.
+/// then every sphere, then every disk, then every quadric), keeping the order of each kind's
+/// shapes. The scene loader leaves SceneDesc::shapes and every ObjectDesc::shapes so: a shape's
+/// index is then its Embree geometry id (geometry.h), and the light set makes the emitters' lights
+/// in this order, as they were made when each kind had a list of its own.
 inline void orderShapesByKind(std::vector<ShapeDesc>& shapes) {
     std::stable_sort(shapes.begin(), shapes.end(),
                      [](const ShapeDesc& a, const ShapeDesc& b) { return a.index() < b.index(); });
