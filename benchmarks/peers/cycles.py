@@ -27,11 +27,27 @@ other work use --clock cpu: the CPU seconds of all threads, for lamina of the wh
 Run from the repository root:
   python3 benchmarks/peers/cycles.py scenes/cornell-box.json scenes/glossy-metal-sphere.json \
       --lamina build/app/lamina --times 2 4 8 --reference-spp 1024
+  python3 benchmarks/peers/cycles.py scenes/media/volumetric-caustic.json \
+      scenes/media/chromatic-cloud.json --lamina build/app/lamina --clock cpu --times 4 8 16 \
+      --reference-time 128
+
+--reference-time T gives each renderer's reference (both halves) T seconds by its calibration
+instead of the same --reference-spp for both: a renderer that draws samples faster gets more, so
+that neither reference is the noisier one for the budgets' images.
 
 Supported lamina features (anything else is refused with a message): the perspective camera
-(position, look_at, up, vertical fov), the film resolution, max_depth; materials `lambert`
-and `conductor` given by f0 (Schlick); shapes `mesh`, `rectangle`, `sphere` with `transform`;
-one-sided or two-sided emission with an RGB radiance; a constant `environment` light.
+(position, look_at, up, vertical fov), the film resolution, max_depth; materials `lambert`,
+`conductor` given by f0 (Schlick) and smooth `dielectric` of one numeric ior (a sharp Glass
+BSDF); shapes `mesh`, `rectangle`, `sphere`, `disk` (a polygon of the disk's area) and `obj`
+(positions and faces; vertex normals only on a black surface, which does not shade), with
+`transform` (cycles_geometry.py); one-sided or two-sided emission with an RGB radiance; a constant
+`environment` light; participating media (cycles_media.py, its docstring says how they map): a
+homogeneous medium around the camera filling a closed box room, clear glass spheres in it, and
+grid media in interface spheres. Cycles always path traces (it has no BDPT or light tracing);
+lamina renders with the scene's integrator, `bdpt` for the volumetric caustic: both converge to
+the same image, and the efficiency ratio then compares lamina's choice of integrator with
+Cycles' only one. Participating media need pyopenvdb for grid media (`apt-get install -y
+python3-openvdb`: Blender 3.4 from Debian runs on the system's Python and imports it too).
 """
 
 import argparse

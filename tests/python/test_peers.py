@@ -174,7 +174,7 @@ def test_room_domain_is_closed_around_the_camera_with_the_ball_cut_out():
     scene = media_scene("volumetric-caustic.json")
     plan = cm.plan(scene, MEDIA)
     assert plan.camera_medium == "fog" and plan.handled == {0} and not plan.grids
-    fog, positions, faces, face_material, cavity_iors = plan.room
+    fog, positions, faces, glass_ior = plan.room
     assert fog == "fog" and cg.is_closed(faces)
     # The room's walls span [-2, 2] x [0, 3] x [-2, 2]; the domain is that box grown by 1e-3 of its
     # largest side, its faces outwards, less the glass ball wound inwards.
@@ -184,7 +184,7 @@ def test_room_domain_is_closed_around_the_camera_with_the_ball_cut_out():
     ball = cg.signed_volume(ball_positions, ball_faces)
     assert ball == pytest.approx(4 / 3 * math.pi * 0.4**3, rel=1e-3)
     assert cg.signed_volume(positions, faces) == pytest.approx(box - ball, rel=1e-12)
-    cavity = [f for f, k in zip(faces, face_material) if k == 1]
+    cavity = faces[6:]  # after the box's six
     assert len(cavity) == len(ball_faces) and cg.signed_volume(positions, cavity) < 0
     lo, hi = cg.bounds(positions)
     camera = scene["camera"]["position"]
@@ -192,7 +192,10 @@ def test_room_domain_is_closed_around_the_camera_with_the_ball_cut_out():
     assert math.dist(camera, (0, 1.1, 0)) > 0.4
     # Cycles' Glass takes the IOR on a face's front and its inverse on the back; the cavity's
     # faces are turned, so a ray from outside the ball (on their back) sees 1 / (1 / 1.5) = 1.5.
-    assert cavity_iors == [pytest.approx(1 / 1.5)]
+    assert glass_ior == pytest.approx(1 / 1.5)
+    # Without the ball, the domain is the box alone, with no surface.
+    scene["shapes"][0].pop("exterior")
+    assert cm.plan(scene, MEDIA).room[3] is None
 
 
 def test_room_must_be_closed():
