@@ -27,11 +27,27 @@ other work use --clock cpu: the CPU seconds of all threads, for lamina of the wh
 Run from the repository root:
   python3 benchmarks/peers/cycles.py scenes/cornell-box.json scenes/glossy-metal-sphere.json \
       --lamina build/app/lamina --times 2 4 8 --reference-spp 1024
+  python3 benchmarks/peers/cycles.py scenes/media/volumetric-caustic.json \
+      scenes/media/chromatic-cloud.json --lamina build/app/lamina --clock cpu --times 4 8 16 \
+      --reference-time 128
+
+--reference-time T gives each renderer's reference (both halves) T seconds by its calibration
+instead of the same --reference-spp for both: a renderer that draws samples faster gets more, so
+that neither reference is the noisier one for the budgets' images.
 
 Supported lamina features (anything else is refused with a message): the perspective camera
-(position, look_at, up, vertical fov), the film resolution, max_depth; materials `lambert`
-and `conductor` given by f0 (Schlick); shapes `mesh`, `rectangle`, `sphere` with `transform`;
-one-sided or two-sided emission with an RGB radiance; a constant `environment` light.
+(position, look_at, up, vertical fov), the film resolution, max_depth; materials `lambert`,
+`conductor` given by f0 (Schlick) and smooth `dielectric` of one numeric ior (a sharp Glass
+BSDF); shapes `mesh`, `rectangle`, `sphere`, `disk` (a polygon of the disk's area) and `obj`
+(positions and faces; vertex normals only on a black surface, which does not shade), with
+`transform` (cycles_geometry.py); one-sided or two-sided emission with an RGB radiance; a constant
+`environment` light; participating media (cycles_media.py, its docstring says how they map): a
+homogeneous medium around the camera filling a closed box room, clear glass spheres in it, and
+grid media in interface spheres. Cycles always path traces (it has no BDPT or light tracing);
+lamina renders with the scene's integrator, `bdpt` for the volumetric caustic: both converge to
+the same image, and the efficiency ratio then compares lamina's choice of integrator with
+Cycles' only one. Participating media need pyopenvdb for grid media (`apt-get install -y
+python3-openvdb`: Blender 3.4 from Debian runs on the system's Python and imports it too).
 """
 
 import argparse
@@ -45,7 +61,10 @@ import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import cycles_geometry  # noqa: E402  (lamina's shapes as meshes)
+import cycles_media  # noqa: E402  (participating media as Cycles volumes)
 import peer_efficiency  # noqa: E402  (running lamina, image errors, efficiency arithmetic)
+from cycles_geometry import Unsupported  # noqa: E402
 
 # Two calibration renders per renderer: the time of a render is about fixed + spp x per_spp
 # (the fixed part is lamina's BVH build, Cycles' scene sync and BVH), and a single short
@@ -88,10 +107,6 @@ def load_scene(path):
         return json.loads(strip_comments(f.read()))
 
 
-class Unsupported(Exception):
-    pass
-
-
 def rgb(value, what):
     if isinstance(value, (int, float)):
         return (float(value),) * 3
@@ -132,7 +147,12 @@ def cycles_settings(scene, bpy_scene, spp, seed):
     # count the bounces after the first (0: direct light only).
     bounces = max(0, scene.get("integrator", {}).get("max_depth", 16) - 1)
     c.max_bounces = c.diffuse_bounces = c.glossy_bounces = bounces
-    c.transmission_bounces = c.volume_bounces = c.transparent_max_bounces = bounces
+    c.transmission_bounces = c.volume_bounces = bounces
+    # A volume's boundary is a transparent surface to Cycles, lamina's index-matched boundaries
+    # are no scattering events: let paths cross as many as they meet.
+    c.transparent_max_bounces = 1024
+    # Cycles 3.4 ray-marches heterogeneous volumes in steps of the voxel size times this rate.
+    c.volume_step_rate = float(os.environ.get("LAMINA_PEER_VOLUME_STEP_RATE", "1"))
     c.min_light_bounces = 0
     c.min_transparent_bounces = 0
     c.pixel_filter_type = "BOX"
@@ -145,27 +165,6 @@ def cycles_settings(scene, bpy_scene, spp, seed):
     r.image_settings.color_mode = "RGB"
     r.image_settings.color_depth = "32"
     r.image_settings.exr_codec = "ZIP"
-
-
-def transform_matrix(ops, mathutils, what):
-    """lamina's transform list, applied in order (the first operation first)."""
-    m = mathutils.Matrix.Identity(4)
-    for op in ops or []:
-        if "translate" in op:
-            m = mathutils.Matrix.Translation(op["translate"]) @ m
-        elif "scale" in op:
-            s = op["scale"]
-            s = [s] * 3 if isinstance(s, (int, float)) else s
-            m = mathutils.Matrix.Diagonal((s[0], s[1], s[2], 1.0)) @ m
-        elif "rotate" in op:
-            axis = mathutils.Vector(op["rotate"]["axis"]).normalized()
-            m = mathutils.Matrix.Rotation(math.radians(op["rotate"]["angle"]), 4, axis) @ m
-        elif "matrix" in op:
-            v = op["matrix"]
-            m = mathutils.Matrix([v[0:4], v[4:8], v[8:12], v[12:16]]) @ m
-        else:
-            raise Unsupported(f"{what}: transform operation {op!r}")
-    return m
 
 
 def make_material(bpy, name, desc, emission):
@@ -207,6 +206,16 @@ def make_material(bpy, name, desc, emission):
         bsdf.inputs["Color"].default_value = rgb(desc.get("reflectance", 0.5), name) + (1.0,)
         bsdf.inputs["Roughness"].default_value = 0.0
         links.new(bsdf.outputs["BSDF"], out.inputs["Surface"])
+    elif kind == "dielectric" and set(desc) <= {"type", "ior", "roughness"} and \
+            isinstance(desc.get("ior", 1.5), (int, float)) and desc.get("roughness", 0) == 0:
+        # Sharp glass: exact dielectric Fresnel, reflection or refraction chosen by it; Cycles
+        # leaves out radiance's 1 / eta^2 on refraction, which cancels on a closed object
+        # entered and left in the same medium.
+        bsdf = nodes.new("ShaderNodeBsdfGlass")
+        bsdf.distribution = "SHARP"
+        bsdf.inputs["Color"].default_value = (1.0, 1.0, 1.0, 1.0)
+        bsdf.inputs["IOR"].default_value = float(desc.get("ior", 1.5))
+        links.new(bsdf.outputs["BSDF"], out.inputs["Surface"])
     elif kind == "conductor" and "f0" in desc:
         if desc.get("fresnel") != "schlick" or "f82" in desc:
             raise Unsupported(f"{name}: a conductor is compared as f0 with \"fresnel\": \"schlick\"")
@@ -222,40 +231,28 @@ def make_material(bpy, name, desc, emission):
         bsdf.inputs["Specular"].default_value = 0.5
         links.new(bsdf.outputs["BSDF"], out.inputs["Surface"])
     else:
-        raise Unsupported(f"{name}: material type {kind!r} (this comparison knows lambert and "
-                          f"conductor with f0)")
+        raise Unsupported(f"{name}: material type {kind!r} (this comparison knows lambert, "
+                          f"conductor with f0 and dielectric with one numeric ior, smooth)")
     return mat
 
 
-def add_shape(bpy, bmesh, mathutils, i, shape, materials):
+def add_shape(bpy, mathutils, i, shape, materials, scene_dir):
     what = f"shapes[{i}]"
-    kind = shape.get("type")
     mat_desc = shape.get("material")
     if not isinstance(mat_desc, str) or mat_desc not in materials:
         raise Unsupported(f"{what}: material must name one of the scene's materials")
+    # No analytic spheres or disks in Cycles: finely tessellated meshes (cycles_geometry), the
+    # spheres smooth-shaded. A black lambert does not shade: an OBJ's normals do not matter.
+    desc = materials[mat_desc]
+    black = desc.get("type") == "lambert" and max(rgb(desc.get("reflectance", 0.5), mat_desc)) == 0
+    positions, faces, matrix = cycles_geometry.shape_mesh(shape, scene_dir, what,
+                                                          ignore_normals=black)
     mesh = bpy.data.meshes.new(shape.get("name", what))
-    bm = bmesh.new()
-    if kind == "mesh":
-        verts = [bm.verts.new(p) for p in shape["positions"]]
-        for face in shape["faces"]:
-            bm.faces.new([verts[j] for j in face])
-    elif kind == "rectangle":
-        verts = [bm.verts.new(p) for p in ((-1, -1, 0), (1, -1, 0), (1, 1, 0), (-1, 1, 0))]
-        bm.faces.new(verts)  # counter-clockwise seen from +z: the front faces +z
-    elif kind == "sphere":
-        # No analytic sphere in Cycles; a finely tessellated, smooth-shaded UV sphere.
-        bmesh.ops.create_uvsphere(bm, u_segments=256, v_segments=128,
-                                  radius=float(shape.get("radius", 1.0)))
-        bmesh.ops.translate(bm, verts=bm.verts, vec=shape.get("center", [0, 0, 0]))
-    else:
-        raise Unsupported(f"{what}: shape type {kind!r}")
-    bm.to_mesh(mesh)
-    bm.free()
-    if kind == "sphere":
+    mesh.from_pydata(positions, [], faces)
+    if shape.get("type") == "sphere":
         for polygon in mesh.polygons:
             polygon.use_smooth = True
-    if "normals" in shape or "uvs" in shape:
-        raise Unsupported(f"{what}: vertex normals and uvs")
+    mesh.update()
     emission = shape.get("emission")
     key = (mat_desc, json.dumps(emission, sort_keys=True))
     if key not in add_shape.cache:
@@ -263,7 +260,7 @@ def add_shape(bpy, bmesh, mathutils, i, shape, materials):
                                              materials[mat_desc], emission)
     mesh.materials.append(add_shape.cache[key])
     obj = bpy.data.objects.new(mesh.name, mesh)
-    obj.matrix_world = transform_matrix(shape.get("transform"), mathutils, what)
+    obj.matrix_world = mathutils.Matrix(matrix)
     bpy.context.scene.collection.objects.link(obj)
 
 
@@ -286,7 +283,8 @@ def set_camera(bpy, mathutils, scene):
     data = bpy.data.cameras.new("camera")
     data.sensor_fit = "VERTICAL"
     data.angle_y = math.radians(c.get("fov", 40.0))
-    data.clip_start = 1e-3
+    # In a medium the camera's rays start at clip_start: the fog before it is left out.
+    data.clip_start = 1e-6 if cycles_media.side(c, "medium") else 1e-3
     data.clip_end = 1e7
     obj = bpy.data.objects.new("camera", data)
     obj.matrix_world = m
@@ -309,13 +307,14 @@ def set_world(bpy, scene):
 
 
 def render_in_blender(scene_path, spp, seed, output):
-    import bmesh
     import bpy
     import mathutils
 
+    # Cycles path traces whatever the scene's integrator (it has no BDPT or light tracing):
+    # lamina's integrators converge to the same image.
     scene = load_scene(scene_path)
-    if scene.get("integrator", {}).get("type", "path") != "path":
-        raise Unsupported("integrator: the comparison runs path tracing")
+    scene_dir = os.path.dirname(os.path.abspath(scene_path))
+    media_plan = cycles_media.plan(scene, scene_dir)
     for obj in list(bpy.data.objects):
         bpy.data.objects.remove(obj)
     s = bpy.context.scene
@@ -324,7 +323,10 @@ def render_in_blender(scene_path, spp, seed, output):
     set_world(bpy, scene)
     materials = scene.get("materials", {})
     for i, shape in enumerate(scene.get("shapes", [])):
-        add_shape(bpy, bmesh, mathutils, i, shape, materials)
+        if i not in media_plan.handled:
+            add_shape(bpy, mathutils, i, shape, materials, scene_dir)
+    tag = os.path.splitext(os.path.basename(output))[0]
+    cycles_media.build(bpy, scene, media_plan, os.path.dirname(os.path.abspath(output)), tag)
     clock = time.process_time if os.environ.get("LAMINA_PEER_CLOCK") == "cpu" else time.perf_counter
     start = clock()
     bpy.ops.render.render()
@@ -354,7 +356,8 @@ class Runner:
         out = os.path.join(self.work, name + ".exr")
         cmd = [self.args.blender, "-b", "--factory-startup", "-t", "2", "-P", os.path.abspath(__file__),
                "--", "--inside-blender", scene, str(spp), str(seed), out]
-        env = dict(os.environ, LAMINA_PEER_CLOCK=self.args.clock)
+        env = dict(os.environ, LAMINA_PEER_CLOCK=self.args.clock,
+                   LAMINA_PEER_VOLUME_STEP_RATE=str(self.args.volume_step_rate))
         p = subprocess.run(cmd, capture_output=True, text=True, env=env)
         m = re.search(r"lamina-peer-seconds ([0-9.]+)", p.stdout)
         if p.returncode != 0 or not m or not os.path.exists(out):
@@ -368,6 +371,16 @@ class Runner:
             sys.exit(f"cycles.py: {e}")
 
 
+def reference_half_spp(args, timing):
+    """Samples per reference half: --reference-spp / 2, or with --reference-time T what fits T / 2
+    seconds by the renderer's calibration (fixed, per_spp), so that each renderer's reference is
+    as long, whatever its speed."""
+    if args.reference_time is None:
+        return max(1, args.reference_spp // 2)
+    fixed, per_spp = timing
+    return max(1, round((args.reference_time / 2 - fixed) / per_spp))
+
+
 def measure_scene(runner, scene, args):
     tag = os.path.splitext(os.path.basename(scene))[0]
     renderers = {"lamina": runner.lamina, "cycles": runner.cycles}
@@ -378,16 +391,18 @@ def measure_scene(runner, scene, args):
         t1 = render(scene, n1, 7, f"{tag}-{name}-calibration-{n1}")[1]
         per_spp = max(t1 - t0, 1e-6) / (n1 - n0)
         timing[name] = (max(0.0, t0 - n0 * per_spp), per_spp)
-        halves = [render(scene, args.reference_spp // 2, seed, f"{tag}-{name}-reference-{seed}")
+        half_spp = reference_half_spp(args, timing[name])
+        halves = [render(scene, half_spp, seed, f"{tag}-{name}-reference-{seed}")
                   for seed in (101, 102)]
         h1, h2 = halves[0][0], halves[1][0]
         between_halves = runner.mse(h1, h2)
         references[name] = (h1, h2, between_halves[0] / 2.0, halves[0][1] + halves[1][1],
-                            between_halves[1])
+                            between_halves[1], 2 * half_spp)
     agreement = runner.mse(references["lamina"][0], references["cycles"][0])[1]
     print(f"\n## {scene}")
-    print(f"references: {args.reference_spp} spp each as two halves (lamina {references['lamina'][3]:.1f} s, "
-          f"Cycles {references['cycles'][3]:.1f} s); relMSE of lamina's half against Cycles' half: "
+    print(f"references as two halves: lamina {references['lamina'][5]} spp in "
+          f"{references['lamina'][3]:.1f} s, Cycles {references['cycles'][5]} spp in "
+          f"{references['cycles'][3]:.1f} s; relMSE of lamina's half against Cycles' half: "
           f"{agreement:.3g}, of lamina's two halves {references['lamina'][4]:.3g}, of Cycles' two "
           f"halves {references['cycles'][4]:.3g} (the two renderers agree on the image when the "
           f"first lies between the other two: a difference between the images would add to it)")
@@ -412,7 +427,7 @@ def measure_scene(runner, scene, args):
         if noisy:
             print(f"| {budget:g} s | {ls} | {lt:.2f} | {lm:.3g} | {cs} | {ct:.2f} | {cm:.3g} | not "
                   f"measured: {' and '.join(noisy)}'s reference halves are as noisy as the image "
-                  f"(raise --reference-spp above {args.reference_spp}) |")
+                  f"(raise --reference-spp or --reference-time) |")
             continue
         ratio = (cm * ct) / (lm * lt)
         ratios.append(ratio)
@@ -442,6 +457,12 @@ def main():
     parser.add_argument("--times", type=float, nargs="+", default=[2.0, 4.0, 8.0],
                         help="wall-time budgets in seconds")
     parser.add_argument("--reference-spp", type=int, default=1024)
+    parser.add_argument("--reference-time", type=float,
+                        help="seconds of each renderer's reference (its two halves together), "
+                             "instead of --reference-spp: the samples that fit by its calibration")
+    parser.add_argument("--volume-step-rate", type=float, default=1.0,
+                        help="Cycles' volume step rate (render settings; its step through a grid "
+                             "medium is the voxel size times this): smaller is less biased, slower")
     parser.add_argument("--clock", choices=["wall", "cpu"], default="wall",
                         help="wall: wall time (a quiet machine); cpu: CPU seconds of all the "
                              "renderer's threads, for a machine shared with other work, where "
