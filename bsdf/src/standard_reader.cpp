@@ -2,8 +2,8 @@
 // base with transmission, both read into StandardMaterial (docs/bsdf.md, "Materials").
 #include <cmath>
 
-#include "lamina/bsdf/layered.h"
 #include "lamina/bsdf/material_kind.h"
+#include "lamina/bsdf/standard.h"
 #include "material_readers.h"
 
 namespace lamina {
