@@ -42,6 +42,15 @@
 // lobes (diffuse and multiple-scattering compensation) ~ their albedos, transmission ~
 // t (1 - F), the conductor base ~ its Fresnel at wo' times its coupling at wo; 10% spread evenly
 // so no lobe is starved), then weight = eval / pdf of the whole mixture.
+//
+// Polarised (docs/polarisation.md), the interface's reflection, smooth or rough, polarises by
+// the Fresnel amplitudes of its model on each microfacet (an F0-only model by the dielectric
+// of the same F0, polarised_fresnel.h), the same from either side as its value is; every other
+// term (the base, diffuse or conductor, the transmission through the interface, the
+// multiple-scattering compensation) is an ideal depolariser: light that has crossed the
+// interface twice or scattered in the base is modelled as having lost its polarisation. The
+// article's Phong lobe has no Fresnel event of its own (its Fresnel model only weights the
+// base) and depolarises too.
 #pragma once
 
 #include <array>
@@ -51,6 +60,7 @@
 #include "lamina/bsdf/material_builder.h"
 #include "lamina/bsdf/microfacet_reflection.h"
 #include "lamina/bsdf/multiscatter.h"
+#include "lamina/bsdf/polarised_fresnel.h"
 #include "lamina/bsdf/refracted_conductor.h"
 #include "lamina/bsdf/specular_lobe.h"
 #include "lamina/core/name_table.h"
@@ -165,6 +175,26 @@ class LayeredBxdf final : public Bxdf<S> {
         return BsdfSample<S>{wi, weight, pdfValue, flags, eta};
     }
 
+    /// The interface's reflection polarised, every other term depolarising (the top of this
+    /// file); [0][0] is eval() to the last bit, its terms added in the same order.
+    MuellerMatrix<S> evalMueller(const V3& wo, const V3& wi, TransportMode mode) const override {
+        if (wo.z == Float(0) || wi.z == Float(0)) return MuellerMatrix<S>();
+        if (!sameHemisphere(wo, wi)) return depolarising(evalTransmission(wo, wi, mode));
+        const Float s = wo.z < Float(0) ? Float(-1) : Float(1);
+        MuellerMatrix<S> m;
+        reflectionTerms(wo * s, wi * s, mode, [&](const S& term, bool interface) {
+            m += interface ? interfaceMueller(term, wo, wi) : depolarising(term);
+        });
+        return m;
+    }
+
+    MuellerMatrix<S> sampleMueller(const V3& wo, const BsdfSample<S>& s,
+                                   TransportMode mode) const override {
+        if (!s.isSpecular()) return evalMueller(wo, s.wi, mode) / s.pdf;
+        if (s.isTransmission()) return depolarising(s.weight);
+        return interfaceMueller(s.weight, wo, s.wi);
+    }
+
     std::uint32_t flags() const override {
         std::uint32_t f = kLobeNone;
         if (l_.interface) f |= interfaceSmooth() ? kLobeSpecularReflection : kLobeGlossyReflection;
@@ -225,8 +255,16 @@ class LayeredBxdf final : public Bxdf<S> {
 
     S evalReflection(const V3& wo, const V3& wi, TransportMode mode) const {
         S result(Float(0));
-        if (l_.interface && !interfaceSmooth()) result += l_.interface->eval(wo, wi);
-        if (l_.interfaceMultiscatter) result += l_.interfaceMultiscatter->eval(wo, wi);
+        reflectionTerms(wo, wi, mode, [&](const S& term, bool) { result += term; });
+        return result;
+    }
+
+    // The terms of the reflection (wo, wi above the surface), in the order evalReflection adds
+    // them, each with whether it is the interface's own reflection: add(term, interface).
+    template <typename Add>
+    void reflectionTerms(const V3& wo, const V3& wi, TransportMode mode, Add&& add) const {
+        if (l_.interface && !interfaceSmooth()) add(l_.interface->eval(wo, wi), true);
+        if (l_.interfaceMultiscatter) add(l_.interfaceMultiscatter->eval(wo, wi), false);
         if (l_.diffuse) {
             S coupling(Float(1));
             if (l_.coupling == LayerCoupling::Fresnel && l_.interface)
@@ -236,14 +274,20 @@ class LayeredBxdf final : public Bxdf<S> {
                 coupling = S((Float(1) - e(wo.z)) * (Float(1) - e(wi.z)) /
                              std::max(Float(1e-6), Float(1) - Float(e.average())));
             }
-            result +=
-                l_.diffuse->eval(wo, wi, mode) * coupling * (Float(1) - l_.transmissionWeight);
+            add(l_.diffuse->eval(wo, wi, mode) * coupling * (Float(1) - l_.transmissionWeight),
+                false);
         }
         if (l_.conductorBase) {
             const S f = l_.conductorBase->eval(wo, wi, mode);
-            if (!f.isZero()) result += f * conductorCoupling(wo, wi);
+            if (!f.isZero()) add(f * conductorCoupling(wo, wi), false);
         }
-        return result;
+    }
+
+    // The Mueller matrix of the interface's reflection of value `value` for the pair (wo, wi)
+    // on either side: its Fresnel model on the half vector, seen from that side.
+    MuellerMatrix<S> interfaceMueller(const S& value, const V3& wo, const V3& wi) const {
+        if (l_.interface->isPhong()) return depolarising(value);
+        return twoSidedReflectionMueller(value, l_.interface->fresnel(), wo, wi);
     }
 
     // W_c of the conductor base (the top of this file).
