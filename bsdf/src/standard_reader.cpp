@@ -2,8 +2,8 @@
 // base with transmission, both read into StandardMaterial (docs/bsdf.md, "Materials").
 #include <cmath>
 
-#include "lamina/bsdf/layered.h"
 #include "lamina/bsdf/material_kind.h"
+#include "lamina/bsdf/standard.h"
 #include "material_readers.h"
 
 namespace lamina {
@@ -186,6 +186,13 @@ void standardSpectra(const MaterialModel& model, std::vector<std::string>& out) 
         out.push_back(s.conductorBase->optics.spectrum->name() + " (n, k)");
 }
 
+// What the polarised mode makes of both (layered.h).
+constexpr std::string_view kStackPolarisation =
+    "polarising at its interface: the Fresnel amplitudes of its index on each microfacet (an "
+    "F0-only Fresnel model: the dielectric of that F0), from either side; its base, the "
+    "transmission through the interface and the energy compensation depolarise (a phong "
+    "interface too)";
+
 bool standardTransmits(const MaterialModel& model) {
     return model.as<StandardMaterial>().transmission > 0;
 }
@@ -259,6 +266,7 @@ extern const MaterialKind kStandardMaterial{.name = "standard",
                                             .texturable = kStandardTextured,
                                             .applyTextures = texturedStandard,
                                             .spectralData = standardSpectra,
+                                            .polarisation = kStackPolarisation,
                                             .transmits = standardTransmits,
                                             .tabulatesRoughness = standardTabulatesRoughness};
 
@@ -373,6 +381,7 @@ extern const MaterialKind kLayeredMaterial{.name = "layered",
   ]
 })json",
                                            .spectralData = standardSpectra,
+                                           .polarisation = kStackPolarisation,
                                            .transmits = standardTransmits,
                                            .tabulatesRoughness = standardTabulatesRoughness};
 

@@ -45,6 +45,14 @@ std::string sceneWith(const std::string& name, const std::string& material) {
     return substitute(kLitSphereScene, R"("m": {"type": "lambert"})", name + ": " + material);
 }
 
+// `depth` mixes inside each other, each over a lambert and the next (docs/bsdf.md, `mix`).
+std::string nestedMixes(int depth) {
+    std::string json = R"({"type": "lambert"})";
+    for (int i = 0; i < depth; ++i)
+        json = R"({"type": "mix", "a": {"type": "lambert"}, "b": )" + json + "}";
+    return json;
+}
+
 INSTANTIATE_TEST_SUITE_P(
     Cases, ErrorLines,
     ::testing::Values(
@@ -105,7 +113,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadRun{"media_reference_with_two_scenes", "media SCENE SCENE --reference SCENE -o DIR/m",
                "", "", 1, ": a reference is one scene's; give one scene with it"},
         BadRun{"render_unknown_ablation", "render SCENE --ablate gravity -o DIR/x.exr", "", "", 2,
-               "--ablate"}),
+               "--ablate"},
+        BadRun{"mixes_nested_too_deep", "info DIR/input.json", sceneWith(R"("m")", nestedMixes(17)),
+               "input.json", 1,
+               "input.json: materials.m: 17 mixes nest inside each other; at most 16 can"}),
     [](const auto& paramInfo) { return std::string(paramInfo.param.name); });
 
 }  // namespace

@@ -5,8 +5,8 @@
 #include <gtest/gtest.h>
 
 #include "lamina/bsdf/conductor.h"
-#include "lamina/bsdf/layered.h"
 #include "lamina/bsdf/material_builder.h"
+#include "lamina/bsdf/standard.h"
 #include "lamina/core/error.h"
 #include "lamina/core/pcg32.h"
 #include "lamina/core/warp.h"

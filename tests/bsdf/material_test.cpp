@@ -8,9 +8,9 @@
 #include "lamina/bsdf/conductor.h"
 #include "lamina/bsdf/dielectric.h"
 #include "lamina/bsdf/diffuse.h"
-#include "lamina/bsdf/layered.h"
 #include "lamina/bsdf/material_builder.h"
 #include "lamina/bsdf/mix.h"
+#include "lamina/bsdf/standard.h"
 #include "lamina/core/error.h"
 
 namespace lamina {

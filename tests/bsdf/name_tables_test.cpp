@@ -8,8 +8,8 @@
 
 #include "lamina/bsdf/conductor.h"
 #include "lamina/bsdf/diffuse.h"
-#include "lamina/bsdf/layered.h"
 #include "lamina/bsdf/material_builder.h"
+#include "lamina/bsdf/standard.h"
 #include "lamina/core/error.h"
 
 namespace lamina {

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "lamina/bsdf/diffuse.h"
-#include "lamina/bsdf/layered.h"
+#include "lamina/bsdf/standard.h"
 #include "lamina/core/error.h"
 #include "lamina/experiments/layering.h"
 #include "scratch_directory.h"

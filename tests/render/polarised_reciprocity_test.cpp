@@ -98,12 +98,16 @@ TEST_P(PolarisedReciprocity, PathLightAndBdptAgreeOnEveryStokesComponent) {
     expectAgreement(light, bdpt, "light vs bdpt");
 }
 
+std::string sceneName(const ::testing::TestParamInfo<const char*>& p) {
+    static const char* const kNames[] = {"RoughGold", "RoughGlass", "RoughLayered"};
+    return kNames[p.index];
+}
+
 INSTANTIATE_TEST_SUITE_P(Scenes, PolarisedReciprocity,
                          ::testing::Values("scenes/reciprocity/rough-conductor.json",
-                                           "scenes/reciprocity/rough-glass.json"),
-                         [](const ::testing::TestParamInfo<const char*>& p) {
-                             return std::string(p.index == 0 ? "RoughGold" : "RoughGlass");
-                         });
+                                           "scenes/reciprocity/rough-glass.json",
+                                           "scenes/reciprocity/rough-layered.json"),
+                         sceneName);
 
 }  // namespace
 }  // namespace lamina::render

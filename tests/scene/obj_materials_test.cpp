@@ -9,7 +9,7 @@
 
 #include "lamina/bsdf/dielectric.h"
 #include "lamina/bsdf/diffuse.h"
-#include "lamina/bsdf/layered.h"
+#include "lamina/bsdf/standard.h"
 #include "lamina/core/json_reader.h"
 #include "lamina/scene/scene_description.h"
 #include "scene_shapes.h"

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "lamina/bsdf/diffuse.h"
-#include "lamina/bsdf/layered.h"
+#include "lamina/bsdf/standard.h"
 #include "lamina/core/json_reader.h"
 #include "lamina/scene/scene_description.h"
 

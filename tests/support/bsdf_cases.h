@@ -254,6 +254,29 @@ inline std::vector<BsdfCase> bsdfCases() {
         {"standard_phong_r0p5",
          lazyMaterial(R"({"type":"standard","base_color":[0.8,0.5,0.2],"roughness":0.5,)"
                       R"("specular_model":"phong"})")});
+
+    // Mixes: a rough conductor with a diffuse; mixes nested two deep over a layered stack, a
+    // rough conductor and a rough glass (its only transmission, index 1.5); a smooth (delta)
+    // conductor with a diffuse, whose delta samples the mix hands back to the conductor.
+    cases.push_back(
+        {"mix_conductor_lambert",
+         lazyMaterial(R"({"type":"mix","weight":0.3,"a":{"type":"conductor",)"
+                      R"("eta":[0.18,0.42,1.37],"k":[3.42,2.35,1.77],"fresnel":"exact",)"
+                      R"("roughness":0.4},"b":{"type":"lambert","reflectance":[0.7,0.5,0.3]}})")});
+    cases.push_back(
+        {"mix_nested_layered_conductor_dielectric",
+         lazyMaterial(R"({"type":"mix","weight":0.4,"a":{"type":"mix","weight":0.6,)"
+                      R"("a":{"type":"layered","interface":{"roughness":0.3,"ior":1.5,)"
+                      R"("fresnel":"exact"},"base":{"type":"lambert","reflectance":0.6}},)"
+                      R"("b":{"type":"conductor","f0":[0.9,0.6,0.3],"roughness":0.5}},)"
+                      R"("b":{"type":"dielectric","ior":1.5,"roughness":0.4}})"),
+         true, 1.5});
+    cases.push_back(
+        {"mix_smooth_conductor_oren_nayar",
+         lazyMaterial(R"({"type":"mix","weight":0.5,"a":{"type":"conductor",)"
+                      R"("eta":[0.18,0.42,1.37],"k":[3.42,2.35,1.77],"fresnel":"exact",)"
+                      R"("alpha":0},"b":{"type":"oren_nayar","reflectance":0.6,)"
+                      R"("roughness":0.5}})")});
     return cases;
 }
 

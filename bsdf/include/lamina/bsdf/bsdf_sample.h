@@ -82,14 +82,31 @@ struct BsdfSample {
     /// Solid-angle density of wi (mixture over lobes), or the discrete probability of the
     /// chosen delta lobe times the probabilities of delta choices.
     Float pdf = 0;
-    std::uint32_t flags = kLobeNone;
+    /// The sampled lobe's LobeFlags (every kind fits in 16 bits).
+    std::uint16_t flags = kLobeNone;
+    /// Which material of each enclosing `mix` drew a delta sample, one bit per mix, the
+    /// outermost in bit 0 (mix.h): the polarised mode hands the sample back to the material
+    /// that drew it for its Mueller matrix (Bxdf::sampleMueller). 0 from every other BSDF.
+    std::uint16_t component = 0;
     /// Relative index of refraction across the boundary along the sampled direction
     /// (eta_transmitted / eta_incident); 1 for reflection.
     Float eta = 1;
 
+    BsdfSample() = default;
+    BsdfSample(const Vec3<Float>& wi, const S& weight, Float pdf, std::uint32_t flags, Float eta,
+               std::uint16_t component = 0)
+        : wi(wi),
+          weight(weight),
+          pdf(pdf),
+          flags(std::uint16_t(flags)),
+          component(component),
+          eta(eta) {}
+
     bool isSpecular() const { return lamina::isSpecular(flags); }
     bool isTransmission() const { return lamina::isTransmission(flags); }
 };
+
+static_assert(kLobeAll <= 0xFFFFu, "BsdfSample::flags holds every lobe kind in 16 bits");
 
 /// What a single reflection lobe's sampler returns (microfacet, Phong): the direction, the
 /// lobe's own eval / pdf, and its density. The BSDFs combine these into BsdfSample.

@@ -42,6 +42,15 @@
 // lobes (diffuse and multiple-scattering compensation) ~ their albedos, transmission ~
 // t (1 - F), the conductor base ~ its Fresnel at wo' times its coupling at wo; 10% spread evenly
 // so no lobe is starved), then weight = eval / pdf of the whole mixture.
+//
+// Polarised (docs/polarisation.md), the interface's reflection, smooth or rough, polarises by
+// the Fresnel amplitudes of its model on each microfacet (an F0-only model by the dielectric
+// of the same F0, polarised_fresnel.h), the same from either side as its value is; every other
+// term (the base, diffuse or conductor, the transmission through the interface, the
+// multiple-scattering compensation) is an ideal depolariser: light that has crossed the
+// interface twice or scattered in the base is modelled as having lost its polarisation. The
+// article's Phong lobe has no Fresnel event of its own (its Fresnel model only weights the
+// base) and depolarises too.
 #pragma once
 
 #include <array>
@@ -51,6 +60,7 @@
 #include "lamina/bsdf/material_builder.h"
 #include "lamina/bsdf/microfacet_reflection.h"
 #include "lamina/bsdf/multiscatter.h"
+#include "lamina/bsdf/polarised_fresnel.h"
 #include "lamina/bsdf/refracted_conductor.h"
 #include "lamina/bsdf/specular_lobe.h"
 #include "lamina/core/name_table.h"
@@ -165,6 +175,26 @@ class LayeredBxdf final : public Bxdf<S> {
         return BsdfSample<S>{wi, weight, pdfValue, flags, eta};
     }
 
+    /// The interface's reflection polarised, every other term depolarising (the top of this
+    /// file); [0][0] is eval() to the last bit, its terms added in the same order.
+    MuellerMatrix<S> evalMueller(const V3& wo, const V3& wi, TransportMode mode) const override {
+        if (wo.z == Float(0) || wi.z == Float(0)) return MuellerMatrix<S>();
+        if (!sameHemisphere(wo, wi)) return depolarising(evalTransmission(wo, wi, mode));
+        const Float s = wo.z < Float(0) ? Float(-1) : Float(1);
+        MuellerMatrix<S> m;
+        reflectionTerms(wo * s, wi * s, mode, [&](const S& term, bool interface) {
+            m += interface ? interfaceMueller(term, wo, wi) : depolarising(term);
+        });
+        return m;
+    }
+
+    MuellerMatrix<S> sampleMueller(const V3& wo, const BsdfSample<S>& s,
+                                   TransportMode mode) const override {
+        if (!s.isSpecular()) return evalMueller(wo, s.wi, mode) / s.pdf;
+        if (s.isTransmission()) return depolarising(s.weight);
+        return interfaceMueller(s.weight, wo, s.wi);
+    }
+
     std::uint32_t flags() const override {
         std::uint32_t f = kLobeNone;
         if (l_.interface) f |= interfaceSmooth() ? kLobeSpecularReflection : kLobeGlossyReflection;
@@ -225,8 +255,16 @@ class LayeredBxdf final : public Bxdf<S> {
 
     S evalReflection(const V3& wo, const V3& wi, TransportMode mode) const {
         S result(Float(0));
-        if (l_.interface && !interfaceSmooth()) result += l_.interface->eval(wo, wi);
-        if (l_.interfaceMultiscatter) result += l_.interfaceMultiscatter->eval(wo, wi);
+        reflectionTerms(wo, wi, mode, [&](const S& term, bool) { result += term; });
+        return result;
+    }
+
+    // The terms of the reflection (wo, wi above the surface), in the order evalReflection adds
+    // them, each with whether it is the interface's own reflection: add(term, interface).
+    template <typename Add>
+    void reflectionTerms(const V3& wo, const V3& wi, TransportMode mode, Add&& add) const {
+        if (l_.interface && !interfaceSmooth()) add(l_.interface->eval(wo, wi), true);
+        if (l_.interfaceMultiscatter) add(l_.interfaceMultiscatter->eval(wo, wi), false);
         if (l_.diffuse) {
             S coupling(Float(1));
             if (l_.coupling == LayerCoupling::Fresnel && l_.interface)
@@ -236,14 +274,20 @@ class LayeredBxdf final : public Bxdf<S> {
                 coupling = S((Float(1) - e(wo.z)) * (Float(1) - e(wi.z)) /
                              std::max(Float(1e-6), Float(1) - Float(e.average())));
             }
-            result +=
-                l_.diffuse->eval(wo, wi, mode) * coupling * (Float(1) - l_.transmissionWeight);
+            add(l_.diffuse->eval(wo, wi, mode) * coupling * (Float(1) - l_.transmissionWeight),
+                false);
         }
         if (l_.conductorBase) {
             const S f = l_.conductorBase->eval(wo, wi, mode);
-            if (!f.isZero()) result += f * conductorCoupling(wo, wi);
+            if (!f.isZero()) add(f * conductorCoupling(wo, wi), false);
         }
-        return result;
+    }
+
+    // The Mueller matrix of the interface's reflection of value `value` for the pair (wo, wi)
+    // on either side: its Fresnel model on the half vector, seen from that side.
+    MuellerMatrix<S> interfaceMueller(const S& value, const V3& wo, const V3& wi) const {
+        if (l_.interface->isPhong()) return depolarising(value);
+        return twoSidedReflectionMueller(value, l_.interface->fresnel(), wo, wi);
     }
 
     // W_c of the conductor base (the top of this file).
@@ -281,110 +325,5 @@ class LayeredBxdf final : public Bxdf<S> {
 };
 
 LAMINA_EXTERN_BSDF_VARIANTS(LayeredBxdf)
-
-/// `standard` and `layered` (standard_reader.cpp): the article's material (and its
-/// generalisations); see docs/bsdf.md.
-struct StandardMaterial {
-    ColorInput baseColor{RgbInput(0.8)};
-    double metalness = 0;
-    double specular = 0.04;                 ///< F0 of the dielectric part
-    std::optional<RgbInput> specularColor;  ///< specular workflow: F0 directly
-    std::optional<RgbInput> f82;            ///< absolute reflectance at cos = 1/7
-    std::optional<RgbInput> f82Tint;        ///< multiplier of Schlick at cos = 1/7
-    double transmission = 0;
-    double ior = 1.5;
-    std::optional<DiffuseModel> diffuse = DiffuseModel::Lambert;  ///< nullopt: none
-    bool specularLobe = true;
-    bool phong = false;  ///< the article's Phong lobe instead of a microfacet one
-    /// Perceptual roughness of the diffuse models (`layered` sets it; `standard` uses the
-    /// specular roughness, as the article does).
-    std::optional<double> diffuseRoughness;
-    MicrofacetParams microfacet;
-    FresnelChoice fresnel = FresnelChoice::SchlickShadowed;
-    LayerCoupling coupling = LayerCoupling::Fresnel;
-    /// Albedo coupling: the directional albedo of the specular interface (RGB average).
-    std::shared_ptr<const AlbedoTable> interfaceAlbedo;
-    /// `layered` with a conductor base: the conductor under the interface (its optics relative
-    /// to the interface's medium of index `ior`), in place of the diffuse base.
-    std::shared_ptr<const ConductorMaterial> conductorBase;
-};
-
-template <SpectrumType S>
-std::unique_ptr<Bxdf<S>> buildModel(const StandardMaterial& s, const MaterialBuilder<S>& b) {
-    using Float = typename S::Float;
-    const SpectrumContext<S>& ctx = b.context();
-    // The article, section 4.3.1: F0 = lerp(0.04, base_color, metalness) (with `specular` in
-    // place of 0.04), diffuse reflectance = base_color (1 - metalness).
-    const RgbInput f0rgb = s.specularColor ? *s.specularColor
-                                           : RgbInput(s.specular) * (1.0 - s.metalness) +
-                                                 s.baseColor.rgb * s.metalness;
-    const RgbInput diffuseRgb =
-        s.specularColor ? s.baseColor.rgb : s.baseColor.rgb * (1.0 - s.metalness);
-    // A spectral base colour mixes in the spectral domain; an RGB one is mixed in RGB
-    // first (so RGB inputs are upsampled once, as they always were).
-    const bool spectralBase = s.baseColor.spectrum != nullptr;
-    const auto f0Spectrum = [&]() -> S {
-        if (!spectralBase || s.specularColor) return ctx.reflectance(f0rgb);
-        return S(Float(s.specular * (1.0 - s.metalness))) +
-               ctx.reflectance(s.baseColor) * Float(s.metalness);
-    };
-    const auto diffuseSpectrum = [&]() -> S {
-        if (!spectralBase) return ctx.reflectance(diffuseRgb);
-        return ctx.reflectance(s.baseColor) * Float(s.specularColor ? 1.0 : 1.0 - s.metalness);
-    };
-
-    typename LayeredBxdf<S>::Layers layers;
-    layers.coupling = s.coupling;
-    const auto dist = MaterialBuilder<S>::distribution(s.microfacet);
-    if (s.specularLobe) {
-        const S f0 = f0Spectrum();
-        Fresnel<S> fresnel;
-        switch (s.fresnel) {
-            case FresnelChoice::Schlick:
-                fresnel = Fresnel<S>::schlick(f0);
-                break;
-            case FresnelChoice::SchlickSphericalGaussian:
-                fresnel = Fresnel<S>::schlickSphericalGaussian(f0);
-                break;
-            case FresnelChoice::F82:
-                if (s.f82)
-                    fresnel = Fresnel<S>::hoffmanF82(f0, ctx.reflectance(*s.f82));
-                else
-                    fresnel = Fresnel<S>::hoffmanF82Tint(
-                        f0, ctx.unbounded(s.f82Tint.value_or(RgbInput(1.0))));
-                break;
-            case FresnelChoice::Exact:
-                fresnel = Fresnel<S>::dielectric(S(Float(s.ior)));
-                break;
-            default:
-                fresnel = Fresnel<S>::schlickShadowed(f0, MaterialBuilder<S>::shadowedF90(f0rgb));
-                break;
-        }
-        if (s.phong) {
-            // The article's Phong specular: reflectance F0, exponent from alpha.
-            const Float alpha = Float(0.5 * (s.microfacet.alphaX + s.microfacet.alphaY));
-            layers.interface.emplace(
-                PhongLobe<S>(f0, PhongLobe<S>::shininessFromAlpha(alpha), fresnel));
-        } else {
-            layers.interface.emplace(dist, fresnel, s.microfacet.sampling, s.microfacet.g2);
-        }
-        if (s.microfacet.multiscatter && s.microfacet.energyF1 && !s.phong)
-            layers.interfaceMultiscatter.emplace(s.microfacet.energyF1, fresnel);
-    }
-    layers.interfaceAlbedo = s.interfaceAlbedo;
-    if (s.diffuse && s.transmission < 1.0 && (diffuseRgb.maxValue() > 0.0 || spectralBase))
-        layers.diffuse.emplace(
-            diffuseSpectrum(), *s.diffuse,
-            Float(s.diffuseRoughness.value_or(s.microfacet.perceptualRoughness())));
-    if (s.conductorBase)  // seen through the interface of index ior (none: index 1)
-        layers.conductorBase.emplace(buildConductorBxdf(*s.conductorBase, b),
-                                     Float(s.specularLobe ? s.ior : 1.0));
-    if (s.transmission > 0.0) {
-        layers.transmission.emplace(Float(s.ior), dist, s.microfacet.g2);
-        layers.transmissionWeight = Float(s.transmission);
-    }
-    return std::make_unique<LayeredBxdf<S>>(std::move(layers));
-}
-LAMINA_MATERIAL_MODEL(StandardMaterial)
 
 }  // namespace lamina

@@ -2,14 +2,27 @@
 // probability 1 - w and b by w, so the mixture pdf is (1 - w) p_a + w p_b and the weight of a
 // non-delta sample is the blend's eval / pdf; a delta sample keeps its own weight (its
 // selection probability cancels the blend weight).
+//
+// Polarised, the blend is the same sum of the two materials' Mueller matrices, in the same
+// canonical frames (docs/polarisation.md). A delta sample's matrix is its own material's: the
+// sample records which material drew it in BsdfSample::component, each mix shifting the bits of
+// the mixes inside it up by one and putting its own choice in bit 0, so sampleMueller reads its
+// bit and hands the sample on with the rest. The 16 bits hold kMaxMixNesting mixes inside each
+// other; the reader refuses more.
 #pragma once
 
+#include <limits>
 #include <memory>
 
 #include "lamina/bsdf/bxdf.h"
 #include "lamina/bsdf/material_builder.h"
 
 namespace lamina {
+
+/// How many mixes may nest inside each other: one bit of BsdfSample::component each.
+inline constexpr int kMaxMixNesting = 16;
+static_assert(kMaxMixNesting ==
+              std::numeric_limits<decltype(BsdfSample<Rgb<float>>::component)>::digits);
 
 template <SpectrumType S>
 class MixBxdf final : public Bxdf<S> {
@@ -39,6 +52,7 @@ class MixBxdf final : public Bxdf<S> {
         if (!s) return std::nullopt;
         if (s->isSpecular()) {
             s->pdf *= pickB ? w_ : Float(1) - w_;
+            s->component = std::uint16_t((s->component << 1) | (pickB ? 1u : 0u));
             return s;
         }
         const Float p = pdf(wo, s->wi);
@@ -50,6 +64,24 @@ class MixBxdf final : public Bxdf<S> {
     }
 
     std::uint32_t flags() const override { return a_->flags() | b_->flags(); }
+
+    /// The blend of the two materials' matrices; [0][0] is eval() to the last bit (the same
+    /// sum of the same products).
+    MuellerMatrix<S> evalMueller(const V3& wo, const V3& wi, TransportMode mode) const override {
+        return a_->evalMueller(wo, wi, mode) * (Float(1) - w_) + b_->evalMueller(wo, wi, mode) * w_;
+    }
+
+    /// A delta sample goes back to the material that drew it (bit 0 of its component), with
+    /// that material's own probability of it and the bits of the mixes inside it.
+    MuellerMatrix<S> sampleMueller(const V3& wo, const BsdfSample<S>& s,
+                                   TransportMode mode) const override {
+        if (!s.isSpecular()) return evalMueller(wo, s.wi, mode) / s.pdf;
+        const bool pickB = (s.component & 1u) != 0;
+        BsdfSample<S> own = s;
+        own.pdf = s.pdf / (pickB ? w_ : Float(1) - w_);
+        own.component = std::uint16_t(s.component >> 1);
+        return (pickB ? b_ : a_)->sampleMueller(wo, own, mode);
+    }
 
   private:
     std::unique_ptr<Bxdf<S>> a_, b_;

@@ -101,6 +101,24 @@ MuellerMatrix<S> reflectionMueller(const S& value, const Fresnel<S>& f,
     return inCanonicalFrames(shape, -wi, wo, m) * value;
 }
 
+/// reflectionMueller for an interface that is the same seen from either side: the layered
+/// stack's, which evaluates a pair below the surface as its mirror image above. Its Fresnel
+/// model is the one light meets from the side of wo and wi, at |wo.m|, whichever side that is
+/// (the dielectric's own reflectionMueller sees the inside's index from below).
+template <SpectrumType S>
+MuellerMatrix<S> twoSidedReflectionMueller(const S& value, const Fresnel<S>& f,
+                                           const Vec3<typename S::Float>& wo,
+                                           const Vec3<typename S::Float>& wi) {
+    using F = typename S::Float;
+    const Vec3<F> m = safeNormalize(wo + wi);
+    if (m == Vec3<F>(F(0))) return depolarising(value);
+    // m lies on the side of wo and wi; the plane of incidence, not m's sign, sets the frames.
+    const F cosTheta = std::abs(glm::dot(wo, m));
+    MuellerMatrix<S> shape =
+        fresnelShape<S>(false, [&](int i) { return fresnelAmplitudesOf(f, cosTheta, i); });
+    return inCanonicalFrames(shape, -wi, wo, m) * value;
+}
+
 /// The Mueller matrix of a transmission lobe of value `value`: radiance leaving along wo,
 /// arriving from wi on the other side through the microfacet normal m (either orientation),
 /// `etaLight` the relative index along the light's travel (wi's side to wo's). With a `film`

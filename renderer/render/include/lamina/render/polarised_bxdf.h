@@ -43,17 +43,21 @@ class PolarisedBxdf final : public Bxdf<PolarisedSpectrum> {
         if (!s) return std::nullopt;
         if (mode == TransportMode::Radiance)
             return BsdfSample<PolarisedSpectrum>{
-                s->wi, inWorldFrames(bsdf_->sampleMueller(wo, *s, mode), wo, s->wi), s->pdf,
-                s->flags, s->eta};
-        // The physical event of a delta lobe is its sample seen from the other end.
+                s->wi,  inWorldFrames(bsdf_->sampleMueller(wo, *s, mode), wo, s->wi),
+                s->pdf, s->flags,
+                s->eta, s->component};
+        // The physical event of a delta lobe is its sample seen from the other end, drawn by
+        // the same material of every mix (BsdfSample::component).
         const BsdfSample<SampledSpectrum<float>> reversed{
-            wo, s->weight, s->pdf, s->flags, s->isTransmission() ? 1.0f / s->eta : s->eta};
+            wo,          s->weight, s->pdf, s->flags, s->isTransmission() ? 1.0f / s->eta : s->eta,
+            s->component};
         const PolarisedSpectrum::Base m =
             s->isSpecular() ? bsdf_->sampleMueller(s->wi, reversed, TransportMode::Radiance)
                             : bsdf_->evalMueller(s->wi, wo, TransportMode::Radiance);
         return BsdfSample<PolarisedSpectrum>{
-            s->wi, withUnpolarised(inWorldFrames(m, s->wi, wo), s->weight), s->pdf, s->flags,
-            s->eta};
+            s->wi,  withUnpolarised(inWorldFrames(m, s->wi, wo), s->weight),
+            s->pdf, s->flags,
+            s->eta, s->component};
     }
     std::uint32_t flags() const override { return bsdf_->flags(); }
     bool usesLobeChoice() const override { return bsdf_->usesLobeChoice(); }
