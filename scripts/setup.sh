@@ -12,7 +12,7 @@ packages=(
   colord-data libtinyobjloader-dev libpugixml-dev zlib1g-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-matplotlib python3-numpy python3-jsonschema
-  python3-dev pybind11-dev python3-pybind11 python3-pytest
+  python3-dev pybind11-dev python3-pybind11 python3-pytest python3-openvdb
   clang libclang-rt-14-dev
   slurm-wlm munge
   chromium
