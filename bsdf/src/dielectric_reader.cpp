@@ -227,6 +227,9 @@ extern const MaterialKind kThinDielectricMaterial{
   ]
 })json",
     .spectralData = thinDielectricSpectra,
+    .polarisation =
+        "polarising: the slab's internal reflections summed for s and p apart (a one-plate "
+        "pile-of-plates polariser)",
     .transmits = [](const MaterialModel&) { return true; }};
 
 }  // namespace lamina

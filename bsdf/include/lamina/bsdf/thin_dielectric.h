@@ -13,11 +13,20 @@
 // transmitted ray is not bent, and no dispersion either). eta is per channel (per wavelength in
 // spectral mode): R' varies with it, the directions do not. Transmission crosses back into the
 // same medium, so radiance is not scaled (the sample's eta is 1).
+//
+// Polarised (docs/polarisation.md), the series is summed for s and p apart, with the s-p
+// correlation (incoherent_slab.h): the slab reflects (R'_s + R'_p) / 2 of unpolarised light,
+// not R' of the averaged R above, and transmits partly polarised light (a pile-of-plates
+// polariser of one plate). So unlike the other materials, its [0][0] is not the unpolarised
+// value: the slab is many Fresnel events in one, and the difference is what averaging s and p
+// at each of them costs.
 #pragma once
 
 #include "lamina/bsdf/bxdf.h"
 #include "lamina/bsdf/material_builder.h"
+#include "lamina/bsdf/polarised_fresnel.h"
 #include "lamina/core/fresnel_equations.h"
+#include "lamina/core/incoherent_slab.h"
 
 namespace lamina {
 
@@ -58,6 +67,24 @@ class ThinDielectricBxdf final : public Bxdf<S> {
         if (!(Float(1) - p > Float(0))) return std::nullopt;
         return BsdfSample<S>{-wo, t / (Float(1) - p), Float(1) - p, kLobeSpecularTransmission,
                              Float(1)};
+    }
+
+    /// The slab's reflection or transmission Mueller matrix over the lobe's probability. Light
+    /// arrives along -wi and leaves along wo, whichever way the path was built (both lobes are
+    /// symmetric under the exchange).
+    MuellerMatrix<S> sampleMueller(const V3& wo, const BsdfSample<S>& s,
+                                   TransportMode) const override {
+        const bool transmission = s.isTransmission();
+        MuellerMatrix<S> m;
+        for (int i = 0; i < S::kSize; ++i) {
+            const SlabMueller<Float> slab = incoherentSlabMueller(std::abs(wo.z), eta_[i]);
+            const MuellerMatrix<Float>& channel =
+                transmission ? slab.transmission : slab.reflection;
+            for (int r = 0; r < 4; ++r)
+                for (int c = 0; c < 4; ++c)
+                    m(r, c)[i] = channel(r, c);
+        }
+        return inCanonicalFrames(m, -s.wi, wo, V3(0, 0, 1)) / s.pdf;
     }
 
     std::uint32_t flags() const override {

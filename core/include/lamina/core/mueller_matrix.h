@@ -173,13 +173,12 @@ MuellerMatrix<T> linearPolariser(T theta) {
     return r * T(0.5);
 }
 
-/// The Mueller matrix of a field map E_s -> a E_s, E_p -> b E_p in frames whose x axes are s
-/// (the input's and the output's): with A = |a|^2, B = |b|^2 and a conj(b) = u + i v,
+/// The Mueller matrix of fields that add as intensities, each of the form E_s -> a E_s,
+/// E_p -> b E_p in frames whose x axes are s (the input's and the output's): with the sums
+/// A = sum |a|^2, B = sum |b|^2 and sum a conj(b) = u + i v,
 ///   [[ (A+B)/2, (A-B)/2, 0, 0], [(A-B)/2, (A+B)/2, 0, 0], [0, 0, u, v], [0, 0, -v, u]].
 template <std::floating_point T>
-MuellerMatrix<T> amplitudeMueller(std::complex<T> a, std::complex<T> b) {
-    const T aa = std::norm(a), bb = std::norm(b);
-    const std::complex<T> w = a * std::conj(b);
+MuellerMatrix<T> incoherentSumMueller(T aa, T bb, std::complex<T> w) {
     MuellerMatrix<T> r;
     r(0, 0) = r(1, 1) = T(0.5) * (aa + bb);
     r(0, 1) = r(1, 0) = T(0.5) * (aa - bb);
@@ -187,6 +186,13 @@ MuellerMatrix<T> amplitudeMueller(std::complex<T> a, std::complex<T> b) {
     r(2, 3) = w.imag();
     r(3, 2) = -w.imag();
     return r;
+}
+
+/// The Mueller matrix of one field map E_s -> a E_s, E_p -> b E_p (incoherentSumMueller of
+/// one term).
+template <std::floating_point T>
+MuellerMatrix<T> amplitudeMueller(std::complex<T> a, std::complex<T> b) {
+    return incoherentSumMueller(std::norm(a), std::norm(b), a * std::conj(b));
 }
 
 /// An ideal linear retarder with its fast axis at `theta` from x: the slow (perpendicular)

@@ -47,13 +47,26 @@ class PolarisedBxdf final : public Bxdf<PolarisedSpectrum> {
                 s->pdf, s->flags,
                 s->eta, s->component};
         // The physical event of a delta lobe is its sample seen from the other end, drawn by
-        // the same material of every mix (BsdfSample::component).
-        const BsdfSample<SampledSpectrum<float>> reversed{
-            wo,          s->weight, s->pdf, s->flags, s->isTransmission() ? 1.0f / s->eta : s->eta,
-            s->component};
-        const PolarisedSpectrum::Base m =
-            s->isSpecular() ? bsdf_->sampleMueller(s->wi, reversed, TransportMode::Radiance)
-                            : bsdf_->evalMueller(s->wi, wo, TransportMode::Radiance);
+        // the same material of every mix (BsdfSample::component), with the adjoint's weight:
+        // its matrix is already the light path's (no rescaling, which would undo the
+        // polarised [0][0] of a thin_dielectric's slab, docs/polarisation.md).
+        if (s->isSpecular()) {
+            const BsdfSample<SampledSpectrum<float>> reversed{
+                wo,
+                s->weight,
+                s->pdf,
+                s->flags,
+                s->isTransmission() ? 1.0f / s->eta : s->eta,
+                s->component};
+            return BsdfSample<PolarisedSpectrum>{
+                s->wi,
+                inWorldFrames(bsdf_->sampleMueller(s->wi, reversed, TransportMode::Radiance), s->wi, wo),
+                s->pdf,
+                s->flags,
+                s->eta,
+                s->component};
+        }
+        const PolarisedSpectrum::Base m = bsdf_->evalMueller(s->wi, wo, TransportMode::Radiance);
         return BsdfSample<PolarisedSpectrum>{
             s->wi,  withUnpolarised(inWorldFrames(m, s->wi, wo), s->weight),
             s->pdf, s->flags,
