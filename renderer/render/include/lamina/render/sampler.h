@@ -178,7 +178,7 @@ class PixelSampler {
         if (const int d = nextGlobalPair(); d >= 0)
             return toFloat(scramble(sobolSample(globalIndex_, d), s.first));
         const std::uint32_t y = laineKarrasPermutation(reversedIndex_, s.shuffle);
-        return toFloat(reverseBits(laineKarrasPermutation(reverseBits(y), s.first)));
+        return toFloat(scramble(y, s.first));
     }
 
     /// Moves past the next dimension (what get1D or get2D would return) without computing
@@ -233,7 +233,7 @@ class PixelSampler {
                     toFloat(scramble(std::uint32_t(both >> 32), s.second))};
         }
         const std::uint32_t y = laineKarrasPermutation(reversedIndex_, s.shuffle);
-        const std::uint32_t a = reverseBits(laineKarrasPermutation(reverseBits(y), s.first));
+        const std::uint32_t a = scramble(y, s.first);
         const std::uint32_t b =
             reverseBits(laineKarrasPermutation(kReversedSobolDimension1(y), s.second));
         return {toFloat(a), toFloat(b)};
