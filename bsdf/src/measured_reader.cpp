@@ -39,7 +39,7 @@ extern const MaterialKind kMeasuredMaterial{.name = "measured",
     "type": {"const": "measured"},
     "filename": {"type": "string", "description": "an RGL .bsdf file (spectra or rgb), relative to the scene file"}
   },
-  "examples": [{"type": "measured", "filename": "cc_nothern_aurora_spec.bsdf"}]
+  "examples": [{"type": "measured", "filename": "../tests/fuzz/corpus/rgl_bsdf_file/isotropic_rgb.bsdf"}]
 })json",
                                             .spectralData = measuredData};
 

@@ -231,17 +231,21 @@ std::optional<MeasuredBsdfTable::Lookup> MeasuredBsdfTable::lookup(const Vec3d& 
     const double jacobian =
         std::max(2 * kPi<double> * kPi<double> * uM.x * sinThetaM, 1e-6) * 4 * glm::dot(wo, wm);
     l.pdf = jacobian > 0 ? vndfPdf * luminance_.eval(ui, l.params) / jacobian : 0.0;
+    // Finite tables can still overflow (a huge D over a tiny sigma): no Inf leaves here.
+    if (!std::isfinite(l.scale) || !std::isfinite(l.pdf)) return std::nullopt;
     return l;
 }
 
 double MeasuredBsdfTable::value(const Lookup& l, double channel) const {
     const double p[3] = {l.params[0], l.params[1], channel};
-    return std::max(0.0, values_.eval(l.ui, p)) * l.scale;
+    const double v = std::max(0.0, values_.eval(l.ui, p)) * l.scale;
+    return std::isfinite(v) ? v : 0.0;
 }
 
 double MeasuredBsdfTable::rgbValue(const Lookup& l, int c) const {
     const double p[3] = {l.params[0], l.params[1], double(c)};
-    return std::max(0.0, (spectral() ? rgb_ : values_).eval(l.ui, p)) * l.scale;
+    const double v = std::max(0.0, (spectral() ? rgb_ : values_).eval(l.ui, p)) * l.scale;
+    return std::isfinite(v) ? v : 0.0;
 }
 
 std::optional<Vec3d> MeasuredBsdfTable::sample(const Vec3d& woIn, const Vec2d& u) const {

@@ -23,6 +23,24 @@ static_assert(std::endian::native == std::endian::little,
 constexpr char kMagic[12] = "tensor_file";  // with its terminating zero: 12 bytes
 constexpr std::uint8_t kUInt8 = 1, kFloat32 = 10, kFloat64 = 11;
 
+// A field's name as a message shows it: bytes outside printable ASCII as \xNN, so that a
+// hostile name cannot break the one-line error.
+std::string printable(const std::string& name) {
+    static constexpr char kHex[] = "0123456789abcdef";
+    std::string out;
+    for (const char c : name) {
+        const auto b = static_cast<unsigned char>(c);
+        if (b >= 0x20 && b < 0x7f) {
+            out += c;
+        } else {
+            out += "\\x";
+            out += kHex[b >> 4];
+            out += kHex[b & 15];
+        }
+    }
+    return out;
+}
+
 struct Field {
     std::uint8_t type = 0;
     std::uint64_t offset = 0;
@@ -46,8 +64,9 @@ class TensorHeader {
         const auto fields = read<std::uint32_t>("the field count");
         for (std::uint32_t i = 0; i < fields; ++i) {
             const auto length = read<std::uint16_t>("a field's name");
-            std::string field(length, '\0');
-            take(field.data(), length, "a field's name");
+            std::string raw(length, '\0');
+            take(raw.data(), length, "a field's name");
+            const std::string field = printable(raw);
             const auto rank = read<std::uint16_t>("field \"" + field + "\"");
             Field f;
             f.type = read<std::uint8_t>("field \"" + field + "\"");
@@ -68,7 +87,7 @@ class TensorHeader {
             }
             if (f.offset > bytes_.size() || f.count * typeBytes > available)
                 fail("field \"" + field + "\": its data lie beyond the end of the file");
-            if (!fields_.emplace(field, std::move(f)).second)
+            if (!fields_.emplace(raw, std::move(f)).second)
                 fail("field \"" + field + "\" appears twice");
         }
     }
@@ -90,7 +109,8 @@ class TensorHeader {
         MeasuredTensor t;
         t.shape.assign(f.shape.begin(), f.shape.end());
         t.values.resize(f.count);
-        std::memcpy(t.values.data(), bytes_.data() + f.offset, f.count * sizeof(float));
+        if (f.count)
+            std::memcpy(t.values.data(), bytes_.data() + f.offset, f.count * sizeof(float));
         return t;
     }
 

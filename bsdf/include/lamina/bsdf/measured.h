@@ -48,7 +48,7 @@ class MeasuredBxdf final : public Bxdf<S> {
 
     Float pdf(const V3& wo, const V3& wi) const override {
         const auto l = table_->lookup(Vec3d(wo), Vec3d(wi));
-        return l ? Float(l->pdf) : Float(0);
+        return l ? finite(l->pdf) : Float(0);
     }
 
     std::optional<BsdfSample<S>> sample(const V3& wo, Float, const V2& u,
@@ -59,9 +59,11 @@ class MeasuredBxdf final : public Bxdf<S> {
         const auto l = table_->lookup(Vec3d(wo), Vec3d(wi));
         if (!l || !(l->pdf > 0)) return std::nullopt;
         const S value = mode == TransportMode::Importance ? adjoint(wo, wi) : values(*l);
-        if (value.isZero()) return std::nullopt;
         const Float pdf = Float(l->pdf);
-        return BsdfSample<S>{wi, value / pdf, pdf, kLobeGlossyReflection, Float(1)};
+        const S weight = value / pdf;
+        // A hostile table's extremes may overflow the variant's float: absorbed, never Inf.
+        if (value.isZero() || !(pdf > Float(0)) || !weight.isFinite()) return std::nullopt;
+        return BsdfSample<S>{wi, weight, pdf, kLobeGlossyReflection, Float(1)};
     }
 
     std::uint32_t flags() const override { return kLobeGlossyReflection; }
@@ -75,7 +77,14 @@ class MeasuredBxdf final : public Bxdf<S> {
     S adjoint(const V3& wo, const V3& wi) const {
         const auto l = table_->lookup(Vec3d(wi), Vec3d(wo));
         if (!l) return S(Float(0));
-        return values(*l) * Float(std::abs(double(wi.z)) / std::abs(double(wo.z)));
+        const S v = values(*l) * Float(std::abs(double(wi.z)) / std::abs(double(wo.z)));
+        return v.isFinite() ? v : S(Float(0));
+    }
+
+    // A value in the variant's float, 0 where it does not fit.
+    static Float finite(double v) {
+        const Float f = Float(v);
+        return std::isfinite(f) ? f : Float(0);
     }
 
     S values(const MeasuredBsdfTable::Lookup& l) const {
@@ -83,17 +92,17 @@ class MeasuredBxdf final : public Bxdf<S> {
         if constexpr (SpectrumContext<S>::kSpectral) {
             if (table_->spectral()) {
                 for (int i = 0; i < S::kSize; ++i)
-                    out[i] = Float(table_->value(l, wavelengths_[std::size_t(i)]));
+                    out[i] = finite(table_->value(l, wavelengths_[std::size_t(i)]));
             } else {
                 const RgbSpectrum s(Rgb<double>(table_->rgbValue(l, 0), table_->rgbValue(l, 1),
                                                 table_->rgbValue(l, 2)),
                                     RgbSpectrumKind::Unbounded);
                 for (int i = 0; i < S::kSize; ++i)
-                    out[i] = Float(s(wavelengths_[std::size_t(i)]));
+                    out[i] = finite(s(wavelengths_[std::size_t(i)]));
             }
         } else {
             for (int c = 0; c < 3; ++c)
-                out[c] = Float(table_->rgbValue(l, c));
+                out[c] = finite(table_->rgbValue(l, c));
         }
         return out;
     }
