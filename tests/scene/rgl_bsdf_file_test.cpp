@@ -92,7 +92,9 @@ TEST_F(RglBsdfFile, ReadsBackTheTableItsFieldsMake) {
 TEST_F(RglBsdfFile, BrokenContainersAreRefusedWithOneLine) {
     const std::string good = testing::tensorFileBytes(conductorFields());
     EXPECT_EQ(refusalOfBytes(""), name() + ": the file ends inside the header");
-    EXPECT_EQ(refusalOfBytes(good.substr(0, 15)), name() + ": the file ends inside the version");
+    EXPECT_EQ(refusalOfBytes(good.substr(0, 13)), name() + ": the file ends inside the version");
+    EXPECT_EQ(refusalOfBytes(good.substr(0, 15)),
+              name() + ": the file ends inside the field count");
     EXPECT_EQ(refusalOfBytes("tensor_filX" + good.substr(11)),
               name() +
                   ": expected a tensor file (an RGL .bsdf file): it starts with "
@@ -201,9 +203,12 @@ TEST_F(RglBsdfFile, PbrtAndMitsubaMeasuredMaterialsBecomeIt) {
     EXPECT_EQ(p.scene["materials"]["pbrt_material_1"],
               Json::parse(R"({"type": "measured", "filename": "m.bsdf"})"));
     EXPECT_NO_THROW(loadScene(pbrt, false));
-    EXPECT_EQ(
-        errorOf([&] { importScene(write("t.pbrt", "WorldBegin\nMaterial \"measured\"\n"), dir_); }),
-        (dir_ / "t.pbrt").string() + ":2: measured: no \"string filename\" parameter");
+    EXPECT_EQ(errorOf([&] {
+                  importScene(
+                      write("t.pbrt", "WorldBegin\nMaterial \"measured\"\nShape \"sphere\"\n"),
+                      dir_);
+              }),
+              (dir_ / "t.pbrt").string() + ":2: measured: no \"string filename\" parameter");
 
     const auto xml = write("scene.xml",
                            "<scene version=\"3.0.0\">\n<bsdf type=\"measured\" id=\"m\">"
