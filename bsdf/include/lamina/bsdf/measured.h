@@ -59,7 +59,7 @@ class MeasuredBxdf final : public Bxdf<S> {
         const auto l = table_->lookup(Vec3d(wo), Vec3d(wi));
         if (!l || !(l->pdf > 0)) return std::nullopt;
         const S value = mode == TransportMode::Importance ? adjoint(wo, wi) : values(*l);
-        const Float pdf = Float(l->pdf);
+        const Float pdf = finite(l->pdf);
         const S weight = value / pdf;
         // A hostile table's extremes may overflow the variant's float: absorbed, never Inf.
         if (value.isZero() || !(pdf > Float(0)) || !weight.isFinite()) return std::nullopt;
