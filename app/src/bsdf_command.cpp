@@ -19,6 +19,7 @@
 #include "lamina/core/json_reader.h"
 #include "lamina/core/output_files.h"
 #include "lamina/experiments/bsdf_plot.h"
+#include "lamina/scene/rgl_bsdf_file.h"
 #include "option_parsing.h"
 
 namespace lamina::app {
@@ -223,6 +224,7 @@ class BsdfTool {
 template <typename Action>
 void withTool(const BsdfArgs& a, Action action) {
     const MaterialDesc desc = parseMaterialArgument(a.material);
+    render::loadMeasuredTables(desc);
     const auto mode = parseName(render::kRenderModeNames, a.mode, "mode", "--mode");
     if (mode == render::RenderModeKind::Polarised)
         throw CLI::ValidationError("--mode",

@@ -18,6 +18,7 @@
 #include "lamina/core/json_reader.h"
 #include "lamina/core/mueller_matrix.h"
 #include "lamina/render/renderer.h"
+#include "lamina/scene/rgl_bsdf_file.h"
 
 namespace lamina::python {
 
@@ -70,6 +71,7 @@ class Material {
         } else {
             throw py::type_error("Material: expected a dict or a string (JSON or \"@file.json\")");
         }
+        render::loadMeasuredTables(desc_);
         if (mode_ == render::RenderModeKind::Rgb)
             rgb_ = buildBxdf(desc_, SpectrumContext<RgbD>{});
         else

@@ -116,14 +116,14 @@ TEST(NameTables, TheUnknownTypeMessageListsEveryMaterialType) {
         list += (list.empty() ? "" : ", ") + name;
         // these need more keys
         if (name != "conductor" && name != "layered" && name != "mix" && name != "coated" &&
-            name != "polariser" && name != "retarder") {
+            name != "polariser" && name != "retarder" && name != "measured") {
             EXPECT_EQ(parse(R"({"type":")" + name + "\"}").type, name);
         }
     }
     EXPECT_EQ(list,
               "standard, lambert, oren_nayar, burley, frostbite, conductor, "
               "diffuse_transmission, dielectric, thin_dielectric, phong, layered, mix, coated, "
-              "polariser, retarder");
+              "polariser, retarder, measured");
     try {
         parse(R"({"type":"plastic"})");
         FAIL() << "accepted an unknown material type";

@@ -799,7 +799,7 @@ TEST_F(MitsubaBsdf, UnsupportedPluginAndTextureAreRefused) {
                   ": <bsdf type=\"hair\">: the BSDF plugin \"hair\" is not supported "
                   "(diffuse, conductor, roughconductor, dielectric, roughdielectric, "
                   "thindielectric, plastic, roughplastic, twosided, blendbsdf, mask, bumpmap, "
-                  "normalmap)");
+                  "normalmap, measured)");
     EXPECT_EQ(
         error("<bsdf type=\"diffuse\" id=\"m\">\n<texture type=\"bitmap\" name=\"reflectance\"/>"
               "</bsdf>"),

@@ -601,7 +601,7 @@ TEST_F(PbrtTranslation, MaterialErrors) {
               at(1) +
                   ": material \"hair\" is not supported (lamina reads diffuse, conductor, "
                   "dielectric, thindielectric, coateddiffuse, coatedconductor, "
-                  "diffusetransmission, mix and interface)");
+                  "diffusetransmission, measured, mix and interface)");
     EXPECT_EQ(importError("Material \"conductor\" \"spectrum eta\" \"metal-CuZn-eta\" "
                           "\"spectrum k\" \"metal-CuZn-k\"\nShape \"sphere\"\n"),
               at(1) +

@@ -200,14 +200,18 @@ def test_lobes_and_info():
     assert info["type"] == "dielectric" and info["delta"]
 
 
-def test_material_kinds_are_the_readers_types_with_their_schema():
+def test_material_kinds_are_the_readers_types_with_their_schema(monkeypatch):
     """lamina.material_kinds() is the registrations: every type builds a Material from the
     examples of its schema branch, and the schema file holds exactly these branches."""
     kinds = lamina.material_kinds()
     names = [k["name"] for k in kinds]
     assert names[0] == "standard" and "coated" in names and len(set(names)) == len(names)
-    with open(pathlib.Path(__file__).resolve().parents[2] / "docs" / "scene.schema.json") as f:
+    docs = pathlib.Path(__file__).resolve().parents[2] / "docs"
+    with open(docs / "scene.schema.json") as f:
         schema = json.load(f)
+    # The examples name their files (a measured material's RGL file) relative to docs/, where
+    # the scene schema test reads them too.
+    monkeypatch.chdir(docs)
     assert schema["$defs"]["material"]["oneOf"] == [k["schema"] for k in kinds]
     for kind in kinds:
         assert kind["schema"]["properties"]["type"] == {"const": kind["name"]}

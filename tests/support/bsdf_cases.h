@@ -18,6 +18,8 @@
 #include "lamina/bsdf/diffuse_transmission.h"
 #include "lamina/bsdf/layered.h"
 #include "lamina/bsdf/material_builder.h"
+#include "lamina/bsdf/measured.h"
+#include "rgl_file_writer.h"
 
 namespace lamina::testing {
 
@@ -57,6 +59,8 @@ struct BsdfCase {
     LazyBxdf bxdf;
     bool transmissive = false;
     double eta = 1.0;  ///< relative index of the transmissive boundary (inside / outside)
+    /// Whether f(wo, wi) = f(wi, wo) holds (measured data need not: measured.h).
+    bool reciprocal = true;
 };
 
 inline void PrintTo(const BsdfCase& c, std::ostream* os) {
@@ -277,6 +281,22 @@ inline std::vector<BsdfCase> bsdfCases() {
                       R"("eta":[0.18,0.42,1.37],"k":[3.42,2.35,1.77],"fresnel":"exact",)"
                       R"("alpha":0},"b":{"type":"oren_nayar","reflectance":0.6,)"
                       R"("roughness":0.5}})")});
+    // Measured: RGL tables (measured_table.h) of a rough gold conductor, written as the RGL
+    // database writes them (rgl_file_writer.h), isotropic with RGB values and anisotropic
+    // with spectra (in RGB mode, reduced to RGB). Not reciprocal: tabulated around wo.
+    auto measured = [](double ax, double ay, RglTabulation t) {
+        return LazyBxdf([ax, ay, t] {
+            const MicrofacetDistribution<double> d(NdfKind::Ggx, ax, ay);
+            const ConductorBxdf<Spec> conductor(MicrofacetReflectionLobe<Spec>(d, goldFresnel()));
+            auto table = std::make_shared<const MeasuredBsdfTable>(
+                measuredFields(rglFields(conductor, d, t)));
+            return std::shared_ptr<const Bxdf<Spec>>(
+                std::make_shared<MeasuredBxdf<Spec>>(table, std::array<double, 3>{}));
+        });
+    };
+    cases.push_back({"measured_ggx_rgb_a0p3", measured(0.3, 0.3, {}), false, 1.0, false});
+    cases.push_back({"measured_ggx_anisotropic_spectra",
+                     measured(0.15, 0.45, {.phiCount = 9, .spectral = true}), false, 1.0, false});
     return cases;
 }
 

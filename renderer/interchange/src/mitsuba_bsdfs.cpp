@@ -312,13 +312,21 @@ TranslatedBsdf translateBsdf(const Element& bsdf, const MitsubaDocument& documen
         p.fail(
             "a null BSDF is only supported as a shape's own BSDF (an index-matched "
             "boundary), not inside another BSDF");
+    } else if (type == "measured") {
+        // mitsuba3 src/bsdfs/measured.cpp: an RGL .bsdf file (lamina's `measured`, docs/bsdf.md).
+        // The path is written absolute: this translation has no document directory to write it
+        // relative to.
+        const auto file = p.file("filename");
+        if (!file) p.fail("measured needs \"filename\"");
+        out.material = {{"type", "measured"}, {"filename", file->string()}};
+        warnOneSided(p, insideTwoSided, "measured");
     } else if (type == "bumpmap" || type == "normalmap") {
         out = shadingNormalMap(p, document, diagnostics, insideTwoSided, depth);
     } else {
         p.fail("the BSDF plugin \"" + type +
                "\" is not supported (diffuse, conductor, roughconductor, dielectric, "
                "roughdielectric, thindielectric, plastic, roughplastic, twosided, blendbsdf, "
-               "mask, bumpmap, normalmap)");
+               "mask, bumpmap, normalmap, measured)");
     }
     p.finish();
     return out;

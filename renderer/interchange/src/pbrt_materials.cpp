@@ -196,6 +196,12 @@ Json translateMaterial(TranslationContext& ctx, const MaterialDef& def, int dept
                          "mix: a material with a bump or normal map cannot be mixed (lamina's "
                          "maps belong to the material a shape uses)");
         m = {{"type", "mix"}, {"a", a}, {"b", b}, {"weight", std::clamp(amount, 0.0, 1.0)}};
+    } else if (e.type == "measured") {
+        // pbrt-v4's MeasuredMaterial: an RGL .bsdf file (lamina's `measured`, docs/bsdf.md).
+        const Param* file = params.find("filename");
+        if (!file) ctx.fail(e.location, "measured: no \"string filename\" parameter");
+        params.expectType(*file, {"string"});
+        m = {{"type", "measured"}, {"filename", ctx.filePath(params, *file)}};
     } else if (e.type == "interface" || e.type == "" || e.type == "none") {
         // pbrt-v4 reads Material "" and "none" as "interface" (Material::Create).
         params.refuseUnused();
@@ -204,7 +210,7 @@ Json translateMaterial(TranslationContext& ctx, const MaterialDef& def, int dept
         ctx.fail(e.location, "material \"" + e.type +
                                  "\" is not supported (lamina reads diffuse, conductor, "
                                  "dielectric, thindielectric, coateddiffuse, coatedconductor, "
-                                 "diffusetransmission, mix and interface)");
+                                 "diffusetransmission, measured, mix and interface)");
     }
     if (e.type != "mix") shadingNormalMaps(ctx, e, m);
     params.refuseUnused();

@@ -1,5 +1,6 @@
 #include <algorithm>
 
+#include "lamina/scene/rgl_bsdf_file.h"
 #include "lamina/scene/scene_readers.h"
 
 namespace lamina::render {
@@ -122,6 +123,8 @@ int SceneMaterials::add(const JsonReader& material) {
                         "a normal map's image must be read with \"color_space\": "
                         "\"linear\" (its texels are vectors, not sRGB colours)");
     }
+    // The bsdf library reads no files: a measured material's table is read here.
+    loadMeasuredTables(desc);
     scene_.materialTextures.push_back(textures);
     scene_.materials.push_back(std::move(desc));
     return int(scene_.materials.size() - 1);
