@@ -149,10 +149,11 @@ void BdptIntegrator<S>::generateLightSubpath(PixelSampler& sampler, typename Mod
             // that reaches infinity is exp(-sigma_t infinity).
             medium = mediumAt(c_.geometry, c_.scene.camera.medium, Vec3f(c_.scene.camera.position),
                               particle->origin, stats);
-            // A point of an emitting medium's box outside the medium: no light subpath (one
-            // try, so that the density stays the box's).
+            // A point of an emitting medium's box outside the medium carries nothing (one try,
+            // so that the density stays the box's). Its vertex stays, dark: next-event
+            // estimation (s = 1) runs for every light subpath that has a vertex.
             if (v.volume && medium != v.medium) {
-                out.clear();
+                out.back().beta = S(0.0f);
                 return;
             }
             if (v.infinite && medium >= 0)

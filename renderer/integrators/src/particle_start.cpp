@@ -58,8 +58,10 @@ std::optional<ParticleStart<S>> startParticle(const LightSet& lights, const Geom
         const auto v = emitters.samplePoint(choice.medium, Vec3f(uPosition.x, uPosition.y, uVolume));
         if (!v || !(v->pdf > 0.0f)) return std::nullopt;
         const MediumCoefficients<S> m = mode.medium(choice.medium, path);
+        // A point where the medium emits nothing (a grid's cell of partly zero density) is
+        // still a particle, a dark one: BDPT's next-event estimation runs for every light
+        // subpath that starts.
         const S source = coefficientsAtPoint(m, v->p).sigmaA * m.emission;
-        if (!(source.maxValue() > 0.0f)) return std::nullopt;
         EmissionSample e;
         e.point = v->p;
         e.normal = Vec3f(0.0f);
