@@ -37,10 +37,11 @@ struct MediaCase {
     const char* name;
     const char* scene;  ///< relative to the source directory
     RenderModeKind mode;
+    int samples = 1;  ///< times the samples per pixel of every integrator
 };
 
 BatchImages render(const SceneDesc& scene, IntegratorKind integrator, RenderModeKind mode,
-                   std::uint64_t seed, const TransportAblations& ablations = {}) {
+                   std::uint64_t seed, const TransportAblations& ablations = {}, int samples = 1) {
     RenderOptions o;
     o.ablations = ablations;
     o.integrator = integrator;
@@ -50,7 +51,7 @@ BatchImages render(const SceneDesc& scene, IntegratorKind integrator, RenderMode
     const int spp = integrator == IntegratorKind::Light  ? 1024
                     : integrator == IntegratorKind::Bdpt ? 128
                                                          : 256;
-    return renderBatches(scene, o, spp, 32);
+    return renderBatches(scene, o, spp * samples, 32);
 }
 
 constexpr double kMaxBlockRejection = 0.03;
@@ -86,9 +87,9 @@ TEST_P(MediaIntegratorsAgree, PathLightAndBdptConvergeToTheSameImage) {
     const MediaCase& c = GetParam();
     const SceneDesc scene = loadScene(testing::sourceFile(c.scene).string());
     ASSERT_TRUE(scene.hasMedia());
-    const BatchImages path = render(scene, IntegratorKind::Path, c.mode, 11);
-    const BatchImages light = render(scene, IntegratorKind::Light, c.mode, 22);
-    const BatchImages bdpt = render(scene, IntegratorKind::Bdpt, c.mode, 33);
+    const BatchImages path = render(scene, IntegratorKind::Path, c.mode, 11, {}, c.samples);
+    const BatchImages light = render(scene, IntegratorKind::Light, c.mode, 22, {}, c.samples);
+    const BatchImages bdpt = render(scene, IntegratorKind::Bdpt, c.mode, 33, {}, c.samples);
     ASSERT_GT(path.region(0, 0, 32, 32).mean, 0.0) << "the scene renders black";
     expectAgreement(path, light, "path vs light", 150);
     expectAgreement(path, bdpt, "path vs bdpt", 150);
@@ -114,8 +115,11 @@ INSTANTIATE_TEST_SUITE_P(
                   RenderModeKind::Spectral},
         MediaCase{"GlowingCloudInFog", "scenes/media/glowing-cloud-in-fog.json",
                   RenderModeKind::Rgb},
+        // Twice the samples: spectral BDPT's estimate of the glowing grid is heavy-tailed
+        // enough at the usual counts that 3 to 4% of the blocks were rejected while the image
+        // means agreed (bdpt / path 0.999 and 1.000 per channel at 2048 / 4096 samples).
         MediaCase{"GlowingCloudInFogSpectral", "scenes/media/glowing-cloud-in-fog.json",
-                  RenderModeKind::Spectral}),
+                  RenderModeKind::Spectral, 2}),
     [](const ::testing::TestParamInfo<MediaCase>& p) { return std::string(p.param.name); });
 
 // Spectral MIS (medium_transport.h) matters for bias, not only noise, when a channel has no

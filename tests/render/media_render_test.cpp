@@ -244,8 +244,8 @@ TEST_P(MediaRender, EmittingMediumClosedFormByEveryIntegrator) {
             const ImageMean& m = r.channel[c];
             EXPECT_LT(std::abs(m.mean - expected),
                       kZ * m.standardError + 1e-6 + (GetParam() == RenderModeKind::Rgb ? 0 : 2e-3))
-                << kIntegratorNames.name(integrator) << " channel " << c << ": " << m.mean
-                << " +- " << m.standardError << ", expected " << expected;
+                << kIntegratorNames.name(integrator) << " channel " << c << ": " << m.mean << " +- "
+                << m.standardError << ", expected " << expected;
         }
     }
 }

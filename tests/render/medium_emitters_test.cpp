@@ -5,8 +5,8 @@
 // integrates to 1 and equals the one a sample returns; the lights and the media share the
 // particles, and a scene without emitting media keeps the light set's probabilities bit for bit.
 // Broken once on purpose each: choosing a grid's cells uniformly instead of by their maxima
-// fails the grid test (p = 0 and the density mismatch); a homogeneous box without the margin
-// taken into the density fails the integral check.
+// fails the grid test; a homogeneous box without the margin taken into the density fails the
+// homogeneous test.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -38,14 +38,24 @@ struct Built {
     MediumEmitters emitters;
 };
 
-/// A puff of 3 x 2 x 2 densities (one cell 0), stretched, rotated and moved by its transform,
+/// A puff of 32 x 8 x 8 densities (a blob, 0 in its first quarter along x), so that its 16 x 8
+/// x 8 majorant cells have different maxima, stretched, rotated and moved by its transform,
 /// beside a lamp.
-const char* kGridScene = R"({
+std::string gridScene() {
+    std::string values;
+    for (int z = 0; z < 8; ++z)
+        for (int y = 0; y < 8; ++y)
+            for (int x = 0; x < 32; ++x) {
+                const double dx = (x - 20) / 6.0, dy = (y - 3) / 2.5, dz = (z - 4) / 3.0;
+                const double v = x < 8 ? 0.0 : 3 * std::exp(-(dx * dx + dy * dy + dz * dz));
+                values += (values.empty() ? "" : ", ") + std::to_string(v);
+            }
+    return R"({
   "camera": {"position": [0, 0, -5], "look_at": [0, 0, 0]},
   "media": {"puff": {"type": "grid", "sigma_a": [0.5, 1, 2], "Le": 1, "edges": "zero",
                      "bounds": {"min": [-1, -0.5, -0.5], "max": [1, 0.5, 0.5]},
-                     "density": {"size": [3, 2, 2],
-                                 "values": [0, 1, 3, 0.5, 2, 0.2, 4, 0, 1, 1.5, 0.1, 2.5]},
+                     "density": {"size": [32, 8, 8], "values": [)" +
+           values + R"(]},
                      "transform": [{"scale": [1.5, 0.8, 1.2]},
                                    {"rotate": {"axis": [1, 2, 0.5], "angle": 35}},
                                    {"translate": [0.3, -0.2, 0.4]}]}},
@@ -53,16 +63,23 @@ const char* kGridScene = R"({
   "shapes": [{"type": "sphere", "radius": 3, "material": "interface", "interior": "puff"},
              {"type": "rectangle", "material": "m", "emission": {"radiance": 2},
               "transform": [{"translate": [0, 0, 4]}]}]})";
+}
 
 TEST(MediumEmitters, GridPointsFollowTheMajorantCellsChiSquare) {
-    const Built b(kGridScene);
+    const Built b(gridScene());
     ASSERT_FALSE(b.emitters.empty());
     const GridDensity& grid = *b.scene.media[0].grid;
     const MajorantGrid& maj = grid.majorants;
     const int nx = maj.nx, ny = maj.ny, nz = maj.nz;
-    double total = 0;
-    for (float m : maj.maxima)
+    ASSERT_EQ(nx * ny * nz, 16 * 8 * 8);
+    double total = 0, largest = 0;
+    for (float m : maj.maxima) {
         total += m;
+        largest = std::max(largest, double(m));
+    }
+    // The cells' maxima differ (else any choice of cells would pass): some are 0.
+    ASSERT_EQ(maj.maxima.front(), 0.0f);
+    ASSERT_GT(largest, 2.0);
     // The medium's space is the scene's scaled by 1.5 x 0.8 x 1.2 (and rotated, moved).
     const double cellVolume = 2.0 * 1.0 * 1.0 / (nx * ny * nz) * 1.5 * 0.8 * 1.2;
     // Each majorant cell in 2 x 2 x 2 bins, in the medium's space.
@@ -145,8 +162,8 @@ TEST(MediumEmitters, HomogeneousPointsAreUniformInTheBoundingShapesBoxChiSquare)
     Pcg32 rng(37);
     std::size_t inside = 0;
     for (std::size_t i = 0; i < kSamples; ++i) {
-        const auto v = b.emitters.samplePoint(
-            0, Vec3f(rng.nextFloat(), rng.nextFloat(), rng.nextFloat()));
+        const auto v =
+            b.emitters.samplePoint(0, Vec3f(rng.nextFloat(), rng.nextFloat(), rng.nextFloat()));
         ASSERT_TRUE(v);
         EXPECT_NEAR(v->pdf * side * side * side, 1.0, 1e-4);
         EXPECT_EQ(b.emitters.pointDensity(0, v->p), v->pdf);

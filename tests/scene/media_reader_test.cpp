@@ -180,8 +180,8 @@ TEST(MediaReader, RenderersWithoutMediaRefuseThem) {
     EXPECT_NO_THROW(checkMedia(enclosed, RenderModeKind::Rgb, IntegratorKind::Bdpt));
     // Outside a sphere, around the camera: bounded by a shape, but reaching infinity, which
     // only the geometry tells: refused when the integrator is made, before anything renders.
-    const SceneDesc outside = sceneFromText(sceneWith(
-        kFog, R"("material": "interface", "exterior": "fog")", R"("medium": "fog")"));
+    const SceneDesc outside = sceneFromText(
+        sceneWith(kFog, R"("material": "interface", "exterior": "fog")", R"("medium": "fog")"));
     EXPECT_NO_THROW(checkMedia(outside, RenderModeKind::Rgb, IntegratorKind::Bdpt));
     for (const IntegratorKind integrator : {IntegratorKind::Light, IntegratorKind::Bdpt}) {
         RenderOptions o;

@@ -188,8 +188,8 @@ BdptConnection<S> BdptConnector<S>::connect(const std::vector<Vertex>& lightPath
 
 template <SpectrumType S>
 BdptConnection<S> BdptConnector<S>::connectVolumeLight(const std::vector<Vertex>& lightPath,
-                                                       const std::vector<Vertex>& cameraPath,
-                                                       int t, int hero, typename Mode::Path& path,
+                                                       const std::vector<Vertex>& cameraPath, int t,
+                                                       int hero, typename Mode::Path& path,
                                                        PathStatistics& stats) const {
     BdptConnection<S> result;
     const Vertex& lv = lightPath[0];

@@ -67,8 +67,7 @@ void refuseUnboundedEmission(const SceneDesc& scene, int medium) {
                      "enclose it with shapes or use --integrator path");
 }
 
-MediumEmitters::MediumEmitters(const SceneContext& context, bool media)
-    : lights_(&context.lights) {
+MediumEmitters::MediumEmitters(const SceneContext& context, bool media) : lights_(&context.lights) {
     if (!media) return;
     const SceneDesc& scene = context.scene;
     sourceOf_.assign(scene.media.size(), -1);
@@ -77,8 +76,8 @@ MediumEmitters::MediumEmitters(const SceneContext& context, bool media)
         const MediumDesc& m = scene.media[std::size_t(i)];
         if (!m.emits()) continue;
         double p = 0;
-        const bool added = m.kind == MediumKind::Grid ? addGrid(context, i, p)
-                                                      : addHomogeneous(context, i, p);
+        const bool added =
+            m.kind == MediumKind::Grid ? addGrid(context, i, p) : addHomogeneous(context, i, p);
         if (!added) continue;
         sourceOf_[std::size_t(i)] = int(sources_.size()) - 1;
         power.push_back(p);
@@ -121,15 +120,13 @@ bool MediumEmitters::addHomogeneous(const SceneContext& context, int index, doub
                 hi = glm::max(hi, Vec3d(geometry.boundsHi()));
                 named = true;
             }
-    if (!named) return false;  // bounded by nothing, not the camera's: it is nowhere
     // Reaching infinity: the medium at a point far outside the scene, found from the camera.
     PathStatistics stats;
     const Vec3f away = glm::normalize(Vec3f(0.5377f, 0.6229f, 0.5684f));
-    const Vec3f far =
-        geometry.boundsCenter() + away * (4.0f * geometry.boundsRadius() + 1.0f);
-    if (mediumAt(geometry, scene.camera.medium, Vec3f(scene.camera.position), far, stats) ==
-        index)
+    const Vec3f far = geometry.boundsCenter() + away * (4.0f * geometry.boundsRadius() + 1.0f);
+    if (mediumAt(geometry, scene.camera.medium, Vec3f(scene.camera.position), far, stats) == index)
         refuseUnboundedEmission(scene, index);
+    if (!named) return false;  // bounded by nothing, not around the camera: it is nowhere
     // A margin against the rounding of points on the bounding shapes.
     const Vec3d margin = 1e-4 * (hi - lo) + 1e-6;
     lo -= margin;
@@ -178,8 +175,7 @@ bool MediumEmitters::addGrid(const SceneContext& context, int index, double& pow
     s.toWorld = glm::inverse(linear);
     s.toWorldOffset = -(s.toWorld * offset);
     const Vec3f extent = grid.boxMax - grid.boxMin;
-    const double cellVolume =
-        double(extent.x) * extent.y * extent.z / (double(s.nx) * s.ny * s.nz);
+    const double cellVolume = double(extent.x) * extent.y * extent.z / (double(s.nx) * s.ny * s.nz);
     const double det = std::abs(double(glm::determinant(linear)));
     s.cellDensity = float(det / cellVolume);
     // The density's integral is at most the maxima's over the cells (of the scene's volume

@@ -55,7 +55,8 @@ std::optional<ParticleStart<S>> startParticle(const LightSet& lights, const Geom
         return fromLight(lights, geometry, mode, path, std::size_t(choice.light),
                          choice.probability, uPosition, uDirection);
     if constexpr (RenderMode<S>::kRendersMedia) {
-        const auto v = emitters.samplePoint(choice.medium, Vec3f(uPosition.x, uPosition.y, uVolume));
+        const auto v =
+            emitters.samplePoint(choice.medium, Vec3f(uPosition.x, uPosition.y, uVolume));
         if (!v || !(v->pdf > 0.0f)) return std::nullopt;
         const MediumCoefficients<S> m = mode.medium(choice.medium, path);
         // A point where the medium emits nothing (a grid's cell of partly zero density) is
@@ -69,8 +70,8 @@ std::optional<ParticleStart<S>> startParticle(const LightSet& lights, const Geom
         e.pdfPosition = v->pdf;
         e.pdfDirection = uniformSpherePdf<float>();
         const float pdf = choice.probability * e.pdfPosition * e.pdfDirection;
-        return ParticleStart<S>{0, choice.probability, e, false, source / pdf, v->p,
-                                choice.medium, source};
+        return ParticleStart<S>{0,    choice.probability, e,     false, source / pdf,
+                                v->p, choice.medium,      source};
     }
     return std::nullopt;
 }

@@ -8,8 +8,8 @@
 
 #include <vector>
 
-#include "lamina/integrators/integrator.h"
 #include "lamina/integrators/bdpt_vertex.h"
+#include "lamina/integrators/integrator.h"
 #include "lamina/integrators/medium_emitters.h"
 
 namespace lamina::render {
