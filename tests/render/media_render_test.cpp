@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "lamina/core/math.h"
 #include "media_render_helpers.h"
 
 namespace lamina::render {
@@ -209,6 +210,43 @@ TEST_P(MediaRender, EmittingMediumGivesLeTimesOneMinusTransmittance) {
                   hi + kZ * m.standardError + (GetParam() == RenderModeKind::Rgb ? 0 : 2e-3));
         EXPECT_GT(m.mean,
                   lo - kZ * m.standardError - (GetParam() == RenderModeKind::Rgb ? 0 : 2e-3));
+    }
+}
+
+// The same emitting, absorbing sphere rendered whole by every integrator: light tracing starts
+// particles in the gas's volume and connects their start points to the lens; BDPT counts the
+// emission at its camera subpaths' medium vertices and joins light subpaths started in the
+// volume, weighted by MIS (docs/media.md, "Emitting media in light tracing and BDPT"). An
+// orthographic window of side w = 2.4 around the unit sphere: the image mean is the integral
+// over the disk of Le (1 - exp(-2 sigma_a sqrt(1 - r^2))), over w^2; with u = sqrt(1 - r^2),
+//   2 pi Le (1/2 - (1 - e^-b (1 + b)) / b^2) / w^2,  b = 2 sigma_a.
+// The black room's emission (1e-6, so that the scene has a light) adds at most 1e-6.
+TEST_P(MediaRender, EmittingMediumClosedFormByEveryIntegrator) {
+    const char* scene = R"({
+      "camera": {"type": "orthographic", "position": [0, 0, -3], "look_at": [0, 0, 0],
+                 "screen_window": [-1.2, 1.2, -1.2, 1.2]},
+      "film": {"resolution": [8, 8]},
+      "media": {"glow": {"type": "homogeneous", "sigma_a": 0.8, "Le": 1.5}},
+      "materials": {"black": {"type": "lambert", "reflectance": 0}},
+      "shapes": [
+        {"type": "sphere", "radius": 1, "material": "interface", "interior": "glow"},
+        {"type": "sphere", "radius": 10, "flip_normals": true, "material": "black",
+         "emission": {"radiance": 0.000001}}]})";
+    const double b = 2 * 0.8, w = 2.4;
+    const double expected =
+        2 * kPi<double> * 1.5 * (0.5 - (1 - std::exp(-b) * (1 + b)) / (b * b)) / (w * w);
+    const SceneDesc s = sceneFromText(scene);
+    for (const auto& [integrator, spp] :
+         {std::pair{IntegratorKind::Path, 256}, std::pair{IntegratorKind::Light, 2048},
+          std::pair{IntegratorKind::Bdpt, 256}}) {
+        const Rendered r = render(s, GetParam(), spp, 12, true, integrator);
+        for (int c = 0; c < 3; ++c) {
+            const ImageMean& m = r.channel[c];
+            EXPECT_LT(std::abs(m.mean - expected),
+                      kZ * m.standardError + 1e-6 + (GetParam() == RenderModeKind::Rgb ? 0 : 2e-3))
+                << kIntegratorNames.name(integrator) << " channel " << c << ": " << m.mean << " +- "
+                << m.standardError << ", expected " << expected;
+        }
     }
 }
 

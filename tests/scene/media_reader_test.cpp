@@ -154,23 +154,47 @@ TEST(MediaReader, RefusesAMaterialNamedInterface) {
     }
 }
 
-// Light tracing and BDPT of an emitting medium and the polarised mode refuse media in one
-// line, never render them as vacuum; light tracing and BDPT render the others.
+// Light tracing and BDPT of an emitting medium that fills space and the polarised mode refuse
+// media in one line, never render them as vacuum; light tracing and BDPT render the others,
+// emitting media enclosed by shapes included.
 TEST(MediaReader, RenderersWithoutMediaRefuseThem) {
     const SceneDesc s = sceneFromText(sceneWith(kFog, R"("material": "m")", R"("medium": "fog")"));
     EXPECT_NO_THROW(checkMedia(s, RenderModeKind::Spectral, IntegratorKind::Path));
-    // kFog emits (Le): light tracing and BDPT refuse it, and take the same fog without
-    // emission.
-    for (const auto& [integrator, name] :
-         {std::pair{IntegratorKind::Light, "light"}, std::pair{IntegratorKind::Bdpt, "bdpt"}}) {
+    // kFog emits (Le) and is the camera's medium, bounded by no shape: light tracing and BDPT
+    // cannot sample its volume and refuse it; they take the same fog without emission, and
+    // the emitting fog inside a sphere.
+    for (const IntegratorKind integrator : {IntegratorKind::Light, IntegratorKind::Bdpt}) {
         try {
             checkMedia(s, RenderModeKind::Spectral, integrator);
-            ADD_FAILURE() << name << " accepted";
+            ADD_FAILURE() << kIntegratorNames.name(integrator) << " accepted";
         } catch (const InputError& e) {
-            EXPECT_EQ(std::string(e.what()), std::string("<test scene>: media.fog.Le: the ") +
-                                                 name +
-                                                 " integrator does not render emitting media "
-                                                 "yet; use --integrator path");
+            EXPECT_EQ(std::string(e.what()),
+                      "<test scene>: media.fog.Le: the light and bdpt integrators start "
+                      "particles in an emitting medium's volume, and this one reaches infinity "
+                      "(no shapes enclose it); enclose it with shapes or use --integrator path");
+        }
+    }
+    const SceneDesc enclosed =
+        sceneFromText(sceneWith(kFog, R"("material": "interface", "interior": "fog")"));
+    EXPECT_NO_THROW(checkMedia(enclosed, RenderModeKind::Spectral, IntegratorKind::Light));
+    EXPECT_NO_THROW(checkMedia(enclosed, RenderModeKind::Rgb, IntegratorKind::Bdpt));
+    // Outside a sphere, around the camera: bounded by a shape, but reaching infinity, which
+    // only the geometry tells: refused when the integrator is made, before anything renders.
+    const SceneDesc outside = sceneFromText(
+        sceneWith(kFog, R"("material": "interface", "exterior": "fog")", R"("medium": "fog")"));
+    EXPECT_NO_THROW(checkMedia(outside, RenderModeKind::Rgb, IntegratorKind::Bdpt));
+    for (const IntegratorKind integrator : {IntegratorKind::Light, IntegratorKind::Bdpt}) {
+        RenderOptions o;
+        o.integrator = integrator;
+        o.spp = 1;
+        try {
+            renderScene(outside, o);
+            ADD_FAILURE() << kIntegratorNames.name(integrator) << " rendered";
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find("<test scene>: media.fog.Le: the light and bdpt "
+                                                 "integrators start particles"),
+                      std::string::npos)
+                << e.what();
         }
     }
     const SceneDesc dark = sceneFromText(

@@ -94,7 +94,11 @@ BdptConnection<S> BdptConnector<S>::connect(const std::vector<Vertex>& lightPath
     Vertex sampled;  // the fresh vertex of s = 1 or t = 1
     BdptConnection<S> result;
     S& value = result.contribution;
-    if (s == 0) {
+    if (s == 0 && cv.type == BdptVertexType::Medium) {
+        // The camera subpath's end is a point of an emitting medium: its emission there.
+        if (!(cv.emission.maxValue() > 0.0f)) return result;
+        value = throughMedia(cv.emission, Transmittance<S>{}, cv.rU, S(1.0f), hero);
+    } else if (s == 0) {
         // The camera subpath's end is an emitter.
         if (!(cv.infinite || (cv.type == BdptVertexType::Surface && cv.light >= 0))) return result;
         const Vertex& prev = cameraPath[std::size_t(t - 2)];
@@ -179,6 +183,34 @@ BdptConnection<S> BdptConnector<S>::connect(const std::vector<Vertex>& lightPath
     }
     if (value.maxValue() <= 0.0f) return result;
     result.misWeight = mis_.weight(lightPath, s, cameraPath, t, sampled, path);
+    return result;
+}
+
+template <SpectrumType S>
+BdptConnection<S> BdptConnector<S>::connectVolumeLight(const std::vector<Vertex>& lightPath,
+                                                       const std::vector<Vertex>& cameraPath, int t,
+                                                       int hero, typename Mode::Path& path,
+                                                       PathStatistics& stats) const {
+    BdptConnection<S> result;
+    const Vertex& lv = lightPath[0];
+    const Vertex& cv = cameraPath[std::size_t(t - 1)];
+    if (!cv.scatters() || cv.delta) return result;
+    const Vec3f d = lv.p - cv.p;
+    const float dist2 = glm::dot(d, d);
+    if (!(dist2 > 0.0f)) return result;
+    const Vec3f w = d / std::sqrt(dist2);
+    const Vertex& before = cameraPath[std::size_t(t - 2)];
+    const S fc = evalAt(cv, directionTo(cv, before), w, false, path);
+    if (fc.maxValue() <= 0.0f) return result;
+    // lv.beta is sigma_a Le / (P p(x)): isotropic emission per unit volume and solid angle; no
+    // cosine at a point of a medium.
+    S value = cv.beta * fc * lv.beta * (1.0f / dist2);
+    const auto T = passes(cv, &before, lv, hero, path, stats);
+    if (!T) return result;
+    value = throughMedia(value, *T, cv.rU, lv.rU, hero);
+    if (value.maxValue() <= 0.0f) return result;
+    result.contribution = value;
+    result.misWeight = mis_.weight(lightPath, 1, cameraPath, t, lv, path);
     return result;
 }
 

@@ -19,7 +19,8 @@ BdptIntegrator<S>::BdptIntegrator(const IntegratorSetup<S>& setup)
       ablations_(setup.ablations),
       strategies_(setup.strategies),
       media_(Mode::kRendersMedia && setup.context.scene.hasMedia()),
-      mis_(c_, mode_, setup.settings.mis),
+      emitters_(setup.context, media_),
+      mis_(c_, mode_, setup.settings.mis, emitters_),
       connector_(c_, mode_, ablations_, mis_) {}
 
 template <SpectrumType S>
@@ -40,25 +41,35 @@ std::optional<CameraEstimate<S>> BdptIntegrator<S>::sample(const PixelSample<S>&
 
     S L(0.0f);
     const int nc = int(cameraPath.size()), nl = int(lightPath.size());
+    // A light subpath that starts in an emitting medium's volume: strategy (1, t) joins its
+    // first vertex too, beside next-event estimation's fresh light point.
+    const bool volumeStart = nl > 0 && lightPath[0].volume;
+    const auto add = [&](int s, int t, const BdptConnection<S>& c) {
+        if (c.contribution.maxValue() <= 0.0f || !c.contribution.isFinite()) return;
+        const S weighted = c.contribution * c.misWeight;
+        if (t == 1)
+            splatContribution(ps.film, filter_, c.splatAt, mode_, weighted, c.toLens,
+                              c_.camera.imageRight(), ps.path);
+        else
+            L += weighted;
+        if (strategies_)
+            recordStrategy(s, t, mode_.filmValue(weighted, ps.path),
+                           mode_.filmValue(c.contribution, ps.path), c.splatAt, ps.x, ps.y,
+                           cs.filterWeight);
+    };
     for (int t = 1; t <= nc; ++t) {
         for (int s = 0; s <= nl; ++s) {
             const int depth = s + t - 2;
             // (1, 1) would connect a light point to the lens: the emitter seen directly,
             // which (0, 2) already counts with weight 1 (pbrt-v3 does the same).
             if (depth < 0 || depth > settings_.maxDepth || (s == 1 && t == 1)) continue;
-            const BdptConnection<S> c = connector_.connect(lightPath, s, cameraPath, t, hero,
-                                                           ps.sampler, ps.path, ps.stats);
-            if (c.contribution.maxValue() <= 0.0f || !c.contribution.isFinite()) continue;
-            const S weighted = c.contribution * c.misWeight;
-            if (t == 1)
-                splatContribution(ps.film, filter_, c.splatAt, mode_, weighted, c.toLens,
-                                  c_.camera.imageRight(), ps.path);
-            else
-                L += weighted;
-            if (strategies_)
-                recordStrategy(s, t, mode_.filmValue(weighted, ps.path),
-                               mode_.filmValue(c.contribution, ps.path), c.splatAt, ps.x, ps.y,
-                               cs.filterWeight);
+            add(s, t,
+                connector_.connect(lightPath, s, cameraPath, t, hero, ps.sampler, ps.path,
+                                   ps.stats));
+            if (s == 1 && volumeStart)
+                add(s, t,
+                    connector_.connectVolumeLight(lightPath, cameraPath, t, hero, ps.path,
+                                                  ps.stats));
         }
     }
     if (strategies_) strategies_->addWeight(ps.x, ps.y, cs.filterWeight);
@@ -105,18 +116,27 @@ template <SpectrumType S>
 void BdptIntegrator<S>::generateLightSubpath(PixelSampler& sampler, typename Mode::Path& path,
                                              int hero, std::vector<Vertex>& out,
                                              PathStatistics& stats) const {
-    const auto particle = startParticle(c_.lights, c_.geometry, mode_, sampler, path);
+    const auto particle = startParticle(c_.lights, c_.geometry, mode_, sampler, path, emitters_);
     if (!particle) return;
     const EmissionSample& e = particle->emission;
-    const Light& light = c_.lights.light(particle->light);
     Vertex v;
     v.type = BdptVertexType::Light;
-    v.light = int(particle->light);
-    v.infinite = light.isInfinite();
-    v.deltaLight = light.isDelta();
-    v.p = v.infinite ? -e.direction : e.point;
-    v.ng = v.ns = (e.deltaPosition || v.infinite) ? Vec3f(0.0f) : e.normal;
-    v.beta = S(1.0f / (particle->pmf * e.pdfPosition));
+    if (particle->medium >= 0) {
+        // A point of an emitting medium's volume (medium_emitters.h): its emission sigma_a Le,
+        // isotropic, over the density of choosing the medium and the point.
+        v.volume = true;
+        v.medium = particle->medium;
+        v.p = e.point;
+        v.beta = particle->volumeEmission / (particle->pmf * e.pdfPosition);
+    } else {
+        const Light& light = c_.lights.light(particle->light);
+        v.light = int(particle->light);
+        v.infinite = light.isInfinite();
+        v.deltaLight = light.isDelta();
+        v.p = v.infinite ? -e.direction : e.point;
+        v.ng = v.ns = (e.deltaPosition || v.infinite) ? Vec3f(0.0f) : e.normal;
+        v.beta = S(1.0f / (particle->pmf * e.pdfPosition));
+    }
     v.pdfFwd = mis_.pdfLightOrigin(v);
     out.push_back(v);
 
@@ -129,6 +149,13 @@ void BdptIntegrator<S>::generateLightSubpath(PixelSampler& sampler, typename Mod
             // that reaches infinity is exp(-sigma_t infinity).
             medium = mediumAt(c_.geometry, c_.scene.camera.medium, Vec3f(c_.scene.camera.position),
                               particle->origin, stats);
+            // A point of an emitting medium's box outside the medium carries nothing (one try,
+            // so that the density stays the box's). Its vertex stays, dark: next-event
+            // estimation (s = 1) runs for every light subpath that has a vertex.
+            if (v.volume && medium != v.medium) {
+                out.back().beta = S(0.0f);
+                return;
+            }
             if (v.infinite && medium >= 0)
                 fromInfinity(mode_, path, medium, hero, particle->origin, e.direction, beta, rU);
         }
@@ -170,16 +197,21 @@ void BdptIntegrator<S>::randomWalk(WalkStart start, int maxVertices, TransportMo
             const auto mf = media_
                                 ? sampleMediumFlight(mode_, path, medium, start.hero, sampler, hit)
                                 : std::nullopt;
-            // The flight passes, ends, or scatters at a medium vertex (medium_transport.h).
+            // The flight passes, ends, or scatters at a medium vertex (medium_transport.h); a
+            // camera subpath's vertex in an emitting medium keeps the emission there (s = 0).
             std::optional<float> scatterAt;
+            S emission(0.0f);
             if (mf) {
-                const FlightOutcome f =
-                    mf->apply(o, d, start.hero, beta, rU, nullptr, nullptr, ablations_);
+                const bool emits = !lightPath && mf->coefficients.emits && !emitters_.empty();
+                const FlightOutcome f = mf->apply(o, d, start.hero, beta, rU, nullptr, nullptr,
+                                                  ablations_, emits ? &emission : nullptr);
                 if (f.outcome == FlightOutcome::Outcome::Ends) return;
                 if (f.outcome == FlightOutcome::Outcome::Scatters) scatterAt = f.t;
             }
             if (scatterAt) {
-                if (!(beta.maxValue() > 0.0f)) return;
+                // A vertex that scatters nothing (sigma_s = 0) still ends a path that emits.
+                const bool scatters = beta.maxValue() > 0.0f;
+                if (!scatters && !(emission.maxValue() > 0.0f)) return;
                 Vertex v;
                 v.type = BdptVertexType::Medium;
                 v.p = o + d * *scatterAt;
@@ -187,9 +219,10 @@ void BdptIntegrator<S>::randomWalk(WalkStart start, int maxVertices, TransportMo
                 v.g = mf->coefficients.g;
                 v.beta = beta;
                 v.rU = rU;
+                v.emission = emission;
                 v.pdfFwd = toArea(pdfDir, out.back(), v);
                 out.push_back(v);
-                if (++vertices >= maxVertices) return;
+                if (++vertices >= maxVertices || !scatters) return;
                 Vertex& cur = out.back();
                 Vertex& before = out[out.size() - 2];
                 // The dimensions of a surface's scattering: the lobe choice (none here),

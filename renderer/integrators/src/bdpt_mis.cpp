@@ -1,6 +1,8 @@
 #include "lamina/integrators/bdpt_mis.h"
 
 #include "lamina/bsdf/henyey_greenstein.h"
+#include "lamina/core/warp.h"
+#include "lamina/integrators/grid_tracking.h"
 
 namespace lamina::render {
 
@@ -8,6 +10,8 @@ namespace lamina::render {
 /// reaches `next`.
 template <SpectrumType S>
 float BdptMisWeights<S>::pdfLight(const Vertex& v, const Vertex& next) const {
+    // A medium's emission leaves in a direction uniform on the sphere.
+    if (inVolume(v)) return toArea(uniformSpherePdf<float>(), v, next);
     if (v.infinite) {
         // From the disk every infinite light shares: its density projected on the surface at
         // `next`.
@@ -24,10 +28,12 @@ float BdptMisWeights<S>::pdfLight(const Vertex& v, const Vertex& next) const {
 
 template <SpectrumType S>
 float BdptMisWeights<S>::pdfLightOrigin(const Vertex& v) const {
-    if (v.infinite && v.deltaLight) return c_.lights.emitterProbability(std::size_t(v.light));
+    if (inVolume(v))
+        return emitters_.mediumProbability(v.medium) * emitters_.pointDensity(v.medium, v.p);
+    if (v.infinite && v.deltaLight) return emitters_.lightProbability(std::size_t(v.light));
     if (v.infinite) return infiniteLightDensity(-v.p);
     const Light& light = c_.lights.light(std::size_t(v.light));
-    return c_.lights.emitterProbability(std::size_t(v.light)) *
+    return emitters_.lightProbability(std::size_t(v.light)) *
            light.emissionPdf(v.p, v.ng, Vec3f(0.0f, 0.0f, 1.0f)).position;
 }
 
@@ -38,13 +44,16 @@ float BdptMisWeights<S>::infiniteLightDensity(const Vec3f& direction) const {
     float pdf = 0.0f;
     for (std::size_t i : c_.lights.infiniteLights())
         if (!c_.lights.light(i).isDelta())
-            pdf += c_.lights.emitterProbability(i) *
+            pdf += emitters_.lightProbability(i) *
                    c_.lights.light(i).emissionPdf(Vec3f(0.0f), Vec3f(0.0f), direction).direction;
     return pdf;
 }
 
 template <SpectrumType S>
 float BdptMisWeights<S>::selectionRatio(const Vertex& lightVertex, const Vertex& receiver) const {
+    // A medium's emission is not sampled by next-event estimation: its strategy s = 1 connects
+    // the light subpath's own first vertex, with the particle's density.
+    if (inVolume(lightVertex)) return 1.0f;
     // An environment vertex of a camera path does not say which light it is: the ratio is the
     // same for all environments (LightSet), which are the lights at infinity that are not
     // delta.
@@ -56,7 +65,15 @@ float BdptMisWeights<S>::selectionRatio(const Vertex& lightVertex, const Vertex&
                 i = k;
                 break;
             }
-    return c_.lights.probability(i, receiver.p, receiver.ns) / c_.lights.emitterProbability(i);
+    return c_.lights.probability(i, receiver.p, receiver.ns) / emitters_.lightProbability(i);
+}
+
+template <SpectrumType S>
+float BdptMisWeights<S>::volumeFactor(const Vertex& v, typename Mode::Path& path) const {
+    if constexpr (Mode::kRendersMedia) {
+        return coefficientsAtPoint(mode_.medium(v.medium, path), v.p).sigmaT.average();
+    }
+    return 1.0f;
 }
 
 /// Density (area at `next`) with which vertex `v`, reached from `prev`, samples `next`.
@@ -139,6 +156,17 @@ float BdptMisWeights<S>::weight(const std::vector<Vertex>& lightPath, int s,
     // scaled by the ratio of the two.
     const Vertex& x0 = s == 0 ? pt : s == 1 ? sampled : lightPath[0];
     const Vertex* x1 = s == 0 ? ptMinus : s == 1 ? &pt : &lightPath[1];
+    // A path that ends in a medium's volume: the light side's density of its end x0 is per
+    // unit volume, the camera side's (a phase function's or BSDF's, converted to area) is made
+    // one by the factor volumeFactor, which depends on the path alone (not on the hero), so the
+    // weights of the path's strategies still sum to one (docs/media.md).
+    if (inVolume(x0)) {
+        const float f = volumeFactor(x0, path);
+        if (s == 0)
+            cameraD[std::size_t(t - 1)].pdfFwd *= f;
+        else
+            lightD[0].pdfRev *= f;
+    }
     float nextEvent = 1.0f;
     if (x1 && x1->scatters()) {
         const float q = selectionRatio(x0, *x1);

@@ -99,7 +99,7 @@ std::uint64_t trackingSeed(const Vec3f& o, const Vec3f& d, float u) {
 template <SpectrumType S>
 FlightOutcome deltaTrack(const MediumCoefficients<S>& m, const Vec3f& o, const Vec3f& d, float tMax,
                          int hero, std::uint64_t seed, S& beta, S& rU, S* rL, S* L,
-                         const TransportAblations& ablations) {
+                         const TransportAblations& ablations, S* E) {
     const GridDensity& grid = *m.grid;
     const S sigmaT = majorantUnit(m);
     // The ray in medium space: the same t, so the distances stay the scene's.
@@ -128,6 +128,7 @@ FlightOutcome deltaTrack(const MediumCoefficients<S>& m, const Vec3f& o, const V
             if (rng.nextFloat() * sigmaMaj[hero] < sigmaTHere[hero]) {
                 // A real collision: the path scatters here (its absorption in the weight sigma_s).
                 const float pdf = Tmaj[hero] * sigmaTHere[hero];
+                if (E && m.emits) *E = beta * Tmaj * here.sigmaA * density * m.emission / pdf;
                 beta *= Tmaj * here.sigmaS * density / pdf;
                 rU *= Tmaj * sigmaTHere / pdf;
                 result = {FlightOutcome::Outcome::Scatters, t};
@@ -198,10 +199,22 @@ void ratioTrack(const MediumCoefficients<S>& m, const Vec3f& o, const Vec3f& d, 
     tr.rL *= Tmaj / Tmaj[hero];
 }
 
+template <SpectrumType S>
+PointCoefficients<S> coefficientsAtPoint(const MediumCoefficients<S>& m, const Vec3f& p) {
+    if (!m.grid) return {m.sigmaA, m.sigmaT()};
+    const Vec3f mp = m.grid->pointToMedium(p), u = m.grid->local(mp);
+    // Outside its box a grid's density is 0 (a lookup would clamp to the nearest cell).
+    for (int i = 0; i < 3; ++i)
+        if (!(u[i] >= 0.0f && u[i] <= 1.0f)) return {};
+    const LocalCoefficients<S> here = coefficientsAt(m, mp);
+    return {here.sigmaA * here.density, (here.sigmaA + here.sigmaS) * here.density};
+}
+
 #define LAMINA_GRID_TRACKING(S)                                                                    \
     template FlightOutcome deltaTrack(const MediumCoefficients<S>&, const Vec3f&, const Vec3f&,    \
                                       float, int, std::uint64_t, S&, S&, S*, S*,                   \
-                                      const TransportAblations&);                                  \
+                                      const TransportAblations&, S*);                              \
+    template PointCoefficients<S> coefficientsAtPoint(const MediumCoefficients<S>&, const Vec3f&); \
     template void ratioTrack(const MediumCoefficients<S>&, const Vec3f&, const Vec3f&, float, int, \
                              std::uint64_t, Transmittance<S>&);
 LAMINA_GRID_TRACKING(Rgb<float>)

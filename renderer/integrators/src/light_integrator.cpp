@@ -17,7 +17,8 @@ LightIntegrator<S>::LightIntegrator(const IntegratorSetup<S>& setup)
       settings_(setup.settings),
       filter_(setup.filter),
       ablations_(setup.ablations),
-      media_(Mode::kRendersMedia && setup.context.scene.hasMedia()) {}
+      media_(Mode::kRendersMedia && setup.context.scene.hasMedia()),
+      emitters_(setup.context, media_) {}
 
 template <SpectrumType S>
 std::optional<CameraEstimate<S>> LightIntegrator<S>::sample(const PixelSample<S>& ps) const {
@@ -28,10 +29,12 @@ std::optional<CameraEstimate<S>> LightIntegrator<S>::sample(const PixelSample<S>
 template <SpectrumType S>
 void LightIntegrator<S>::traceParticle(PixelSampler& sampler, typename Mode::Path& path, Film& film,
                                        PathStatistics& stats) const {
-    const auto particle = startParticle(c_.lights, c_.geometry, mode_, sampler, path);
+    const auto particle = startParticle(c_.lights, c_.geometry, mode_, sampler, path, emitters_);
     if (!particle) return;
     const EmissionSample& e = particle->emission;
-    const Light& light = c_.lights.light(particle->light);
+    // A particle of a medium's emission has no light (medium_emitters.h).
+    const bool fromVolume = particle->medium >= 0;
+    const Light* light = fromVolume ? nullptr : &c_.lights.light(particle->light);
 
     // With media (medium_transport.h): the medium the particle is in, its hero channel, and
     // the densities of the particle's path per channel relative to the hero's (rU). A camera
@@ -73,9 +76,12 @@ void LightIntegrator<S>::traceParticle(PixelSampler& sampler, typename Mode::Pat
             // off the emitting surface on that side).
             medium = mediumAt(c_.geometry, cameraMedium, Vec3f(c_.scene.camera.position),
                               particle->origin, stats);
+            // A point of an emitting medium's box that is not in the medium carries nothing
+            // (one try: the density stays the box's).
+            if (fromVolume && medium != particle->medium) return;
             // Light from infinity through a medium that reaches infinity: none gets through
             // where the extinction is not 0, as for the path integrator's escaping rays.
-            if (light.isInfinite() && medium >= 0)
+            if (light && light->isInfinite() && medium >= 0)
                 fromInfinity(mode_, path, medium, hero, particle->origin, e.direction, beta, rU);
         }
     }
@@ -87,13 +93,25 @@ void LightIntegrator<S>::traceParticle(PixelSampler& sampler, typename Mode::Pat
             SurfaceHit at;
             at.p = e.point;
             at.ng = at.ns = facing(e.normal, e.normal);
-            const Emission toCamera = light.radiance(at, cc->wi);
+            const Emission toCamera = light->radiance(at, cc->wi);
             Transmittance<S> T;
             if (!toCamera.isZero() && lensSees(cc->lensPoint, e.point, e.normal, T)) {
                 const float cosLight = std::abs(glm::dot(e.normal, cc->wi));
                 const S value =
                     mode_.emission(toCamera, path) *
                     (cosLight * cc->importance / (cc->pdf * particle->pmf * e.pdfPosition));
+                splatContribution(film, filter_, cc->raster, mode_, throughMedia(value, T), cc->wi,
+                                  c_.camera.imageRight(), path);
+            }
+        }
+    } else if (fromVolume) {
+        // The medium's emission seen by the camera: sigma_a Le, isotropic, per unit volume
+        // (no cosine at a point of a medium).
+        if (const auto cc = c_.camera.sampleConnection(e.point, uLens)) {
+            Transmittance<S> T;
+            if (lensSees(cc->lensPoint, e.point, Vec3f(0.0f), T)) {
+                const S value = particle->volumeEmission *
+                                (cc->importance / (cc->pdf * particle->pmf * e.pdfPosition));
                 splatContribution(film, filter_, cc->raster, mode_, throughMedia(value, T), cc->wi,
                                   c_.camera.imageRight(), path);
             }

@@ -10,6 +10,7 @@
 
 #include "lamina/core/error.h"
 #include "lamina/integrators/integrator.h"
+#include "lamina/integrators/medium_emitters.h"
 #include "lamina/render/global_sobol_net.h"
 #include "lamina/render/pass_schedule.h"
 #include "lamina/render/render_limits.h"
@@ -204,13 +205,12 @@ RenderOptions withCrop(const RenderOptions& options, const PixelBounds& crop) {
 
 void checkMedia(const SceneDesc& scene, RenderModeKind mode, IntegratorKind integrator) {
     if (!scene.hasMedia()) return;
+    // Light tracing and BDPT start particles in an emitting medium's volume: one that fills
+    // space cannot be sampled (the integrators refuse the other media that reach infinity,
+    // which only the geometry tells: MediumEmitters).
     if (integrator == IntegratorKind::Light || integrator == IntegratorKind::Bdpt)
-        for (const MediumDesc& m : scene.media)
-            if (m.emits())
-                throw InputError(scene.file.string() + ": media." + m.name + ".Le: the " +
-                                 std::string(kIntegratorNames.name(integrator)) +
-                                 " integrator does not render emitting media yet; use "
-                                 "--integrator path");
+        for (int i = 0; i < int(scene.media.size()); ++i)
+            if (emissionFillsSpace(scene, i)) refuseUnboundedEmission(scene, i);
     if (mode == RenderModeKind::Polarised)
         throw InputError(scene.file.string() +
                          ": media: the polarised mode does not render media yet; use --mode "

@@ -44,7 +44,11 @@ SceneDesc readScene(const Json& json, const JsonSource& source) {
     bool emitter = !scene.lights.empty();
     for (const ShapeDesc& shape : scene.shapes)
         emitter |= surface(shape).emission.has_value();
-    if (!emitter) root.fail("the scene has no light: add an emitting shape or a light");
+    // An emitting medium lights a scene too (every integrator renders it: docs/media.md).
+    for (const MediumDesc& m : scene.media)
+        emitter |= m.emits();
+    if (!emitter)
+        root.fail("the scene has no light: add an emitting shape, a light or an emitting medium");
     return scene;
 }
 

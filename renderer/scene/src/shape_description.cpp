@@ -26,31 +26,36 @@ void QuadricDesc::bounds(Vec3d& lo, Vec3d& hi) const {
     }
 }
 
+void shapeBounds(const ShapeDesc& shape, Vec3d& lo, Vec3d& hi) {
+    lo = Vec3d(std::numeric_limits<double>::infinity());
+    hi = -lo;
+    std::visit(Overloaded{[&](const MeshDesc& m) {
+                              for (const Vec3<float>& p : m.positions) {
+                                  lo = glm::min(lo, Vec3d(p));
+                                  hi = glm::max(hi, Vec3d(p));
+                              }
+                          },
+                          [&](const SphereDesc& s) {
+                              lo = s.center - s.radius;
+                              hi = s.center + s.radius;
+                          },
+                          [&](const DiskDesc& d) {
+                              lo = d.center - d.radius;
+                              hi = d.center + d.radius;
+                          },
+                          [&](const QuadricDesc& q) { q.bounds(lo, hi); }},
+               shape);
+}
+
 void boundingBox(const std::vector<ShapeDesc>& shapes, Vec3d& lo, Vec3d& hi) {
     lo = Vec3d(std::numeric_limits<double>::infinity());
     hi = -lo;
-    for (const ShapeDesc& shape : shapes)
-        std::visit(Overloaded{[&](const MeshDesc& m) {
-                                  for (const Vec3<float>& p : m.positions) {
-                                      lo = glm::min(lo, Vec3d(p));
-                                      hi = glm::max(hi, Vec3d(p));
-                                  }
-                              },
-                              [&](const SphereDesc& s) {
-                                  lo = glm::min(lo, s.center - s.radius);
-                                  hi = glm::max(hi, s.center + s.radius);
-                              },
-                              [&](const DiskDesc& d) {
-                                  lo = glm::min(lo, d.center - d.radius);
-                                  hi = glm::max(hi, d.center + d.radius);
-                              },
-                              [&](const QuadricDesc& q) {
-                                  Vec3d qlo, qhi;
-                                  q.bounds(qlo, qhi);
-                                  lo = glm::min(lo, qlo);
-                                  hi = glm::max(hi, qhi);
-                              }},
-                   shape);
+    for (const ShapeDesc& shape : shapes) {
+        Vec3d slo, shi;
+        shapeBounds(shape, slo, shi);
+        lo = glm::min(lo, slo);
+        hi = glm::max(hi, shi);
+    }
 }
 
 }  // namespace lamina::render

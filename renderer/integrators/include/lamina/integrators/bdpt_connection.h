@@ -12,6 +12,8 @@
 // phase function; a connection's segment carries its exact transmittance, traced through
 // every index-matched interface on its way, and a contribution is divided by the average over
 // the channels of its two subpaths' density ratios (the spectral MIS of medium_transport.h).
+// A medium's emission (docs/media.md) is counted at a camera subpath's medium vertex (s = 0) and
+// from a light subpath that starts in the medium's volume (s >= 1).
 #pragma once
 
 #include <optional>
@@ -52,6 +54,12 @@ class BdptConnector {
                               const std::vector<Vertex>& cameraPath, int t, int hero,
                               PixelSampler& sampler, typename Mode::Path& path,
                               PathStatistics& stats) const;
+    /// Strategy (1, t) of a light subpath that starts in an emitting medium's volume: its
+    /// first vertex itself joined to camera vertex t - 1 (next-event estimation cannot sample
+    /// a medium's emission; this is Veach's s = 1 with the particle's own point).
+    BdptConnection<S> connectVolumeLight(const std::vector<Vertex>& lightPath,
+                                         const std::vector<Vertex>& cameraPath, int t, int hero,
+                                         typename Mode::Path& path, PathStatistics& stats) const;
 
   private:
     S evalAt(const Vertex& v, const Vec3f& wPrev, const Vec3f& wNext, bool lightSubpath,

@@ -9,7 +9,9 @@
 // channel per camera sample and scatter at medium vertices by the Henyey-Greenstein phase
 // function; connections carry the exact transmittance of their segment; a contribution is
 // divided by the average over the channels of its subpaths' densities relative to the hero's
-// (the spectral MIS of medium_transport.h), the strategies weighted as without media.
+// (the spectral MIS of medium_transport.h), the strategies weighted as without media. A medium's
+// emission is a light source (medium_emitters.h): light subpaths may start in its volume, and
+// camera subpaths count it at their medium vertices (docs/media.md).
 #pragma once
 
 #include <vector>
@@ -61,6 +63,7 @@ class BdptIntegrator final : public Integrator<S> {
     TransportAblations ablations_;
     StrategyImages* strategies_;
     bool media_;  ///< the scene has media (SceneDesc::hasMedia) and the mode renders them
+    MediumEmitters emitters_;  ///< the emitting media light subpaths also start from
     BdptMisWeights<S> mis_;
     BdptConnector<S> connector_;
 };

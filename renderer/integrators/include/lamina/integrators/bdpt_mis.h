@@ -8,8 +8,9 @@
 
 #include <vector>
 
-#include "lamina/integrators/integrator.h"
 #include "lamina/integrators/bdpt_vertex.h"
+#include "lamina/integrators/integrator.h"
+#include "lamina/integrators/medium_emitters.h"
 
 namespace lamina::render {
 
@@ -19,19 +20,27 @@ class BdptMisWeights {
     using Mode = RenderMode<S>;
     using Vertex = BdptVertex<S>;
 
-    BdptMisWeights(const SceneContext& context, const Mode& mode, MisHeuristic heuristic)
-        : c_(context), mode_(mode), heuristic_(heuristic) {}
+    /// `emitters`: the emitting media light subpaths start from too (must outlive this).
+    BdptMisWeights(const SceneContext& context, const Mode& mode, MisHeuristic heuristic,
+                   const MediumEmitters& emitters)
+        : c_(context), mode_(mode), heuristic_(heuristic), emitters_(emitters) {}
 
     /// The weight of strategy (s, t); `sampled` is the connection's fresh vertex (the light
     /// point of s = 1, the lens point of t = 1).
     float weight(const std::vector<Vertex>& lightPath, int s, const std::vector<Vertex>& cameraPath,
                  int t, const Vertex& sampled, typename Mode::Path& path) const;
 
-    /// Density with which a light subpath starts at light vertex `v`.
+    /// Density with which a light subpath starts at light vertex `v` (or, for a camera
+    /// subpath's Medium vertex, in the medium's volume there: per unit volume).
     float pdfLightOrigin(const Vertex& v) const;
 
   private:
     float pdfLight(const Vertex& v, const Vertex& next) const;
+    /// Whether `v`, as the path's light end, is a point of an emitting medium's volume.
+    static bool inVolume(const Vertex& v) { return v.volume || v.type == BdptVertexType::Medium; }
+    /// The factor that turns a camera subpath's area density of reaching volume point `v` into
+    /// a density per unit volume: the channels' average extinction there (docs/media.md).
+    float volumeFactor(const Vertex& v, typename Mode::Path& path) const;
     float infiniteLightDensity(const Vec3f& direction) const;
     /// How much likelier next-event estimation at `receiver` chooses the light of
     /// `lightVertex` than a particle starts from it.
@@ -42,6 +51,7 @@ class BdptMisWeights {
     SceneContext c_;
     const Mode& mode_;
     MisHeuristic heuristic_;
+    const MediumEmitters& emitters_;
 };
 
 }  // namespace lamina::render

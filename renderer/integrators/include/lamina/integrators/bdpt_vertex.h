@@ -3,6 +3,9 @@
 // densities the MIS weights are computed from; and the two geometric helpers on vertices.
 // A medium vertex (a scattering event in a homogeneous medium, docs/media.md) has no normal:
 // its area density is Veach's with |cos| = 1 (pbrt-v4's BDPT converts densities the same way).
+// A light subpath may start in an emitting medium's volume (a Light vertex with `volume`), and
+// a camera subpath's medium vertex in an emitting medium carries its own emission (s = 0):
+// docs/media.md, "Emitting media in light tracing and BDPT".
 #pragma once
 
 #include <cmath>
@@ -23,6 +26,7 @@ struct BdptVertex {
     int light = -1;           ///< the light of an emitter (Light vertices, emissive surfaces)
     bool infinite = false;    ///< a Light vertex at infinity; `p` holds its direction
     bool deltaLight = false;  ///< a Light vertex with a delta position or direction
+    bool volume = false;      ///< a Light vertex in the volume of emitting medium `medium`
     bool delta = false;       ///< scattered by a delta lobe
     S beta{0.0f};
     float pdfFwd = 0, pdfRev = 0;  ///< area densities (solid angle for infinite vertices)
@@ -33,6 +37,10 @@ struct BdptVertex {
     /// The subpath's densities per channel up to this vertex relative to its hero's (the
     /// spectral MIS ratios rU of medium_transport.h); 1 without media.
     S rU{1.0f};
+    /// A camera subpath's Medium vertex in an emitting medium: the medium's emission there as
+    /// the subpath reached it (its throughput before the collision times T sigma_a Le / p, the
+    /// collision estimator of MediumFlight::apply), to be weighted over the channels by rU.
+    S emission{0.0f};
 
     /// Surfaces and area-light points (not lenses, point lights, medium vertices or infinity).
     bool onSurface() const { return !infinite && ng != Vec3f(0.0f); }

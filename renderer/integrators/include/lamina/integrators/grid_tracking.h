@@ -61,11 +61,23 @@ struct FlightOutcome {
 /// (if given; the collision estimator of pbrt-v4's VolPathIntegrator:
 /// beta T_maj sigma_a Le / p over the average of rU sigma_maj T_maj / p, p = T_maj,h sigma_maj,h).
 /// Ends when the hero's density of the outcome is 0 (the path ends, as a homogeneous flight
-/// of pdf 0 does).
+/// of pdf 0 does). `E`, if given, receives at a real collision the emission estimate of that
+/// collision alone, before its weighting over the channels: beta T_maj sigma_a Le / p
+/// (p = T_maj,h sigma_t,h; the collision's channel densities are rU after it): BDPT's camera
+/// subpaths count a medium's emission at their real vertices (docs/media.md).
 template <SpectrumType S>
 FlightOutcome deltaTrack(const MediumCoefficients<S>& m, const Vec3f& o, const Vec3f& d, float tMax,
                          int hero, std::uint64_t seed, S& beta, S& rU, S* rL, S* L,
-                         const TransportAblations& ablations);
+                         const TransportAblations& ablations, S* E = nullptr);
+
+/// A medium's absorption and extinction at a point of the scene: a homogeneous medium's own,
+/// a grid medium's at the point's density (0 outside its box) or its cells' colours.
+template <SpectrumType S>
+struct PointCoefficients {
+    S sigmaA{0.0f}, sigmaT{0.0f};
+};
+template <SpectrumType S>
+PointCoefficients<S> coefficientsAtPoint(const MediumCoefficients<S>& m, const Vec3f& p);
 
 /// A transmittance through media, for a shadow ray or a connection (medium_transport.h).
 template <SpectrumType S>

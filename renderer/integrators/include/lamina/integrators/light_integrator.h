@@ -8,10 +8,12 @@
 // Through homogeneous media (docs/media.md) a particle samples free flights with the path
 // integrator's spectral MIS (medium_transport.h), scatters by the Henyey-Greenstein phase
 // function at medium vertices and connects every vertex, surface or medium, to the camera with
-// the exact transmittance of the connection.
+// the exact transmittance of the connection. Particles start from the emitting media too
+// (medium_emitters.h), from points of their volumes.
 #pragma once
 
 #include "lamina/integrators/integrator.h"
+#include "lamina/integrators/medium_emitters.h"
 
 namespace lamina::render {
 
@@ -36,6 +38,7 @@ class LightIntegrator final : public Integrator<S> {
     const PixelFilter& filter_;
     TransportAblations ablations_;
     bool media_;  ///< the scene has media (SceneDesc::hasMedia) and the mode renders them
+    MediumEmitters emitters_;  ///< the emitting media particles also start from
 };
 
 }  // namespace lamina::render

@@ -103,11 +103,12 @@ struct MediumFlight {
     /// transmittance is exact: it has no density of its own), the emission by the collision
     /// estimator at a medium vertex. Grid: delta tracking (grid_tracking.h). The emission is
     /// weighted over the channels as `ablations` says (TransportAblations::channelDensity).
+    /// `E`, if given, receives the emission estimate of the medium vertex itself (deltaTrack).
     FlightOutcome apply(const Vec3f& o, const Vec3f& d, int hero, S& beta, S& rU, S* rL, S* L,
-                        const TransportAblations& ablations) const {
+                        const TransportAblations& ablations, S* E = nullptr) const {
         if (tracked())
             return deltaTrack(coefficients, o, d, tMax, hero, trackingSeed(o, d, u), beta, rU, rL,
-                              L, ablations);
+                              L, ablations, E);
         if (!(flight.pdf > 0.0f)) return {FlightOutcome::Outcome::Ends, flight.t};
         if (!flight.scatters) {
             weigh(beta, rU);
@@ -121,6 +122,8 @@ struct MediumFlight {
             *L += beta * flight.T * coefficients.sigmaA * coefficients.emission /
                   (flight.pdf * ablations.channelDensity(rE, hero));
         }
+        if (E && coefficients.emits)
+            *E = beta * flight.T * coefficients.sigmaA * coefficients.emission / flight.pdf;
         weigh(beta, rU);
         return {FlightOutcome::Outcome::Scatters, flight.t};
     }

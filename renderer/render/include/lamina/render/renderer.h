@@ -80,7 +80,9 @@ std::atomic<bool>& renderInterruptFlag();
 
 /// Renders the scene. `progress` is called from the calling thread now and then.
 /// Refuses a scene with media (SceneDesc::hasMedia) for what does not render it yet: the
-/// light and bdpt integrators with an emitting medium, and the polarised mode (docs/media.md). The
+/// light and bdpt integrators with a homogeneous emitting medium that fills space (the
+/// camera's, bounded by no shape; the integrators refuse the others that reach infinity when
+/// they are made), and the polarised mode (docs/media.md). The
 /// renderer calls it; experiments call it before they start work.
 void checkMedia(const SceneDesc& scene, RenderModeKind mode, IntegratorKind integrator);
 

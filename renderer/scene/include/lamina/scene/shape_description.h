@@ -151,6 +151,10 @@ inline void orderShapesByKind(std::vector<ShapeDesc>& shapes) {
                      [](const ShapeDesc& a, const ShapeDesc& b) { return a.index() < b.index(); });
 }
 
+/// The axis-aligned box [lo, hi] of one shape, in its own space (empty, lo > hi, for a mesh
+/// without vertices).
+void shapeBounds(const ShapeDesc& shape, Vec3d& lo, Vec3d& hi);
+
 /// The axis-aligned box [lo, hi] of a list of shapes, in their own space.
 void boundingBox(const std::vector<ShapeDesc>& shapes, Vec3d& lo, Vec3d& hi);
 
