@@ -199,8 +199,13 @@ void translateShape(Translation& t, const Element& e, Json& out, bool inGroup) {
             p.fail("flip_normals is not supported on meshes (lamina meshes face as wound)");
         if (p.boolean("face_normals", false))
             p.warn("face_normals became the file's own normals (lamina uses them when present)");
-        // Textures are not imported, so the uv orientation changes nothing.
-        if (type == "obj") p.boolean("flip_tex_coords", true);
+        // Mitsuba's bitmaps put v = 0 at the top row and lamina's at the bottom row, so they
+        // agree where Mitsuba flips v on reading (v -> 1 - v: OBJ's default, PLY's option).
+        const bool flipV = p.boolean("flip_tex_coords", type == "obj");
+        if (type == "obj" && !flipV)
+            p.warn(
+                "flip_tex_coords false: a bitmap on this mesh lands mirrored in v (lamina "
+                "agrees with Mitsuba's flipped v)");
     } else if (type == "rectangle") {
         s = {{"type", "rectangle"}};
     } else if (type == "cube") {

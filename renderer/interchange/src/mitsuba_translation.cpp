@@ -298,14 +298,16 @@ ImportedScene importMitsubaScene(const std::filesystem::path& file,
                 translateShape(t, e, t.scene["shapes"], false);
         } else if (e.tag == "emitter") {
             translateEmitter(t, e);
-        } else if (e.tag == "medium" && e.attribute("id")) {
-            continue;  // translated where a shape or the sensor refers to it
+        } else if ((e.tag == "medium" || e.tag == "texture") && e.attribute("id")) {
+            continue;  // translated where a shape, a sensor or a BSDF refers to it
         } else if (e.tag == "texture" || e.tag == "medium" || e.tag == "phase" ||
                    e.tag == "volume" || e.tag == "film" || e.tag == "sampler" ||
                    e.tag == "rfilter") {
             throw InputError(e.where() + ": " + e.describe() +
                              " at the top level is not supported" +
-                             (e.tag == "medium" ? " without an id (nothing can refer to it)" : ""));
+                             (e.tag == "medium" || e.tag == "texture"
+                                  ? " without an id (nothing can refer to it)"
+                                  : ""));
         } else {
             throw InputError(e.where() + ": unknown element <" + e.tag + "> in <scene>");
         }
