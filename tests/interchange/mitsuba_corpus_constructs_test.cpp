@@ -136,6 +136,43 @@ TEST_F(MitsubaCorpusConstructs, RefCyclesAndWrongTargetsAreOneLine) {
         where(3) + ": no object has id \"none\" (<ref name=\"reflectance\"> refers to it)");
 }
 
+// mitsuba3's Cornell box (scenes/cbox) defines its area emitter at the top level after the
+// shape that refers to it, and the sampler documentation scenes a sampler the sensor refers to.
+TEST_F(MitsubaCorpusConstructs, TopLevelEmittersAndSamplersReferredToById) {
+    const ImportedScene s = import(R"j(<sensor type="perspective"><ref id="smp"/></sensor>
+<shape type="sphere"><ref id="glow"/></shape>
+<emitter type="area" id="glow"><rgb name="radiance" value="2, 3, 4"/></emitter>
+<emitter type="area" id="unused"/>
+<sampler type="independent" id="smp"><integer name="sample_count" value="9"/></sampler>)j");
+    EXPECT_EQ(s.scene["shapes"][0]["emission"], Json::parse(R"j({"radiance": [2, 3, 4]})j"));
+    EXPECT_EQ(s.scene["shapes"].size(), 1u);
+    EXPECT_FALSE(s.scene.contains("lights"));
+    EXPECT_EQ(s.scene["sampler"]["spp"], 9);
+    EXPECT_THAT(s.warnings, ::testing::Contains(where(5) + ": <emitter type=\"area\"> \"unused\" "
+                                                           "is used by no shape: not imported"));
+}
+
+// mitsuba3 src/integrators/moment.cpp: the nested integrator's image, with its second moment
+// as extra channels; ProjectiveCamera reads focus_distance for every perspective sensor, where
+// a pinhole ignores it.
+TEST_F(MitsubaCorpusConstructs, MomentIntegratorAndAPinholesFocusDistance) {
+    const ImportedScene s = import(R"j(<integrator type="moment">
+  <integrator type="path"><integer name="max_depth" value="8"/></integrator>
+</integrator>
+<sensor type="perspective"><float name="focus_distance" value="6"/></sensor>)j" +
+                                   std::string(kLight));
+    EXPECT_EQ(s.scene["integrator"],
+              Json::parse(R"j({"type": "path", "max_depth": 7, "rr_depth": 4})j"));
+    EXPECT_FALSE(s.scene["camera"].contains("focus_distance"));
+    EXPECT_THAT(s.warnings,
+                ::testing::Contains(where(2) + ": moment became its nested integrator: "
+                                               "lamina writes no second-moment channels"));
+    EXPECT_EQ(error("<integrator type=\"moment\"/>"),
+              where(2) +
+                  ": <integrator type=\"moment\">: moment with 0 integrators is not supported "
+                  "(lamina takes one)");
+}
+
 // ---- checkerboard --------------------------------------------------------------------------
 
 // mitsuba3 src/textures/checkerboard.cpp: uv' = to_uv(uv); eval gives color0 (0.4) where

@@ -262,6 +262,7 @@ void translateShape(Translation& t, const Element& e, Json& out, bool inGroup) {
         const auto emitters = p.objects("emitter");
         if (emitters.size() > 1) p.fail("a shape takes one emitter");
         if (!emitters.empty()) {
+            t.areaEmitters.insert(emitters[0]);
             Plugin emitter(*emitters[0], t.document, t.diagnostics);
             if (emitter.type() != "area")
                 emitter.fail("only an area emitter can be attached to a shape");
