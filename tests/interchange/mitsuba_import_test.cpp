@@ -407,14 +407,12 @@ TEST_F(MitsubaImport, MissingMeshFileNamesTheLine) {
 
 TEST_F(MitsubaImport, UnsupportedShapesAreRefused) {
     EXPECT_EQ(error("<shape type=\"serialized\"/>"),
-              where(2) +
-                  ": <shape type=\"serialized\">: the serialized mesh format is not supported "
-                  "(convert the mesh to PLY or OBJ)");
+              where(2) + ": <shape type=\"serialized\">: needs a filename");
     EXPECT_EQ(error("\n<shape type=\"hyperboloid\"/>"),
               where(3) +
                   ": <shape type=\"hyperboloid\">: the shape plugin \"hyperboloid\" is not "
-                  "supported (obj, ply, rectangle, cube, sphere, disk, cylinder, instance, "
-                  "shapegroup)");
+                  "supported (obj, ply, serialized, rectangle, cube, sphere, disk, cylinder, "
+                  "instance, shapegroup)");
 }
 
 // Mitsuba's cylinder (mitsuba3 src/shapes/cylinder.cpp): the unit cylinder placed by to_world *
