@@ -346,6 +346,25 @@ TEST_F(MitsubaCorpusConstructs, NamedBitmapUsedTwiceWarnsOnce) {
     EXPECT_EQ(bitmapWarnings, 1);
 }
 
+// Unnamed textures are named by their line, and by their file when it is an included one: two
+// files' checkerboards on the same line stay two textures.
+TEST_F(MitsubaCorpusConstructs, UnnamedTexturesOfTwoFilesKeepTheirOwnNames) {
+    writeIn("part.xml",
+            "<scene version=\"3.0.0\">\n<bsdf type=\"diffuse\" id=\"b\"><texture "
+            "type=\"checkerboard\" name=\"reflectance\"><float name=\"color0\" "
+            "value=\"0.9\"/></texture></bsdf>\n</scene>");
+    const ImportedScene s = import(
+        "<bsdf type=\"diffuse\" id=\"a\"><texture type=\"checkerboard\" name=\"reflectance\"/>"
+        "</bsdf>\n<include filename=\"part.xml\"/>\n<shape type=\"sphere\"><ref id=\"a\"/></shape>"
+        "<shape type=\"sphere\"><ref id=\"b\"/></shape>" +
+        std::string(kLight));
+    EXPECT_EQ(s.scene["materials"]["a"]["reflectance"]["texture"], "checkerboard (line 2)");
+    EXPECT_EQ(s.scene["materials"]["b"]["reflectance"]["texture"],
+              "checkerboard (part.xml line 2)");
+    EXPECT_EQ(s.scene["textures"]["checkerboard (part.xml line 2)"]["a"], 0.9);
+    EXPECT_EQ(s.scene["textures"]["checkerboard (line 2)"]["a"], 0.4);
+}
+
 TEST_F(MitsubaCorpusConstructs, BitmapRefusalsNameTheLine) {
     write("w.png", "x");
     const auto bitmap = [&](const std::string& name, const std::string& inside) {

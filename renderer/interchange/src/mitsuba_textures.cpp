@@ -28,10 +28,16 @@ UvMap readUvMap(Plugin& p) {
     return {m[0][0], m[1][1], m[3][0], m[3][1]};
 }
 
-// The name of the lamina texture of a Mitsuba texture: its id, else what it is and where.
-std::string baseName(const Element& texture, const std::string& what) {
+// The name of the lamina texture of a Mitsuba texture: its id, else what it is and where (the
+// line, and the file when it is an included one: lines of two files may coincide).
+std::string baseName(const Plugin& p, const std::string& what) {
+    const Element& texture = p.element();
     if (const std::string* id = texture.attribute("id")) return *id;
-    return what + " (line " + std::to_string(texture.line) + ")";
+    const auto& files = p.document().files;
+    const std::string file = !files.empty() && texture.file == files.front()
+                                 ? ""
+                                 : texture.file.filename().string() + " ";
+    return what + " (" + file + "line " + std::to_string(texture.line) + ")";
 }
 
 // A checkerboard's colour as a lamina colour (a number or [r, g, b]); as an alpha, one number
@@ -81,7 +87,7 @@ std::string checkerboard(Plugin& p, TextureUse use, std::vector<TranslatedTextur
     if (swap) std::swap(color0, color1);
     p.finish();
     const std::string name =
-        baseName(p.element(), "checkerboard") + (use == TextureUse::Alpha ? " as roughness" : "");
+        baseName(p, "checkerboard") + (use == TextureUse::Alpha ? " as roughness" : "");
     out.push_back({name,
                    {{"type", "checkerboard"},
                     {"a", color0},
@@ -125,7 +131,7 @@ std::string bitmap(Plugin& p, TextureUse use, std::vector<TranslatedTexture>& ou
     Json texture{{"type", "image"}, {"color_space", raw ? "linear" : "srgb"}};
     if (uv.scaleU != 1 || uv.scaleV != 1) texture["scale"] = {uv.scaleU, uv.scaleV};
     if (uv.offsetU != 0 || uv.offsetV != 0) texture["offset"] = {uv.offsetU, uv.offsetV};
-    const std::string name = baseName(p.element(), "bitmap " + file->filename().string());
+    const std::string name = baseName(p, "bitmap " + file->filename().string());
     out.push_back({name, texture, *file});
     return name;
 }
