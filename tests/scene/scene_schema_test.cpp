@@ -83,6 +83,9 @@ class SceneSchema : public ::testing::Test {
         const std::vector<float> grey(2 * 2 * 3, 0.5f);  // 2 x 2 grey images
         render::writeRgb8(dir / "photo.png", 2, 2, grey);
         render::writeFloatExr(dir / "sky.exr", 2, 2, {"R", "G", "B"}, grey);
+        // Two quads in Mitsuba's serialized format (the seed of its fuzz target).
+        fs::copy_file(kSource / "tests/fuzz/corpus/serialized_reader/two-quads-v4.serialized",
+                      dir / "quads.serialized");
         int sceneIndex = 0;
         for (const auto& example : schema_["examples"]) {
             ReadDocument& d =

@@ -54,13 +54,40 @@ double relativeIor(Plugin& p, const char* defaultInterior, const char* defaultEx
     return interior / side("ext_ior", defaultExterior);
 }
 
-// Microfacet roughness of the rough plugins: `alpha` (0.1) or `alpha_u` / `alpha_v`, and
-// `distribution` (`beckmann`, Mitsuba's default, or `ggx`). Written into `m`.
-void roughness(Plugin& p, Json& m, bool anisotropic) {
+// A textured `alpha`, or `alpha_u` and `alpha_v` given by one texture, as lamina's textured
+// roughness (sqrt(alpha), mitsuba_textures.h); false when alpha is not textured.
+bool texturedAlpha(Plugin& p, Json& m, bool anisotropic, std::vector<TranslatedTexture>& textures) {
+    const auto element = [&](const char* name) -> const Element* {
+        const auto t = p.texture(name);
+        return t ? t->texture : nullptr;
+    };
+    const Element* alpha = element("alpha");
+    const Element* u = anisotropic ? element("alpha_u") : nullptr;
+    const Element* v = anisotropic ? element("alpha_v") : nullptr;
+    if (!alpha && !u && !v) return false;
+    if ((u || v) && u != v)
+        p.fail(
+            "a textured alpha_u / alpha_v is supported only as one texture given to both "
+            "(lamina's textured roughness is isotropic)");
+    if (alpha && u) p.fail("give alpha or alpha_u / alpha_v, not both");
+    const Element& texture = alpha ? *alpha : *u;
+    m["roughness"] = {{"texture", translateTexture(texture, TextureUse::Alpha, p.document(),
+                                                   p.diagnostics(), textures)}};
+    return true;
+}
+
+// Microfacet roughness of the rough plugins: `alpha` (0.1) or `alpha_u` / `alpha_v` (numbers
+// or a texture), and `distribution` (`beckmann`, Mitsuba's default, or `ggx`). Written into
+// `m`; a texture's definitions into `textures`.
+void roughness(Plugin& p, Json& m, bool anisotropic, std::vector<TranslatedTexture>& textures) {
     const std::string distribution = p.string("distribution").value_or("beckmann");
     if (distribution != "beckmann" && distribution != "ggx")
         p.fail("distribution \"" + distribution + "\" is not supported (beckmann or ggx)");
     m["distribution"] = distribution;
+    // Lamina samples visible normals always; Mitsuba's switch only changes the variance.
+    if (p.has("sample_visible") && !p.boolean("sample_visible", true))
+        p.warn("sample_visible false became lamina's visible-normal sampling (same expectation)");
+    if (texturedAlpha(p, m, anisotropic, textures)) return;
     auto check = [&](double a, const char* name) {
         if (!(a >= 0 && a <= 1))
             p.fail(std::string("parameter \"") + name + "\" must be in [0, 1] for lamina");
@@ -73,9 +100,6 @@ void roughness(Plugin& p, Json& m, bool anisotropic) {
     } else {
         m["alpha"] = check(p.number("alpha", 0.1), "alpha");
     }
-    // Lamina samples visible normals always; Mitsuba's switch only changes the variance.
-    if (p.has("sample_visible") && !p.boolean("sample_visible", true))
-        p.warn("sample_visible false became lamina's visible-normal sampling (same expectation)");
 }
 
 void refuseScale(Plugin& p, const char* name) {
@@ -91,7 +115,7 @@ void warnOneSided(Plugin& p, bool insideTwoSided, const std::string& became) {
                ", which reflects on both sides");
 }
 
-Json conductor(Plugin& p, bool rough) {
+Json conductor(Plugin& p, bool rough, std::vector<TranslatedTexture>& textures) {
     Json m{{"type", "conductor"}};
     const std::string material = p.string("material").value_or("none");
     const bool hasNk = p.has("eta") || p.has("k");
@@ -121,25 +145,32 @@ Json conductor(Plugin& p, bool rough) {
                "\" (lamina's measured table; Mitsuba's tabulated data may differ slightly)");
     }
     refuseScale(p, "specular_reflectance");
-    if (rough) roughness(p, m, true);
+    if (rough) roughness(p, m, true, textures);
     return m;
 }
 
-Json dielectric(Plugin& p, const char* type, bool rough, const char* interior) {
+Json dielectric(Plugin& p, const char* type, bool rough, const char* interior,
+                std::vector<TranslatedTexture>& textures) {
     Json m{{"type", type}, {"ior", relativeIor(p, interior, "air")}};
     refuseScale(p, "specular_reflectance");
     refuseScale(p, "specular_transmittance");
-    if (rough) roughness(p, m, false);
+    if (rough) roughness(p, m, false, textures);
     return m;
 }
 
-Json plastic(Plugin& p, bool rough, bool insideTwoSided) {
-    Json base{{"type", "lambert"},
-              {"reflectance", p.color("diffuse_reflectance").value_or(Json(0.5))}};
+Json plastic(Plugin& p, bool rough, bool insideTwoSided, std::vector<TranslatedTexture>& textures) {
+    // Lamina's coat takes no texture; its base's colour may be one.
+    Json base{
+        {"type", "lambert"},
+        {"reflectance", colorOrTexture(p, "diffuse_reflectance", textures).value_or(Json(0.5))}};
     Json m{{"type", "coated"}, {"ior", relativeIor(p, "polypropylene", "air")}, {"base", base}};
     refuseScale(p, "specular_reflectance");
     const bool nonlinear = p.boolean("nonlinear", false);
-    if (rough) roughness(p, m, false);
+    if (rough && p.texture("alpha"))
+        p.fail(
+            "a textured alpha on roughplastic is not supported (lamina's coat takes no "
+            "texture)");
+    if (rough) roughness(p, m, false, textures);
     p.warn(std::string(rough ? "roughplastic" : "plastic") +
            " became lamina's coated (a dielectric coat over lambert, evaluated by a random walk "
            "that follows every internal reflection" +
@@ -151,34 +182,6 @@ Json plastic(Plugin& p, bool rough, bool insideTwoSided) {
 
 bool mapsNormals(const Json& material) {
     return material.contains("displacement") || material.contains("normal_map");
-}
-
-// The texture of a bumpmap or normalmap: a `bitmap` as a lamina image texture (mitsuba3
-// src/textures/bitmap.cpp: `raw` false decodes 8-bit sRGB, bilinear and repeating by default).
-TranslatedTexture bitmap(const Element& texture, const MitsubaDocument& document,
-                         Diagnostics& diagnostics, bool& raw) {
-    Plugin p(texture, document, diagnostics);
-    if (p.type() != "bitmap")
-        p.fail("a bumpmap's or normalmap's texture must be a bitmap (lamina reads image files)");
-    const auto file = p.file("filename");
-    if (!file) p.fail("a bitmap needs \"filename\"");
-    raw = p.boolean("raw", false);
-    const std::string filter = p.string("filter_type").value_or("bilinear");
-    if (filter != "bilinear" && filter != "nearest")
-        p.fail("filter_type \"" + filter + "\" is not supported (bilinear or nearest)");
-    if (filter == "nearest") p.warn("filter_type nearest became lamina's bilinear lookup");
-    if (p.string("wrap_mode").value_or("repeat") != "repeat")
-        p.fail("only wrap_mode \"repeat\" is supported");
-    if (p.has("to_uv")) p.fail("to_uv on a bump or normal map is not supported");
-    if (p.has("format")) p.ignore("format", "lamina stores textures as float");
-    p.warn(
-        "bitmap became an image texture: Mitsuba reads v = 0 at the image's top row, lamina "
-        "at its bottom row (the same on OBJ meshes, whose v Mitsuba flips when reading them; "
-        "elsewhere the image lands mirrored in v)");
-    p.finish();
-    return {"bitmap " + file->filename().string() + " (line " + std::to_string(texture.line) + ")",
-            {{"type", "image"}, {"color_space", raw ? "linear" : "srgb"}},
-            *file};
 }
 
 // `bumpmap` and `normalmap` (mitsuba3 src/bsdfs/bumpmap.cpp, normalmap.cpp): the nested BSDF's
@@ -211,13 +214,12 @@ TranslatedBsdf shadingNormalMap(Plugin& p, const MitsubaDocument& document,
         translateBsdf(*nested[0], document, diagnostics, insideTwoSided, depth + 1);
     if (mapsNormals(out.material)) p.fail("a bumpmap or normalmap inside another is not supported");
     bool raw = false;
-    TranslatedTexture image = bitmap(*textures[0], document, diagnostics, raw);
+    std::string name =
+        translateTexture(*textures[0], TextureUse::Map, document, diagnostics, out.textures, &raw);
     if (!bump && !raw)
         p.fail(
             "a normalmap's bitmap decoded from sRGB is not supported: set raw to true "
             "(its texels are vectors)");
-    std::string name = image.name;
-    out.textures.push_back(std::move(image));
     if (bump) {
         if (scale != 1) {
             out.textures.push_back({name + " times " + formatNumber(scale),
@@ -255,20 +257,21 @@ TranslatedBsdf translateBsdf(const Element& bsdf, const MitsubaDocument& documen
     const std::string& type = p.type();
     TranslatedBsdf out;
     if (type == "diffuse") {
-        out.material = {{"type", "lambert"},
-                        {"reflectance", p.color("reflectance").value_or(Json(0.5))}};
+        out.material = {
+            {"type", "lambert"},
+            {"reflectance", colorOrTexture(p, "reflectance", out.textures).value_or(Json(0.5))}};
         warnOneSided(p, insideTwoSided, "lambert");
     } else if (type == "conductor" || type == "roughconductor") {
-        out.material = conductor(p, type == "roughconductor");
+        out.material = conductor(p, type == "roughconductor", out.textures);
         warnOneSided(p, insideTwoSided, "conductor");
     } else if (type == "dielectric") {
-        out.material = dielectric(p, "dielectric", false, "bk7");
+        out.material = dielectric(p, "dielectric", false, "bk7", out.textures);
     } else if (type == "roughdielectric") {
-        out.material = dielectric(p, "dielectric", true, "bk7");
+        out.material = dielectric(p, "dielectric", true, "bk7", out.textures);
     } else if (type == "thindielectric") {
-        out.material = dielectric(p, "thin_dielectric", false, "bk7");
+        out.material = dielectric(p, "thin_dielectric", false, "bk7", out.textures);
     } else if (type == "plastic" || type == "roughplastic") {
-        out.material = plastic(p, type == "roughplastic", insideTwoSided);
+        out.material = plastic(p, type == "roughplastic", insideTwoSided, out.textures);
     } else if (type == "twosided") {
         // Lamina's reflection models are two-sided already (shaded with the normal facing wo),
         // so twosided(X) is X. Mitsuba's form with two BSDFs (front, back) has no counterpart.
@@ -293,6 +296,10 @@ TranslatedBsdf translateBsdf(const Element& bsdf, const MitsubaDocument& documen
             p.fail(
                 "a bumpmap or normalmap inside blendbsdf is not supported (lamina's maps "
                 "belong to the material a shape uses)");
+        if (!a.textures.empty() || !b.textures.empty())
+            p.fail(
+                "a textured BSDF inside blendbsdf is not supported (lamina's mix takes "
+                "untextured materials)");
         out.textures = std::move(a.textures);
         out.textures.insert(out.textures.end(), b.textures.begin(), b.textures.end());
         // Mitsuba: (1 - weight) first + weight second; lamina's mix: (1 - w) a + w b.

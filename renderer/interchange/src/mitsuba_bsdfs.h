@@ -7,17 +7,9 @@
 #include <vector>
 
 #include "mitsuba_plugin.h"
+#include "mitsuba_textures.h"
 
 namespace lamina::render::mitsuba {
-
-/// A lamina texture a translated BSDF names (a bumpmap's or normalmap's `bitmap`): its name
-/// in the document's `textures`, its definition, and the image file it reads, which the
-/// caller writes as `file` relative to the document.
-struct TranslatedTexture {
-    std::string name;
-    Json texture;
-    std::filesystem::path file;  ///< empty: a texture of other textures
-};
 
 /// A translated `<bsdf>`: the lamina material, for `mask` the shape's alpha, and the textures
 /// the material names.

@@ -35,6 +35,30 @@ const Element& MitsubaDocument::find(const std::string& id, const Element& from)
     return *it->second;
 }
 
+namespace {
+
+// Mitsuba's FileResolver (mitsuba3 src/core/fresolver.cpp): the first directory that has the
+// file; `searchPaths` are looked in before `local` and `top`.
+std::filesystem::path resolveIn(const std::string& name,
+                                const std::vector<std::filesystem::path>& searchPaths,
+                                const std::filesystem::path& local,
+                                const std::filesystem::path& top) {
+    const std::filesystem::path path = name;
+    if (path.is_absolute()) return path;
+    std::error_code error;
+    for (const std::filesystem::path& directory : searchPaths)
+        if (std::filesystem::exists(directory / path, error)) return directory / path;
+    if (std::filesystem::exists(local / path, error)) return local / path;
+    if (std::filesystem::exists(top / path, error)) return top / path;
+    return local / path;
+}
+
+}  // namespace
+
+std::filesystem::path MitsubaDocument::resolve(const std::string& name, const Element& at) const {
+    return resolveIn(name, searchPaths, at.file.parent_path(), top);
+}
+
 std::string snakeCase(const std::string& camelCase) {
     std::string out;
     for (std::size_t i = 0; i < camelCase.size(); ++i) {
@@ -91,7 +115,7 @@ class Reader {
     explicit Reader(MitsubaDocument& document) : document_(document) {}
 
     void readScene(const std::filesystem::path& file) {
-        top_ = file.parent_path();
+        document_.top = file.parent_path();
         document_.scene = readFile(file, "", 0);
     }
 
@@ -130,29 +154,44 @@ class Reader {
         return scene;
     }
 
+    // mitsuba3 parser.cpp substitute_parameters: every "$name" of a parameter defined so far
+    // is replaced, the longest names first (so $resx is not $res then "x"); a "$" left over
+    // that "\" does not escape is an undefined parameter; "\$" becomes "$".
     std::string substitute(const std::string& value, const std::string& where) const {
-        std::string out;
-        for (std::size_t i = 0; i < value.size(); ++i) {
-            if (value[i] != '$') {
-                out += value[i];
-                continue;
+        if (value.find('$') == std::string::npos) return value;
+        std::vector<std::pair<std::string, std::string>> byLength(parameters_.begin(),
+                                                                  parameters_.end());
+        std::stable_sort(byLength.begin(), byLength.end(), [](const auto& a, const auto& b) {
+            return a.first.size() > b.first.size();
+        });
+        std::string out = value;
+        for (const auto& [name, replacement] : byLength) {
+            const std::string key = "$" + name;
+            std::size_t pos = 0;
+            while ((pos = out.find(key, pos)) != std::string::npos) {
+                if (pos > 0 && out[pos - 1] == '\\') {
+                    pos += key.size();
+                    continue;
+                }
+                out.replace(pos, key.size(), replacement);
+                pos += replacement.size();
+                if (out.size() > kMaxMitsubaFileBytes)
+                    throw InputError(where + ": substitutions grow an attribute beyond " +
+                                     std::to_string(kMaxMitsubaFileBytes >> 20) + " MiB");
             }
-            std::size_t end = i + 1;
-            while (end < value.size() && isNameCharacter(value[end]))
-                ++end;
-            const std::string name = value.substr(i + 1, end - i - 1);
-            if (name.empty()) {
-                out += '$';
-                continue;
-            }
-            const auto it = parameters_.find(name);
-            if (it == parameters_.end())
-                throw InputError(where + ": $" + name +
-                                 " is not defined (declare it with <default name=\"" + name +
-                                 "\" value=\"...\"/>)");
-            out += it->second;
-            i = end - 1;
         }
+        for (std::size_t pos = 0; (pos = out.find('$', pos)) != std::string::npos; ++pos) {
+            if (pos > 0 && out[pos - 1] == '\\') continue;
+            std::size_t end = pos + 1;
+            while (end < out.size() && isNameCharacter(out[end]))
+                ++end;
+            const std::string name = out.substr(pos + 1, end - pos - 1);
+            throw InputError(where + ": $" + name +
+                             " is not defined (declare it with <default name=\"" + name +
+                             "\" value=\"...\"/> before it is used)");
+        }
+        for (std::size_t pos = 0; (pos = out.find("\\$", pos)) != std::string::npos; ++pos)
+            out.erase(pos, 1);
         return out;
     }
 
@@ -202,14 +241,21 @@ class Reader {
                 if (++includes_ > kMaxMitsubaIncludes)
                     throw InputError(inc.where() + ": more than " +
                                      std::to_string(kMaxMitsubaIncludes) + " includes");
-                std::filesystem::path path = *name;
-                if (path.is_relative()) {
-                    const std::filesystem::path local = source.file.parent_path() / path;
-                    path = std::filesystem::exists(local) ? local : top_ / path;
-                }
+                // Mitsuba looks in the including file's directory first, then its resolver's.
+                const std::filesystem::path local = source.file.parent_path();
+                std::error_code error;
+                const std::filesystem::path path =
+                    std::filesystem::exists(local / *name, error)
+                        ? local / *name
+                        : resolveIn(*name, document_.searchPaths, local, document_.top);
                 Element included = readFile(path, inc.where(), includeDepth + 1);
                 for (Element& c : included.children)
                     e.children.push_back(std::move(c));
+                continue;
+            }
+            if (tag == "path") {
+                Element p = convert(child, source, major, includeDepth, depth + 1);
+                addSearchPath(p, depth == 0);
                 continue;
             }
             e.children.push_back(convert(child, source, major, includeDepth, depth + 1));
@@ -217,8 +263,34 @@ class Reader {
         return e;
     }
 
+    // `<path value>`: a directory that file names are looked up in (mitsuba3 parser.cpp: only
+    // in the root; a relative one is taken from the file's directory, else from the resolver).
+    void addSearchPath(const Element& p, bool inRoot) {
+        checkPathAttributes(p);
+        if (!inRoot) throw InputError(p.where() + ": <path> must be a child of <scene>");
+        const std::string& value = *p.attribute("value");
+        const std::filesystem::path local = p.file.parent_path();
+        std::error_code error;
+        std::filesystem::path directory = value;
+        if (directory.is_relative())
+            directory = std::filesystem::exists(local / value, error)
+                            ? local / value
+                            : resolveIn(value, document_.searchPaths, local, document_.top);
+        if (!std::filesystem::is_directory(directory, error))
+            throw InputError(p.where() + ": <path>: the directory \"" + value + "\" is not there");
+        document_.searchPaths.insert(document_.searchPaths.begin(), directory);
+    }
+
+    static void checkPathAttributes(const Element& p) {
+        for (const auto& [name, value] : p.attributes)
+            if (name != "value")
+                throw InputError(p.where() + ": <path>: attribute \"" + name +
+                                 "\" is not supported");
+        if (!p.attribute("value") || p.attribute("value")->empty())
+            throw InputError(p.where() + ": <path> needs a value (a directory)");
+    }
+
     MitsubaDocument& document_;
-    std::filesystem::path top_;
     std::map<std::string, std::string> parameters_;
     int includes_ = 0;
     std::size_t bytes_ = 0;

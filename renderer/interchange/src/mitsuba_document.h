@@ -1,9 +1,10 @@
 // A Mitsuba 3 XML scene file as a tree of elements, each with the file and line it came from
 // (docs/interchange.md, "Mitsuba 3"). Reading does what Mitsuba's own parser does before any
 // plugin sees the scene (mitsuba3 src/core/xml.cpp): `<default name value>` and `$name`
-// substitution in attribute values, `<include filename>` spliced in place, and the names of
-// scene version 0.x files (camelCase) turned into Mitsuba 3's (snake_case). `<ref id>` is
-// kept as an element; `MitsubaDocument::find` resolves it.
+// substitution in attribute values, `<include filename>` spliced in place, `<path value>`
+// added to the directories files are looked up in (mitsuba3 src/core/parser.cpp, its
+// FileResolver), and the names of scene version 0.x files (camelCase) turned into Mitsuba 3's
+// (snake_case). `<ref id>` is kept as an element; `MitsubaDocument::find` resolves it.
 //
 // Bounded: a file larger than kMaxMitsubaFileBytes, more than kMaxMitsubaTotalBytes in all,
 // more than kMaxMitsubaIncludes includes,
@@ -56,9 +57,19 @@ struct MitsubaDocument {
     std::vector<std::filesystem::path> files;
     /// Elements with an `id` attribute, anywhere in the tree.
     std::map<std::string, const Element*> ids;
+    /// The directories of the `<path>` elements, the last one read first (Mitsuba prepends each
+    /// to its FileResolver).
+    std::vector<std::filesystem::path> searchPaths;
 
     /// The element with `id`; an InputError naming `from` when there is none.
     const Element& find(const std::string& id, const Element& from) const;
+    /// A file named in `at` (a parameter or an `<include>`), as Mitsuba's FileResolver finds
+    /// it: an absolute name as it is; a relative one in the first `<path>` directory that has
+    /// it, else beside the file `at` is in, else beside the scene file. When none has it, the
+    /// name beside `at`'s file (so that the caller's "cannot open" names that place).
+    std::filesystem::path resolve(const std::string& name, const Element& at) const;
+    /// The scene file's directory.
+    std::filesystem::path top;
 };
 
 /// Reads `file` (a `<scene version="...">`) and everything it includes into `document`.

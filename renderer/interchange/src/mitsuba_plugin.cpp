@@ -249,21 +249,40 @@ std::optional<Transform> Plugin::transform(const std::string& name) {
     return readTransform(*e);
 }
 
+std::optional<Plugin::TextureParameter> Plugin::texture(const std::string& name) {
+    for (const Element& c : element_.children) {
+        const std::string* n = c.attribute("name");
+        if (!n || *n != name || (c.tag != "texture" && c.tag != "ref")) continue;
+        const Element* target = &c;
+        if (c.tag == "ref") {
+            checkAttributes(c, {"name", "id"});
+            const std::string* id = c.attribute("id");
+            if (!id) throw InputError(c.where() + ": <ref> needs an id");
+            target = &document_.find(*id, c);
+            if (target->tag != "texture")
+                throw InputError(c.where() + ": " + element_.describe() + ": parameter \"" + name +
+                                 "\" refers to " + target->describe() + " at " + target->where() +
+                                 ", which is not a texture");
+        }
+        used_.insert(&c);
+        return TextureParameter{&c, target};
+    }
+    return std::nullopt;
+}
+
 std::optional<Json> Plugin::color(const std::string& name, bool emitted) {
-    const Element* e = property(name, {"rgb", "srgb", "float", "spectrum", "texture"});
-    if (!e) return std::nullopt;
     const std::string what = "parameter \"" + name + "\"";
-    if (e->tag == "texture")
-        throw InputError(e->where() + ": " + element_.describe() + ": " + what +
-                         ": textures are not imported (give a colour)");
+    if (const auto t = texture(name))
+        throw InputError(t->at->where() + ": " + element_.describe() + ": " + what +
+                         ": a texture is not supported here (give a colour)");
+    const Element* e = property(name, {"rgb", "srgb", "float", "spectrum"});
+    if (!e) return std::nullopt;
     if (e->tag == "spectrum" && e->attribute("type"))
         throw InputError(e->where() + ": " + what + ": the spectrum plugin \"" +
                          *e->attribute("type") +
                          "\" is not supported (give value=\"nm:value, ...\" or a filename)");
     if (e->tag == "spectrum" && e->attribute("filename")) {
-        std::filesystem::path path = *e->attribute("filename");
-        if (path.is_relative()) path = e->file.parent_path() / path;
-        return readSpectrumFile(path, *e, diagnostics_);
+        return readSpectrumFile(document_.resolve(*e->attribute("filename"), *e), *e, diagnostics_);
     }
     const std::string* value = e->attribute("value");
     if (!value) throw InputError(e->where() + ": " + what + " needs a value");
@@ -306,8 +325,7 @@ std::optional<Json> Plugin::color(const std::string& name, bool emitted) {
 std::optional<std::filesystem::path> Plugin::file(const std::string& name) {
     const std::optional<std::string> value = string(name);
     if (!value) return std::nullopt;
-    std::filesystem::path path = *value;
-    if (path.is_relative()) path = element_.file.parent_path() / path;
+    const std::filesystem::path path = document_.resolve(*value, element_);
     if (!std::filesystem::is_regular_file(path))
         fail("parameter \"" + name + "\": cannot open " + path.string());
     return std::filesystem::absolute(path);

@@ -4,6 +4,7 @@
 // file and line). Values come out as lamina scene JSON (numbers, colours, spectra, transforms).
 #pragma once
 
+#include <algorithm>
 #include <filesystem>
 #include <glm/mat4x4.hpp>
 #include <optional>
@@ -20,8 +21,11 @@ namespace lamina::render::mitsuba {
 struct Diagnostics {
     std::vector<std::string> warnings;
     std::vector<std::filesystem::path> files;
+    /// Once per place and text: an object referred to twice is translated twice.
     void warn(const Element& at, const std::string& what) {
-        warnings.push_back(at.where() + ": " + what);
+        std::string warning = at.where() + ": " + what;
+        if (std::find(warnings.begin(), warnings.end(), warning) == warnings.end())
+            warnings.push_back(std::move(warning));
     }
 };
 
@@ -70,11 +74,21 @@ class Plugin {
     std::optional<glm::dvec3> point(const std::string& name);
     std::optional<Transform> transform(const std::string& name);
     /// A colour or spectrum parameter (`<rgb>`, `<srgb>`, `<float>`, `<spectrum>`) as a lamina
-    /// colour: a number, [r, g, b] or {"spectrum": [[nm, value], ...]}. `<texture>` is refused.
+    /// colour: a number, [r, g, b] or {"spectrum": [[nm, value], ...]}. A texture is refused
+    /// (colorOrTexture, mitsuba_textures.h, takes one where lamina can).
     /// `emitted`: an emitter's, where a constant `<spectrum>` is illuminant E.
     std::optional<Json> color(const std::string& name, bool emitted = false);
-    /// A file parameter, as the absolute path it names (resolved against the file's directory);
-    /// a missing file is an error naming the line.
+    /// A parameter given as a texture: the element that gives it (a `<texture name>` or a
+    /// `<ref name id>`) and the `<texture>` it is.
+    struct TextureParameter {
+        const Element* at;
+        const Element* texture;
+    };
+    /// Parameter `name` when it is a texture (nested, or a `<ref>` to a `<texture>`), read;
+    /// nullopt otherwise.
+    std::optional<TextureParameter> texture(const std::string& name);
+    /// A file parameter, as the absolute path it names (MitsubaDocument::resolve: the `<path>`
+    /// directories, the file's, the scene's); a missing file is an error naming the line.
     std::optional<std::filesystem::path> file(const std::string& name);
 
     /// Nested objects (children with tag `tag`, `<ref>`s resolved), in file order; each is

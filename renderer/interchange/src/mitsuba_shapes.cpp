@@ -191,16 +191,26 @@ void translateShape(Translation& t, const Element& e, Json& out, bool inGroup) {
     Plugin p(e, t.document, t.diagnostics);
     const std::string& type = p.type();
     Json s = Json::object();
-    if (type == "obj" || type == "ply") {
+    if (type == "obj" || type == "ply" || type == "serialized") {
         const auto file = p.file("filename");
         if (!file) p.fail("needs a filename");
         s = {{"type", type}, {"file", path(t, *file)}};
+        if (type == "serialized") {
+            const long index = p.integer("shape_index", 0);
+            if (index < 0 || index > (1L << 30)) p.fail("shape_index must be in [0, 2^30]");
+            if (index != 0) s["shape_index"] = index;
+        }
         if (p.boolean("flip_normals", false))
             p.fail("flip_normals is not supported on meshes (lamina meshes face as wound)");
         if (p.boolean("face_normals", false))
             p.warn("face_normals became the file's own normals (lamina uses them when present)");
-        // Textures are not imported, so the uv orientation changes nothing.
-        if (type == "obj") p.boolean("flip_tex_coords", true);
+        // Mitsuba's bitmaps put v = 0 at the top row and lamina's at the bottom row, so they
+        // agree where Mitsuba flips v on reading (v -> 1 - v: OBJ's default, PLY's option).
+        const bool flipV = type != "serialized" && p.boolean("flip_tex_coords", type == "obj");
+        if (type == "obj" && !flipV)
+            p.warn(
+                "flip_tex_coords false: a bitmap on this mesh lands mirrored in v (lamina "
+                "agrees with Mitsuba's flipped v)");
     } else if (type == "rectangle") {
         s = {{"type", "rectangle"}};
     } else if (type == "cube") {
@@ -221,12 +231,10 @@ void translateShape(Translation& t, const Element& e, Json& out, bool inGroup) {
             p.fail("an instance needs one <ref> to a shapegroup with an id");
         if (inGroup) p.fail("an instance inside a shapegroup is not supported");
         s = {{"type", "instance"}, {"object", *groups[0]->attribute("id")}};
-    } else if (type == "serialized") {
-        p.fail("the serialized mesh format is not supported (convert the mesh to PLY or OBJ)");
     } else {
         p.fail("the shape plugin \"" + type +
-               "\" is not supported (obj, ply, rectangle, cube, sphere, disk, cylinder, "
-               "instance, shapegroup)");
+               "\" is not supported (obj, ply, serialized, rectangle, cube, sphere, disk, "
+               "cylinder, instance, shapegroup)");
     }
     if (const std::string* id = e.attribute("id")) s["name"] = *id;
     if (type == "cylinder") {
@@ -257,6 +265,7 @@ void translateShape(Translation& t, const Element& e, Json& out, bool inGroup) {
         const auto emitters = p.objects("emitter");
         if (emitters.size() > 1) p.fail("a shape takes one emitter");
         if (!emitters.empty()) {
+            t.areaEmitters.insert(emitters[0]);
             Plugin emitter(*emitters[0], t.document, t.diagnostics);
             if (emitter.type() != "area")
                 emitter.fail("only an area emitter can be attached to a shape");

@@ -182,6 +182,8 @@ void translateSensor(Translation& t, const Element& sensor) {
         camera["matrix"] = rows;
         if (glm::determinant(glm::dmat3(transform->matrix)) < 0) camera["handedness"] = "left";
     }
+    // A pinhole's focus distance changes nothing (mitsuba3 ProjectiveCamera reads it for all).
+    if (camera.value("type", "") != "thin_lens") p.optionalNumber("focus_distance");
     p.ignore("near_clip", "lamina's camera rays start at the lens");
     p.ignore("far_clip", "lamina's camera rays are unbounded");
     p.ignore("srf", "lamina's film uses the CIE 1931 observer");
@@ -205,6 +207,18 @@ long laminaDepth(Plugin& p, const char* name, long fallback) {
 
 void translateIntegrator(Translation& t, const Element& integrator) {
     Plugin p(integrator, t.document, t.diagnostics);
+    if (p.type() == "moment") {
+        // mitsuba3 moment.cpp: the nested integrators' images with their second moments as
+        // extra channels; lamina renders the first.
+        const auto nested = p.objects("integrator");
+        if (nested.size() != 1)
+            p.fail("moment with " + std::to_string(nested.size()) +
+                   " integrators is not supported (lamina takes one)");
+        p.warn("moment became its nested integrator: lamina writes no second-moment channels");
+        p.finish();
+        translateIntegrator(t, *nested[0]);
+        return;
+    }
     const std::string& type = p.type();
     Json out = Json::object();
     if (type == "path" || type == "volpath" || type == "volpathmis") {
@@ -296,16 +310,23 @@ ImportedScene importMitsubaScene(const std::filesystem::path& file,
                 translateShapeGroup(t, e);
             else
                 translateShape(t, e, t.scene["shapes"], false);
+        } else if (e.tag == "emitter" && e.attribute("id") && e.attribute("type") &&
+                   *e.attribute("type") == "area") {
+            continue;  // the emission of the shapes that refer to it
         } else if (e.tag == "emitter") {
             translateEmitter(t, e);
-        } else if (e.tag == "medium" && e.attribute("id")) {
-            continue;  // translated where a shape or the sensor refers to it
+        } else if ((e.tag == "medium" || e.tag == "texture" || e.tag == "sampler" ||
+                    e.tag == "film" || e.tag == "rfilter") &&
+                   e.attribute("id")) {
+            continue;  // translated where a shape, a sensor, a film or a BSDF refers to it
         } else if (e.tag == "texture" || e.tag == "medium" || e.tag == "phase" ||
                    e.tag == "volume" || e.tag == "film" || e.tag == "sampler" ||
                    e.tag == "rfilter") {
             throw InputError(e.where() + ": " + e.describe() +
                              " at the top level is not supported" +
-                             (e.tag == "medium" ? " without an id (nothing can refer to it)" : ""));
+                             (e.tag == "medium" || e.tag == "texture"
+                                  ? " without an id (nothing can refer to it)"
+                                  : ""));
         } else {
             throw InputError(e.where() + ": unknown element <" + e.tag + "> in <scene>");
         }
@@ -324,6 +345,11 @@ ImportedScene importMitsubaScene(const std::filesystem::path& file,
         diagnostics.warn(scene, "no <integrator>: Mitsuba's default path tracer");
         translateIntegrator(t, defaultElement(scene, "integrator", "path"));
     }
+    for (const Element& e : scene.children)
+        if (e.tag == "emitter" && e.attribute("id") && !t.areaEmitters.count(&e) &&
+            e.attribute("type") && *e.attribute("type") == "area")
+            diagnostics.warn(e, e.describe() + " \"" + *e.attribute("id") +
+                                    "\" is used by no shape: not imported");
     for (const Element& e : scene.children)
         if (e.tag == "medium" && e.attribute("id") && !t.media.count(&e))
             diagnostics.warn(e, e.describe() + " \"" + *e.attribute("id") +

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <map>
+#include <set>
 #include <string>
 
 #include "lamina/interchange/scene_import.h"
@@ -25,6 +26,8 @@ struct Translation {
     std::map<const Element*, std::optional<double>> namedBsdfs;
     /// Media translated so far (each once, wherever it is referred to): their lamina names.
     std::map<const Element*, std::string> media;
+    /// Area emitters that shapes took (a top-level one with an id is used by reference).
+    std::set<const Element*> areaEmitters;
 };
 
 /// Writes the textures a translated BSDF names into the document's `textures` (their files

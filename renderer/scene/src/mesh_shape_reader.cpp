@@ -1,5 +1,5 @@
-// The triangle-mesh shapes of "shapes" (`mesh`, `rectangle`, `obj`, `ply`): their triangles
-// inline, from a file or made here, placed by the shape's transform.
+// The triangle-mesh shapes of "shapes" (`mesh`, `rectangle`, `obj`, `ply`, `serialized`): their
+// triangles inline, from a file or made here, placed by the shape's transform.
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "lamina/scene/mesh_files.h"
@@ -88,6 +88,17 @@ void readTriangles(const JsonReader& r, ShapeKind kind, MeshDesc& mesh) {
         case ShapeKind::Ply:
             readMeshFile(r, readPly, mesh);
             break;
+        case ShapeKind::Serialized: {
+            // One mesh of a Mitsuba serialized file (its `shape_index`, 0 the first).
+            const auto index = std::uint32_t(r.integer("shape_index", 0, 0, 1 << 30));
+            const std::filesystem::path file = r.filePath("file");
+            try {
+                readSerialized(file, index, mesh);
+            } catch (const InputError& e) {
+                r.failAt("file", e.what());
+            }
+            break;
+        }
         case ShapeKind::Rectangle:
             // The square [-1, 1]^2 in the plane z = 0, facing +z; place it with `transform`.
             // An emitting one is one light (RectangleLight::isRectangle).

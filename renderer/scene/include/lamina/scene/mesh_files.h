@@ -1,4 +1,4 @@
-// Triangle meshes from files. Both readers append the file's geometry to a MeshDesc
+// Triangle meshes from files. The readers append the file's geometry to a MeshDesc
 // (positions, optional normals and uvs, triangles; polygons split as fans) and throw
 // InputErrors that name the file and what was wrong.
 //   obj_reader.cpp  Wavefront OBJ, through tinyobjloader
@@ -6,9 +6,12 @@
 //                   and big-endian, vertex positions (x, y, z) with optional normals (nx, ny,
 //                   nz) and texture coordinates (u, v or s, t), polygonal faces. Properties of
 //                   other elements and unknown vertex properties are skipped.
+//   serialized_reader.cpp  Mitsuba's serialized meshes (versions 3 and 4): zlib-compressed
+//                   positions, optional normals and uvs, triangles; one mesh of a file of several.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -19,6 +22,8 @@ namespace lamina::render {
 
 void readObj(const std::filesystem::path& file, MeshDesc& mesh);
 void readPly(const std::filesystem::path& file, MeshDesc& mesh);
+/// Mesh `shapeIndex` (0 the first) of a Mitsuba serialized file.
+void readSerialized(const std::filesystem::path& file, std::uint32_t shapeIndex, MeshDesc& mesh);
 
 /// The first vertex from `first` on whose position, normal or uv is NaN or infinite (in
 /// float: 1e39 overflows), or whose normal is zero, described as "vertex 7: normal (0, 0,

@@ -33,12 +33,13 @@ struct EmissionDesc {
 /// The `type` of a scene file's shape: analytic spheres and disks become SphereDesc and
 /// DiskDesc (QuadricDesc when clipped), a cylinder a QuadricDesc, an instance an InstanceDesc,
 /// the others triangle meshes.
-enum class ShapeKind { Sphere, Disk, Cylinder, Rectangle, Mesh, Obj, Ply, Instance };
+enum class ShapeKind { Sphere, Disk, Cylinder, Rectangle, Mesh, Obj, Ply, Serialized, Instance };
 inline constexpr NameTable kShapeKindNames{std::array{
     NameEntry{ShapeKind::Sphere, "sphere"}, NameEntry{ShapeKind::Disk, "disk"},
     NameEntry{ShapeKind::Cylinder, "cylinder"}, NameEntry{ShapeKind::Rectangle, "rectangle"},
     NameEntry{ShapeKind::Mesh, "mesh"}, NameEntry{ShapeKind::Obj, "obj"},
-    NameEntry{ShapeKind::Ply, "ply"}, NameEntry{ShapeKind::Instance, "instance"}}};
+    NameEntry{ShapeKind::Ply, "ply"}, NameEntry{ShapeKind::Serialized, "serialized"},
+    NameEntry{ShapeKind::Instance, "instance"}}};
 
 /// A shape's `alpha` cut-out: a constant in [0, 1] or a texture's first channel at the hit's
 /// uv. A hit where alpha < 1 is kept only when alpha reaches a hash of the ray and the hit
