@@ -192,6 +192,17 @@ TEST_F(SerializedMeshFile, BadFilesAreNamed) {
                 HasSubstr("1099511627776 vertices and 1 triangles are more than the reader takes"));
 }
 
+// An offset table entry near 2^64 must be refused, not wrap around the bounds check (found by
+// the serialized_reader fuzz target; tests/fuzz/regressions/serialized_reader).
+TEST_F(SerializedMeshFile, AnOffsetNearTwoToTheSixtyFourIsRefused) {
+    std::string bytes = encodeAll({triangle(0), triangle(1)});
+    // The table's second entry (mesh 1), just before the count.
+    bytes.replace(bytes.size() - 12, 8, std::string(8, char(0xff)));
+    EXPECT_EQ(readError(bytes, 1), file() +
+                                       ": mesh 1 starts at 18446744073709551615, past the "
+                                       "file's meshes");
+}
+
 // The scene's `serialized` shape and Mitsuba's `<shape type="serialized">` that becomes it.
 TEST_F(SerializedMeshFile, SceneShapeAndMitsubaImport) {
     write("m.serialized", encodeAll({quad(), triangle(5)}));

@@ -156,7 +156,9 @@ std::size_t meshOffset(const std::string& data, std::uint16_t version, std::uint
     const unsigned char* at = bytes + data.size() - 4 - entry * (count - index);
     const std::uint64_t offset =
         version >= 4 ? littleEndian<std::uint64_t>(at) : littleEndian<std::uint32_t>(at);
-    if (offset + 4 > data.size() - 4 - table)
+    // Written so that an offset near 2^64 cannot wrap around the comparison.
+    const std::uint64_t meshesEnd = data.size() - 4 - table;
+    if (offset > meshesEnd || meshesEnd - offset < 4)
         throw InputError(where + ": mesh " + std::to_string(index) + " starts at " +
                          std::to_string(offset) + ", past the file's meshes");
     return std::size_t(offset);
