@@ -106,6 +106,48 @@ TEST_F(PbrtCorpusConstructs, RegularizeAndRrthresholdAreWarnedAbout) {
     EXPECT_NO_THROW(loadScene(file_));
 }
 
+// pbrt-v4's Attribute directive (BasicSceneBuilder::Attribute, scene.cpp) gives default
+// parameters to the shapes, lights, materials, media or textures that follow it in its
+// attribute block: a directive's own parameter wins, then the newest default
+// (ParameterDictionary's lookup order, paramdict.cpp), and a default a directive does not read
+// is not an error (mayBeUnused). So a file with defaults is the file with them written out.
+TEST_F(PbrtCorpusConstructs, AttributeDefaultsAreTheParametersWrittenOut) {
+    const ImportedScene withDefaults = import(
+        "AttributeBegin\n"
+        "  Attribute \"shape\" \"float radius\" 5\n"
+        "  Attribute \"shape\" \"float radius\" 2\n"
+        "  Attribute \"material\" \"rgb reflectance\" [0.2 0.3 0.4]\n"
+        "  Attribute \"light\" \"float scale\" 3\n"
+        "  Material \"diffuse\"\n"
+        "  Shape \"sphere\"\n"
+        "  Shape \"sphere\" \"float radius\" 3\n"
+        "  Shape \"trianglemesh\" \"point3 P\" [0 0 0  1 0 0  0 1 0] \"integer indices\" [0 1 2]\n"
+        "  LightSource \"point\" \"rgb I\" [1 1 1] \"point3 from\" [0 5 0]\n"
+        "AttributeEnd\n"
+        "Shape \"sphere\"\n");
+    const ImportedScene written = import(
+        "AttributeBegin\n"
+        "  Material \"diffuse\" \"rgb reflectance\" [0.2 0.3 0.4]\n"
+        "  Shape \"sphere\" \"float radius\" 2\n"
+        "  Shape \"sphere\" \"float radius\" 3\n"
+        "  Shape \"trianglemesh\" \"point3 P\" [0 0 0  1 0 0  0 1 0] \"integer indices\" [0 1 2]\n"
+        "  LightSource \"point\" \"rgb I\" [1 1 1] \"point3 from\" [0 5 0] \"float scale\" 3\n"
+        "AttributeEnd\n"
+        "Shape \"sphere\"\n");
+    EXPECT_EQ(withDefaults.scene, written.scene);
+    ASSERT_EQ(withDefaults.scene["shapes"].size(), 4u);
+    EXPECT_EQ(withDefaults.scene["shapes"][0]["radius"], 2.0);
+    EXPECT_EQ(withDefaults.scene["shapes"][3]["radius"], 1.0);  // after AttributeEnd
+    EXPECT_EQ(importError("Attribute \"camera\" \"float fov\" 30\n"),
+              at(1) +
+                  ": Attribute \"camera\": expected the target \"shape\", \"light\", "
+                  "\"material\", \"medium\" or \"texture\"");
+    // A default the directive reads is checked like its own parameter, at the Attribute line.
+    EXPECT_THAT(
+        importError("Attribute \"shape\" \"string radius\" \"big\"\nShape \"sphere\"\n"),
+        HasSubstr(at(1) + ": Shape \"sphere\": parameter \"string radius\" has the wrong type"));
+}
+
 // pbrt-v4's PortalImageInfiniteLight (lights.cpp) shows the environment image only through
 // the portal; lamina keeps the environment (the same light, translated as without the portal)
 // and warns. A portal on a uniform L, which pbrt-v4 turns into an unnormalised RGB image, and

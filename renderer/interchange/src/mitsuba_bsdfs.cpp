@@ -4,9 +4,11 @@
 
 #include <array>
 #include <cctype>
+#include <cmath>
 #include <utility>
 
 #include "lamina/core/error.h"
+#include "lamina/core/math.h"
 
 namespace lamina::render::mitsuba {
 
@@ -180,6 +182,39 @@ Json plastic(Plugin& p, bool rough, bool insideTwoSided, std::vector<TranslatedT
     return m;
 }
 
+// mitsuba3 src/bsdfs/polarizer.cpp: an ideal linear polariser whose absorbing axis is the
+// surface's v direction turned by `theta` degrees, (sin theta, cos theta) in (u, v); so its
+// transmission axis is (cos theta, -sin theta): lamina's `polariser` with that world `axis`.
+// Unpolarised, both are a grey filter of transmittance / 2.
+Json polariser(Plugin& p, const SurfaceDirections* surface) {
+    if (!surface)
+        p.fail(
+            "a polarizer is supported as a rectangle's own BSDF only (its axis follows the "
+            "surface's u and v directions, which lamina's polariser takes as a world axis)");
+    // Mitsuba writes both as <spectrum value="90"/> or <float>: one number each here.
+    const auto number = [&](const char* name, double fallback) {
+        const auto c = p.color(name);
+        if (c && !c->is_number())
+            p.fail(std::string(name) +
+                   " must be one number (a spectrum or colour is not supported)");
+        return c ? c->get<double>() : fallback;
+    };
+    const double thetaDegrees = number("theta", 0.0), t = number("transmittance", 1.0);
+    if (!(std::abs(thetaDegrees) <= 360)) p.fail("theta must be in [-360, 360] degrees");
+    if (!(t >= 0 && t <= 1)) p.fail("transmittance must be in [0, 1]");
+    if (!p.boolean("polarizing", true))
+        p.fail("polarizing false (a neutral density filter) is not supported");
+    const double a = radians(thetaDegrees);
+    const glm::dvec3 axis = std::cos(a) * surface->u - std::sin(a) * surface->v;
+    p.warn(
+        "polarizer became lamina's polariser: the same at normal incidence; obliquely lamina "
+        "projects the transmission axis across the ray, Mitsuba the absorbing axis (Korger et "
+        "al. 2013)");
+    Json m{{"type", "polariser"}, {"axis", Json::array({axis.x, axis.y, axis.z})}};
+    if (t != 1.0) m["transmittance"] = t;
+    return m;
+}
+
 bool mapsNormals(const Json& material) {
     return material.contains("displacement") || material.contains("normal_map");
 }
@@ -251,7 +286,8 @@ std::optional<double> namedIor(const std::string& name) {
 }
 
 TranslatedBsdf translateBsdf(const Element& bsdf, const MitsubaDocument& document,
-                             Diagnostics& diagnostics, bool insideTwoSided, int depth) {
+                             Diagnostics& diagnostics, bool insideTwoSided, int depth,
+                             const SurfaceDirections* surface) {
     Plugin p(bsdf, document, diagnostics);
     if (depth > 16) p.fail("BSDFs nested deeper than 16 (does a <ref> refer to its own BSDF?)");
     const std::string& type = p.type();
@@ -327,13 +363,15 @@ TranslatedBsdf translateBsdf(const Element& bsdf, const MitsubaDocument& documen
         if (!file) p.fail("measured needs \"filename\"");
         out.material = {{"type", "measured"}, {"filename", file->string()}};
         warnOneSided(p, insideTwoSided, "measured");
+    } else if (type == "polarizer") {
+        out.material = polariser(p, surface);
     } else if (type == "bumpmap" || type == "normalmap") {
         out = shadingNormalMap(p, document, diagnostics, insideTwoSided, depth);
     } else {
         p.fail("the BSDF plugin \"" + type +
                "\" is not supported (diffuse, conductor, roughconductor, dielectric, "
                "roughdielectric, thindielectric, plastic, roughplastic, twosided, blendbsdf, "
-               "mask, bumpmap, normalmap, measured)");
+               "mask, bumpmap, normalmap, measured, polarizer)");
     }
     p.finish();
     return out;

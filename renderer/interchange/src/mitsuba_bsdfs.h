@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec3.hpp>
+
 #include "mitsuba_plugin.h"
 #include "mitsuba_textures.h"
 
@@ -19,11 +21,20 @@ struct TranslatedBsdf {
     std::vector<TranslatedTexture> textures;
 };
 
+/// The world directions of a shape's surface parameterisation where they are the same over the
+/// whole shape (a rectangle's dp/du and dp/dv, unit length): what Mitsuba's `polarizer` turns
+/// its axis in.
+struct SurfaceDirections {
+    glm::dvec3 u, v;
+};
+
 /// Translates `bsdf` (and what it nests). `insideTwoSided`: the BSDF is wrapped in
 /// `twosided`, so lamina's two-sided materials are exact. `depth`: how deep in other BSDFs
-/// this one is (refs can make a cycle: nesting deeper than 16 is refused).
+/// this one is (refs can make a cycle: nesting deeper than 16 is refused). `surface`: the
+/// shape's parameterisation directions, when the BSDF is a shape's own and the shape has them.
 TranslatedBsdf translateBsdf(const Element& bsdf, const MitsubaDocument& document,
-                             Diagnostics& diagnostics, bool insideTwoSided = false, int depth = 0);
+                             Diagnostics& diagnostics, bool insideTwoSided = false, int depth = 0,
+                             const SurfaceDirections* surface = nullptr);
 
 /// Mitsuba's named indices of refraction (mitsuba3 include/mitsuba/render/ior.h, Hecht's
 /// Optics at ~589 nm); nullopt for an unknown name.

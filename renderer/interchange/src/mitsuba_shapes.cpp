@@ -47,7 +47,8 @@ std::string path(Translation& t, const std::filesystem::path& file) {
 
 // The material of a shape: its one `<bsdf>` (nested or a ref), or Mitsuba's default diffuse
 // 0.5; `alpha` receives a mask's opacity.
-Json shapeMaterial(Translation& t, Plugin& p, std::optional<double>& alpha) {
+Json shapeMaterial(Translation& t, Plugin& p, std::optional<double>& alpha,
+                   const SurfaceDirections* surface) {
     const auto bsdfs = p.objects("bsdf");
     if (bsdfs.size() > 1) p.fail("a shape takes one BSDF, got " + std::to_string(bsdfs.size()));
     if (bsdfs.empty()) return {{"type", "lambert"}, {"reflectance", 0.5}};
@@ -61,7 +62,7 @@ Json shapeMaterial(Translation& t, Plugin& p, std::optional<double>& alpha) {
         alpha = it->second;
         return *bsdf.attribute("id");
     }
-    TranslatedBsdf translated = translateBsdf(bsdf, t.document, t.diagnostics);
+    TranslatedBsdf translated = translateBsdf(bsdf, t.document, t.diagnostics, false, 0, surface);
     alpha = translated.alpha;
     addTextures(t, translated.textures);
     return translated.material;
@@ -251,8 +252,17 @@ void translateShape(Translation& t, const Element& e, Json& out, bool inGroup) {
             Json::array({Json{{"rotate", {{"axis", {1.0, 0.0, 0.0}}, {"angle", 180.0}}}}});
     }
     if (type != "instance") {
+        // A rectangle's u and v run along its to_world's x and y everywhere (mitsuba3
+        // src/shapes/rectangle.cpp: dp_du = to_world (2, 0, 0), dp_dv = to_world (0, 2, 0)).
+        std::optional<SurfaceDirections> surface;
+        if (type == "rectangle") {
+            const glm::dmat4 m = p.transform("to_world").value_or(Transform{}).matrix;
+            const glm::dvec3 u(m[0]), v(m[1]);
+            if (glm::length(u) > 0 && glm::length(v) > 0)
+                surface = SurfaceDirections{glm::normalize(u), glm::normalize(v)};
+        }
         std::optional<double> alpha;
-        s["material"] = shapeMaterial(t, p, alpha);
+        s["material"] = shapeMaterial(t, p, alpha, surface ? &*surface : nullptr);
         shapeMedia(t, p, s);
         if (s["material"] == kDocumentInterfaceMaterial && !s.contains("interior") &&
             !s.contains("exterior")) {

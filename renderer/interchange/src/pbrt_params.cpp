@@ -96,6 +96,14 @@ void ParamList::refuseUnused() const {
         if (!p.used) fail(p, "is not supported");
 }
 
+void ParamList::addDefaults(const std::vector<Param>& defaults) {
+    for (auto d = defaults.rbegin(); d != defaults.rend(); ++d) {
+        if (has(d->name)) continue;
+        params_.push_back(*d);
+        params_.back().used = true;
+    }
+}
+
 namespace {
 
 // The parameter types of pbrt-v4's ParameterDictionary (paramdict.cpp) and the older

@@ -51,6 +51,12 @@ class ParamList {
 
     /// Refuses every parameter no lookup asked for (`what` names the construct).
     void refuseUnused() const;
+    /// pbrt-v4's `Attribute` defaults: each parameter of `defaults` whose name this list does
+    /// not have joins it, the later of two defaults of one name first (pbrt-v4's
+    /// ParameterDictionary looks the directive's own parameters up first, then the attributes
+    /// from the newest). A default no lookup reads is not refused (pbrt-v4's mayBeUnused).
+    void addDefaults(const std::vector<Param>& defaults);
+    const std::vector<Param>& all() const { return params_; }
     const std::string& owner() const { return owner_; }
     [[noreturn]] void fail(const Param& p, const std::string& message) const;
 

@@ -30,6 +30,9 @@ struct GraphicsState {
     Location materialLocation;
     std::optional<Entity> areaLight;
     MediumSides media;
+    /// pbrt-v4's `Attribute` defaults per target ("shape", "light", "material", "medium",
+    /// "texture"), in the order given; saved by AttributeBegin like the rest of the state.
+    std::map<std::string, std::vector<Param>> attributes;
 };
 
 // The part of the graphics state that TransformBegin/End saves (deprecated in pbrt-v4, still
@@ -68,13 +71,22 @@ class Parser {
         scene_.warnings.push_back(at.str() + ": " + message);
     }
 
-    Entity entity(Tokenizer& tokens, const Token& directive, const std::string& type) {
+    /// A directive's entity; `attributeTarget` names the Attribute defaults it takes (none
+    /// for the camera, film and the other options).
+    Entity entity(Tokenizer& tokens, const Token& directive, const std::string& type,
+                  const char* attributeTarget = nullptr) {
         Entity e;
         e.type = type;
         e.location = where(tokens, directive.line);
         e.params = readParamList(tokens, directive.text + " \"" + type + "\"");
+        if (attributeTarget) applyAttributes(e.params, attributeTarget);
         e.transform = state_.transform;
         return e;
+    }
+
+    void applyAttributes(ParamList& params, const std::string& target) const {
+        const auto found = state_.attributes.find(target);
+        if (found != state_.attributes.end()) params.addDefaults(found->second);
     }
 
     void setOnce(std::optional<Entity>& slot, Entity e, const std::string& directive) {
@@ -184,7 +196,7 @@ class Parser {
         } else if (name == "Include" || name == "Import") {
             include(tokens, d, depth);
         } else if (name == "Material") {
-            Entity e = entity(tokens, d, quotedString(tokens, d));
+            Entity e = entity(tokens, d, quotedString(tokens, d), "material");
             MaterialDef m{"pbrt_material_" + std::to_string(++anonymousMaterials_), std::move(e)};
             state_.material = m.name;
             state_.materialLocation = at;
@@ -195,6 +207,7 @@ class Parser {
             e.location = at;
             e.transform = ctm;
             e.params = readParamList(tokens, "MakeNamedMaterial \"" + materialName + "\"");
+            applyAttributes(e.params, "material");
             if (!e.params.has("type"))
                 tokens.fail(d.line, "MakeNamedMaterial \"" + materialName +
                                         "\": no \"string type\" parameter");
@@ -220,7 +233,7 @@ class Parser {
                                      ? " (pbrt-v3's name: convert the file with pbrt-v4's `pbrt "
                                        "--upgrade FILE > NEW.pbrt`)"
                                      : ""));
-            Entity e = entity(tokens, d, quotedString(tokens, d));
+            Entity e = entity(tokens, d, quotedString(tokens, d), "texture");
             for (const TextureDef& t : scene_.textures)
                 if (t.name == textureName && t.valueType == valueType)
                     tokens.fail(d.line, "Texture \"" + textureName +
@@ -228,13 +241,13 @@ class Parser {
                                             t.entity.location.str() + ")");
             scene_.textures.push_back({textureName, valueType, std::move(e)});
         } else if (name == "Shape") {
-            addShape(entity(tokens, d, quotedString(tokens, d)));
+            addShape(entity(tokens, d, quotedString(tokens, d), "shape"));
         } else if (name == "AreaLightSource") {
-            state_.areaLight = entity(tokens, d, quotedString(tokens, d));
+            state_.areaLight = entity(tokens, d, quotedString(tokens, d), "light");
         } else if (name == "LightSource") {
             if (currentObject_)
                 tokens.fail(d.line, "LightSource inside ObjectBegin is not supported");
-            scene_.lights.push_back(entity(tokens, d, quotedString(tokens, d)));
+            scene_.lights.push_back(entity(tokens, d, quotedString(tokens, d), "light"));
         } else if (name == "ObjectBegin") {
             const std::string objectName = quotedString(tokens, d);
             if (currentObject_)
@@ -266,6 +279,7 @@ class Parser {
             e.location = at;
             e.transform = ctm;
             e.params = readParamList(tokens, "MakeNamedMedium \"" + mediumName + "\"");
+            applyAttributes(e.params, "medium");
             if (!e.params.has("type"))
                 tokens.fail(d.line,
                             "MakeNamedMedium \"" + mediumName + "\": no \"string type\" parameter");
@@ -285,9 +299,17 @@ class Parser {
                 state_.media.outside = tokens.next()->text;
             state_.media.location = at;
         } else if (name == "Attribute") {
-            tokens.fail(d.line,
-                        "Attribute (default parameters for a kind of directive) is "
-                        "not supported");
+            // pbrt-v4's BasicSceneBuilder::Attribute: default parameters for the directives
+            // of one kind until the attribute block ends.
+            const std::string target = quotedString(tokens, d);
+            if (target != "shape" && target != "light" && target != "material" &&
+                target != "medium" && target != "texture")
+                tokens.fail(d.line, "Attribute \"" + target +
+                                        "\": expected the target \"shape\", \"light\", "
+                                        "\"material\", \"medium\" or \"texture\"");
+            const ParamList defaults = readParamList(tokens, "Attribute \"" + target + "\"");
+            std::vector<Param>& list = state_.attributes[target];
+            list.insert(list.end(), defaults.all().begin(), defaults.all().end());
         } else if (name == "WorldEnd") {
             warn(at, "WorldEnd (pbrt-v3) ignored: pbrt-v4 files end without it");
         } else {

@@ -1,6 +1,7 @@
 // pbrt-v4 shapes and their area lights -> lamina shapes (pbrt-v4 shapes.cpp for the parameters
 // and their defaults, lights.cpp for DiffuseAreaLight).
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -8,6 +9,7 @@
 
 #include "document_names.h"
 #include "lamina/core/error.h"
+#include "loop_subdivision.h"
 #include "pbrt_shapes.h"
 #include "rounded_rotation.h"
 
@@ -139,6 +141,56 @@ Json meshJson(const Mesh& mesh, bool reverse) {
 }
 
 // The area of each face after the transform (for `power`).
+// pbrt-v4's `loopsubdiv`: its control mesh ("point3 P", "integer indices", "integer levels" 3)
+// refined by Loop subdivision to the triangles pbrt-v4 renders (loop_subdivision.h), with the
+// limit normals' area-weighted stand-in (one warning).
+Mesh subdividedMesh(TranslationContext& ctx, const Entity& e) {
+    const ParamList& params = e.params;
+    const int levels = params.integer("levels", 3);
+    if (levels < 0 || levels > 12) params.fail(*params.find("levels"), "must be in [0, 12]");
+    const auto P = params.numbers("P", {"point3"}, 3);
+    if (!P) ctx.fail(e.location, "Shape \"loopsubdiv\": no \"point3 P\"");
+    const auto indices = params.numbers("indices", {"integer"}, 3);
+    if (!indices) ctx.fail(e.location, "Shape \"loopsubdiv\": no \"integer indices\"");
+    std::vector<glm::dvec3> points;
+    for (std::size_t i = 0; i + 2 < P->size(); i += 3)
+        points.emplace_back((*P)[i], (*P)[i + 1], (*P)[i + 2]);
+    std::vector<std::array<int, 3>> triangles;
+    for (std::size_t i = 0; i + 2 < indices->size(); i += 3) {
+        std::array<int, 3> t{};
+        for (std::size_t k = 0; k < 3; ++k) {
+            const double v = (*indices)[i + k];
+            if (v != std::floor(v) || v < 0 || v >= double(points.size()))
+                params.fail(*params.find("indices"),
+                            "has an index outside [0, " + std::to_string(points.size()) + ")");
+            t[k] = int(v);
+        }
+        triangles.push_back(t);
+    }
+    SubdividedMesh refined;
+    try {
+        refined = loopSubdivide(std::move(points), std::move(triangles), levels);
+    } catch (const InputError& error) {
+        ctx.fail(e.location, std::string("Shape \"loopsubdiv\": ") + error.what());
+    }
+    if (levels > 0)
+        ctx.warn(e.location,
+                 "loopsubdiv: " + std::to_string(levels) +
+                     " levels of Loop subdivision became a mesh of " +
+                     std::to_string(refined.triangles.size()) +
+                     " triangles at their limit positions, its normals averaged over the faces "
+                     "(pbrt-v4 takes the limit surface's tangents; they agree as the mesh is "
+                     "refined)");
+    Mesh mesh;
+    for (const glm::dvec3& p : refined.positions)
+        mesh.positions.insert(mesh.positions.end(), {p.x, p.y, p.z});
+    for (const glm::dvec3& n : refined.normals)
+        mesh.normals.insert(mesh.normals.end(), {n.x, n.y, n.z});
+    for (const auto& t : refined.triangles)
+        mesh.indices.insert(mesh.indices.end(), t.begin(), t.end());
+    return mesh;
+}
+
 std::vector<double> faceAreas(const Mesh& mesh, const glm::dmat4& m) {
     std::vector<double> areas;
     auto p = [&](int i) {
@@ -332,6 +384,10 @@ std::optional<Json> translateShape(TranslationContext& ctx, const ShapeDef& s) {
             ctx.warn(e.location, "bilinearmesh: a non-planar patch became two triangles");
         shape = meshJson(mesh, s.reverseOrientation);
         areas = faceAreas(mesh, m);
+    } else if (e.type == "loopsubdiv") {
+        const Mesh mesh = subdividedMesh(ctx, e);
+        shape = meshJson(mesh, s.reverseOrientation);
+        areas = faceAreas(mesh, m);
     } else if (e.type == "plymesh") {
         const Param* file = params.find("filename");
         if (!file) ctx.fail(e.location, "plymesh: no \"string filename\" parameter");
@@ -350,7 +406,8 @@ std::optional<Json> translateShape(TranslationContext& ctx, const ShapeDef& s) {
     } else {
         ctx.fail(e.location, "Shape \"" + e.type +
                                  "\" is not supported (lamina reads sphere, "
-                                 "disk, cylinder, trianglemesh, plymesh and bilinearmesh)");
+                                 "disk, cylinder, trianglemesh, plymesh, bilinearmesh and "
+                                 "loopsubdiv)");
     }
     shape["material"] = material.empty() ? kDocumentInterfaceMaterial : material;
     if (boundary) {
