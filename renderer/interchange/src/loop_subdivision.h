@@ -31,9 +31,9 @@ struct SubdividedMesh {
     std::vector<std::array<int, 3>> triangles;
 };
 
-/// The most triangles a subdivision may make (4^levels times the control mesh's): about 2 GB of
-/// scene document and mesh beyond it.
-inline constexpr std::size_t kMaxSubdividedTriangles = std::size_t(1) << 24;
+/// The most triangles a subdivision may make (4^levels times the control mesh's): the result
+/// becomes an inline mesh of the scene document, about 150 bytes a triangle there.
+inline constexpr std::size_t kMaxSubdividedTriangles = std::size_t(1) << 20;
 
 /// `levels` rounds of Loop subdivision of the triangles (indices into `positions`), then the
 /// limit positions and normals. Throws InputError (a message without a location) for an edge of
