@@ -815,7 +815,7 @@ TEST_F(MitsubaBsdf, UnsupportedPluginAndTextureAreRefused) {
                   ": <bsdf type=\"hair\">: the BSDF plugin \"hair\" is not supported "
                   "(diffuse, conductor, roughconductor, dielectric, roughdielectric, "
                   "thindielectric, plastic, roughplastic, twosided, blendbsdf, mask, bumpmap, "
-                  "normalmap, measured)");
+                  "normalmap, measured, polarizer)");
     // A texture where lamina takes none (mitsuba_textures.cpp's colorOrTexture is not asked there).
     EXPECT_EQ(error("<bsdf type=\"conductor\" id=\"m\">\n<texture type=\"bitmap\" "
                     "name=\"specular_reflectance\"/></bsdf>"),

@@ -180,9 +180,10 @@ TEST_F(PbrtCommandLine, ErrorsAndWarningsNameFileAndLine) {
     const CommandRun run =
         runLaminaStderr("render " + bad.string() + " -o " + (dir_ / "x.exr").string());
     EXPECT_EQ(run.exitCode, 1);
-    EXPECT_EQ(run.output, "lamina: error: " + bad.string() +
-                              ":3: Shape \"hyperboloid\" is not supported (lamina reads sphere, "
-                              "disk, cylinder, trianglemesh, plymesh and bilinearmesh)\n");
+    EXPECT_EQ(run.output,
+              "lamina: error: " + bad.string() +
+                  ":3: Shape \"hyperboloid\" is not supported (lamina reads sphere, "
+                  "disk, cylinder, trianglemesh, plymesh, bilinearmesh and loopsubdiv)\n");
     const auto warned = write("warned.pbrt",
                               "Accelerator \"bvh\"\nWorldBegin\n"
                               "LightSource \"point\"\n");

@@ -362,7 +362,7 @@ TEST_F(PbrtTranslation, UnsupportedShapesAndParametersAreRefused) {
     EXPECT_EQ(importError("\nShape \"paraboloid\"\n"),
               at(2) +
                   ": Shape \"paraboloid\" is not supported (lamina reads sphere, disk, "
-                  "cylinder, trianglemesh, plymesh and bilinearmesh)");
+                  "cylinder, trianglemesh, plymesh, bilinearmesh and loopsubdiv)");
     EXPECT_EQ(importError("Shape \"sphere\" \"float wobble\" 0.5\n"),
               at(1) + ": Shape \"sphere\": parameter \"float wobble\" is not supported");
     EXPECT_EQ(importError("Shape \"sphere\" \"integer radius\" 2\n"),
