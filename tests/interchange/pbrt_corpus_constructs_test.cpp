@@ -82,11 +82,49 @@ TEST_F(PbrtCorpusConstructs, AnalyticShapesTakeRoundedRotations) {
     const ImportedScene exact = import("Scale 2 2 2\nShape \"sphere\" \"float radius\" 1.5\n");
     EXPECT_EQ(exact.scene["shapes"][0]["radius"], 3.0);
     EXPECT_TRUE(exact.warnings.empty());
-    EXPECT_EQ(importError("Transform [ 1 0.01 0 0  0 1 0 0  0 0 1 0  0 0 0 1 ]\n"
-                          "Shape \"disk\"\n"),
-              at(2) +
-                  ": Shape \"disk\" under a shear or an uneven scale is not supported "
-                  "(lamina's analytic shapes stay round)");
+}
+
+// A quadric under a shear or an uneven scale (disney-cloud's boundary sphere, Scale 1 0.5 1.2
+// and the like) becomes an object of the quadric in its own space and an instance placing it
+// by the transform: exact, as lamina's instances take any invertible transform. The shape's
+// material and media go with it into the object. Not where an instance cannot stand: an
+// emitting one (instances cannot emit) and one inside ObjectBegin (instances do not nest).
+TEST_F(PbrtCorpusConstructs, UnevenlyScaledQuadricsArePlacedByInstances) {
+    const ImportedScene s = import(
+        "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\n"
+        "AttributeBegin\nMediumInterface \"fog\" \"\"\nMaterial \"interface\"\n"
+        "Translate 1 2 3\nScale 1 0.5 1.2\nShape \"sphere\" \"float radius\" 2\nAttributeEnd\n"
+        "Transform [ 1 0.01 0 0  0 1 0 0  0 0 1 0  0 0 0 1 ]\n"
+        "Shape \"disk\" \"float innerradius\" 0.5\n");
+    const Json& shapes = s.scene["shapes"];
+    ASSERT_EQ(shapes.size(), 2u);
+    EXPECT_TRUE(s.warnings.empty());
+    EXPECT_EQ(shapes[0]["type"], "instance");
+    EXPECT_EQ(shapes[0]["transform"], Json::parse(R"([{"matrix": [1, 0, 0, 1,  0, 0.5, 0, 2,
+                                                                  0, 0, 1.2, 3,  0, 0, 0, 1]}])"));
+    const Json& ellipsoid = s.scene["objects"][shapes[0]["object"].get<std::string>()];
+    ASSERT_EQ(ellipsoid.size(), 1u);
+    EXPECT_EQ(ellipsoid[0]["type"], "sphere");
+    EXPECT_EQ(ellipsoid[0]["radius"], 2.0);
+    EXPECT_EQ(ellipsoid[0]["center"], Json::parse("[0, 0, 0]"));
+    EXPECT_EQ(ellipsoid[0]["interior"], "fog");
+    EXPECT_FALSE(ellipsoid[0].contains("transform"));
+    const Json& annulus = s.scene["objects"][shapes[1]["object"].get<std::string>()];
+    EXPECT_EQ(annulus[0]["inner_radius"], 0.5);
+    EXPECT_NE(shapes[0]["object"], shapes[1]["object"]);
+    // Both load as lamina scenes.
+    const std::filesystem::path json = write("ellipsoid.json", s.scene.dump());
+    EXPECT_NO_THROW(loadScene(json));
+
+    EXPECT_EQ(importError("AttributeBegin\nAreaLightSource \"diffuse\"\nScale 2 1 1\n"
+                          "Shape \"sphere\"\nAttributeEnd\n"),
+              at(4) +
+                  ": Shape \"sphere\" under a shear or an uneven scale is not supported when it "
+                  "emits (lamina places it as an instance, and instances cannot emit)");
+    EXPECT_THAT(importError("ObjectBegin \"o\"\nScale 2 1 1\nShape \"sphere\"\nObjectEnd\n"
+                            "ObjectInstance \"o\"\n"),
+                HasSubstr(at(3) + ": Shape \"sphere\" under a shear or an uneven scale is not "
+                                  "supported inside ObjectBegin"));
 }
 
 // pbrt-v4's regularize (PathIntegrator and VolPathIntegrator::Create) changes the estimator,

@@ -38,22 +38,37 @@ constexpr std::array<std::pair<const char*, const char*>, 8> kConductorPresets{{
     {"Ni_palik", "Ni"},
 }};
 
-// The index of refraction int_ior / ext_ior: each a <float> or one of Mitsuba's names
-// (mitsuba3 lookup_ior: the property's type decides).
+// An index of refraction: a <float> or one of Mitsuba's names (mitsuba3 lookup_ior: the
+// property's type decides).
+double indexOfRefraction(Plugin& p, const char* name, const char* fallback) {
+    if (p.tagOf(name) == "float" || p.tagOf(name) == "integer") {
+        const double v = p.number(name, 1.0);
+        if (!(v > 0)) p.fail(std::string("parameter \"") + name + "\" must be > 0");
+        return v;
+    }
+    const std::string n = p.string(name).value_or(fallback);
+    const auto v = namedIor(n);
+    if (!v) p.fail(std::string("parameter \"") + name + "\": unknown material \"" + n + "\"");
+    return *v;
+}
+
+// The index of refraction int_ior / ext_ior.
 double relativeIor(Plugin& p, const char* defaultInterior, const char* defaultExterior) {
-    auto side = [&](const char* name, const char* fallback) {
-        if (p.tagOf(name) == "float" || p.tagOf(name) == "integer") {
-            const double v = p.number(name, 1.0);
-            if (!(v > 0)) p.fail(std::string("parameter \"") + name + "\" must be > 0");
-            return v;
-        }
-        const std::string n = p.string(name).value_or(fallback);
-        const auto v = namedIor(n);
-        if (!v) p.fail(std::string("parameter \"") + name + "\": unknown material \"" + n + "\"");
-        return *v;
-    };
-    const double interior = side("int_ior", defaultInterior);
-    return interior / side("ext_ior", defaultExterior);
+    const double interior = indexOfRefraction(p, "int_ior", defaultInterior);
+    return interior / indexOfRefraction(p, "ext_ior", defaultExterior);
+}
+
+// A lamina optical constant (a number, an rgb triple or a spectrum [[nm, value], ...])
+// divided by `d`.
+Json dividedOptics(Json v, double d) {
+    if (v.is_number()) return v.get<double>() / d;
+    for (Json& e : v) {
+        if (e.is_array())
+            e[1] = e[1].get<double>() / d;
+        else
+            e = e.get<double>() / d;
+    }
+    return v;
 }
 
 // A textured `alpha`, or `alpha_u` and `alpha_v` given by one texture, as lamina's textured
@@ -128,8 +143,12 @@ Json conductor(Plugin& p, bool rough, std::vector<TranslatedTexture>& textures) 
             Json v = p.color(name).value_or(Json(fallback));
             return v.is_object() ? v["spectrum"] : v;
         };
-        m["eta"] = optics("eta", 0.0);
-        m["k"] = optics("k", 1.0);
+        // Mitsuba 0.6's ext_eta (the index outside the metal, air by default): the Fresnel
+        // equations take (eta + i k) / ext_eta.
+        // (Mitsuba 3's conductors have no ext_eta: vacuum outside, as without it.)
+        const double outside = p.has("ext_eta") ? indexOfRefraction(p, "ext_eta", "air") : 1.0;
+        m["eta"] = dividedOptics(optics("eta", 0.0), outside);
+        m["k"] = dividedOptics(optics("k", 1.0), outside);
     } else if (material == "none") {
         // eta 0, k 1: |(eta - 1 + ik) / (eta + 1 + ik)|^2 = 1 at every angle, a perfect mirror.
         m["f0"] = 1.0;
@@ -146,6 +165,8 @@ Json conductor(Plugin& p, bool rough, std::vector<TranslatedTexture>& textures) 
         p.warn("material \"" + material + "\" became lamina's \"" + lamina +
                "\" (lamina's measured table; Mitsuba's tabulated data may differ slightly)");
     }
+    if (!hasNk && p.has("ext_eta") && std::abs(indexOfRefraction(p, "ext_eta", "air") - 1) > 1e-3)
+        p.fail("ext_eta other than air (1.000277) or vacuum is supported only with eta and k");
     refuseScale(p, "specular_reflectance");
     if (rough) roughness(p, m, true, textures);
     return m;

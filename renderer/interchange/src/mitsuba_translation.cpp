@@ -58,8 +58,22 @@ void translateFilm(Translation& t, const Element* film, double& aspect) {
     long width = 768, height = 576;
     if (film) {
         Plugin p(*film, t.document, t.diagnostics);
-        if (p.type() != "hdrfilm" && p.type() != "specfilm")
-            p.fail("the film \"" + p.type() + "\" is not supported (hdrfilm)");
+        if (p.type() != "hdrfilm" && p.type() != "specfilm" && p.type() != "ldrfilm")
+            p.fail("the film \"" + p.type() + "\" is not supported (hdrfilm, ldrfilm)");
+        if (p.type() == "ldrfilm") {
+            // Mitsuba 0.6's ldrfilm: hdrfilm's image, tonemapped (scaled by 2^exposure, then
+            // gamma or Reinhard's operator) into 8 bits for display.
+            // Read (and checked for their types) to be named once in the warning below.
+            p.string("tonemap_method");
+            for (const char* name : {"gamma", "exposure", "key", "burn"})
+                p.number(name, 0.0);
+            p.warn(
+                "ldrfilm became lamina's film: lamina writes the linear radiance to OpenEXR "
+                "(and a PNG preview); the film's tonemapping (gamma, exposure) is for display "
+                "and is not applied");
+        }
+        p.ignore("high_quality_edges",
+                 "lamina's filters draw sample positions inside the pixel's radius");
         width = p.integer("width", width);
         height = p.integer("height", height);
         if (width < 1 || width > 65536 || height < 1 || height > 65536)
@@ -85,11 +99,14 @@ void translateSampler(Translation& t, const Element* sampler) {
     if (sampler) {
         Plugin p(*sampler, t.document, t.diagnostics);
         const std::string& type = p.type();
+        // Mitsuba 0.6's quasi-random samplers (sobol, halton, hammersley) too.
         if (type == "stratified" || type == "multijitter" || type == "orthogonal" ||
-            type == "ldsampler") {
+            type == "ldsampler" || type == "sobol" || type == "halton" || type == "hammersley") {
             out["type"] = "sobol";
             p.ignore("jitter", "lamina's Sobol points are scrambled, not jittered");
             p.ignore("strength", "lamina's Sobol points are scrambled");
+            p.ignore("scramble", "lamina scrambles its Sobol points (Owen) in every dimension");
+            p.ignore("dimension", "lamina's Sobol points serve every dimension of a path");
             p.warn(type + " became lamina's Owen-scrambled Sobol sampler (the same expectation)");
         } else if (type != "independent") {
             p.fail("the sampler \"" + type + "\" is not supported");
@@ -247,6 +264,12 @@ void translateIntegrator(Translation& t, const Element& integrator) {
         out["rr_depth"] = std::max(1L, p.integer("rr_depth", 5) - 1);
     }
     if (p.boolean("hide_emitters", false)) p.fail("hide_emitters is not supported");
+    // Mitsuba 0.6's strictNormals ends a path where the geometric and shading normals put a
+    // direction on different sides; lamina keeps it and corrects the adjoint instead.
+    if (p.boolean("strict_normals", false))
+        p.warn(
+            "strict_normals ignored: lamina follows a path where the geometric and shading "
+            "normals disagree (light leaks there differ from Mitsuba 0.6's)");
     p.finish();
     t.scene["integrator"] = out;
 }

@@ -64,6 +64,25 @@ bool transmits(const Json& material) {
     return false;
 }
 
+// An object holding `shape` alone (in its own space), and the instance placing it by `m`.
+Json placedByInstance(TranslationContext& ctx, Json shape, const glm::dmat4& m) {
+    const auto taken = [&](const std::string& name) {
+        if (ctx.document.contains("objects") && ctx.document["objects"].contains(name)) return true;
+        return std::any_of(ctx.scene.objects.begin(), ctx.scene.objects.end(),
+                           [&](const ObjectDef& o) { return o.name == name; });
+    };
+    const std::string type = shape["type"];
+    std::string name;
+    for (int i = 1; name.empty() || taken(name); ++i)
+        name = "placed " + type + " " + std::to_string(i);
+    Json instance{{"type", "instance"},
+                  {"object", name},
+                  {"transform", Json::array({Json{{"matrix", rowMajor(m)}}})}};
+    if (shape.contains("name")) instance["name"] = shape["name"];
+    ctx.document["objects"][name] = Json::array({std::move(shape)});
+    return instance;
+}
+
 }  // namespace
 
 Json rowMajor(const glm::dmat4& m) {
@@ -74,7 +93,7 @@ Json rowMajor(const glm::dmat4& m) {
     return rows;
 }
 
-std::optional<Json> translateShape(TranslationContext& ctx, const ShapeDef& s) {
+std::optional<Json> translateShape(TranslationContext& ctx, const ShapeDef& s, bool inObject) {
     const Entity& e = s.entity;
     const ParamList& params = e.params;
     const glm::dmat4& m = e.transform;
@@ -99,13 +118,24 @@ std::optional<Json> translateShape(TranslationContext& ctx, const ShapeDef& s) {
         material.empty() ? interfaceMaterial : ctx.document["materials"][material];
     Json shape;
     std::vector<double> areas;  // for an area light's power
+    // A quadric under a shear or an uneven scale (an ellipsoid, an elliptic cylinder or disk)
+    // is exact as an object of the quadric in its own space, placed by an instance with the
+    // transform (lamina's instances take any invertible transform, docs/scene-format.md).
+    bool viaInstance = false;
     auto similarity = [&]() {
         double rounded = 0;
         const double scale = similarityScale(m, rounded);
-        if (scale == 0)
-            ctx.fail(e.location, "Shape \"" + e.type +
-                                     "\" under a shear or an uneven scale is "
-                                     "not supported (lamina's analytic shapes stay round)");
+        if (scale == 0) {
+            if (s.areaLight || inObject)
+                ctx.fail(e.location,
+                         "Shape \"" + e.type + "\" under a shear or an uneven scale is not " +
+                             (s.areaLight ? "supported when it emits (lamina places it as an "
+                                            "instance, and instances cannot emit)"
+                                          : "supported inside ObjectBegin (lamina places it "
+                                            "as an instance, and instances do not nest)"));
+            viaInstance = true;
+            return 1.0;
+        }
         if (rounded > 1e-9)
             ctx.warn(e.location,
                      "Shape \"" + e.type +
@@ -119,9 +149,10 @@ std::optional<Json> translateShape(TranslationContext& ctx, const ShapeDef& s) {
     // made exact); a clipping that leaves no area omits the shape (noArea), as pbrt-v4 renders
     // nothing of it.
     bool ownTransform = false, noArea = false;
-    const auto place = [&](const glm::dmat4& toWorld, double scale) {
+    // Places the shape at m * local: as an exact similarity, or in the instance's own space.
+    const auto place = [&](const glm::dmat4& local, double scale) {
         ownTransform = true;
-        const glm::dmat4 exact = exactSimilarity(toWorld, scale);
+        const glm::dmat4 exact = viaInstance ? local : exactSimilarity(m * local, scale);
         if (!isIdentity(exact))
             shape["transform"] = Json::array({Json{{"matrix", rowMajor(exact)}}});
     };
@@ -142,7 +173,7 @@ std::optional<Json> translateShape(TranslationContext& ctx, const ShapeDef& s) {
             positiveRadius(r);
             const double scale = similarity();
             shape = {{"type", "sphere"}, {"radius", r}};
-            place(m, scale);
+            place(glm::dmat4(1.0), scale);
             if (zMin > -r) shape["z_min"] = zMin;
             if (zMax < r) shape["z_max"] = zMax;
             if (phiMax < 360) shape["phi_max"] = phiMax;
@@ -151,8 +182,9 @@ std::optional<Json> translateShape(TranslationContext& ctx, const ShapeDef& s) {
         } else {
             const double radius = r * similarity();
             shape = {{"type", "sphere"},
-                     {"center", point(apply(m, glm::dvec3(0.0)))},
+                     {"center", point(viaInstance ? glm::dvec3(0.0) : apply(m, glm::dvec3(0.0)))},
                      {"radius", radius}};
+            ownTransform = viaInstance;
             areas = {4 * kPi * radius * radius};
         }
         // pbrt's sphere faces outwards whatever the transform's handedness; ReverseOrientation
@@ -167,7 +199,7 @@ std::optional<Json> translateShape(TranslationContext& ctx, const ShapeDef& s) {
         const double scale = similarity();
         const double zMin = std::min(z0, z1), zMax = std::max(z0, z1);
         shape = {{"type", "cylinder"}, {"radius", r}, {"z_min", zMin}, {"z_max", zMax}};
-        place(m, scale);
+        place(glm::dmat4(1.0), scale);
         if (phiMax < 360) shape["phi_max"] = phiMax;
         // Outwards, as the sphere.
         if (s.reverseOrientation) shape["flip_normals"] = true;
@@ -185,8 +217,8 @@ std::optional<Json> translateShape(TranslationContext& ctx, const ShapeDef& s) {
                 ctx.fail(e.location, "Shape \"disk\": \"innerradius\" must be >= 0");
             const double scale = similarity();
             shape = {{"type", "disk"}, {"radius", r}};
-            place(m * glm::dmat4(glm::dvec4(1, 0, 0, 0), glm::dvec4(0, 1, 0, 0),
-                                 glm::dvec4(0, 0, 1, 0), glm::dvec4(0, 0, h, 1)),
+            place(glm::dmat4(glm::dvec4(1, 0, 0, 0), glm::dvec4(0, 1, 0, 0), glm::dvec4(0, 0, 1, 0),
+                             glm::dvec4(0, 0, h, 1)),
                   scale);
             if (innerRadius > 0) shape["inner_radius"] = innerRadius;
             if (phiMax < 360) shape["phi_max"] = phiMax;
@@ -197,10 +229,15 @@ std::optional<Json> translateShape(TranslationContext& ctx, const ShapeDef& s) {
             areas = {phiMax * kPi / 360 * (r - innerRadius) * (r + innerRadius) * scale * scale};
         } else {
             const double radius = r * similarity();
-            glm::dvec3 n = glm::transpose(glm::inverse(glm::dmat3(m))) * glm::dvec3(0, 0, 1);
-            n = glm::normalize(n) * (s.reverseOrientation ? -1.0 : 1.0);
+            const glm::dmat4 to = viaInstance ? glm::dmat4(1.0) : m;
+            ownTransform = viaInstance;
+            glm::dvec3 n = glm::transpose(glm::inverse(glm::dmat3(to))) * glm::dvec3(0, 0, 1);
+            // An instance turns a disk's front over under a mirroring transform (geometry.cpp),
+            // which pbrt-v4's does not: the object's disk faces the other way then.
+            const bool turned = s.reverseOrientation != (viaInstance && mirrors);
+            n = glm::normalize(n) * (turned ? -1.0 : 1.0);
             shape = {{"type", "disk"},
-                     {"center", point(apply(m, glm::dvec3(0, 0, h)))},
+                     {"center", point(apply(to, glm::dvec3(0, 0, h)))},
                      {"normal", point(n)},
                      {"radius", radius}};
             areas = {kPi * radius * radius};
@@ -287,6 +324,7 @@ std::optional<Json> translateShape(TranslationContext& ctx, const ShapeDef& s) {
                                  "area, and pbrt-v4 renders nothing of it");
         return std::nullopt;
     }
+    if (viaInstance) return placedByInstance(ctx, std::move(shape), m);
     return shape;
 }
 

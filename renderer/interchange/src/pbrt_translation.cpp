@@ -297,7 +297,7 @@ Json translate(TranslationContext& ctx) {
         translateIntegrator(ctx, scene.integrator ? *scene.integrator : defaultEntity("path"));
     doc["shapes"] = Json::array();
     for (const ShapeDef& s : scene.shapes)
-        if (auto shape = translateShape(ctx, s)) doc["shapes"].push_back(std::move(*shape));
+        if (auto shape = translateShape(ctx, s, false)) doc["shapes"].push_back(std::move(*shape));
     // Objects: shared geometry, placed by instances (common-spec: "objects" and "instance").
     std::set<std::string> instanced;
     for (const InstanceDef& i : scene.instances) {
@@ -308,7 +308,7 @@ Json translate(TranslationContext& ctx) {
         if (!instanced.count(i.object)) {
             Json shapes = Json::array();
             for (const ShapeDef& s : object->shapes)
-                if (auto shape = translateShape(ctx, s)) shapes.push_back(std::move(*shape));
+                if (auto shape = translateShape(ctx, s, true)) shapes.push_back(std::move(*shape));
             doc["objects"][i.object] = shapes;
             instanced.insert(i.object);
         }
