@@ -230,6 +230,45 @@ TEST_F(PbrtCorpusConstructs, EmittingShapesOfAlphaZeroOrOne) {
               at(2) + ": alpha on an emitting shape is not supported");
 }
 
+// pbrt-v4 remaps a textured roughness after its lookup (alpha = sqrt(value) with
+// remaproughness, TrowbridgeReitzDistribution::RoughnessToAlpha; the value itself without):
+// lamina's textured roughness is sqrt(alpha), so the importer writes a `power` texture of the
+// looked-up value, 1/4 or 1/2. uroughness and vroughness naming one texture are the same;
+// different textures, or a texture beside a number, are anisotropic and refused, as is a coat's
+// textured roughness (lamina's coat takes no texture).
+TEST_F(PbrtCorpusConstructs, TexturedRoughnessIsRemappedAfterItsLookup) {
+    const ImportedScene s = import(
+        "Texture \"r\" \"float\" \"checkerboard\" \"float tex1\" 0.04 \"float tex2\" 0.36\n"
+        "Material \"conductor\" \"texture roughness\" \"r\"\nShape \"sphere\"\n"
+        "Material \"dielectric\" \"texture uroughness\" \"r\" \"texture vroughness\" \"r\"\n"
+        "    \"bool remaproughness\" false\nShape \"disk\"\n");
+    const Json& conductor =
+        s.scene["materials"][s.scene["shapes"][0]["material"].get<std::string>()];
+    const Json& glass = s.scene["materials"][s.scene["shapes"][1]["material"].get<std::string>()];
+    const std::string fourth = conductor["roughness"]["texture"];
+    const std::string root = glass["roughness"]["texture"];
+    EXPECT_EQ(s.scene["textures"][fourth]["type"], "power");
+    EXPECT_EQ(s.scene["textures"][fourth]["exponent"], 0.25);
+    EXPECT_EQ(s.scene["textures"][root]["exponent"], 0.5);
+    EXPECT_EQ(s.scene["textures"][root]["texture"], s.scene["textures"][fourth]["texture"]);
+    EXPECT_FALSE(conductor.contains("alpha"));
+    EXPECT_NO_THROW(loadScene(file_)) << errorOf([&] { loadScene(file_); });
+    const std::string texture =
+        "Texture \"r\" \"float\" \"checkerboard\"\nTexture \"q\" \"float\" \"checkerboard\"\n";
+    EXPECT_EQ(importError(texture + "Material \"conductor\" \"texture uroughness\" \"r\" "
+                                    "\"texture vroughness\" \"q\"\nShape \"sphere\"\n"),
+              at(3) +
+                  ": an anisotropic textured roughness is not supported (lamina's textured "
+                  "roughness is isotropic: give roughness, or one texture to uroughness and "
+                  "vroughness)");
+    EXPECT_THAT(importError(texture + "Material \"conductor\" \"texture roughness\" \"r\" "
+                                      "\"float vroughness\" 0.1\nShape \"sphere\"\n"),
+                HasSubstr("an anisotropic textured roughness is not supported"));
+    EXPECT_THAT(importError(texture + "Material \"coateddiffuse\" \"texture roughness\" \"r\"\n"
+                                      "Shape \"sphere\"\n"),
+                HasSubstr("parameter \"texture roughness\" as a texture is not supported"));
+}
+
 // pbrt-v4's coateddiffuse takes a textured reflectance (CoatedDiffuseMaterial, materials.h):
 // lamina's coated takes it through its base (MaterialKind::texturedThrough), the published
 // scenes' most common refusal before.

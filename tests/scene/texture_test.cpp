@@ -227,6 +227,36 @@ TEST(TextureOperations, ScaleAndMixGiveTheirExactValues) {
     EXPECT_EQ(textureOf(defaults, "d")->evaluate(inA), Rgb<float>(0.5f));
 }
 
+// max(0, value)^exponent per channel, after the lookup: 0.25^(1/2) = 0.5, 0.0625^(1/4) = 0.5,
+// a negative value (a scale cannot make one, a mix of a negative colour is refused) would be 0.
+TEST(TextureOperations, PowerRaisesTheLookedUpValue) {
+    const auto scene = sceneWithTextures(R"({
+      "checks": {"type": "checkerboard", "a": [0.25, 0.0625, 1], "b": [0, 4, 0.5], "scale": [1, 1]},
+      "root": {"type": "power", "texture": "checks", "exponent": 0.5},
+      "fourth": {"type": "power", "texture": "root", "exponent": 0.5}})",
+                                         "fourth");
+    const Vec2<float> inA(0.25f, 0.25f), inB(1.25f, 0.25f);
+    EXPECT_EQ(textureOf(scene, "root")->evaluate(inA), Rgb<float>(0.5f, 0.25f, 1.0f));
+    EXPECT_EQ(textureOf(scene, "root")->evaluate(inB), Rgb<float>(0.0f, 2.0f, std::sqrt(0.5f)));
+    const Rgb<float> fourth = textureOf(scene, "fourth")->evaluate(inA);
+    EXPECT_FLOAT_EQ(fourth[0], std::sqrt(0.5f));
+    EXPECT_FLOAT_EQ(fourth[1], 0.5f);
+    const auto errorOf = [](const std::string& textures) {
+        try {
+            sceneWithTextures(textures, "p");
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_THAT(errorOf(R"({"c": {"type": "checkerboard"},
+                            "p": {"type": "power", "texture": "c", "exponent": 17}})"),
+                ::testing::HasSubstr("textures.p.exponent"));
+    EXPECT_THAT(
+        errorOf(R"({"c": {"type": "checkerboard"}, "p": {"type": "power", "texture": "c"}})"),
+        ::testing::HasSubstr("textures.p.exponent"));
+}
+
 TEST(TextureOperations, InvertGivesOneMinusTheValue) {
     const fs::path file =
         fs::temp_directory_path() / ("lamina-invert-" + std::to_string(::getpid()) + ".exr");

@@ -99,11 +99,7 @@ std::string checkerboard(Plugin& p, TextureUse use, std::vector<TranslatedTextur
 
 // mitsuba3 bitmap.cpp: `raw` false decodes 8-bit sRGB, bilinear and repeating by default; looked
 // up at to_uv(uv) with the pixel centres at (i + 1/2) / width, as lamina's image texture.
-std::string bitmap(Plugin& p, TextureUse use, std::vector<TranslatedTexture>& out, bool* rawOut) {
-    if (use == TextureUse::Alpha)
-        p.fail(
-            "a bitmap as a microfacet alpha is not supported (lamina's textured roughness is "
-            "sqrt(alpha) of a lookup, not a lookup of alpha: give a checkerboard or a number)");
+std::string bitmap(Plugin& p, std::vector<TranslatedTexture>& out, bool* rawOut) {
     const auto file = p.file("filename");
     if (!file) p.fail("a bitmap needs \"filename\"");
     const bool raw = p.boolean("raw", false);
@@ -144,7 +140,18 @@ std::string translateTexture(const Element& texture, TextureUse use,
     Plugin p(texture, document, diagnostics);
     if (raw) *raw = false;
     if (p.type() == "checkerboard") return checkerboard(p, use, out);
-    if (p.type() == "bitmap") return bitmap(p, use, out, raw);
+    if (p.type() == "bitmap" && use == TextureUse::Alpha) {
+        // Lamina's textured roughness is sqrt(alpha): the square root of Mitsuba's bilinear
+        // lookup, taken after it (a power texture), as Mitsuba takes alpha = the lookup.
+        p.warn(
+            "a bitmap as alpha: lamina reads its first channel where Mitsuba reads the "
+            "luminance of an RGB image (the same for a grey one)");
+        const std::string name = bitmap(p, out, raw);
+        const std::string root = name + " as roughness";
+        out.push_back({root, {{"type", "power"}, {"texture", name}, {"exponent", 0.5}}, {}});
+        return root;
+    }
+    if (p.type() == "bitmap") return bitmap(p, out, raw);
     if (use == TextureUse::Map)
         p.fail("a bumpmap's or normalmap's texture must be a bitmap (lamina reads image files)");
     p.fail("the texture plugin \"" + p.type() + "\" is not supported (bitmap, checkerboard)");

@@ -19,18 +19,61 @@ const MaterialDef* findMaterial(const ParsedScene& scene, const std::string& nam
     return nullptr;
 }
 
+// The texture a roughness parameter names, or nullptr when it is a number or absent.
+const Param* roughnessTexture(const ParamList& params, const std::string& name) {
+    const Param* p = params.find(name);
+    if (!p || canonicalParamType(p->type) != "texture") return nullptr;
+    if (p->strings.size() != 1) params.fail(*p, "expected one texture name");
+    return p;
+}
+
+// A textured roughness (`roughness`, or `uroughness` and `vroughness` naming one texture) as
+// lamina's textured `roughness`, which is sqrt(alpha): a `power` texture of the looked-up value,
+// applied after the lookup as pbrt-v4 remaps it (exponent 1/4 with remaproughness, whose alpha is
+// sqrt(roughness), else 1/2). Returns false when no roughness is textured.
+bool texturedRoughness(TranslationContext& ctx, const Entity& e, const std::string& prefix,
+                       bool remap, Json& material) {
+    const ParamList& params = e.params;
+    const Param* r = roughnessTexture(params, prefix + "roughness");
+    const Param* u = roughnessTexture(params, prefix + "uroughness");
+    const Param* v = roughnessTexture(params, prefix + "vroughness");
+    if (!r && !u && !v) return false;
+    const auto name = [](const Param* p) { return p ? p->strings[0] : std::string(); };
+    const bool numberBeside =
+        (!u && params.has(prefix + "uroughness")) || (!v && params.has(prefix + "vroughness"));
+    const std::string uName = u ? name(u) : name(r), vName = v ? name(v) : name(r);
+    if (numberBeside || uName != vName)
+        ctx.fail((u   ? u
+                  : v ? v
+                      : r)
+                     ->location,
+                 "an anisotropic textured roughness is not supported (lamina's textured "
+                 "roughness is isotropic: give roughness, or one texture to uroughness and "
+                 "vroughness)");
+    const Param& used = u ? *u : r ? *r : *v;
+    const std::string texture = useTexture(ctx, uName, "float", used.location);
+    const double exponent = remap ? 0.25 : 0.5;
+    const std::string remapped = texture + (remap ? " ^ 1/4" : " ^ 1/2");
+    ctx.document["textures"][remapped] = {
+        {"type", "power"}, {"texture", texture}, {"exponent", exponent}};
+    material["roughness"] = {{"texture", remapped}};
+    return true;
+}
+
 // pbrt-v4's roughness parameters (materials.cpp): `roughness`, or `uroughness` and
 // `vroughness` (each defaulting to `roughness`, itself 0), and `remaproughness` (true), which
 // maps a roughness r to the Trowbridge-Reitz alpha sqrt(r)
 // (TrowbridgeReitzDistribution::RoughnessToAlpha, util/scattering.h). lamina's GGX is the
-// same distribution with the same alpha.
-void roughness(TranslationContext& ctx, const Entity& e, const std::string& prefix,
-               Json& material) {
+// same distribution with the same alpha. `textureAllowed`: the lamina material takes a
+// textured roughness (conductors and dielectrics; not a coat, nor a coat's base).
+void roughness(TranslationContext& ctx, const Entity& e, const std::string& prefix, Json& material,
+               bool textureAllowed) {
     const ParamList& params = e.params;
+    const bool remap = params.boolean("remaproughness", true);
+    if (textureAllowed && texturedRoughness(ctx, e, prefix, remap, material)) return;
     const double r = constantNumber(params, prefix + "roughness", 0.0);
     const double u = constantNumber(params, prefix + "uroughness", r);
     const double v = constantNumber(params, prefix + "vroughness", r);
-    const bool remap = params.boolean("remaproughness", true);
     auto alpha = [&](double x) {
         if (x < 0) ctx.fail(e.location, "a roughness is negative");
         return remap ? std::sqrt(x) : x;
@@ -115,7 +158,7 @@ Json coated(TranslationContext& ctx, const Entity& e, const std::string& roughne
         ctx.fail(e.location, "a coat's index must be a number in lamina's coated material");
     ior = iorJson.get<double>();
     m["ior"] = ior;
-    roughness(ctx, e, roughnessPrefix, m);
+    roughness(ctx, e, roughnessPrefix, m, false);
     m["thickness"] = constantNumber(params, "thickness", 0.01);
     m["albedo"] = colour(ctx, e, "albedo", 0.0, false);
     m["g"] = constantNumber(params, "g", 0.0);
@@ -141,12 +184,12 @@ Json translateMaterial(TranslationContext& ctx, const MaterialDef& def, int dept
     } else if (e.type == "conductor") {
         m = {{"type", "conductor"}};
         conductorOptics(ctx, e, "", 1.0, m);
-        roughness(ctx, e, "", m);
+        roughness(ctx, e, "", m, true);
     } else if (e.type == "dielectric" || e.type == "thindielectric") {
         const bool thin = e.type == "thindielectric";
         m = {{"type", thin ? "thin_dielectric" : "dielectric"},
              {"ior", dielectricIor(ctx, params, "eta", e.location)}};
-        if (!thin) roughness(ctx, e, "", m);
+        if (!thin) roughness(ctx, e, "", m, true);
     } else if (e.type == "coateddiffuse") {
         double ior = 1.5;
         m = coated(ctx, e, "", "eta", ior);
@@ -161,7 +204,7 @@ Json translateMaterial(TranslationContext& ctx, const MaterialDef& def, int dept
         // pbrt-v4 divides the conductor's eta and k by the coat's index
         // (CoatedConductorMaterial::GetBxDF); lamina's base optics are relative to the coat.
         conductorOptics(ctx, e, "conductor.", ior, base);
-        roughness(ctx, e, "conductor.", base);
+        roughness(ctx, e, "conductor.", base, false);
         m["base"] = base;
     } else if (e.type == "diffusetransmission") {
         const double scale = constantNumber(params, "scale", 1.0);

@@ -123,13 +123,18 @@ std::shared_ptr<const Texture> readTexture(
             }
             break;
         }
-        case TextureKind::Scale: {
+        case TextureKind::Scale:
+        case TextureKind::Power: {
             if (!t.has("texture") || !t.value()["texture"].is_string())
                 t.failAt("texture", "expected the name of a texture");
             const auto source =
                 textures[std::size_t(textureIndex(t, "texture", t.requiredString("texture")))];
-            texture = std::make_shared<ScaleTexture>(source,
-                                                     float(t.requiredNumber("scale", {0.0, 1e6})));
+            if (*kind == TextureKind::Scale)
+                texture = std::make_shared<ScaleTexture>(
+                    source, float(t.requiredNumber("scale", {0.0, 1e6})));
+            else
+                texture = std::make_shared<PowerTexture>(
+                    source, float(t.requiredNumber("exponent", {0.0625, 16.0})));
             break;
         }
         case TextureKind::Mix: {

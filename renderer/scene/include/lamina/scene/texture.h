@@ -2,11 +2,14 @@
 // checkerboard and images (EXR through OpenEXR, other formats through lamina's OpenImageIO module,
 // image_input.h; bilinear, repeating; 8-bit images are decoded from sRGB unless declared linear;
 // optionally inverted), and the operations on textures that pbrt-v4 scenes use: a texture times a
-// number, and a mix of two. Only the renderer knows textures: the BSDF library receives the
-// looked-up values (material_textures.h reads them from a scene file and looks them up;
-// render_mode.h rebuilds a textured material per hit).
+// number, a mix of two, and a texture to a power (the remapping of a looked-up roughness). Only the
+// renderer knows textures: the BSDF library receives the looked-up values (material_textures.h
+// reads them from a scene file and looks them up; render_mode.h rebuilds a textured material per
+// hit).
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <memory>
 #include <vector>
@@ -18,10 +21,11 @@
 namespace lamina::render {
 
 /// The `type` of a texture in a scene file.
-enum class TextureKind { Checkerboard, Image, Scale, Mix };
-inline constexpr NameTable kTextureKindNames{std::array{
-    NameEntry{TextureKind::Checkerboard, "checkerboard"}, NameEntry{TextureKind::Image, "image"},
-    NameEntry{TextureKind::Scale, "scale"}, NameEntry{TextureKind::Mix, "mix"}}};
+enum class TextureKind { Checkerboard, Image, Scale, Mix, Power };
+inline constexpr NameTable kTextureKindNames{
+    std::array{NameEntry{TextureKind::Checkerboard, "checkerboard"},
+               NameEntry{TextureKind::Image, "image"}, NameEntry{TextureKind::Scale, "scale"},
+               NameEntry{TextureKind::Mix, "mix"}, NameEntry{TextureKind::Power, "power"}}};
 
 /// How an image texture's integer texels are decoded: sRGB or linear.
 enum class TextureColorSpace { Srgb, Linear };
@@ -92,6 +96,27 @@ class ScaleTexture final : public Texture {
   private:
     std::shared_ptr<const Texture> texture_;
     float scale_;
+};
+
+/// Each channel of a texture to a power, after the lookup: max(0, value)^exponent. A roughness
+/// map stores what a renderer remaps after looking it up (pbrt-v4's alpha = sqrt(roughness),
+/// lamina's roughness = sqrt(alpha)), and the remapping of a bilinear lookup is not the lookup of
+/// remapped texels: this texture applies it where the other renderer does.
+class PowerTexture final : public Texture {
+  public:
+    PowerTexture(std::shared_ptr<const Texture> texture, float exponent)
+        : texture_(std::move(texture)), exponent_(exponent) {}
+    Rgb<float> evaluate(const Vec2<float>& uv) const override {
+        const Rgb<float> v = texture_->evaluate(uv);
+        Rgb<float> out;
+        for (int c = 0; c < 3; ++c)
+            out[c] = std::pow(std::max(v[c], 0.0f), exponent_);
+        return out;
+    }
+
+  private:
+    std::shared_ptr<const Texture> texture_;
+    float exponent_;
 };
 
 /// (1 - t) a + t b, t the first channel of `amount` (pbrt-v4's `mix` texture).
