@@ -1,8 +1,10 @@
 // Perlin noise and its octave sums (perlin_noise.h, noise_sums.h): zero at the lattice points,
 // bounded, continuous across the lattice cells' faces, periodic, and equal to values worked out
 // by hand from Perlin's permutation table and the gradient choice (Perlin 2002).
-// Broken once on purpose: the fade's 15 t^4 written as 14 t^4 fails HandValuesOnTheXAxis and
-// ContinuousAcrossCellFaces (the blend no longer reaches the far corner at t = 1).
+// Broken once on purpose each: the fade's 15 t^4 written as 14 t^4 fails HandValuesOnTheXAxis,
+// ValuesInsideCells and DifferencesOnTheXAxis (ContinuousAcrossCellFaces still passes: the
+// blend clamped to its two ends still lands on the far corner's ramp); the ramp of corner
+// (1, 0, 0) taken at offset dx instead of dx - 1 also fails ContinuousAcrossCellFaces.
 #include <gtest/gtest.h>
 
 #include <cmath>

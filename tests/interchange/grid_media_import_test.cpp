@@ -288,9 +288,10 @@ TEST_F(GridMediaImport, RefusedAndApproximatedConstructsSayWhy) {
         return errorOf([&] { importScene(f, dir_); });
     };
     // pbrt-v4's cloud reads no scale (pbrt-v4 itself refuses it as unused).
-    EXPECT_NE(pbrtError(R"("string type" "cloud" "float scale" 2)")
-                  .find("r.pbrt:11: \"scale\" is not supported"),
-              std::string::npos);
+    EXPECT_NE(
+        pbrtError(R"("string type" "cloud" "float scale" 2)")
+            .find("r.pbrt:11: MakeNamedMedium \"dye\": parameter \"float scale\" is not supported"),
+        std::string::npos);
     EXPECT_NE(
         pbrtError(R"("string type" "cloud" "float density" -1)").find("must be finite and >= 0"),
         std::string::npos);

@@ -4,11 +4,16 @@
 // and its one-line errors.
 // Broken once on purpose: the noise sum's bound in the majorants taken as 0.3 (instead of
 // 0.96875 kPerlinNoiseBound) fails MajorantsBoundTheDensityInEveryLayer and
-// MajorantsBoundEveryDensityAlongRays for the dense cloud near y = 1.
+// MajorantsBoundEveryDensityAlongRays for the dense cloud near y = 1 (the integrators'
+// agreement on scenes/media/procedural-cloud.json cannot see it: all three share the biased
+// trackers; nor can RatioTrackingMatchesBeerLambertThroughTheCloud, whose ray rarely meets a
+// density above those majorants); a bound of 0.1 fails that too (ratio tracking 2% to 6% too
+// bright per channel).
 #include <gtest/gtest.h>
 
 #include <random>
 
+#include "lamina/integrators/grid_tracking.h"
 #include "lamina/integrators/majorant_walk.h"
 #include "lamina/scene/cloud_density.h"
 #include "render_helpers.h"
@@ -107,6 +112,52 @@ TEST(CloudDensity, MajorantsBoundEveryDensityAlongRays) {
                       });
     }
     EXPECT_GT(pieces, 1000);
+}
+
+// What the renderer's transmittance estimates make of the cloud: ratio tracking (the
+// connections' estimator, MIS over the channels) along a ray through it, against
+// exp(-sigma_t integral of the density), the integral by the midpoint rule on 20000 steps. A
+// z-test at two-sided significance 0.001 per channel, fixed seed.
+TEST(CloudDensity, RatioTrackingMatchesBeerLambertThroughTheCloud) {
+    GridDensity grid;
+    // Near y = 1, where the majorants are below 1 and so matter.
+    auto c = std::make_shared<CloudDensity>(cloud(3, 1, 5));
+    grid.majorants = c->majorants(grid.boxMin, grid.boxMax);
+    grid.cloud = c;
+    MediumCoefficients<Rgb<float>> m;
+    m.sigmaA = Rgb<float>(0.5f, 1.0f, 2.0f);
+    m.sigmaS = Rgb<float>(1.5f, 3.0f, 6.0f);
+    m.grid = &grid;
+    const Vec3f o(-0.5f, 0.82f, 0.3f), d = glm::normalize(Vec3f(1.0f, 0.06f, 0.2f));
+    const float tMax = 3.0f;
+    double integral = 0;
+    const int steps = 20000;
+    for (int i = 0; i < steps; ++i) {
+        const Vec3f p = o + d * (tMax * (float(i) + 0.5f) / float(steps));
+        const bool inside = glm::all(glm::greaterThanEqual(p, grid.boxMin)) &&
+                            glm::all(glm::lessThanEqual(p, grid.boxMax));
+        if (inside) integral += double(c->at(p)) * tMax / steps;
+    }
+    ASSERT_GT(integral, 0.03) << integral;  // the ray does cross cloud
+    std::mt19937_64 rng(21);
+    double sum[3] = {}, sum2[3] = {};
+    const int n = 20000;
+    for (int i = 0; i < n; ++i) {
+        Transmittance<Rgb<float>> tr;
+        ratioTrack(m, o, d, tMax, int(rng() % 3), rng(), tr);
+        for (int k = 0; k < 3; ++k) {
+            const double v = double(tr.T[k] / tr.rL.average());
+            sum[k] += v;
+            sum2[k] += v * v;
+        }
+    }
+    for (int k = 0; k < 3; ++k) {
+        const double mean = sum[k] / n,
+                     se = std::sqrt(std::max(sum2[k] / n - mean * mean, 0.0) / (n - 1));
+        const double expected = std::exp(-double(m.sigmaT()[k]) * integral);
+        EXPECT_LT(std::abs(mean - expected), 3.29 * se + 1e-9)
+            << "channel " << k << ": " << mean << " +- " << se << ", expected " << expected;
+    }
 }
 
 std::string cloudScene(const std::string& medium) {
