@@ -6,6 +6,7 @@
 
 #include "lamina/render/render_memory.h"
 #include "lamina/render/scene_statistics.h"
+#include "lamina/scene/cloud_density.h"
 #include "lamina/scene/colour_grid.h"
 #include "lamina/scene/scene_description.h"
 
@@ -101,6 +102,13 @@ void run(const std::string& file) {
                     m.grid->colours->sigmaA.nz, m.grid->colours->sigmaS.nx,
                     m.grid->colours->sigmaS.ny, m.grid->colours->sigmaS.nz, m.grid->majorants.nx,
                     m.grid->majorants.ny, m.grid->majorants.nz);
+            else if (m.grid && m.grid->cloud)
+                std::printf(
+                    ", procedural cloud (density %g, wispiness %g, frequency %g), "
+                    "majorants %d x %d x %d",
+                    double(m.grid->cloud->density), double(m.grid->cloud->wispiness),
+                    double(m.grid->cloud->frequency), m.grid->majorants.nx, m.grid->majorants.ny,
+                    m.grid->majorants.nz);
             else if (m.grid)
                 std::printf(", density grid %d x %d x %d, majorants %d x %d x %d",
                             m.grid->density.nx, m.grid->density.ny, m.grid->density.nz,

@@ -257,15 +257,44 @@ AttributeEnd
     }
 }
 
+// pbrt-v4's procedural cloud becomes lamina's cloud medium with the same parameters (its
+// defaults written out), box and transform; the density is the same function
+// (tests/scene/cloud_medium_test.cpp).
+TEST_F(GridMediaImport, PbrtCloudBecomesACloudMedium) {
+    const ImportedScene s =
+        importScene(write("c.pbrt", pbrtSphere(R"("string type" "cloud" "float density" 2
+            "float frequency" 3 "point3 p0" [-1 -1 -1] "point3 p1" [1 2 1] "float g" 0.3
+            "rgb sigma_s" [1 2 3])")),
+                    dir_);
+    const Json& m = s.scene.at("media").at("dye");
+    EXPECT_EQ(m.at("type"), "cloud");
+    EXPECT_EQ(m.at("density"), 2.0);
+    EXPECT_EQ(m.at("wispiness"), 1.0);  // pbrt-v4's default
+    EXPECT_EQ(m.at("frequency"), 3.0);
+    EXPECT_EQ(m.at("g"), 0.3);
+    EXPECT_EQ(m.at("sigma_a"), 1.0);  // pbrt-v4's default
+    EXPECT_EQ(m.at("sigma_s"), Json::array({1.0, 2.0, 3.0}));
+    EXPECT_EQ(m.at("bounds").at("min"), Json::array({-1.0, -1.0, -1.0}));
+    EXPECT_EQ(m.at("bounds").at("max"), Json::array({1.0, 2.0, 1.0}));
+    EXPECT_TRUE(m.contains("transform"));
+    EXPECT_FALSE(m.contains("scale"));
+    const SceneDesc scene = testing::sceneFromText(s.scene.dump());
+    ASSERT_TRUE(scene.media[0].grid && scene.media[0].grid->cloud);
+}
+
 TEST_F(GridMediaImport, RefusedAndApproximatedConstructsSayWhy) {
     const auto pbrtError = [&](const std::string& medium) {
         const auto f = write("r.pbrt", pbrtSphere(medium));
         return errorOf([&] { importScene(f, dir_); });
     };
-    EXPECT_NE(pbrtError(R"("string type" "cloud" "float density" 2)")
-                  .find("r.pbrt:11: MakeNamedMedium \"dye\": \"cloud\" is not translated: its "
-                        "density is pbrt-v4's own procedural noise"),
-              std::string::npos);
+    // pbrt-v4's cloud reads no scale (pbrt-v4 itself refuses it as unused).
+    EXPECT_NE(
+        pbrtError(R"("string type" "cloud" "float scale" 2)")
+            .find("r.pbrt:11: MakeNamedMedium \"dye\": parameter \"float scale\" is not supported"),
+        std::string::npos);
+    EXPECT_NE(
+        pbrtError(R"("string type" "cloud" "float density" -1)").find("must be finite and >= 0"),
+        std::string::npos);
     EXPECT_NE(pbrtError(R"("string type" "uniformgrid" "float density" [1]
                            "float temperature" [900])")
                   .find("a temperature grid (blackbody emission varying in space) is not "

@@ -76,8 +76,7 @@ MediumEmitters::MediumEmitters(const SceneContext& context, bool media) : lights
         const MediumDesc& m = scene.media[std::size_t(i)];
         if (!m.emits()) continue;
         double p = 0;
-        const bool added =
-            m.kind == MediumKind::Grid ? addGrid(context, i, p) : addHomogeneous(context, i, p);
+        const bool added = m.grid ? addGrid(context, i, p) : addHomogeneous(context, i, p);
         if (!added) continue;
         sourceOf_[std::size_t(i)] = int(sources_.size()) - 1;
         power.push_back(p);

@@ -1,6 +1,7 @@
 // pbrt-v4's grid media -> lamina's grid media (docs/interchange.md, "Media"), read as pbrt-v4's
-// media.cpp reads them (GridMedium, RGBGridMedium, NanoVDBMedium). Every grid is placed by the
-// transform in effect at MakeNamedMedium (pbrt-v4's renderFromMedium), and pbrt-v4's grids read
+// media.cpp reads them (GridMedium, RGBGridMedium, NanoVDBMedium), and its procedural
+// CloudMedium -> lamina's cloud medium (the same density, cloud_density.h). Every grid is placed by
+// the transform in effect at MakeNamedMedium (pbrt-v4's renderFromMedium), and pbrt-v4's grids read
 // 0 beyond their outermost values (SampledGrid), which is lamina's `"edges": "zero"`.
 #include <cmath>
 
@@ -160,6 +161,31 @@ Json nanoVdb(TranslationContext& ctx, const MediumDef& m) {
     return medium;
 }
 
+// pbrt-v4's CloudMedium::Create reads density (1), wispiness (1), frequency (5), g, sigma_a and
+// sigma_s (1 each) and p0, p1, and no scale or emission (which pbrt-v4 then refuses as unused,
+// as refuseUnused does here).
+Json cloud(TranslationContext& ctx, const MediumDef& m) {
+    const ParamList& params = m.entity.params;
+    Json medium{{"type", "cloud"},
+                {"bounds", bounds(params)},
+                {"sigma_a", mediumCoefficient(ctx, params, "sigma_a")},
+                {"sigma_s", mediumCoefficient(ctx, params, "sigma_s")}};
+    const double density = params.number("density", 1.0);
+    if (!(density >= 0) || !std::isfinite(density))
+        params.fail(*params.find("density"),
+                    "must be finite and >= 0 (lamina's cloud medium; a negative density "
+                    "turns pbrt-v4's cloud inside out)");
+    medium["density"] = density;
+    for (const auto& [name, fallback] : {std::pair{"wispiness", 1.0}, {"frequency", 5.0}}) {
+        const double v = params.number(name, fallback);
+        if (!std::isfinite(float(v))) params.fail(*params.find(name), "must be finite");
+        medium[name] = v;
+    }
+    mediumPhase(params, medium);
+    place(m.entity, medium);
+    return medium;
+}
+
 }  // namespace
 
 Json translateGridMedium(TranslationContext& ctx, const MediumDef& m) {
@@ -172,16 +198,11 @@ Json translateGridMedium(TranslationContext& ctx, const MediumDef& m) {
     else if (e.type == "nanovdb")
         medium = nanoVdb(ctx, m);
     else if (e.type == "cloud")
-        ctx.fail(e.location,
-                 named(m) +
-                     "\"cloud\" is not translated: its density is pbrt-v4's own "
-                     "procedural noise (its Perlin noise and tables), which the file format "
-                     "leaves to pbrt-v4's source, so lamina cannot sample the same cloud onto "
-                     "a grid");
+        medium = cloud(ctx, m);
     else
         ctx.fail(e.location, named(m) + "\"" + e.type +
                                  "\" media are not supported (homogeneous, uniformgrid, rgbgrid, "
-                                 "nanovdb)");
+                                 "cloud, nanovdb)");
     e.params.refuseUnused();
     return medium;
 }

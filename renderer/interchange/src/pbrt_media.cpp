@@ -113,6 +113,10 @@ void mediumScaleAndPhase(const ParamList& params, Json& medium) {
     if (!(scale >= 0) || !std::isfinite(scale))
         params.fail(*params.find("scale"), "must be finite and >= 0");
     medium["scale"] = scale;
+    mediumPhase(params, medium);
+}
+
+void mediumPhase(const ParamList& params, Json& medium) {
     const double g = params.number("g", 0.0);
     if (!(std::abs(g) < 1))
         params.fail(*params.find("g"),

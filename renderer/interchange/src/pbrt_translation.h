@@ -82,8 +82,11 @@ Json mediumCoefficient(TranslationContext& context, const ParamList& params,
                        const std::string& name);
 /// A medium's `scale` and Henyey-Greenstein `g` into `medium` (pbrt_media.cpp).
 void mediumScaleAndPhase(const ParamList& params, Json& medium);
-/// MakeNamedMedium "uniformgrid", "rgbgrid", "cloud" or "nanovdb" -> a lamina grid medium, placed
-/// by the transform in effect at MakeNamedMedium (pbrt_grid_media.cpp).
+/// A medium's Henyey-Greenstein `g` alone (pbrt-v4's cloud reads no `scale`; pbrt_media.cpp).
+void mediumPhase(const ParamList& params, Json& medium);
+/// MakeNamedMedium "uniformgrid", "rgbgrid" or "nanovdb" -> a lamina grid medium, "cloud" -> a
+/// lamina cloud medium, placed by the transform in effect at MakeNamedMedium
+/// (pbrt_grid_media.cpp).
 Json translateGridMedium(TranslationContext& context, const MediumDef& medium);
 
 // Spectra (pbrt_spectra.cpp).

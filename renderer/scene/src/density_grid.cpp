@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "lamina/scene/cloud_density.h"
+
 namespace lamina::render {
 
 namespace {
@@ -82,6 +84,10 @@ float DensityGrid::lookup(Vec3f u) const {
     const auto row = [&](int j, int k) { return lerp(at(x.i0, j, k), at(x.i1, j, k), x.f); };
     const auto plane = [&](int k) { return lerp(row(y.i0, k), row(y.i1, k), y.f); };
     return lerp(plane(z.i0), plane(z.i1), z.f);
+}
+
+float GridDensity::densityAt(const Vec3f& p) const {
+    return cloud ? cloud->at(p) : density.lookup(local(p));
 }
 
 MajorantGrid MajorantGrid::build(const DensityGrid& grid, int resolution) {

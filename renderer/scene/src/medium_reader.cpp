@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "lamina/core/json_reader.h"
+#include "lamina/scene/cloud_density.h"
 #include "lamina/scene/colour_grid.h"
 #include "lamina/scene/grid_file.h"
 #include "lamina/scene/scene_readers.h"
@@ -144,6 +145,32 @@ std::shared_ptr<const GridDensity> readGrid(const JsonReader& r, MediumDesc& m, 
     return grid;
 }
 
+// A cloud medium (docs/media.md, "Procedural clouds"): pbrt-v4's procedural density over its
+// box, evaluated at every lookup, with majorants along y. Its cost does not depend on the
+// numbers (a fixed number of noise lookups per point, a fixed majorant grid).
+std::shared_ptr<const GridDensity> readCloud(const JsonReader& r) {
+    auto grid = std::make_shared<GridDensity>();
+    readBounds(r, *grid);
+    placeGrid(r, *grid, readTransform(r));
+    auto cloud = std::make_shared<CloudDensity>();
+    cloud->density = float(r.number("density", 1.0, Range::nonNegative()));
+    cloud->wispiness = float(r.number("wispiness", 1.0));
+    cloud->frequency = float(r.number("frequency", 5.0));
+    grid->majorants = cloud->majorants(grid->boxMin, grid->boxMax);
+    grid->density.values = {0.0f};  // unused: the cloud is the density
+    grid->cloud = std::move(cloud);
+    return grid;
+}
+
+// Keys of other kinds of media, refused on `type`'s.
+void refuseKeys(const JsonReader& r, std::initializer_list<const char*> keys, const char* owner,
+                const std::string& type) {
+    for (const char* key : keys)
+        if (r.has(key))
+            r.failAt(key, std::string("is a key of ") + owner + " media; this medium is \"" + type +
+                              "\"");
+}
+
 MediumDesc readMedium(const JsonReader& r, const std::string& name) {
     r.expectObject();
     MediumDesc m;
@@ -169,10 +196,12 @@ MediumDesc readMedium(const JsonReader& r, const std::string& name) {
             m.sigmaA = Rgb<double>(0.0);
             m.sigmaS = Rgb<double>(0.0);
         }
+    } else if (m.kind == MediumKind::Cloud) {
+        refuseKeys(r, {"sigma_a_grid", "sigma_s_grid", "edges"}, "grid", type);
+        m.grid = readCloud(r);
     } else {
-        for (const char* key : {"density", "sigma_a_grid", "sigma_s_grid", "edges", "bounds"})
-            if (r.has(key))
-                r.failAt(key, "is a key of grid media; this medium is \"" + type + "\"");
+        refuseKeys(r, {"density", "sigma_a_grid", "sigma_s_grid", "edges", "bounds"}, "grid", type);
+        refuseKeys(r, {"wispiness", "frequency"}, "cloud", type);
     }
     r.finish();
     return m;

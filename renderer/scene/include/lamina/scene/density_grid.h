@@ -67,6 +67,7 @@ struct MajorantGrid {
 };
 
 struct ColourGrids;
+struct CloudDensity;
 
 /// A grid medium's density in the scene: the grid over the box [boxMin, boxMax] (0 outside),
 /// with its majorants, built once when the scene is read. The box is given in the medium's own
@@ -84,11 +85,14 @@ struct GridDensity {
     /// medium's coefficients at a point are these grids' values and `density` is unused
     /// (the majorants bound their extinction, in every render mode).
     std::shared_ptr<const ColourGrids> colours;
+    /// A procedural density (pbrt-v4's cloud, cloud_density.h): set, it is evaluated at every
+    /// lookup instead of `density`, and `majorants` bound it.
+    std::shared_ptr<const CloudDensity> cloud;
 
     /// The box's coordinates of a point: boxMin -> 0, boxMax -> 1.
     Vec3f local(const Vec3f& p) const { return (p - boxMin) / (boxMax - boxMin); }
     /// The density at a point of the box (in medium space).
-    float densityAt(const Vec3f& p) const { return density.lookup(local(p)); }
+    float densityAt(const Vec3f& p) const;
     /// A point and a direction of the scene in medium space (unchanged when not transformed).
     Vec3f pointToMedium(const Vec3f& p) const {
         if (!transformed) return p;

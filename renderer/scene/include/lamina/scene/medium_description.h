@@ -15,10 +15,13 @@
 
 namespace lamina::render {
 
-/// The `type` of a medium: constant coefficients, or coefficients scaled by a density grid.
-enum class MediumKind { Homogeneous, Grid };
-inline constexpr NameTable kMediumKindNames{std::array{
-    NameEntry{MediumKind::Homogeneous, "homogeneous"}, NameEntry{MediumKind::Grid, "grid"}}};
+/// The `type` of a medium: constant coefficients, or coefficients scaled by a density grid or
+/// by pbrt-v4's procedural cloud density (cloud_density.h; rendered as a grid medium whose
+/// GridDensity evaluates the cloud).
+enum class MediumKind { Homogeneous, Grid, Cloud };
+inline constexpr NameTable kMediumKindNames{
+    std::array{NameEntry{MediumKind::Homogeneous, "homogeneous"},
+               NameEntry{MediumKind::Grid, "grid"}, NameEntry{MediumKind::Cloud, "cloud"}}};
 
 /// A medium's coefficients, in 1 / scene unit, already multiplied by the file's `scale`: of
 /// the whole medium (homogeneous), or per unit of the grid's density (grid: the coefficient at
@@ -37,7 +40,7 @@ struct MediumDesc {
     /// radiative transfer equation): RGB upsampled as an illuminant, or a spectrum.
     Rgb<double> emission{0.0};
     std::shared_ptr<const EmissionSpectrum> emissionSpectrum;
-    /// A grid medium's density and majorants (null for a homogeneous medium).
+    /// A grid or cloud medium's density and majorants (null for a homogeneous medium).
     std::shared_ptr<const GridDensity> grid;
     bool emits() const { return emissionSpectrum || emission.maxValue() > 0; }
 };
