@@ -331,6 +331,8 @@ Json translate(TranslationContext& ctx) {
         doc["lights"].push_back(translateLight(ctx, l));
     }
     warnUnusedMedia(ctx);
+    for (const MediumDef& m : scene.media)
+        warnStandsStill(ctx, m.entity, "MakeNamedMedium \"" + m.name + "\"");
     // pbrt-v4's PathIntegrator ignores media (only volpath and bdpt render them); lamina's
     // path tracer renders them.
     if (doc.contains("media") && scene.integrator && scene.integrator->type == "path")
