@@ -11,8 +11,8 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const lamina::fuzz::InputFile file(data, size, ".dat");
     return lamina::fuzz::readOrRefuse([&] {
-        const lamina::render::LensSystem lens(lamina::render::readLensFile(file.path()), 0.004,
-                                              10, 0.035);
+        const lamina::render::LensSystem lens(lamina::render::readLensFile(file.path()), 0.004, 10,
+                                              0.035);
         (void)lens.sampleExitPupil({0.001, 0.002}, {0.5, 0.5});
     });
 }
