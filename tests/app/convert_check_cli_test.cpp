@@ -20,7 +20,7 @@ class ConvertCheck : public lamina::testing::ScratchDirectoryTest {
               "Film \"rgb\" \"string filename\" \"x.exr\"\nCamera \"perspective\"\nWorldBegin\n"
               "LightSource \"point\" \"rgb I\" [1 1 1]\n");
         // Refused: a camera lamina does not have, on line 2.
-        write("refused.pbrt", "Film \"rgb\"\nCamera \"realistic\"\nWorldBegin\n");
+        write("refused.pbrt", "Film \"rgb\"\nCamera \"spherical\"\nWorldBegin\n");
         // Broken: not XML past its first element (line 2).
         std::filesystem::create_directories(dir_ / "sub");
         write("sub/broken.xml", "<scene version=\"3.0.0\">\n<shape type=\"sphere\"\n");
@@ -37,7 +37,7 @@ TEST_F(ConvertCheck, ListsWhatLoadsAndWhyTheRestIsRefused) {
     EXPECT_EQ(entries[1].file, dir_ / "refused.pbrt");
     EXPECT_FALSE(entries[1].loads);
     EXPECT_EQ(
-        entries[1].error.rfind((dir_ / "refused.pbrt").string() + ":2: Camera \"realistic\"", 0),
+        entries[1].error.rfind((dir_ / "refused.pbrt").string() + ":2: Camera \"spherical\"", 0),
         0u)
         << entries[1].error;
     EXPECT_EQ(entries[2].file, dir_ / "sub" / "broken.xml");
@@ -57,7 +57,7 @@ TEST_F(ConvertCheck, TheCommandPrintsTheTableAndTheCount) {
         std::string::npos)
         << run.output;
     EXPECT_NE(run.output.find("refused  pbrt-v4         -  " + (dir_ / "refused.pbrt").string() +
-                              ":2: Camera \"realistic\" is not supported"),
+                              ":2: Camera \"spherical\" is not supported"),
               std::string::npos)
         << run.output;
     EXPECT_NE(run.output.find("refused  mitsuba         -  " +

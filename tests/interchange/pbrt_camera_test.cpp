@@ -110,8 +110,27 @@ TEST_F(PbrtCamera, OrthographicCameraWithItsScreenWindow) {
               at(1) +
                   ": an orthographic camera with a lens (lensradius) is not supported: "
                   "remove lensradius for a sharp orthographic view");
-    EXPECT_THAT(importError("Camera \"realistic\"\n"),
-                ::testing::StartsWith(at(1) + ": Camera \"realistic\" is not supported"));
+    EXPECT_EQ(importError("Camera \"realistic\"\n"),
+              at(1) + ": Camera \"realistic\": no \"string lensfile\"");
+}
+
+// Camera "realistic": its lens file, stop, focus and the film's diagonal, as lamina's realistic
+// camera (which loads: the lens focuses at 5 m).
+TEST_F(PbrtCamera, TheRealisticCameraKeepsItsLensSystem) {
+    write("lens.dat", "# one thin biconvex element, f about 50 mm\n51 0.5 1.5 20\n-51 45 1 20\n");
+    const ImportedScene s = import(
+        "Camera \"realistic\" \"string lensfile\" \"lens.dat\" \"float aperturediameter\" 8\n"
+        "  \"float focusdistance\" 5\n"
+        "Film \"rgb\" \"integer xresolution\" 64 \"integer yresolution\" 48 \"float diagonal\" "
+        "40\n");
+    const Json& c = s.scene["camera"];
+    EXPECT_EQ(c["type"], "realistic");
+    EXPECT_EQ(c["lens_file"], "lens.dat");
+    EXPECT_EQ(c["aperture_diameter"], 8.0);
+    EXPECT_EQ(c["focus_distance"], 5.0);
+    EXPECT_EQ(c["film_diagonal"], 40.0);
+    EXPECT_TRUE(s.warnings.empty());
+    EXPECT_TRUE(loadScene(file_).camera.lensSystem);
 }
 
 }  // namespace

@@ -204,9 +204,11 @@ TEST(PbrtParser, DirectiveErrorsNameFileAndLine) {
     EXPECT_EQ(parseError("MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\n"
                          "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\""),
               "s.pbrt:2: MakeNamedMedium \"fog\": defined again (first at s.pbrt:1)");
-    EXPECT_EQ(parseError("ActiveTransform StartTime"),
-              "s.pbrt:1: ActiveTransform StartTime: motion blur is not supported (only "
-              "ActiveTransform All)");
+    EXPECT_EQ(parseError("ActiveTransform Sometimes"),
+              "s.pbrt:1: ActiveTransform Sometimes: expected All, StartTime or EndTime");
+    EXPECT_EQ(parseError("TransformTimes 1 1"),
+              "s.pbrt:1: TransformTimes: expected a start time before the end time, both in "
+              "[-1e6, 1e6] and at least 1e-6 apart");
     EXPECT_EQ(parseError("ColorSpace \"aces2065-1\""),
               "s.pbrt:1: ColorSpace \"aces2065-1\" is not supported (lamina's colours are sRGB / "
               "Rec.709, pbrt-v4's default \"srgb\")");

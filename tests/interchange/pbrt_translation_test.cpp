@@ -156,9 +156,8 @@ TEST_F(PbrtTranslation, MirroredCameraIsRightHanded) {
         (dir_ / "s.pbrt").string() + ":2: the camera transform is singular (it flattens the view)");
     EXPECT_EQ(importError("Camera \"spherical\"\n", false),
               at(1, false) +
-                  ": Camera \"spherical\" is not supported (perspective, "
-                  "orthographic); the realistic and spherical cameras have no lamina "
-                  "equivalent");
+                  ": Camera \"spherical\" is not supported (perspective, orthographic, "
+                  "realistic); the spherical camera has no lamina equivalent");
 }
 
 // Exported camera matrices are rotations rounded to 6-8 digits: they load, with one warning,

@@ -106,7 +106,8 @@ INSTANTIATE_TEST_SUITE_P(
                       RenderModeKind::Rgb},
         AgreementCase{"BumpAndNormalMaps", "scenes/reciprocity/bump-and-normal-maps.json",
                       RenderModeKind::Rgb},
-        AgreementCase{"Quadrics", "scenes/reciprocity/quadrics.json", RenderModeKind::Rgb}),
+        AgreementCase{"Quadrics", "scenes/reciprocity/quadrics.json", RenderModeKind::Rgb},
+        AgreementCase{"MotionBlur", "scenes/reciprocity/motion.json", RenderModeKind::Rgb}),
     [](const ::testing::TestParamInfo<AgreementCase>& p) { return std::string(p.param.name); });
 
 /// Path tracing against `integrator` with one deliberate mistake switched on: must disagree.

@@ -86,6 +86,8 @@ class SceneSchema : public ::testing::Test {
         // Two quads in Mitsuba's serialized format (the seed of its fuzz target).
         fs::copy_file(kSource / "tests/fuzz/corpus/serialized_reader/two-quads-v4.serialized",
                       dir / "quads.serialized");
+        // A realistic camera's lens system.
+        fs::copy_file(kSource / "scenes/lenses/dgauss.50mm.dat", dir / "dgauss.50mm.dat");
         int sceneIndex = 0;
         for (const auto& example : schema_["examples"]) {
             ReadDocument& d =

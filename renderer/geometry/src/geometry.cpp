@@ -6,6 +6,7 @@
 
 #include "lamina/core/overloaded.h"
 #include "lamina/geometry/quadric.h"
+#include "lamina/geometry/ray_time.h"
 #include "quadric_geometry.h"
 #include "surface_derivatives.h"
 
@@ -18,6 +19,12 @@ RTCScene newScene(RTCDevice device) {
     rtcSetSceneFlags(s, RTC_SCENE_FLAG_ROBUST);
     rtcSetSceneBuildQuality(s, RTC_BUILD_QUALITY_HIGH);
     return s;
+}
+
+// The sample's time (ray_time.h) as Embree's ray time: instances hold their first transform
+// before time 0 and their last after time 1, as pbrt-v4's animated transforms do.
+float embreeRayTime() {
+    return std::clamp(currentRayTime(), 0.0f, 1.0f);
 }
 
 void commitScene(RTCDevice device, RTCScene scene) {
@@ -161,31 +168,41 @@ void Geometry::addInstances(Vec3<double>& lo, Vec3<double>& hi) {
         const auto o = std::size_t(inst.object);
         RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
         rtcSetGeometryInstancedScene(g, objectScenes_[o]);
-        float xfm[12];  // 3 x 4, column-major: the linear part's columns, then the translation
-        for (int col = 0; col < 4; ++col)
-            for (int row = 0; row < 3; ++row)
-                xfm[col * 3 + row] = float(inst.toWorld[col][row]);
-        rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
+        // 3 x 4, column-major: the linear part's columns, then the translation; a moving
+        // instance has a second matrix at time 1 (two Embree time steps).
+        const auto embreeMatrix = [](const glm::dmat4& m, float* xfm) {
+            for (int col = 0; col < 4; ++col)
+                for (int row = 0; row < 3; ++row)
+                    xfm[col * 3 + row] = float(m[col][row]);
+        };
+        float xfm[12], xfmEnd[12];
+        embreeMatrix(inst.toWorld, xfm);
+        if (inst.toWorldEnd) {
+            embreeMatrix(*inst.toWorldEnd, xfmEnd);
+            rtcSetGeometryTimeStepCount(g, 2);
+            rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
+            rtcSetGeometryTransform(g, 1, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfmEnd);
+        } else {
+            rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
+        }
         rtcCommitGeometry(g);
         rtcAttachGeometryByID(scene3_, g, id++);
         rtcReleaseGeometry(g);
 
         // The hit is rebuilt with the transform Embree traced (float), in double.
-        InstanceTransform t;
-        for (int col = 0; col < 4; ++col)
-            for (int row = 0; row < 3; ++row)
-                t.toWorld[col][row] = double(xfm[col * 3 + row]);
-        t.toObject = glm::inverse(t.toWorld);
-        t.normalMatrix = glm::transpose(glm::inverse(glm::dmat3(t.toWorld)));
-        t.mirrors = glm::determinant(glm::dmat3(t.toWorld)) < 0;
+        InstanceTransform t = InstanceTransform::fromEmbree(xfm);
+        if (inst.toWorldEnd) t.toWorldEnd = InstanceTransform::fromEmbree(xfmEnd).toWorld;
         instanceTransforms_.push_back(t);
 
+        // Each corner moves on a straight line between its two ends (the interpolation is
+        // linear in the matrix): the box of both ends holds the instance at every time.
         Vec3<double> olo, ohi;
         boundingBox(scene_.objects[o].shapes, olo, ohi);
-        for (int corner = 0; corner < 8; ++corner) {
+        for (int corner = 0; corner < 16; ++corner) {
             const Vec3<double> p((corner & 1) ? ohi.x : olo.x, (corner & 2) ? ohi.y : olo.y,
                                  (corner & 4) ? ohi.z : olo.z);
-            const Vec3<double> w(t.toWorld * glm::dvec4(p, 1.0));
+            const glm::dmat4& m = (corner & 8) && t.toWorldEnd ? *t.toWorldEnd : t.toWorld;
+            const Vec3<double> w(m * glm::dvec4(p, 1.0));
             lo = glm::min(lo, w);
             hi = glm::max(hi, w);
         }
@@ -299,6 +316,7 @@ std::optional<SurfaceHit> Geometry::intersect(const Vec3f& origin, const Vec3f& 
     rh.ray.tnear = 0.0f;
     rh.ray.tfar = tMax;
     rh.ray.mask = 0xFFFFFFFFu;
+    rh.ray.time = embreeRayTime();
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(scene3_, &context, &rh);
@@ -321,7 +339,11 @@ std::optional<SurfaceHit> Geometry::intersect(const Vec3f& origin, const Vec3f& 
     // them on the outside under a mirroring transform, as the winding swap does for shapes
     // (shape_reader.cpp); a disk's front turns as a transformed disk's does.
     hit.instance = int(rh.hit.instID[0] - sceneShapes_);
-    const InstanceTransform& xf = instanceTransforms_[std::size_t(hit.instance)];
+    // A moving instance's transform at the ray's time, as Embree traced it.
+    const InstanceTransform& stored = instanceTransforms_[std::size_t(hit.instance)];
+    const std::optional<InstanceTransform> moved =
+        stored.toWorldEnd ? std::optional(stored.at(rh.ray.time)) : std::nullopt;
+    const InstanceTransform& xf = moved ? *moved : stored;
     const int object = scene_.instances[std::size_t(hit.instance)].object;
     hit.shape = objectFirstShape_[std::size_t(object)] + int(rh.hit.geomID);
     const ShapeInfo& info = shapes_[std::size_t(hit.shape)];
@@ -369,6 +391,7 @@ bool Geometry::occluded(const Vec3f& origin, const Vec3f& direction, float tMax)
     ray.tnear = 0.0f;
     ray.tfar = tMax;
     ray.mask = 0xFFFFFFFFu;
+    ray.time = embreeRayTime();
     rtcOccluded1(scene3_, &context, &ray);
     return ray.tfar < 0.0f;
 }

@@ -34,8 +34,11 @@ std::optional<CameraEstimate<S>> PathIntegrator<S>::sample(const PixelSample<S>&
     const auto ray = c_.camera.generateRay(cs.raster.x, cs.raster.y, cs.lens);
     CameraEstimate<S> estimate{S(0.0f), cs.filterWeight, std::nullopt, ray.direction};
     if (aovs_) estimate.aovs.emplace();
+    // A realistic camera's lens blocks some rays and weights the others (realistic_camera.h).
+    if (ray.weight == 0.0f) return estimate;
     estimate.value = radiance(ray.origin, ray.direction, ps.sampler, ps.path, ps.stats,
                               estimate.aovs ? &*estimate.aovs : nullptr);
+    if (ray.weight != 1.0f) estimate.value = estimate.value * ray.weight;
     return estimate;
 }
 

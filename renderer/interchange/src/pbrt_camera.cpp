@@ -97,7 +97,11 @@ Json translateFilm(TranslationContext& ctx, const Entity& e, const Entity& camer
         p.boolean("savefp16", false);
         ctx.warn(e.location, "savefp16 ignored: lamina writes float EXR");
     }
-    if (p.has("diagonal")) {
+    if (camera.type == "realistic") {
+        ctx.filmDiagonal = p.number("diagonal", 35);
+        if (!(ctx.filmDiagonal > 0 && ctx.filmDiagonal < 1e5))
+            ctx.fail(e.location, "Film: diagonal must be in (0, 1e5) mm");
+    } else if (p.has("diagonal")) {
         p.number("diagonal", 35);
         ctx.warn(e.location,
                  "diagonal ignored: only pbrt-v4's realistic camera reads the film's size");
@@ -149,10 +153,10 @@ Json translateFilm(TranslationContext& ctx, const Entity& e, const Entity& camer
 Json translateCamera(TranslationContext& ctx, const Entity& e, int width, int height) {
     const ParamList& p = e.params;
     const bool orthographic = e.type == "orthographic";
-    if (e.type != "perspective" && !orthographic)
+    if (e.type != "perspective" && !orthographic && e.type != "realistic")
         ctx.fail(e.location, "Camera \"" + e.type +
-                                 "\" is not supported (perspective, orthographic); the realistic "
-                                 "and spherical cameras have no lamina equivalent");
+                                 "\" is not supported (perspective, orthographic, realistic); "
+                                 "the spherical camera has no lamina equivalent");
     if (!(std::abs(glm::determinant(e.transform)) > 0))
         ctx.fail(e.location, "the camera transform is singular (it flattens the view)");
     const glm::dmat4 worldFromCamera = glm::inverse(e.transform);
@@ -182,7 +186,23 @@ Json translateCamera(TranslationContext& ctx, const Entity& e, int width, int he
     Json camera{{"position", vec(position)},
                 {"look_at", vec(position + glm::normalize(z))},
                 {"up", vec(glm::normalize(y))}};
-    if (orthographic) {
+    if (e.type == "realistic") {
+        // pbrt-v4's RealisticCamera (cameras.cpp): its lens file in millimetres, the stop's
+        // `aperturediameter` (1 mm) and `focusdistance` (10) in the scene's metres, from the
+        // film: a camera transform that scales would scale them, which lamina does not.
+        if (std::abs(s - 1) > 1e-6 || std::abs(lz - 1) > 1e-6)
+            ctx.fail(e.location,
+                     "a realistic camera's transform must not scale (its lens is "
+                     "in metres of the scene)");
+        const Param* lensFile = p.find("lensfile");
+        if (!lensFile) ctx.fail(e.location, "Camera \"realistic\": no \"string lensfile\"");
+        p.string("lensfile", "");
+        camera["type"] = "realistic";
+        camera["lens_file"] = ctx.filePath(p, *lensFile);
+        camera["aperture_diameter"] = p.number("aperturediameter", 1.0);
+        camera["focus_distance"] = p.number("focusdistance", 10.0);
+        camera["film_diagonal"] = ctx.filmDiagonal;
+    } else if (orthographic) {
         camera["type"] = "orthographic";
         const double aspect = double(width) / double(height);
         std::vector<double> window = aspect > 1 ? std::vector{-aspect, aspect, -1.0, 1.0}

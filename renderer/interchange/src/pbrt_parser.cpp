@@ -24,7 +24,7 @@ std::string readSceneText(const std::filesystem::path& file) {
 constexpr int kMaxIncludeDepth = 32;
 
 struct GraphicsState {
-    glm::dmat4 transform{1.0};
+    CurrentTransform transform;
     bool reverseOrientation = false;
     std::string material;
     Location materialLocation;
@@ -80,8 +80,15 @@ class Parser {
         e.location = where(tokens, directive.line);
         e.params = readParamList(tokens, directive.text + " \"" + type + "\"");
         if (attributeTarget) applyAttributes(e.params, attributeTarget);
-        e.transform = state_.transform;
+        setTransform(e);
         return e;
+    }
+
+    // The entity's transform at TransformTimes' start, and at its end where that differs.
+    void setTransform(Entity& e) const {
+        e.transform = state_.transform.start;
+        e.transformEnd.reset();
+        if (state_.transform.moves()) e.transformEnd = state_.transform.end;
     }
 
     void applyAttributes(ParamList& params, const std::string& target) const {
@@ -143,8 +150,8 @@ class Parser {
     void directive(Tokenizer& tokens, const Token& d, int depth) {
         const std::string& name = d.text;
         const Location at = where(tokens, d.line);
-        glm::dmat4& ctm = state_.transform;
-        if (readTransformDirective(tokens, d, ctm, coordinateSystems_, scene_.warnings)) {
+        CurrentTransform& ctm = state_.transform;
+        if (readTransformDirective(tokens, d, ctm, coordinateSystems_, scene_.transformTimes)) {
         } else if (name == "ReverseOrientation") {
             state_.reverseOrientation = !state_.reverseOrientation;
         } else if (name == "AttributeBegin" || name == "TransformBegin") {
@@ -163,12 +170,14 @@ class Parser {
                 state_ = stack_.back().state;
             stack_.pop_back();
         } else if (name == "WorldBegin") {
-            ctm = glm::dmat4(1.0);
+            // pbrt-v4's WorldBegin: both transforms the identity, both active.
+            ctm = CurrentTransform{};
             coordinateSystems_["world"] = ctm;
         } else if (name == "Camera") {
             Entity e = entity(tokens, d, quotedString(tokens, d));
             // pbrt-v4 names the camera's frame "camera" (scene.cpp, BasicSceneBuilder::Camera).
-            coordinateSystems_["camera"] = glm::inverse(e.transform);
+            coordinateSystems_["camera"] = {glm::inverse(e.transform),
+                                            glm::inverse(e.transformEnd.value_or(e.transform))};
             // The camera sits in the current outside medium (BasicSceneBuilder::Camera).
             scene_.cameraMedia = state_.media;
             setOnce(scene_.camera, std::move(e), "Camera");
@@ -205,7 +214,7 @@ class Parser {
             const std::string materialName = quotedString(tokens, d);
             Entity e;
             e.location = at;
-            e.transform = ctm;
+            setTransform(e);
             e.params = readParamList(tokens, "MakeNamedMaterial \"" + materialName + "\"");
             applyAttributes(e.params, "material");
             if (!e.params.has("type"))
@@ -272,12 +281,14 @@ class Parser {
             const std::string objectName = quotedString(tokens, d);
             if (currentObject_)
                 tokens.fail(d.line, "ObjectInstance inside ObjectBegin is not supported");
-            scene_.instances.push_back({objectName, at, ctm});
+            scene_.instances.push_back(
+                {objectName, at, ctm.start,
+                 ctm.moves() ? std::optional<glm::dmat4>(ctm.end) : std::nullopt});
         } else if (name == "MakeNamedMedium") {
             const std::string mediumName = quotedString(tokens, d);
             Entity e;
             e.location = at;
-            e.transform = ctm;
+            setTransform(e);
             e.params = readParamList(tokens, "MakeNamedMedium \"" + mediumName + "\"");
             applyAttributes(e.params, "medium");
             if (!e.params.has("type"))
@@ -320,7 +331,7 @@ class Parser {
     ParsedScene& scene_;
     GraphicsState state_;
     std::vector<Frame> stack_;
-    std::map<std::string, glm::dmat4> coordinateSystems_;
+    std::map<std::string, CurrentTransform> coordinateSystems_;
     ObjectDef* currentObject_ = nullptr;
     int anonymousMaterials_ = 0;
 };

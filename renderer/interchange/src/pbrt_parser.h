@@ -13,6 +13,7 @@
 #include <glm/mat4x4.hpp>
 
 #include "pbrt_params.h"
+#include "pbrt_transform_directives.h"
 
 namespace lamina::render::pbrt {
 
@@ -22,8 +23,10 @@ struct Entity {
     ParamList params;
     Location location;
     /// The current transform when the directive was read: pbrt's renderFromObject (for the
-    /// camera, cameraFromWorld).
+    /// camera, cameraFromWorld), at TransformTimes' start.
     glm::dmat4 transform{1.0};
+    /// Set when the transform at TransformTimes' end differs (ActiveTransform): it moves.
+    std::optional<glm::dmat4> transformEnd;
 };
 
 struct TextureDef {
@@ -71,7 +74,8 @@ struct ObjectDef {
 struct InstanceDef {
     std::string object;
     Location location;
-    glm::dmat4 transform{1.0};  ///< renderFromInstance
+    glm::dmat4 transform{1.0};               ///< renderFromInstance
+    std::optional<glm::dmat4> transformEnd;  ///< at TransformTimes' end, when it differs
 };
 
 /// Everything a pbrt-v4 file (with its includes) describes.
@@ -89,6 +93,7 @@ struct ParsedScene {
     std::vector<InstanceDef> instances;
     std::vector<std::string> warnings;
     std::vector<std::filesystem::path> files;  ///< the scene file and its includes
+    TransformTimes transformTimes;             ///< the times of the start and end transforms
 };
 
 /// Parses `file` and the files it includes. Errors are InputErrors "FILE:LINE: ...".

@@ -131,8 +131,9 @@ std::optional<Json> translateShape(TranslationContext& ctx, const ShapeDef& s, b
                          "Shape \"" + e.type + "\" under a shear or an uneven scale is not " +
                              (s.areaLight ? "supported when it emits (lamina places it as an "
                                             "instance, and instances cannot emit)"
-                                          : "supported inside ObjectBegin (lamina places it "
-                                            "as an instance, and instances do not nest)"));
+                                          : "supported inside ObjectBegin or on a moving "
+                                            "shape (lamina places it as an instance, and "
+                                            "instances do not nest)"));
             viaInstance = true;
             return 1.0;
         }

@@ -10,8 +10,9 @@ namespace lamina::render::pbrt {
 /// A 4x4 transform as lamina's row-major "matrix" list.
 Json rowMajor(const glm::dmat4& m);
 /// The lamina shape, or nullopt when it is omitted (pbrt's "interface" material), with its
-/// warning written. `inObject`: the shape is part of an ObjectBegin block (its quadrics must
-/// then stay round, as they cannot be placed by an instance of their own).
+/// warning written. `inObject`: the shape is part of an object (an ObjectBegin block, or a
+/// moving shape's own object): its quadrics must then stay round, as they cannot be placed by
+/// an instance of their own.
 std::optional<Json> translateShape(TranslationContext& context, const ShapeDef& shape,
                                    bool inObject);
 /// The `emission` of a shape under AreaLightSource `light`; `areas`: the shape's face areas

@@ -65,35 +65,43 @@ glm::dmat4 lookAt(Tokenizer& tokens, const Token& d, const glm::dvec3& eye, cons
 
 }  // namespace
 
-bool readTransformDirective(Tokenizer& tokens, const Token& d, glm::dmat4& ctm,
-                            std::map<std::string, glm::dmat4>& coordinateSystems,
-                            std::vector<std::string>& warnings) {
+bool readTransformDirective(Tokenizer& tokens, const Token& d, CurrentTransform& ctm,
+                            std::map<std::string, CurrentTransform>& coordinateSystems,
+                            TransformTimes& times) {
     const std::string& name = d.text;
+    // pbrt-v4's ForActiveTransforms: each directive changes the active ones of the two.
+    const auto apply = [&](const auto& change) {
+        if (ctm.startActive) ctm.start = change(ctm.start);
+        if (ctm.endActive) ctm.end = change(ctm.end);
+    };
     if (name == "Identity") {
-        ctm = glm::dmat4(1.0);
+        apply([](const glm::dmat4&) { return glm::dmat4(1.0); });
     } else if (name == "Translate") {
         const auto v = directiveNumbers(tokens, d, 3, false);
-        ctm = glm::translate(ctm, glm::dvec3(v[0], v[1], v[2]));
+        apply([&](const glm::dmat4& m) { return glm::translate(m, glm::dvec3(v[0], v[1], v[2])); });
     } else if (name == "Scale") {
         const auto v = directiveNumbers(tokens, d, 3, false);
-        ctm = glm::scale(ctm, glm::dvec3(v[0], v[1], v[2]));
+        apply([&](const glm::dmat4& m) { return glm::scale(m, glm::dvec3(v[0], v[1], v[2])); });
     } else if (name == "Rotate") {
         const auto v = directiveNumbers(tokens, d, 4, false);
         const glm::dvec3 axis(v[1], v[2], v[3]);
         if (glm::length(axis) == 0) tokens.fail(d.line, "Rotate: the axis is zero");
         // pbrt-v4's Rotate (transform.cpp) is the right-handed rotation about the axis, as
         // glm::rotate.
-        ctm = glm::rotate(ctm, glm::radians(v[0]), glm::normalize(axis));
+        apply([&](const glm::dmat4& m) {
+            return glm::rotate(m, glm::radians(v[0]), glm::normalize(axis));
+        });
     } else if (name == "LookAt") {
         const auto v = directiveNumbers(tokens, d, 9, false);
-        ctm = ctm * lookAt(tokens, d, glm::dvec3(v[0], v[1], v[2]), glm::dvec3(v[3], v[4], v[5]),
-                           glm::dvec3(v[6], v[7], v[8]));
+        const glm::dmat4 look = lookAt(tokens, d, glm::dvec3(v[0], v[1], v[2]),
+                                       glm::dvec3(v[3], v[4], v[5]), glm::dvec3(v[6], v[7], v[8]));
+        apply([&](const glm::dmat4& m) { return m * look; });
     } else if (name == "Transform" || name == "ConcatTransform") {
         const auto v = directiveNumbers(tokens, d, 16, true);
         // pbrt-v4 transposes the 16 numbers (parser.cpp, Transform): they are the matrix column
         // by column, which is glm's storage order.
-        const glm::dmat4 m = glm::make_mat4(v.data());
-        ctm = name == "Transform" ? m : ctm * m;
+        const glm::dmat4 t = glm::make_mat4(v.data());
+        apply([&](const glm::dmat4& m) { return name == "Transform" ? t : m * t; });
     } else if (name == "CoordinateSystem") {
         coordinateSystems[quotedString(tokens, d)] = ctm;
     } else if (name == "CoordSysTransform") {
@@ -102,16 +110,25 @@ bool readTransformDirective(Tokenizer& tokens, const Token& d, glm::dmat4& ctm,
         if (it == coordinateSystems.end())
             tokens.fail(d.line,
                         "CoordSysTransform: no coordinate system \"" + system + "\" was defined");
-        ctm = it->second;
+        // Both transforms, whichever are active (pbrt-v4 assigns the whole set).
+        ctm.start = it->second.start;
+        ctm.end = it->second.end;
     } else if (name == "ActiveTransform") {
         const auto t = expectToken(tokens, Token::Kind::Word, "All, StartTime or EndTime", d.line);
-        if (t.text != "All")
-            tokens.fail(d.line, "ActiveTransform " + t.text +
-                                    ": motion blur is not supported (only ActiveTransform All)");
+        if (t.text != "All" && t.text != "StartTime" && t.text != "EndTime")
+            tokens.fail(t.line,
+                        "ActiveTransform " + t.text + ": expected All, StartTime or EndTime");
+        ctm.startActive = t.text != "EndTime";
+        ctm.endActive = t.text != "StartTime";
     } else if (name == "TransformTimes") {
-        directiveNumbers(tokens, d, 2, false);
-        warnings.push_back(Location{tokens.fileName(), d.line}.str() +
-                           ": TransformTimes ignored: lamina renders one instant (no motion blur)");
+        const auto v = directiveNumbers(tokens, d, 2, false);
+        // lamina's scene times are these mapped to [0, 1]: their difference divides.
+        if (!(v[0] < v[1]) || !(std::abs(v[0]) <= 1e6 && std::abs(v[1]) <= 1e6) ||
+            !(v[1] - v[0] >= 1e-6))
+            tokens.fail(d.line,
+                        "TransformTimes: expected a start time before the end time, both "
+                        "in [-1e6, 1e6] and at least 1e-6 apart");
+        times = {v[0], v[1]};
     } else {
         return false;
     }

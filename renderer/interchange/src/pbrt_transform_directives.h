@@ -1,6 +1,7 @@
 // The directives of a pbrt-v4 file that change the current transform (Identity, Translate,
 // Scale, Rotate, LookAt, Transform, ConcatTransform, CoordinateSystem, CoordSysTransform,
-// ActiveTransform, TransformTimes), and the readers of a directive's arguments the parser shares.
+// ActiveTransform, TransformTimes: motion blur), and the readers of a directive's arguments the
+// parser shares.
 #pragma once
 
 #include <map>
@@ -22,11 +23,25 @@ std::string quotedString(Tokenizer& tokens, const Token& directive);
 std::vector<double> directiveNumbers(Tokenizer& tokens, const Token& directive, std::size_t count,
                                      bool bracketsAllowed);
 
+/// pbrt-v4's current transform is two (its TransformSet): the one at TransformTimes' start and
+/// the one at its end; ActiveTransform chooses which of them the transform directives change.
+/// They differ only for a moving (motion-blurred) entity.
+struct CurrentTransform {
+    glm::dmat4 start{1.0}, end{1.0};
+    bool startActive = true, endActive = true;
+    bool moves() const { return start != end; }
+};
+
+/// TransformTimes: the times of the start and the end transform (pbrt-v4's default 0 and 1).
+struct TransformTimes {
+    double start = 0, end = 1;
+};
+
 /// Reads `directive`'s arguments and applies it to the current transform `ctm` (and the named
-/// coordinate systems) if it is one of the transform directives; false (nothing read) if not.
-/// What lamina ignores is said in `warnings`, as "FILE:LINE: message".
-bool readTransformDirective(Tokenizer& tokens, const Token& directive, glm::dmat4& ctm,
-                            std::map<std::string, glm::dmat4>& coordinateSystems,
-                            std::vector<std::string>& warnings);
+/// coordinate systems, the transform times) if it is one of the transform directives; false
+/// (nothing read) if not.
+bool readTransformDirective(Tokenizer& tokens, const Token& directive, CurrentTransform& ctm,
+                            std::map<std::string, CurrentTransform>& coordinateSystems,
+                            TransformTimes& times);
 
 }  // namespace lamina::render::pbrt

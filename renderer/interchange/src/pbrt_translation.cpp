@@ -12,6 +12,7 @@
 #include "lamina/core/input_file.h"
 #include "lamina/interchange/scene_import.h"
 #include "pbrt_importer.h"
+#include "pbrt_motion.h"
 #include "pbrt_shapes.h"
 #include "rounded_rotation.h"
 
@@ -296,8 +297,12 @@ Json translate(TranslationContext& ctx) {
     doc["integrator"] =
         translateIntegrator(ctx, scene.integrator ? *scene.integrator : defaultEntity("path"));
     doc["shapes"] = Json::array();
+    warnStandsStill(ctx, camera, "the camera");
     for (const ShapeDef& s : scene.shapes)
-        if (auto shape = translateShape(ctx, s, false)) doc["shapes"].push_back(std::move(*shape));
+        if (s.entity.transformEnd)
+            translateMovingShape(ctx, s, doc);
+        else if (auto shape = translateShape(ctx, s, false))
+            doc["shapes"].push_back(std::move(*shape));
     // Objects: shared geometry, placed by instances (common-spec: "objects" and "instance").
     std::set<std::string> instanced;
     for (const InstanceDef& i : scene.instances) {
@@ -307,22 +312,27 @@ Json translate(TranslationContext& ctx) {
         if (!object) ctx.fail(i.location, "ObjectInstance \"" + i.object + "\": no such object");
         if (!instanced.count(i.object)) {
             Json shapes = Json::array();
-            for (const ShapeDef& s : object->shapes)
+            for (const ShapeDef& s : object->shapes) {
+                warnStandsStill(ctx, s.entity, "a shape inside ObjectBegin");
                 if (auto shape = translateShape(ctx, s, true)) shapes.push_back(std::move(*shape));
+            }
             doc["objects"][i.object] = shapes;
             instanced.insert(i.object);
         }
-        doc["shapes"].push_back({{"type", "instance"},
-                                 {"object", i.object},
-                                 {"transform", {{{"matrix", rowMajor(i.transform)}}}}});
+        doc["shapes"].push_back(translateInstance(ctx, i));
     }
+    translateShutter(ctx, camera, doc);
     for (const ObjectDef& o : scene.objects)
         if (!instanced.count(o.name))
             ctx.warn(o.location, "object \"" + o.name + "\" is never instanced: not translated");
     doc["lights"] = Json::array();
-    for (const Entity& l : scene.lights)
+    for (const Entity& l : scene.lights) {
+        warnStandsStill(ctx, l, "LightSource \"" + l.type + "\"");
         doc["lights"].push_back(translateLight(ctx, l));
+    }
     warnUnusedMedia(ctx);
+    for (const MediumDef& m : scene.media)
+        warnStandsStill(ctx, m.entity, "MakeNamedMedium \"" + m.name + "\"");
     // pbrt-v4's PathIntegrator ignores media (only volpath and bdpt render them); lamina's
     // path tracer renders them.
     if (doc.contains("media") && scene.integrator && scene.integrator->type == "path")

@@ -28,6 +28,8 @@ struct TranslationContext {
     std::map<std::string, Json> translatedMaterials;
     /// Textures being translated (a texture made of itself is refused).
     std::set<std::string> texturesInProgress;
+    /// The film's diagonal in mm (pbrt-v4's Film "diagonal", 35), for a realistic camera.
+    double filmDiagonal = 35;
 
     void warn(const Location& at, const std::string& message) {
         warnings.push_back(at.str() + ": " + message);

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "lamina/core/error.h"
+#include "lamina/geometry/ray_time.h"
 #include "lamina/integrators/integrator.h"
 #include "lamina/integrators/medium_emitters.h"
 #include "lamina/render/global_sobol_net.h"
@@ -88,10 +89,19 @@ RenderResult renderWithMode(const SceneDesc& scene, const RenderOptions& options
 
     // One sample of pixel (x, y): the integrator's camera-side estimate goes to the pixel, its
     // splats (light, bdpt) anywhere on the film.
+    const bool moves = scene.hasMotion();
+    const std::array<double, 2> shutter = scene.camera.shutter;
     const auto renderSample = [&](int x, int y, const PixelSeed& pixelSeed, int s,
                                   PathStatistics& stats) {
         PixelSampler sampler(settings.sampler, pixelSeed, std::uint32_t(s), net);
         auto path = mode.startPath(sampler);
+        // Motion blur: one time per sample, uniform over the shutter, for every ray of it
+        // (ray_time.h). A scene where nothing moves draws no number, so its images keep
+        // their bits.
+        std::optional<RayTimeScope> sampleTime;
+        if (moves)
+            sampleTime.emplace(
+                float(shutter[0] + double(sampler.get1D()) * (shutter[1] - shutter[0])));
         const auto estimate = integrator->sample({x, y, sampler, path, film, stats});
         if (!estimate) return;
         if constexpr (kPolarised) {
@@ -204,6 +214,13 @@ RenderOptions withCrop(const RenderOptions& options, const PixelBounds& crop) {
 }  // namespace
 
 void checkMedia(const SceneDesc& scene, RenderModeKind mode, IntegratorKind integrator) {
+    // Every caller checks here before it renders: so does the camera.
+    if (scene.camera.lensSystem && integrator != IntegratorKind::Path)
+        throw InputError(scene.file.string() +
+                         ": camera.type: the realistic camera renders with the path integrator "
+                         "only (light tracing and BDPT connect to the lens by its importance, "
+                         "which a lens system has in no closed form); use \"integrator\": "
+                         "{\"type\": \"path\"}");
     if (!scene.hasMedia()) return;
     // Light tracing and BDPT start particles in an emitting medium's volume: one that fills
     // space cannot be sampled (the integrators refuse the other media that reach infinity,

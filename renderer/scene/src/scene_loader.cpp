@@ -17,7 +17,8 @@ SceneDesc readScene(const Json& json, const JsonSource& source) {
     scene.file = source.name;
     // Media first: the camera and the shapes name them.
     if (const auto m = root.optionalChild("media")) readMedia(*m, scene);
-    if (const auto c = root.optionalChild("camera")) scene.camera = readCamera(*c, scene.media);
+    if (const auto c = root.optionalChild("camera"))
+        scene.camera = readCamera(*c, scene.media, scene.importWarnings);
     if (const auto f = root.optionalChild("film")) scene.film = readFilm(*f);
     if (const auto i = root.optionalChild("integrator")) readIntegrator(*i, scene.settings);
     if (const auto s = root.optionalChild("sampler")) readSampler(*s, scene.settings);

@@ -1,5 +1,7 @@
 #include <glm/trigonometric.hpp>
 
+#include "lamina/core/error.h"
+#include "lamina/scene/lens_system.h"
 #include "lamina/scene/scene_readers.h"
 
 namespace lamina::render {
@@ -22,14 +24,55 @@ void readOrthographic(const JsonReader& r, CameraDesc& c) {
     c.handedness = r.choice("handedness", Handedness::Right, kHandednessNames);
 }
 
+// A realistic camera's keys (lens_system.h): its lens file, the stop's diameter, the plane in
+// focus and the film's diagonal; a field of view or a thin lens is refused.
+void readRealistic(const JsonReader& r, CameraDesc& c, std::vector<std::string>& warnings) {
+    for (const char* key : {"fov", "focal_length", "sensor_height", "aperture_radius"})
+        if (r.has(key))
+            r.failAt(key,
+                     "a realistic camera's lens file sets its focal length and aperture "
+                     "(use aperture_diameter and film_diagonal)");
+    const std::filesystem::path file = r.filePath("lens_file");
+    std::vector<LensInterface> interfaces;
+    try {
+        interfaces = readLensFile(file);
+    } catch (const InputError& e) {
+        r.failAt("lens_file", e.what());
+    }
+    // Millimetres, as in the lens file; the focus distance in metres (the scene's unit).
+    const double aperture = r.number("aperture_diameter", 0.0, {0.0, 1e5});
+    const double focus =
+        r.number("focus_distance", glm::length(c.lookAt - c.position), {0.0, 1e6, true});
+    const double diagonal = r.number("film_diagonal", 35.0, {0.0, 1e5, true});
+    c.handedness = r.choice("handedness", Handedness::Right, kHandednessNames);
+    try {
+        bool clamped = false;
+        c.lensSystem = std::make_shared<LensSystem>(std::move(interfaces), aperture / 1000, focus,
+                                                    diagonal / 1000, &clamped);
+        if (clamped)
+            warnings.push_back(r.source().name + ": " + r.path() +
+                               ".aperture_diameter: wider than the lens file's aperture stop: "
+                               "the stop's own diameter is used");
+    } catch (const InputError& e) {
+        r.failAt("focus_distance", e.what());
+    }
+}
+
 }  // namespace
 
-CameraDesc readCamera(const JsonReader& r, const std::vector<MediumDesc>& media) {
+CameraDesc readCamera(const JsonReader& r, const std::vector<MediumDesc>& media,
+                      std::vector<std::string>& warnings) {
     r.expectObject();
     CameraDesc c;
     // Any angle is an axis; [-180, 180] keeps typing errors (radians times 100) out.
     c.analyserDegrees = r.optionalNumber("analyser", {-180.0, 180.0});
     if (r.has("medium")) c.medium = mediumIndex(r, "medium", media);
+    if (r.has("shutter")) {
+        // Times in the scene's own unit: instances move from time 0 to time 1.
+        c.shutter = r.requiredArray<2>("shutter", {-1e6, 1e6});
+        if (!(c.shutter[0] <= c.shutter[1]))
+            r.failAt("shutter", "expected [open, close] with open <= close");
+    }
     r.noteNames("type", kCameraKindNames.names());
     const std::string type = r.string("type", "perspective");
     const auto kind = kCameraKindNames.find(type);
@@ -57,6 +100,11 @@ CameraDesc readCamera(const JsonReader& r, const std::vector<MediumDesc>& media)
         r.failAt("up", "is parallel to the viewing direction");
     if (*kind == CameraKind::Orthographic) {
         readOrthographic(r, c);
+        r.finish();
+        return c;
+    }
+    if (*kind == CameraKind::Realistic) {
+        readRealistic(r, c, warnings);
         r.finish();
         return c;
     }

@@ -27,6 +27,26 @@ AlphaDesc readAlpha(const JsonReader& r, SceneMaterials& materials) {
 
 namespace {
 
+// A moving instance's matrix, interpolated linearly from `start` to `end`, must stay
+// invertible at every time (the hit is carried back through its inverse): its linear part's
+// determinant, a cubic in the time, keeps one sign, checked at 65 times (a rotation by 180
+// degrees, which passes through a singular matrix halfway, is refused).
+void checkMotion(const JsonReader& r, const Mat4& start, const Mat4& end) {
+    const double d0 = glm::determinant(glm::dmat3(start)), d1 = glm::determinant(glm::dmat3(end));
+    const double floor = 1e-6 * std::min(std::abs(d0), std::abs(d1));
+    for (int i = 0; i <= 64; ++i) {
+        const double t = i / 64.0;
+        const double d = glm::determinant(glm::dmat3((1 - t) * start + t * end));
+        if (!(d * d0 > 0) || !(std::abs(d) > floor))
+            r.failAt("transform_end",
+                     "the motion from transform to transform_end passes through a flat (singular) "
+                     "matrix at time " +
+                         std::to_string(t) +
+                         " (matrices are interpolated element by element: split a large rotation "
+                         "into instances of smaller steps, or turn by less than 90 degrees)");
+    }
+}
+
 // An "instance": an object placed by "transform". Its transformed bounding box must stay
 // within float range, as every shape's coordinates do.
 InstanceDesc readInstance(const JsonReader& r, const std::string& name, SceneObjects& objects,
@@ -35,14 +55,22 @@ InstanceDesc readInstance(const JsonReader& r, const std::string& name, SceneObj
     instance.name = name;
     instance.object = objects.objectOf(r);
     instance.toWorld = readTransform(r);
+    if (r.has("transform_end")) {
+        instance.toWorldEnd = readTransform(r, "transform_end");
+        checkMotion(r, instance.toWorld, *instance.toWorldEnd);
+    }
     r.finish();
     Vec3d lo, hi;
     boundingBox(scene.objects[std::size_t(instance.object)].shapes, lo, hi);
-    for (int corner = 0; corner < 8; ++corner) {
+    for (int corner = 0; corner < 16; ++corner) {
         const Vec3d p((corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y,
                       (corner & 4) ? hi.z : lo.z);
-        checkCoordinates(r, "transform", Vec3d(instance.toWorld * glm::dvec4(p, 1.0)),
-                         "the instance's bounding box corner");
+        const bool end = (corner & 8) != 0;
+        if (end && !instance.toWorldEnd) continue;
+        checkCoordinates(
+            r, end ? "transform_end" : "transform",
+            Vec3d((end ? *instance.toWorldEnd : instance.toWorld) * glm::dvec4(p, 1.0)),
+            "the instance's bounding box corner");
     }
     return instance;
 }
@@ -106,6 +134,11 @@ void readShape(const JsonReader& r, SceneMaterials& materials, SceneObjects& obj
         return;
     }
     readShapeInto(r, materials, {scene.shapes, scene.importWarnings}, false);
+}
+
+bool SceneDesc::hasMotion() const {
+    return std::any_of(instances.begin(), instances.end(),
+                       [](const InstanceDesc& i) { return i.toWorldEnd.has_value(); });
 }
 
 void SceneObjects::define(const JsonReader& objects) {

@@ -7,9 +7,9 @@ namespace lamina::render {
 // "transform": a list of operations applied in order (the first one first):
 // {"translate": [x, y, z]}, {"scale": s | [x, y, z]}, {"rotate": {"axis": [x, y, z],
 // "angle": degrees}}, {"matrix": [16 numbers, row-major]}.
-Mat4 readTransform(const JsonReader& parent) {
+Mat4 readTransform(const JsonReader& parent, const char* key) {
     Mat4 m(1.0);
-    const auto t = parent.optionalChild("transform");
+    const auto t = parent.optionalChild(key);
     if (!t) return m;
     if (!t->value().is_array()) t->fail("expected an array of operations");
     for (std::size_t i = 0; i < t->value().size(); ++i) {

@@ -12,6 +12,7 @@
 #include <embree3/rtcore.h>
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "lamina/core/frame.h"
@@ -59,6 +60,21 @@ struct GeometryCounts {
     std::size_t objectsBuilt = 0;  ///< objects some instance places (each one Embree scene)
 };
 
+/// An instance's transform as Embree applies it (float), in double for the hit. A moving
+/// instance (InstanceDesc::toWorldEnd) has a second one at time 1, and Embree interpolates the
+/// two matrices element by element at the ray's time (instance_motion.cpp).
+struct InstanceTransform {
+    glm::dmat4 toWorld{1.0}, toObject{1.0};
+    glm::dmat3 normalMatrix{1.0};
+    bool mirrors = false;
+    std::optional<glm::dmat4> toWorldEnd;  ///< at time 1; unset: it does not move
+
+    /// From Embree's 3 x 4 column-major matrix.
+    static InstanceTransform fromEmbree(const float xfm[12]);
+    /// The transform at `time` in [0, 1], as Embree interpolates it (a moving one's).
+    InstanceTransform at(float time) const;
+};
+
 class Geometry {
   public:
     explicit Geometry(const SceneDesc& scene);
@@ -93,13 +109,6 @@ class Geometry {
     RTCScene embreeScene() const { return scene3_; }
 
   private:
-    /// An instance's transform as Embree applies it (float), in double for the hit.
-    struct InstanceTransform {
-        glm::dmat4 toWorld{1.0}, toObject{1.0};
-        glm::dmat3 normalMatrix{1.0};
-        bool mirrors = false;
-    };
-
     /// Every shape of `shapes` into `target`, geometry id = index (the scene's shapes, or
     /// those of the object `object`).
     void addShapes(RTCScene target, const std::vector<ShapeDesc>& shapes, int object);

@@ -1,5 +1,6 @@
-// The camera of a render: a perspective one (pinhole or thin lens, perspective_camera.h) or an
-// orthographic one (orthographic_camera.h), chosen by the scene's camera. The integrators ask
+// The camera of a render: a perspective one (pinhole or thin lens, perspective_camera.h), an
+// orthographic one (orthographic_camera.h) or a realistic one (a lens system,
+// realistic_camera.h; path tracing only), chosen by the scene's camera. The integrators ask
 // this one class; each kind answers with its own model of rays, importance and densities.
 #pragma once
 
@@ -7,18 +8,21 @@
 
 #include "lamina/render/orthographic_camera.h"
 #include "lamina/render/perspective_camera.h"
+#include "lamina/render/realistic_camera.h"
 
 namespace lamina::render {
 
 class Camera {
   public:
     Camera(const CameraDesc& desc, int width, int height)
-        : kind_(desc.orthographic
+        : kind_(desc.lensSystem ? Kind(std::in_place_type<RealisticCamera>, desc, width, height)
+                : desc.orthographic
                     ? Kind(std::in_place_type<OrthographicCamera>, desc, width, height)
                     : Kind(std::in_place_type<PerspectiveCamera>, desc, width, height)) {}
 
     /// The ray through film position (x, y) in pixels (0 at the top-left corner), with `lens`
-    /// in [0, 1)^2 choosing the point on the aperture.
+    /// in [0, 1)^2 choosing the point on the aperture. Its weight is 1 but for a realistic
+    /// camera (0: the lens blocked it).
     CameraRay generateRay(float x, float y, const Vec2<float>& lens) const {
         return std::visit([&](const auto& c) { return c.generateRay(x, y, lens); }, kind_);
     }
@@ -55,7 +59,7 @@ class Camera {
     }
 
   private:
-    using Kind = std::variant<PerspectiveCamera, OrthographicCamera>;
+    using Kind = std::variant<PerspectiveCamera, OrthographicCamera, RealisticCamera>;
     Kind kind_;
 };
 

@@ -10,6 +10,9 @@ namespace lamina::render {
 
 struct CameraRay {
     Vec3<float> origin, direction;
+    /// What the radiance along the ray is multiplied by: 1 but for a realistic camera (its
+    /// lens system's throughput over the density of the ray; 0: vignetted, no ray).
+    float weight = 1;
 };
 
 /// A connection from a scene point to the lens: a light subpath vertex with throughput beta

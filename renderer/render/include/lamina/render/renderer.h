@@ -82,7 +82,8 @@ std::atomic<bool>& renderInterruptFlag();
 /// Refuses a scene with media (SceneDesc::hasMedia) for what does not render it yet: the
 /// light and bdpt integrators with a homogeneous emitting medium that fills space (the
 /// camera's, bounded by no shape; the integrators refuse the others that reach infinity when
-/// they are made), and the polarised mode (docs/media.md). The
+/// they are made), and the polarised mode (docs/media.md); and that a realistic camera is
+/// rendered by the path integrator (realistic_camera.h). The
 /// renderer calls it; experiments call it before they start work.
 void checkMedia(const SceneDesc& scene, RenderModeKind mode, IntegratorKind integrator);
 

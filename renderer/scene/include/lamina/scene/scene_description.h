@@ -26,11 +26,15 @@ struct JsonSource;  // core/json_reader.h
 namespace lamina::render {
 
 /// The `type` of a scene file's camera: a pinhole, a thin lens (a pinhole with an aperture),
-/// or an orthographic projection (parallel rays along the view from a screen window).
-enum class CameraKind { Perspective, ThinLens, Orthographic };
+/// an orthographic projection (parallel rays along the view from a screen window), or a
+/// realistic one (rays traced through a system of spherical lens elements, lens_file.h).
+enum class CameraKind { Perspective, ThinLens, Orthographic, Realistic };
 inline constexpr NameTable kCameraKindNames{std::array{
     NameEntry{CameraKind::Perspective, "perspective"}, NameEntry{CameraKind::ThinLens, "thin_lens"},
-    NameEntry{CameraKind::Orthographic, "orthographic"}}};
+    NameEntry{CameraKind::Orthographic, "orthographic"},
+    NameEntry{CameraKind::Realistic, "realistic"}}};
+
+class LensSystem;  // lens_system.h
 
 /// Which way the image's right points: `Right`: forward x up (lamina's default); `Left`:
 /// up x forward (pbrt's left-handed camera space, whose +x is the image's right).
@@ -57,6 +61,12 @@ struct CameraDesc {
     std::optional<double> analyserDegrees;
     /// The medium the camera sits in (into SceneDesc::media); -1: vacuum.
     int medium = -1;
+    /// The shutter's open and close times (open <= close): each pixel sample is taken at one
+    /// time uniform between them, where moving instances stand (InstanceDesc::toWorldEnd).
+    std::array<double, 2> shutter{0.0, 1.0};
+    /// Set: a realistic camera, its lens system (the film sits at `position`, the lens in
+    /// front of it along the view); null: a perspective or orthographic one.
+    std::shared_ptr<const LensSystem> lensSystem;
 };
 
 enum class FilterKind { Box, Gaussian, BlackmanHarris, Triangle };
@@ -133,8 +143,11 @@ struct ObjectDesc {
 /// An `instance` shape: an object placed by a transform (object to world).
 struct InstanceDesc {
     std::string name;
-    int object = -1;  ///< into SceneDesc::objects
-    glm::dmat4 toWorld{1.0};
+    int object = -1;          ///< into SceneDesc::objects
+    glm::dmat4 toWorld{1.0};  ///< at time 0 (and before)
+    /// Set: the instance moves, from toWorld at time 0 to this at time 1 (and after), the
+    /// matrices interpolated linearly, element by element (motion blur, ray_time.h).
+    std::optional<glm::dmat4> toWorldEnd;
 };
 
 struct SceneDesc {
@@ -172,6 +185,8 @@ struct SceneDesc {
     /// True when any path can meet a medium or an interface: media are defined, the camera
     /// sits in one, or a shape is an interface. Only the path integrator renders such scenes.
     bool hasMedia() const;
+    /// True when an instance moves: each pixel sample then draws a time in the shutter.
+    bool hasMotion() const;
 };
 
 /// Reads and validates a scene file (scene_loader.cpp, with the readers of scene_readers.h).

@@ -43,7 +43,7 @@ inline Mat4 requiredMatrix(const JsonReader& r, const std::string& key) {
 
 /// A shape's or light's "transform" (a list of operations, the first applied first); the
 /// identity when the key is absent (shape_reader.cpp).
-Mat4 readTransform(const JsonReader& parent);
+Mat4 readTransform(const JsonReader& parent, const char* key = "transform");
 
 /// The largest coordinate magnitude of anything a ray can start from or reach (camera, lens,
 /// lights, shapes). Rays and hit points are float: Embree refuses a ray whose origin exceeds
@@ -76,7 +76,9 @@ inline void checkEmitterArea(const JsonReader& shape, double area) {
 
 // scene_settings_reader.cpp
 /// The camera; its "medium" names one of `media` (read before it).
-CameraDesc readCamera(const JsonReader& r, const std::vector<MediumDesc>& media);
+/// `warnings` gets what a realistic camera's lens file changed ("FILE: PATH: ...").
+CameraDesc readCamera(const JsonReader& r, const std::vector<MediumDesc>& media,
+                      std::vector<std::string>& warnings);
 FilmDesc readFilm(const JsonReader& r);
 void readIntegrator(const JsonReader& r, RenderSettings& settings);
 void readSampler(const JsonReader& r, RenderSettings& settings);
