@@ -106,7 +106,9 @@ INSTANTIATE_TEST_SUITE_P(
                       RenderModeKind::Rgb},
         AgreementCase{"BumpAndNormalMaps", "scenes/reciprocity/bump-and-normal-maps.json",
                       RenderModeKind::Rgb},
-        AgreementCase{"Quadrics", "scenes/reciprocity/quadrics.json", RenderModeKind::Rgb}),
+        AgreementCase{"Quadrics", "scenes/reciprocity/quadrics.json", RenderModeKind::Rgb},
+        // Curves of the hair material: a BSDF that is not reciprocal, light crossing tubes.
+        AgreementCase{"Hair", "scenes/hair-tufts.json", RenderModeKind::Rgb}),
     [](const ::testing::TestParamInfo<AgreementCase>& p) { return std::string(p.param.name); });
 
 /// Path tracing against `integrator` with one deliberate mistake switched on: must disagree.
