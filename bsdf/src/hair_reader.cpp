@@ -32,12 +32,6 @@ MaterialModel readHair(const JsonReader& r) {
     return h;
 }
 
-void describeHair(const MaterialModel& model, std::vector<std::string>& out) {
-    const auto& h = model.as<HairMaterial>();
-    out.push_back("hair fibre sigma_a " + std::to_string(h.sigmaA[0]) + " " +
-                  std::to_string(h.sigmaA[1]) + " " + std::to_string(h.sigmaA[2]));
-}
-
 }  // namespace
 
 extern const MaterialKind kHairMaterial{.name = "hair",
@@ -61,7 +55,6 @@ extern const MaterialKind kHairMaterial{.name = "hair",
   },
   "examples": [{"type": "hair", "eumelanin": 1.3}, {"type": "hair", "reflectance": [0.6, 0.4, 0.2]}]
 })json",
-                                        .spectralData = describeHair,
                                         .transmits = [](const MaterialModel&) { return true; }};
 
 }  // namespace lamina
