@@ -58,6 +58,9 @@ void run(const std::string& file) {
     if (s.partialSpheres + s.cylinders + s.partialDisks > 0)
         std::printf("%zu partial spheres, %zu cylinders, %zu partial disks, ", s.partialSpheres,
                     s.cylinders, s.partialDisks);
+    if (s.curves > 0)
+        std::printf("%zu curves (%zu segments, %zu control points), ", s.curves, s.curveSegments,
+                    s.curvePoints);
     std::printf("~%.1f MiB\n", double(s.geometryBytes) / (1 << 20));
     if (!scene.objects.empty() || !scene.unusedObjectNames.empty()) {
         std::printf(

@@ -15,7 +15,8 @@
 // Such points are found by perturbing each direction component by two float ulps (relative)
 // in double; the comparison
 // skips them, and the test requires them to be rare (at most 5% of the compared pairs;
-// the worst case, rough glass of index 2.42 seen from inside, has 8 of 252).
+// the worst case, rough glass of index 2.42 seen from inside, has 8 of 252; hair, whose fibre
+// offset is undefined along the fibre, is allowed 10%).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -81,6 +82,13 @@ std::vector<Config> configs() {
         out.push_back(
             {"standard" + tag, R"({"type":"standard",)" + alphaKeys + R"(,"base_color":1})"});
     }
+    // Hair: roughness from 0 (taken as 0.01) to 1, clear to nearly black fibres, steep tilts.
+    for (double b : {0.0, 1e-3, 0.05, 0.3, 1.0})
+        for (double e : {0.0, 8.0})
+            out.push_back({"hair_b" + number(b) + "_eumelanin" + number(e),
+                           R"({"type":"hair","beta_m":)" + number(b) + R"(,"beta_n":)" + number(b) +
+                               R"(,"eumelanin":)" + number(e) + R"(,"alpha":)" + number(b * 30) +
+                               "}"});
     for (double eta : {1.0, 1 + 1e-6, 1.0001, 1.33, 1.5, 2.42, 4.0})
         for (int inverse = 0; inverse < (eta == 1.0 ? 1 : 2); ++inverse) {
             const double e = inverse ? 1 / eta : eta;
@@ -185,7 +193,11 @@ TEST_P(BsdfExtremes, FiniteNonNegativeAndFloatMatchesDouble) {
                 << "pdf wo " << p.wo.x << "," << p.wo.z << " wi " << p.wi.x << "," << p.wi.z;
         }
     }
-    EXPECT_LE(skipped, std::max(1, compared / 20))
+    // Hair takes the fibre offset h from wo's direction across the fibre, which is undefined
+    // along it: directions near the fibre axis (the tests' horizon directions in x) are
+    // ill-conditioned by the model itself, 17 of 297 pairs at most (beta 0.3, alpha 9).
+    const bool hair = GetParam().json.find(R"("type":"hair")") != std::string::npos;
+    EXPECT_LE(skipped, std::max(1, compared / (hair ? 10 : 20)))
         << skipped << " of " << compared << " pairs are ill-conditioned";
     // Sampling at every direction, including the random numbers' edges (pbrt-v4 #313).
     for (const auto& wo : dirs)

@@ -123,7 +123,7 @@ TEST(NameTables, TheUnknownTypeMessageListsEveryMaterialType) {
     EXPECT_EQ(list,
               "standard, lambert, oren_nayar, burley, frostbite, conductor, "
               "diffuse_transmission, dielectric, thin_dielectric, phong, layered, mix, coated, "
-              "polariser, retarder, measured");
+              "polariser, retarder, measured, hair");
     try {
         parse(R"({"type":"plastic"})");
         FAIL() << "accepted an unknown material type";

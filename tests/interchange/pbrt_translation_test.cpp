@@ -358,11 +358,80 @@ TEST_F(PbrtTranslation, MeshesAndPatches) {
     expectLoads();
 }
 
+// pbrt-v4's curves: Bezier (cubic, quadratic raised) and B-spline strands become one-strand
+// `curves` shapes of cubic Bezier segments; the hair material keeps its parameters.
+TEST_F(PbrtTranslation, CurvesAndHair) {
+    const ImportedScene s = import(
+        "Material \"hair\" \"float eumelanin\" 0.8 \"float beta_m\" 0.2\n"
+        "Shape \"curve\" \"point3 P\" [0 0 0 1 0 0 1 1 0 0 1 0] \"string type\" "
+        "\"cylinder\" \"float width0\" 0.2 \"float width1\" 0.1 \"integer splitdepth\" 2\n"
+        "Shape \"curve\" \"point3 P\" [0 0 0 3 0 0 3 3 0] \"integer degree\" 2\n"
+        "Shape \"curve\" \"point3 P\" [0 0 0 6 0 0 6 6 0 0 6 0 0 0 6] \"string basis\" "
+        "\"bspline\"\n"
+        "Material \"hair\" \"rgb sigma_a\" [0.1 0.2 0.3] \"rgb reflectance\" [0.5 0.5 0.5]\n"
+        "Shape \"curve\" \"point3 P\" [0 0 0 1 0 0 1 1 0 0 1 0] \"string type\" \"ribbon\" "
+        "\"normal N\" [0 0 1 0 0 1]\n");
+    const Json& shapes = s.scene["shapes"];
+    ASSERT_EQ(shapes.size(), 4u);
+    EXPECT_EQ(shapes[0]["type"], "curves");
+    EXPECT_EQ(shapes[0]["curve"], "cylinder");
+    EXPECT_EQ(shapes[0]["strands"], Json::parse("[[[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]]]"));
+    EXPECT_EQ(shapes[0]["width0"], 0.2);
+    EXPECT_EQ(shapes[0]["width1"], 0.1);
+    // pbrt-v4's default type is flat; a quadratic segment raised to a cubic.
+    EXPECT_EQ(shapes[1]["curve"], "flat");
+    EXPECT_EQ(shapes[1]["width"], 1.0);
+    EXPECT_EQ(shapes[1]["strands"], Json::parse("[[[0, 0, 0], [2, 0, 0], [3, 1, 0], [3, 3, 0]]]"));
+    // Five B-spline points: two segments, seven Bezier points, ends shared.
+    const Json& b = shapes[2]["strands"][0];
+    ASSERT_EQ(b.size(), 7u);
+    EXPECT_EQ(b[0], Json::parse("[5, 1, 0]"));  // (p0 + 4 p1 + p2) / 6
+    EXPECT_EQ(b[3], Json::parse("[5, 5, 0]"));  // (p1 + 4 p2 + p3) / 6
+    const Json& m = s.scene["materials"];
+    const std::string first = shapes[0]["material"], second = shapes[3]["material"];
+    EXPECT_EQ(m[first], Json::parse(R"({"type": "hair", "eumelanin": 0.8, "pheomelanin": 0.0,
+        "eta": 1.55, "beta_m": 0.2, "beta_n": 0.3, "alpha": 2.0})"));
+    EXPECT_EQ(m[second]["sigma_a"], Json::parse("[0.1, 0.2, 0.3]"));
+    EXPECT_FALSE(m[second].contains("reflectance"));
+    const std::vector<std::string> expected = {
+        at(2) +
+            ": curve \"cylinder\" became a round tube (pbrt-v4 draws a ribbon facing the ray "
+            "with a tube's normal): the same look, and light that crosses the fibre leaves it "
+            "from the far side",
+        at(2) +
+            ": curve: \"splitdepth\" ignored (Embree intersects the curve itself, without "
+            "splitting it)",
+        at(3) +
+            ": curve \"flat\": lamina's ribbon facing the ray is shaded with a tube's normal "
+            "(pbrt-v4's with the ribbon's)",
+        at(4) +
+            ": curve \"flat\": lamina's ribbon facing the ray is shaded with a tube's normal "
+            "(pbrt-v4's with the ribbon's)",
+        at(5) +
+            ": hair: \"reflectance\" ignored, as pbrt-v4 does: the absorption is given by an "
+            "earlier parameter (sigma_a, then reflectance, then melanin)",
+        at(6) +
+            ": curve \"ribbon\" became a flat ribbon facing the ray: its normals \"N\" "
+            "ignored",
+        at(6) +
+            ": curve \"flat\": lamina's ribbon facing the ray is shaded with a tube's normal "
+            "(pbrt-v4's with the ribbon's)"};
+    EXPECT_EQ(s.warnings, expected);
+    expectLoads();
+    EXPECT_EQ(importError("Shape \"curve\" \"point3 P\" [0 0 0 1 0 0 1 1 0]\n"),
+              at(1) + ": curve: 3 control points; a degree 3 Bezier curve takes 4 + n * 3");
+    EXPECT_EQ(importError("AreaLightSource \"diffuse\"\nShape \"curve\" \"point3 P\" "
+                          "[0 0 0 1 0 0 1 1 0 0 1 0]\n"),
+              at(2) +
+                  ": an emitting Shape \"curve\" is not supported (lamina's curves do not "
+                  "emit)");
+}
+
 TEST_F(PbrtTranslation, UnsupportedShapesAndParametersAreRefused) {
     EXPECT_EQ(importError("\nShape \"paraboloid\"\n"),
               at(2) +
                   ": Shape \"paraboloid\" is not supported (lamina reads sphere, disk, "
-                  "cylinder, trianglemesh, plymesh, bilinearmesh and loopsubdiv)");
+                  "cylinder, trianglemesh, plymesh, bilinearmesh, loopsubdiv and curve)");
     EXPECT_EQ(importError("Shape \"sphere\" \"float wobble\" 0.5\n"),
               at(1) + ": Shape \"sphere\": parameter \"float wobble\" is not supported");
     EXPECT_EQ(importError("Shape \"sphere\" \"integer radius\" 2\n"),
@@ -593,11 +662,11 @@ TEST_F(PbrtTranslation, Materials) {
 }
 
 TEST_F(PbrtTranslation, MaterialErrors) {
-    EXPECT_EQ(importError("Material \"hair\"\nShape \"sphere\"\n"),
+    EXPECT_EQ(importError("Material \"subsurface\"\nShape \"sphere\"\n"),
               at(1) +
-                  ": material \"hair\" is not supported (lamina reads diffuse, conductor, "
+                  ": material \"subsurface\" is not supported (lamina reads diffuse, conductor, "
                   "dielectric, thindielectric, coateddiffuse, coatedconductor, "
-                  "diffusetransmission, measured, mix and interface)");
+                  "diffusetransmission, measured, hair, mix and interface)");
     EXPECT_EQ(importError("Material \"conductor\" \"spectrum eta\" \"metal-CuZn-eta\" "
                           "\"spectrum k\" \"metal-CuZn-k\"\nShape \"sphere\"\n"),
               at(1) +

@@ -16,6 +16,7 @@
 #include "lamina/bsdf/dielectric.h"
 #include "lamina/bsdf/diffuse.h"
 #include "lamina/bsdf/diffuse_transmission.h"
+#include "lamina/bsdf/hair.h"
 #include "lamina/bsdf/layered.h"
 #include "lamina/bsdf/material_builder.h"
 #include "lamina/bsdf/measured.h"
@@ -297,6 +298,18 @@ inline std::vector<BsdfCase> bsdfCases() {
     cases.push_back({"measured_ggx_rgb_a0p3", measured(0.3, 0.3, {}), false, 1.0, false});
     cases.push_back({"measured_ggx_anisotropic_spectra",
                      measured(0.15, 0.45, {.phiCount = 9, .spectral = true}), false, 1.0, false});
+    // Hair (hair.h): Chiang et al. 2016's fibre outside, a pass-through delta inside; not
+    // reciprocal (A_p depends on theta_o and h only), so importance evaluates the adjoint.
+    // Brown hair at the defaults, a light rough one and a smooth dark one with a steep tilt
+    // (the white furnace of an absorption-free fibre: tests/bsdf/hair_test.cpp). Three only:
+    // the fibre's pdf costs the chi-square test some 10 s a case.
+    auto hair = [](const Spec& sigmaA, double betaM, double betaN, double alpha) {
+        return std::make_shared<HairBxdf<Spec>>(HairFiber<Spec>(1.55, sigmaA, betaM, betaN, alpha));
+    };
+    cases.push_back({"hair_brown", hair(Spec(0.54, 0.91, 1.78), 0.3, 0.3, 2), true, 1.0, false});
+    cases.push_back(
+        {"hair_blond_rough", hair(Spec(0.06, 0.1, 0.2), 0.6, 0.7, 3), true, 1.0, false});
+    cases.push_back({"hair_dark_smooth", hair(Spec(2.5, 3.5, 5), 0.1, 0.15, 8), true, 1.0, false});
     return cases;
 }
 

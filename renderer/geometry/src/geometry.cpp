@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "curve_geometry.h"
 #include "lamina/core/overloaded.h"
 #include "lamina/geometry/quadric.h"
 #include "lamina/geometry/ray_time.h"
@@ -130,6 +131,12 @@ RTCGeometry Geometry::newGeometry(const QuadricDesc& q, int) {
     // A cut-out is tested in the user geometry's own callbacks (quadric_geometry.h).
     quadrics_.push_back(std::make_unique<QuadricGeometry>(QuadricGeometry{&q, q.alpha.value}));
     return newQuadricGeometry(device_, *quadrics_.back());
+}
+
+RTCGeometry Geometry::newGeometry(const CurvesDesc& c, int) {
+    RTCGeometry g = newCurvesGeometry(device_, c);
+    addAlphaFilter(g, c.alpha, nullptr);
+    return g;
 }
 
 void Geometry::addAlphaFilter(RTCGeometry g, const AlphaDesc& alpha, const MeshDesc* mesh) {
@@ -281,6 +288,11 @@ void surfaceAt(const QuadricDesc& q, const Vec3<double>& origin, const Vec3<doub
     hit.uv = Vec2f(s.uv);
 }
 
+void surfaceAt(const CurvesDesc& c, const Vec3<double>& origin, const Vec3<double>& direction,
+               const RTCHit& h, SurfaceHit& hit) {
+    curveSurfaceAt(c, origin, direction, h, hit);
+}
+
 // Whether a shape's front is a side of its plane (a disk's), which a mirroring transform
 // turns over, rather than its outside.
 bool facesOneSideOfAPlane(const ShapeDesc& shape) {
@@ -359,6 +371,8 @@ std::optional<SurfaceHit> Geometry::intersect(const Vec3f& origin, const Vec3f& 
     ns *= side;
     hit.ng = Vec3f(ng);
     hit.ns = Vec3f(ns);
+    if (hit.tangent != Vec3f(0.0f))
+        hit.tangent = Vec3f(safeNormalize(glm::dmat3(xf.toWorld) * Vec3<double>(hit.tangent)));
     if (info.turnsNormal) {
         // Tangents are vectors; the normal's derivatives are those of the transformed,
         // normalised normal: N dn / |N n| without its component along the new normal.

@@ -24,5 +24,10 @@ SurfaceDerivatives surfaceDerivatives(const SphereDesc& s, const SurfaceHit& hit
 SurfaceDerivatives surfaceDerivatives(const DiskDesc& d, const SurfaceHit& hit);
 /// pbrt-v4's for its uv (quadricSurface, quadric.h).
 SurfaceDerivatives surfaceDerivatives(const QuadricDesc& q, const SurfaceHit& hit);
+/// None for curves: a bump or normal map leaves a curve's normal as it is (its uv runs along
+/// one segment, not over a surface a map could cover).
+inline SurfaceDerivatives surfaceDerivatives(const CurvesDesc&, const SurfaceHit&) {
+    return {};
+}
 
 }  // namespace lamina::render

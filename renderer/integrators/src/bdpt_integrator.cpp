@@ -273,6 +273,7 @@ void BdptIntegrator<S>::randomWalk(WalkStart start, int maxVertices, TransportMo
         v.p = hit->p;
         v.ng = hit->ng;
         v.ns = hit->ns;
+        v.tangent = hit->tangent;
         v.uv = hit->uv;
         v.material = shape.material;
         v.light = c_.lights.lightAt(*hit);
@@ -286,7 +287,7 @@ void BdptIntegrator<S>::randomWalk(WalkStart start, int maxVertices, TransportMo
         Vertex& before = out[out.size() - 2];
         if (++vertices >= maxVertices) return;
 
-        const ShadingPoint at(cur.p, cur.ng, cur.ns, -d, c_.geometry.rayOffsetScale());
+        const ShadingPoint at(cur.p, cur.ng, cur.ns, -d, c_.geometry.rayOffsetScale(), cur.tangent);
         const Bxdf<S>& bsdf = mode_.bsdf(cur.material, cur.uv, at.frame, path);
         const auto step =
             scatter(bsdf, at, bsdfMode, vertices, settings_.russianRouletteDepth, sampler, beta,

@@ -90,7 +90,7 @@ float BdptMisWeights<S>::pdf(const Vertex& v, const Vertex* prev, const Vertex& 
     // (from -wp to wn).
     if (v.type == BdptVertexType::Medium)
         return toArea(henyeyGreenstein(-glm::dot(wp, wn), v.g), v, next);
-    const Frame<float> frame = Frame<float>::fromNormal(v.ns);
+    const Frame<float> frame = Frame<float>::fromNormalTangent(v.ns, v.tangent);
     const Bxdf<S>& bsdf = mode_.bsdf(v.material, v.uv, frame, path);
     return toArea(bsdf.pdf(frame.toLocal(wp), frame.toLocal(wn)), v, next);
 }

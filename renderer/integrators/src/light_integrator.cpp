@@ -181,8 +181,8 @@ void LightIntegrator<S>::traceParticle(PixelSampler& sampler, typename Mode::Pat
             o = offsetRayOrigin(hit->p, facing(hit->ng, d), c_.geometry.rayOffsetScale());
             continue;
         }
-        const ShadingPoint at(hit->p, hit->ng, hit->ns, -d,
-                              c_.geometry.rayOffsetScale());  // wo towards the light's side
+        const ShadingPoint at(hit->p, hit->ng, hit->ns, -d, c_.geometry.rayOffsetScale(),
+                              hit->tangent);  // wo towards the light's side
         const Bxdf<S>& bsdf = mode_.bsdf(shape.material, hit->uv, at.frame, path);
 
         // Connection to the camera.

@@ -177,7 +177,8 @@ S PathIntegrator<S>::radiance(const Vec3f& rayOrigin, const Vec3f& rayDirection,
         }
         if (depth >= settings_.maxDepth) break;
 
-        const ShadingPoint at(hit->p, hit->ng, hit->ns, -d, c_.geometry.rayOffsetScale());
+        const ShadingPoint at(hit->p, hit->ng, hit->ns, -d, c_.geometry.rayOffsetScale(),
+                              hit->tangent);
         const Bxdf<S>& bsdf = mode_.bsdf(shape.material, hit->uv, at.frame, path);
 
         // Next-event estimation (its two dimensions are used at every vertex, skipped when

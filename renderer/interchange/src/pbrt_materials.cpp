@@ -174,6 +174,42 @@ Json coated(TranslationContext& ctx, const Entity& e, const std::string& roughne
     return m;
 }
 
+// pbrt-v4's HairMaterial (materials.cpp): the absorption from `sigma_a`, else `reflectance`
+// (or `color`), else `eumelanin` and `pheomelanin`, else eumelanin 1.3; pbrt-v4 ignores the
+// later ones with a warning, and so does the translation (lamina's hair takes one).
+Json hair(TranslationContext& ctx, const Entity& e) {
+    const ParamList& params = e.params;
+    Json m{{"type", "hair"}};
+    const char* reflectanceName = params.has("reflectance") ? "reflectance" : "color";
+    const bool sigma = params.has("sigma_a"), reflectance = params.has(reflectanceName);
+    const bool melanin = params.has("eumelanin") || params.has("pheomelanin");
+    if (sigma) {
+        const Json s = colour(ctx, e, "sigma_a", 0.0, false);
+        if (s.is_object())
+            ctx.fail(e.location, "hair: \"sigma_a\" as a spectrum is not supported (give rgb)");
+        m["sigma_a"] = s.is_number() ? Json::array({s, s, s}) : s;
+    } else if (reflectance) {
+        m["reflectance"] = colour(ctx, e, reflectanceName, 0.5, false);
+    } else if (melanin) {
+        m["eumelanin"] = constantNumber(params, "eumelanin", 0.0);
+        m["pheomelanin"] = constantNumber(params, "pheomelanin", 0.0);
+    }
+    for (const std::string ignored : {"reflectance", "color", "eumelanin", "pheomelanin"}) {
+        const bool used = (reflectance && !sigma && ignored == reflectanceName) ||
+                          (melanin && !sigma && !reflectance && ignored.ends_with("melanin"));
+        if (!params.has(ignored) || used) continue;
+        params.find(ignored);
+        ctx.warn(e.location, "hair: \"" + ignored +
+                                 "\" ignored, as pbrt-v4 does: the absorption is given by an "
+                                 "earlier parameter (sigma_a, then reflectance, then melanin)");
+    }
+    m["eta"] = constantNumber(params, "eta", 1.55);
+    m["beta_m"] = constantNumber(params, "beta_m", 0.3);
+    m["beta_n"] = constantNumber(params, "beta_n", 0.3);
+    m["alpha"] = constantNumber(params, "alpha", 2.0);
+    return m;
+}
+
 Json translateMaterial(TranslationContext& ctx, const MaterialDef& def, int depth) {
     const Entity& e = def.entity;
     const ParamList& params = e.params;
@@ -245,6 +281,8 @@ Json translateMaterial(TranslationContext& ctx, const MaterialDef& def, int dept
         if (!file) ctx.fail(e.location, "measured: no \"string filename\" parameter");
         params.expectType(*file, {"string"});
         m = {{"type", "measured"}, {"filename", ctx.filePath(params, *file)}};
+    } else if (e.type == "hair") {
+        m = hair(ctx, e);
     } else if (e.type == "interface" || e.type == "" || e.type == "none") {
         // pbrt-v4 reads Material "" and "none" as "interface" (Material::Create).
         params.refuseUnused();
@@ -253,9 +291,9 @@ Json translateMaterial(TranslationContext& ctx, const MaterialDef& def, int dept
         ctx.fail(e.location, "material \"" + e.type +
                                  "\" is not supported (lamina reads diffuse, conductor, "
                                  "dielectric, thindielectric, coateddiffuse, coatedconductor, "
-                                 "diffusetransmission, measured, mix and interface)");
+                                 "diffusetransmission, measured, hair, mix and interface)");
     }
-    if (e.type != "mix") shadingNormalMaps(ctx, e, m);
+    if (e.type != "mix" && e.type != "hair") shadingNormalMaps(ctx, e, m);
     params.refuseUnused();
     return m;
 }

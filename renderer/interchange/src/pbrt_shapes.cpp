@@ -264,6 +264,12 @@ std::optional<Json> translateShape(TranslationContext& ctx, const ShapeDef& s, b
         const Mesh mesh = subdividedMesh(ctx, e);
         shape = meshJson(mesh, s.reverseOrientation);
         areas = faceAreas(mesh, m);
+    } else if (e.type == "curve") {
+        if (s.areaLight)
+            ctx.fail(e.location,
+                     "an emitting Shape \"curve\" is not supported (lamina's "
+                     "curves do not emit)");
+        shape = curveShape(ctx, e);
     } else if (e.type == "plymesh") {
         const Param* file = params.find("filename");
         if (!file) ctx.fail(e.location, "plymesh: no \"string filename\" parameter");
@@ -282,8 +288,8 @@ std::optional<Json> translateShape(TranslationContext& ctx, const ShapeDef& s, b
     } else {
         ctx.fail(e.location, "Shape \"" + e.type +
                                  "\" is not supported (lamina reads sphere, "
-                                 "disk, cylinder, trianglemesh, plymesh, bilinearmesh and "
-                                 "loopsubdiv)");
+                                 "disk, cylinder, trianglemesh, plymesh, bilinearmesh, "
+                                 "loopsubdiv and curve)");
     }
     shape["material"] = material.empty() ? kDocumentInterfaceMaterial : material;
     if (boundary) {

@@ -15,6 +15,9 @@ Json rowMajor(const glm::dmat4& m);
 /// an instance of their own.
 std::optional<Json> translateShape(TranslationContext& context, const ShapeDef& shape,
                                    bool inObject);
+/// The lamina `curves` shape of a `Shape "curve"` (one strand, in its object space;
+/// pbrt_curves.cpp).
+Json curveShape(TranslationContext& context, const Entity& curve);
 /// The `emission` of a shape under AreaLightSource `light`; `areas`: the shape's face areas
 /// after its transform (empty when unknown), for pbrt's `power`.
 Json areaEmission(TranslationContext& context, const Entity& light,

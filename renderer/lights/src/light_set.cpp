@@ -51,6 +51,11 @@ AreaLights makeAreaLights(const QuadricDesc& q) {
     return a;
 }
 
+// Curves never emit (their reader refuses emission).
+AreaLights makeAreaLights(const CurvesDesc&) {
+    return {};
+}
+
 // The light of an entry of "lights", one function per kind of LightDesc.
 std::unique_ptr<Light> makeLight(const PointLightDesc& d, const Geometry&) {
     return std::make_unique<PointLight>(d);

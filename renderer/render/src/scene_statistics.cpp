@@ -29,6 +29,12 @@ SceneStatistics sceneStatistics(const SceneDesc& scene) {
             ++(q->kind == Quadric::Sphere     ? s.partialSpheres
                : q->kind == Quadric::Cylinder ? s.cylinders
                                               : s.partialDisks);
+        if (const auto* c = std::get_if<CurvesDesc>(&shape)) {
+            ++s.curves;
+            s.curveSegments += c->segments.size();
+            s.curvePoints += c->points.size();
+            s.geometryBytes += c->points.size() * 20 + c->segments.size() * 4;
+        }
         if (const auto* m = std::get_if<MeshDesc>(&shape)) {
             s.triangles += m->triangles.size();
             s.vertices += m->positions.size();
@@ -57,7 +63,8 @@ SceneStatistics sceneStatistics(const SceneDesc& scene) {
         s.objectTriangles += trianglesOf[o];
         objectPrimitives += trianglesOf[o] + countShapes<SphereDesc>(object.shapes) +
                             countShapes<DiskDesc>(object.shapes) +
-                            countShapes<QuadricDesc>(object.shapes);
+                            countShapes<QuadricDesc>(object.shapes) +
+                            countShapes<CurvesDesc>(object.shapes);
     }
     s.objects = scene.objects.size();
     s.instances = scene.instances.size();
@@ -66,7 +73,7 @@ SceneStatistics sceneStatistics(const SceneDesc& scene) {
     // Embree's BVH over triangles takes roughly 64 bytes per primitive (a rough guide), and
     // an instance about as much as one primitive.
     s.geometryBytes += (s.triangles + s.spheres + s.partialSpheres + s.cylinders + s.partialDisks +
-                        objectPrimitives + scene.instances.size()) *
+                        s.curveSegments + objectPrimitives + scene.instances.size()) *
                        64;
     // A crop is the film that is allocated and written.
     const int w = scene.film.crop ? scene.film.crop->width() : scene.film.width;

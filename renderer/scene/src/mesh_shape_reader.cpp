@@ -110,7 +110,8 @@ void readTriangles(const JsonReader& r, ShapeKind kind, MeshDesc& mesh) {
         case ShapeKind::Disk:
         case ShapeKind::Cylinder:
         case ShapeKind::Instance:
-            break;  // analytic, or an object's: no triangles of its own
+        case ShapeKind::Curves:
+            break;  // analytic, an object's or curves: no triangles of their own
     }
 }
 

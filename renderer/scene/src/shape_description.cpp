@@ -43,7 +43,15 @@ void shapeBounds(const ShapeDesc& shape, Vec3d& lo, Vec3d& hi) {
                               lo = d.center - d.radius;
                               hi = d.center + d.radius;
                           },
-                          [&](const QuadricDesc& q) { q.bounds(lo, hi); }},
+                          [&](const QuadricDesc& q) { q.bounds(lo, hi); },
+                          [&](const CurvesDesc& c) {
+                              // A Bezier segment lies in its control points' hull.
+                              for (std::size_t i = 0; i < c.points.size(); ++i) {
+                                  const double r = c.radii[i];
+                                  lo = glm::min(lo, Vec3d(c.points[i]) - r);
+                                  hi = glm::max(hi, Vec3d(c.points[i]) + r);
+                              }
+                          }},
                shape);
 }
 

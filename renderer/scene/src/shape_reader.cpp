@@ -107,6 +107,8 @@ void readShapeInto(const JsonReader& r, SceneMaterials& materials, const ShapeDe
         to.shapes.push_back(readDisk(r, name, materials));
     else if (*kind == ShapeKind::Cylinder)
         to.shapes.push_back(readCylinder(r, name, materials));
+    else if (*kind == ShapeKind::Curves)
+        to.shapes.push_back(readCurves(r, name, materials));
     else
         readMeshShape(r, *kind, name, materials, to);
     for (std::size_t i = first; i < to.shapes.size(); ++i) {

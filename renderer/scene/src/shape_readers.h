@@ -27,6 +27,9 @@ ShapeDesc readSphere(const JsonReader& r, const std::string& name, SceneMaterial
 ShapeDesc readDisk(const JsonReader& r, const std::string& name, SceneMaterials& materials);
 ShapeDesc readCylinder(const JsonReader& r, const std::string& name, SceneMaterials& materials);
 
+/// A `curves` shape named `name` (curves_shape_reader.cpp).
+ShapeDesc readCurves(const JsonReader& r, const std::string& name, SceneMaterials& materials);
+
 /// A triangle-mesh shape (`mesh`, `rectangle`, `obj`, `ply`) named `name`: one MeshDesc, or
 /// for an `obj` without a `material` one per usemtl group (obj_materials.h).
 void readMeshShape(const JsonReader& r, ShapeKind kind, const std::string& name,

@@ -34,6 +34,9 @@ struct SurfaceHit {
     Vec3f ng;  ///< geometric normal, unit, outward (winding / sphere orientation)
     Vec3f ns;  ///< shading normal, unit, on the same side as ng (a material's map applied)
     Vec2f uv{0.0f};
+    /// Unit, along a curve (the hair BSDF's fibre axis, the shading frame's x); zero on every
+    /// other shape, whose shading frame follows the normal alone.
+    Vec3f tangent{0.0f};
     /// In the world; only where the shape's material turns the shading normal (ShapeInfo),
     /// zero elsewhere.
     SurfaceDerivatives derivatives;
@@ -117,6 +120,7 @@ class Geometry {
     RTCGeometry newGeometry(const SphereDesc& s, int object);
     RTCGeometry newGeometry(const DiskDesc& d, int object);
     RTCGeometry newGeometry(const QuadricDesc& q, int object);
+    RTCGeometry newGeometry(const CurvesDesc& c, int object);
     void addAlphaFilter(RTCGeometry g, const AlphaDesc& alpha, const MeshDesc* mesh);
     void addInstances(Vec3<double>& lo, Vec3<double>& hi);
 

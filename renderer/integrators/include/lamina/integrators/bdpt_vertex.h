@@ -22,6 +22,7 @@ struct BdptVertex {
     BdptVertexType type = BdptVertexType::Surface;
     Vec3f p{0.0f}, ng{0.0f}, ns{0.0f};
     Vec2f uv{0.0f};
+    Vec3f tangent{0.0f};  ///< a curve's (SurfaceHit::tangent): the shading frame's x
     int material = -1;
     int light = -1;           ///< the light of an emitter (Light vertices, emissive surfaces)
     bool infinite = false;    ///< a Light vertex at infinity; `p` holds its direction

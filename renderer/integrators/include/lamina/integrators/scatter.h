@@ -34,14 +34,15 @@ bool russianRoulette(S& beta, float rrBeta, int bounces, int rrDepth, float u) {
 
 /// A surface point a path arrived at: its normals, the shading frame, the direction back
 /// to where the path came from (world and shading frame), and the geometry's ray offset
-/// scale (ray_offset.h) for the ray that leaves it.
+/// scale (ray_offset.h) for the ray that leaves it. A curve's tangent (SurfaceHit::tangent)
+/// turns the frame's x along the fibre; without one (zero) the frame follows the normal.
 struct ShadingPoint {
     ShadingPoint(const Vec3f& p_, const Vec3f& ng_, const Vec3f& ns_, const Vec3f& woWorld_,
-                 float offsetScale_)
+                 float offsetScale_, const Vec3f& tangent = Vec3f(0.0f))
         : p(p_),
           ng(ng_),
           ns(ns_),
-          frame(Frame<float>::fromNormal(ns_)),
+          frame(Frame<float>::fromNormalTangent(ns_, tangent)),
           woWorld(woWorld_),
           wo(frame.toLocal(woWorld_)),
           offsetScale(offsetScale_) {}

@@ -16,6 +16,8 @@ struct SceneStatistics {
     std::size_t meshes = 0, triangles = 0, vertices = 0, spheres = 0, disks = 0;
     /// pbrt-v4's clipped quadrics (QuadricDesc), by kind.
     std::size_t partialSpheres = 0, cylinders = 0, partialDisks = 0;
+    /// Curves shapes, their strands' segments and control points.
+    std::size_t curves = 0, curveSegments = 0, curvePoints = 0;
     /// The meshes' arrays (the scene's and the objects') and Embree's BVH, roughly.
     std::size_t geometryBytes = 0;
     /// Instancing: an object's shapes are stored once and its instances reference them.

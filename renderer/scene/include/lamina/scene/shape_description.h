@@ -32,14 +32,25 @@ struct EmissionDesc {
 
 /// The `type` of a scene file's shape: analytic spheres and disks become SphereDesc and
 /// DiskDesc (QuadricDesc when clipped), a cylinder a QuadricDesc, an instance an InstanceDesc,
-/// the others triangle meshes.
-enum class ShapeKind { Sphere, Disk, Cylinder, Rectangle, Mesh, Obj, Ply, Serialized, Instance };
+/// the others triangle meshes but `curves` (CurvesDesc).
+enum class ShapeKind {
+    Sphere,
+    Disk,
+    Cylinder,
+    Rectangle,
+    Mesh,
+    Obj,
+    Ply,
+    Serialized,
+    Instance,
+    Curves
+};
 inline constexpr NameTable kShapeKindNames{std::array{
     NameEntry{ShapeKind::Sphere, "sphere"}, NameEntry{ShapeKind::Disk, "disk"},
     NameEntry{ShapeKind::Cylinder, "cylinder"}, NameEntry{ShapeKind::Rectangle, "rectangle"},
     NameEntry{ShapeKind::Mesh, "mesh"}, NameEntry{ShapeKind::Obj, "obj"},
     NameEntry{ShapeKind::Ply, "ply"}, NameEntry{ShapeKind::Serialized, "serialized"},
-    NameEntry{ShapeKind::Instance, "instance"}}};
+    NameEntry{ShapeKind::Curves, "curves"}, NameEntry{ShapeKind::Instance, "instance"}}};
 
 /// A shape's `alpha` cut-out: a constant in [0, 1] or a texture's first channel at the hit's
 /// uv. A hit where alpha < 1 is kept only when alpha reaches a hash of the ray and the hit
@@ -122,9 +133,28 @@ struct QuadricDesc : SurfaceDesc {
     void bounds(Vec3d& lo, Vec3d& hi) const;
 };
 
+/// How a curve's cross-section is drawn (pbrt-v4's curve types): a round tube (Embree's round
+/// curves, a real surface), or a flat ribbon turned to face each ray (Embree's flat curves, for
+/// distant hair: each ray sees its own ribbon), shaded with a tube's normal.
+enum class CurveShape { Cylinder, Flat };
+inline constexpr NameTable kCurveShapeNames{
+    std::array{NameEntry{CurveShape::Cylinder, "cylinder"}, NameEntry{CurveShape::Flat, "flat"}}};
+
+/// Curves (hair, fur): strands of cubic Bezier segments, each segment four control points
+/// of which the last is the next segment's first, with a radius per control point. `segments`
+/// holds each segment's first control point.
+struct CurvesDesc : SurfaceDesc {
+    std::vector<Vec3<float>> points;
+    std::vector<float> radii;
+    std::vector<std::uint32_t> segments;
+    CurveShape shape = CurveShape::Cylinder;
+    /// The most control points one shape holds (fuzzing: 16 bytes each in Embree, 64 MiB).
+    static constexpr std::size_t kMaxPoints = std::size_t(1) << 22;
+};
+
 /// One shape. The order of the alternatives is the order of the kinds in a list of shapes
 /// (orderShapesByKind), and so of their Embree geometry ids and of the emitters' lights.
-using ShapeDesc = std::variant<MeshDesc, SphereDesc, DiskDesc, QuadricDesc>;
+using ShapeDesc = std::variant<MeshDesc, SphereDesc, DiskDesc, QuadricDesc, CurvesDesc>;
 
 /// The fields every kind has.
 inline const SurfaceDesc& surface(const ShapeDesc& shape) {
