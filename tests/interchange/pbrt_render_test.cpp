@@ -240,7 +240,7 @@ TEST_F(PbrtCommandLine, ErrorsAndWarningsNameFileAndLine) {
     EXPECT_EQ(run.output,
               "lamina: error: " + bad.string() +
                   ":3: Shape \"hyperboloid\" is not supported (lamina reads sphere, "
-                  "disk, cylinder, trianglemesh, plymesh, bilinearmesh and loopsubdiv)\n");
+                  "disk, cylinder, trianglemesh, plymesh, bilinearmesh, loopsubdiv and curve)\n");
     const auto warned = write("warned.pbrt",
                               "Accelerator \"bvh\"\nWorldBegin\n"
                               "LightSource \"point\"\n");

@@ -78,21 +78,21 @@ Json curveShape(TranslationContext& ctx, const Entity& e) {
     Json shape{{"type", "curves"}, {"strands", Json::array({strand})}};
     if (type == "cylinder") {
         shape["curve"] = "cylinder";
-        ctx.warn(e.location,
-                 "curve \"cylinder\" became a round tube (pbrt-v4 draws a ribbon "
-                 "facing the ray with a tube's normal): the same look, and light "
-                 "that crosses the fibre leaves it from the far side");
+        ctx.warnOnce(e.location,
+                     "curve \"cylinder\" became a round tube (pbrt-v4 draws a ribbon "
+                     "facing the ray with a tube's normal): the same look, and light "
+                     "that crosses the fibre leaves it from the far side");
     } else if (type == "flat" || type == "ribbon") {
         shape["curve"] = "flat";
         if (type == "ribbon") {
             params.numbers("N", {"normal3"}, 3);
-            ctx.warn(e.location,
-                     "curve \"ribbon\" became a flat ribbon facing the ray: its "
-                     "normals \"N\" ignored");
+            ctx.warnOnce(e.location,
+                         "curve \"ribbon\" became a flat ribbon facing the ray: its "
+                         "normals \"N\" ignored");
         }
-        ctx.warn(e.location,
-                 "curve \"flat\": lamina's ribbon facing the ray is shaded with a "
-                 "tube's normal (pbrt-v4's with the ribbon's)");
+        ctx.warnOnce(e.location,
+                     "curve \"flat\": lamina's ribbon facing the ray is shaded with a "
+                     "tube's normal (pbrt-v4's with the ribbon's)");
     } else {
         ctx.fail(e.location, "curve: type \"" + type + "\" (expected flat, ribbon or cylinder)");
     }
@@ -107,11 +107,36 @@ Json curveShape(TranslationContext& ctx, const Entity& e) {
     }
     if (params.has("splitdepth")) {
         params.integer("splitdepth", 3);
-        ctx.warn(e.location,
-                 "curve: \"splitdepth\" ignored (Embree intersects the curve "
-                 "itself, without splitting it)");
+        ctx.warnOnce(e.location,
+                     "curve: \"splitdepth\" ignored (Embree intersects the curve "
+                     "itself, without splitting it)");
     }
     return shape;
+}
+
+void appendShape(Json& shapes, Json shape) {
+    // A hair file is thousands of `Shape "curve"` lines of one material and width: one lamina
+    // `curves` shape (one Embree geometry) holds them, where a shape each would cost a geometry
+    // and its bounds per strand.
+    if (shape.value("type", "") == "curves" && !shapes.empty() &&
+        shapes.back().value("type", "") == "curves") {
+        Json& last = shapes.back();
+        const auto points = [](const Json& c) {
+            std::size_t n = 0;
+            for (const Json& strand : c["strands"])
+                n += strand.size();
+            return n;
+        };
+        Json lastRest = last, rest = shape;
+        lastRest.erase("strands");
+        rest.erase("strands");
+        if (lastRest == rest && points(last) + points(shape) <= kMaxCurvePoints) {
+            for (Json& strand : shape["strands"])
+                last["strands"].push_back(std::move(strand));
+            return;
+        }
+    }
+    shapes.push_back(std::move(shape));
 }
 
 }  // namespace lamina::render::pbrt

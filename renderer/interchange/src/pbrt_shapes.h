@@ -18,6 +18,9 @@ std::optional<Json> translateShape(TranslationContext& context, const ShapeDef& 
 /// The lamina `curves` shape of a `Shape "curve"` (one strand, in its object space;
 /// pbrt_curves.cpp).
 Json curveShape(TranslationContext& context, const Entity& curve);
+/// Appends `shape` to the array `shapes`, as more strands of the last shape when both are
+/// `curves` alike in every key but their strands (pbrt_curves.cpp).
+void appendShape(Json& shapes, Json shape);
 /// The `emission` of a shape under AreaLightSource `light`; `areas`: the shape's face areas
 /// after its transform (empty when unknown), for pbrt's `power`.
 Json areaEmission(TranslationContext& context, const Entity& light,

@@ -302,7 +302,7 @@ Json translate(TranslationContext& ctx) {
         if (s.entity.transformEnd)
             translateMovingShape(ctx, s, doc);
         else if (auto shape = translateShape(ctx, s, false))
-            doc["shapes"].push_back(std::move(*shape));
+            appendShape(doc["shapes"], std::move(*shape));
     // Objects: shared geometry, placed by instances (common-spec: "objects" and "instance").
     std::set<std::string> instanced;
     for (const InstanceDef& i : scene.instances) {
@@ -314,7 +314,8 @@ Json translate(TranslationContext& ctx) {
             Json shapes = Json::array();
             for (const ShapeDef& s : object->shapes) {
                 warnStandsStill(ctx, s.entity, "a shape inside ObjectBegin");
-                if (auto shape = translateShape(ctx, s, true)) shapes.push_back(std::move(*shape));
+                if (auto shape = translateShape(ctx, s, true))
+                    appendShape(shapes, std::move(*shape));
             }
             doc["objects"][i.object] = shapes;
             instanced.insert(i.object);

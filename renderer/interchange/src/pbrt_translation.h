@@ -34,6 +34,12 @@ struct TranslationContext {
     void warn(const Location& at, const std::string& message) {
         warnings.push_back(at.str() + ": " + message);
     }
+    /// A warning said at its first occurrence only: for constructs a file repeats thousands of
+    /// times (a hair file's curves), where one line says what all of them became.
+    void warnOnce(const Location& at, const std::string& message) {
+        if (warnedOnce.insert(message).second) warn(at, message + " (said once for the file)");
+    }
+    std::set<std::string> warnedOnce;
     [[noreturn]] void fail(const Location& at, const std::string& message) const;
     /// A file name of a parameter, resolved as pbrt-v4 does (against the scene file's
     /// directory) and written relative to `pathsRelativeTo`; a missing file is refused here.
