@@ -38,6 +38,25 @@ std::optional<SurfaceHit> hitSphere(const LensRay& r, double zVertex, double rad
     return std::nullopt;
 }
 
+// Where `r` meets interface `e` (its vertex on the axis at z), inside its aperture: the point
+// and the normal there (zero on the aperture stop, a plane that only clips). nullopt: the ray
+// misses it or is stopped.
+std::optional<SurfaceHit> crossInterface(const LensInterface& e, const LensRay& r, double z) {
+    SurfaceHit hit{glm::dvec3(0.0), glm::dvec3(0.0)};
+    if (e.isStop()) {
+        const double t = (z - r.origin.z) / r.direction.z;
+        if (!(t > 0)) return std::nullopt;
+        hit.point = r.origin + t * r.direction;
+    } else {
+        const auto sphere = hitSphere(r, z, e.curvatureRadius);
+        if (!sphere) return std::nullopt;
+        hit = *sphere;
+    }
+    const glm::dvec3& p = hit.point;
+    if (p.x * p.x + p.y * p.y > e.apertureRadius * e.apertureRadius) return std::nullopt;
+    return hit;
+}
+
 // Snell's law for unit `d` through a surface of normal `n` (facing against d), eta the ratio
 // of the indices on the incident and transmitted sides; nullopt: total internal reflection.
 std::optional<glm::dvec3> refract(const glm::dvec3& d, const glm::dvec3& n, double eta) {
@@ -85,23 +104,13 @@ std::optional<LensRay> LensSystem::traceFromFilm(LensRay r) const {
     for (int i = int(interfaces_.size()) - 1; i >= 0; --i) {
         const LensInterface& e = interfaces_[std::size_t(i)];
         z += e.thickness;
-        glm::dvec3 p(0.0), n(0.0);
-        if (e.isStop()) {
-            const double t = (z - r.origin.z) / r.direction.z;
-            if (!(t > 0)) return std::nullopt;
-            p = r.origin + t * r.direction;
-        } else {
-            const auto hit = hitSphere(r, z, e.curvatureRadius);
-            if (!hit) return std::nullopt;
-            p = hit->point;
-            n = hit->normal;
-        }
-        if (p.x * p.x + p.y * p.y > e.apertureRadius * e.apertureRadius) return std::nullopt;
-        r.origin = p;
+        const auto hit = crossInterface(e, r, z);
+        if (!hit) return std::nullopt;
+        r.origin = hit->point;
         if (e.isStop()) continue;
         // From the medium behind the interface into the one in front of it.
         const double etaFront = i > 0 ? interfaces_[std::size_t(i) - 1].eta : 1.0;
-        const auto d = refract(r.direction, n, e.eta / etaFront);
+        const auto d = refract(r.direction, hit->normal, e.eta / etaFront);
         if (!d) return std::nullopt;
         r.direction = *d;
     }
@@ -112,23 +121,13 @@ std::optional<LensRay> LensSystem::traceFromScene(LensRay r) const {
     double z = frontZ_;
     for (std::size_t i = 0; i < interfaces_.size(); ++i) {
         const LensInterface& e = interfaces_[i];
-        glm::dvec3 p(0.0), n(0.0);
-        if (e.isStop()) {
-            const double t = (z - r.origin.z) / r.direction.z;
-            if (!(t > 0)) return std::nullopt;
-            p = r.origin + t * r.direction;
-        } else {
-            const auto hit = hitSphere(r, z, e.curvatureRadius);
-            if (!hit) return std::nullopt;
-            p = hit->point;
-            n = hit->normal;
-        }
-        if (p.x * p.x + p.y * p.y > e.apertureRadius * e.apertureRadius) return std::nullopt;
-        r.origin = p;
+        const auto hit = crossInterface(e, r, z);
+        if (!hit) return std::nullopt;
+        r.origin = hit->point;
         z -= e.thickness;
         if (e.isStop()) continue;
         const double etaFront = i > 0 ? interfaces_[i - 1].eta : 1.0;
-        const auto d = refract(r.direction, n, etaFront / e.eta);
+        const auto d = refract(r.direction, hit->normal, etaFront / e.eta);
         if (!d) return std::nullopt;
         r.direction = *d;
     }
