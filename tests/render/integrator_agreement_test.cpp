@@ -109,6 +109,10 @@ INSTANTIATE_TEST_SUITE_P(
                       RenderModeKind::Rgb},
         AgreementCase{"Quadrics", "scenes/reciprocity/quadrics.json", RenderModeKind::Rgb},
         AgreementCase{"MotionBlur", "scenes/reciprocity/motion.json", RenderModeKind::Rgb},
+        // Paths that bounce on an emitting rectangle's own surface (its next-event estimation
+        // from its own plane).
+        AgreementCase{"ReflectingLampBeforeAWall", "scenes/reciprocity/lamp-before-wall.json",
+                      RenderModeKind::Rgb},
         // Curves of the hair material: a BSDF that is not reciprocal, light crossing tubes;
         // 189 blocks see the floor and the hair (the sky above is black).
         AgreementCase{"Hair", "scenes/hair-tufts.json", RenderModeKind::Rgb, 189}),

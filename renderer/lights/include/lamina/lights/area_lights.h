@@ -122,6 +122,8 @@ class RectangleLight final : public AreaLight {
 
     Vec3d corner_, x_, y_, n_;
     double lx_ = 0, ly_ = 0, diagonal2_ = 0;
+    /// The distance from the plane within which a point is taken to lie in it.
+    double planeTolerance_ = 0;
 };
 
 /// An emitting disk, sampled uniformly by area (the concentric mapping) in double precision.
