@@ -230,6 +230,17 @@ TEST_F(PbrtCorpusConstructs, EmittingShapesOfAlphaZeroOrOne) {
               at(2) + ": alpha on an emitting shape is not supported");
 }
 
+// A scene whose only material is "interface" (a medium's boundary under a point light) has
+// an empty `materials` object, which loads: it was null, which the loader refused.
+TEST_F(PbrtCorpusConstructs, AnInterfaceOnlySceneHasAnEmptyMaterialsObject) {
+    const ImportedScene s = import(
+        "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\n"
+        "AttributeBegin\nMediumInterface \"fog\" \"\"\nMaterial \"interface\"\n"
+        "Shape \"sphere\"\nAttributeEnd\n");
+    EXPECT_EQ(s.scene["materials"], Json::object());
+    EXPECT_NO_THROW(loadScene(file_)) << errorOf([&] { loadScene(file_); });
+}
+
 // pbrt-v4 remaps a textured roughness after its lookup (alpha = sqrt(value) with
 // remaproughness, TrowbridgeReitzDistribution::RoughnessToAlpha; the value itself without):
 // lamina's textured roughness is sqrt(alpha), so the importer writes a `power` texture of the

@@ -344,6 +344,8 @@ double constantNumber(const ParamList& params, const std::string& name, double f
 
 std::string useMaterial(TranslationContext& ctx, const std::string& name, const Location& usedAt) {
     Json& materials = ctx.document["materials"];
+    // An object even when every material used is "interface" (which writes none).
+    if (!materials.is_object()) materials = Json::object();
     if (name.empty()) {
         // pbrt-v4's initial graphics state: a diffuse material of reflectance 0.5
         // (scene.cpp, BasicSceneBuilder's constructor).
