@@ -114,29 +114,41 @@ Json curveShape(TranslationContext& ctx, const Entity& e) {
     return shape;
 }
 
-void appendShape(Json& shapes, Json shape) {
+namespace {
+
+std::size_t controlPoints(const Json& curves) {
+    std::size_t n = 0;
+    for (const Json& strand : curves["strands"])
+        n += strand.size();
+    return n;
+}
+
+// Alike in every key but their strands (compared without copying the strands).
+bool alikeButStrands(const Json& a, const Json& b) {
+    if (a.size() != b.size()) return false;
+    for (const auto& [key, value] : b.items())
+        if (key != "strands" && (!a.contains(key) || a[key] != value)) return false;
+    return true;
+}
+
+}  // namespace
+
+void ShapeList::append(Json shape) {
     // A hair file is thousands of `Shape "curve"` lines of one material and width: one lamina
     // `curves` shape (one Embree geometry) holds them, where a shape each would cost a geometry
-    // and its bounds per strand.
-    if (shape.value("type", "") == "curves" && !shapes.empty() &&
-        shapes.back().value("type", "") == "curves") {
-        Json& last = shapes.back();
-        const auto points = [](const Json& c) {
-            std::size_t n = 0;
-            for (const Json& strand : c["strands"])
-                n += strand.size();
-            return n;
-        };
-        Json lastRest = last, rest = shape;
-        lastRest.erase("strands");
-        rest.erase("strands");
-        if (lastRest == rest && points(last) + points(shape) <= kMaxCurvePoints) {
-            for (Json& strand : shape["strands"])
-                last["strands"].push_back(std::move(strand));
-            return;
-        }
+    // and its bounds per strand. The last shape's point count is kept, not recounted.
+    const bool curves = shape.value("type", "") == "curves";
+    const std::size_t points = curves ? controlPoints(shape) : 0;
+    if (curves && !shapes_.empty() && shapes_.back().value("type", "") == "curves" &&
+        alikeButStrands(shapes_.back(), shape) && lastPoints_ + points <= kMaxCurvePoints) {
+        Json& strands = shapes_.back()["strands"];
+        for (Json& strand : shape["strands"])
+            strands.push_back(std::move(strand));
+        lastPoints_ += points;
+        return;
     }
-    shapes.push_back(std::move(shape));
+    shapes_.push_back(std::move(shape));
+    lastPoints_ = points;
 }
 
 }  // namespace lamina::render::pbrt

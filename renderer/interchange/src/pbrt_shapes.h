@@ -18,9 +18,17 @@ std::optional<Json> translateShape(TranslationContext& context, const ShapeDef& 
 /// The lamina `curves` shape of a `Shape "curve"` (one strand, in its object space;
 /// pbrt_curves.cpp).
 Json curveShape(TranslationContext& context, const Entity& curve);
-/// Appends `shape` to the array `shapes`, as more strands of the last shape when both are
-/// `curves` alike in every key but their strands (pbrt_curves.cpp).
-void appendShape(Json& shapes, Json shape);
+/// A JSON array of shapes being written: a shape appended to it becomes more strands of the
+/// last one when both are `curves` alike in every key but their strands (pbrt_curves.cpp).
+class ShapeList {
+  public:
+    explicit ShapeList(Json& shapes) : shapes_(shapes) {}
+    void append(Json shape);
+
+  private:
+    Json& shapes_;
+    std::size_t lastPoints_ = 0;  ///< control points of the last shape (curves)
+};
 /// The `emission` of a shape under AreaLightSource `light`; `areas`: the shape's face areas
 /// after its transform (empty when unknown), for pbrt's `power`.
 Json areaEmission(TranslationContext& context, const Entity& light,

@@ -298,11 +298,12 @@ Json translate(TranslationContext& ctx) {
         translateIntegrator(ctx, scene.integrator ? *scene.integrator : defaultEntity("path"));
     doc["shapes"] = Json::array();
     warnStandsStill(ctx, camera, "the camera");
+    ShapeList topLevel(doc["shapes"]);
     for (const ShapeDef& s : scene.shapes)
         if (s.entity.transformEnd)
             translateMovingShape(ctx, s, doc);
         else if (auto shape = translateShape(ctx, s, false))
-            appendShape(doc["shapes"], std::move(*shape));
+            topLevel.append(std::move(*shape));
     // Objects: shared geometry, placed by instances (common-spec: "objects" and "instance").
     std::set<std::string> instanced;
     for (const InstanceDef& i : scene.instances) {
@@ -312,10 +313,11 @@ Json translate(TranslationContext& ctx) {
         if (!object) ctx.fail(i.location, "ObjectInstance \"" + i.object + "\": no such object");
         if (!instanced.count(i.object)) {
             Json shapes = Json::array();
+            ShapeList objectShapes(shapes);
             for (const ShapeDef& s : object->shapes) {
                 warnStandsStill(ctx, s.entity, "a shape inside ObjectBegin");
                 if (auto shape = translateShape(ctx, s, true))
-                    appendShape(shapes, std::move(*shape));
+                    objectShapes.append(std::move(*shape));
             }
             doc["objects"][i.object] = shapes;
             instanced.insert(i.object);
