@@ -16,15 +16,30 @@ source "$(dirname "$0")/local_slurm.sh"
 local_slurm_require
 local_slurm_start
 
-# Two shards of 1024 samples, about 5 s each on one thread: long enough to interrupt.
-settings=(--spp 2048 --resolution 64x64 --max-depth 4)
+# Two shards of 2048 samples, a few seconds each on one thread: long enough to interrupt.
+settings=(--spp 4096 --resolution 64x64 --max-depth 4)
 timeout 30 "$lamina" farm plan "$scene" --shards 2 "${settings[@]}" --threads 1 \
   -o "$work/plan" --submit || fail "farm plan --submit"
 
-# Task 0 running for a few seconds: it has samples to lose.
+# Task 0 rendering, with samples to lose: Slurm calls a task RUNNING before its script has
+# started lamina, and a signal that arrives before lamina's first finished sample leaves nothing
+# to resume (on a loaded machine a fixed two-second sleep was not enough). The shards render
+# quietly (-q), so the sign is task 0's lamina process having used half a second of CPU time: its
+# scene is loaded and some of its samples are done.
 task_running() { timeout 5 squeue -h -t RUNNING -o "%i" | grep -q "_0$"; }
 wait_for "array task 0 to run" task_running
-sleep 2
+# (from /proc, not procps, which a minimal Debian lacks)
+task_rendered_a_while() {
+  local cmdline stat fields
+  for cmdline in /proc/[0-9]*/cmdline; do
+    [[ "$(tr '\0' ' ' 2>/dev/null <"$cmdline")" == *" render "*" --samples 0:2048 "* ]] || continue
+    stat=$(cat "${cmdline%cmdline}stat" 2>/dev/null) || continue
+    read -r -a fields <<<"${stat##*) }"  # fields from the third on; utime is the 14th
+    [ "${fields[11]:-0}" -ge $(($(getconf CLK_TCK) / 2)) ] && return 0
+  done
+  return 1
+}
+wait_for "array task 0 to render for half a second" task_rendered_a_while
 task=$(timeout 5 squeue -h -t RUNNING -o "%i" | grep "_0$" | head -n 1)
 timeout 10 scontrol requeue "$task" || fail "scontrol requeue $task"
 echo "cluster test: requeued $task while it rendered"
