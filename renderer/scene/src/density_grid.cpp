@@ -16,7 +16,7 @@ struct Between {
     float f;
 };
 
-Between between(float v, int n) {
+[[gnu::always_inline]] inline Between between(float v, int n) {
     v = v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;  // also a NaN to 0
     const float s = v * float(n) - 0.5f;
     const float below = std::floor(s);
@@ -33,7 +33,7 @@ std::pair<int, int> support(int c, int cells, int n) {
 
 /// Where `v` of [0, 1] falls between the centres of `n` cells when the values beyond the grid
 /// are 0: the two cells (-1 or n beyond it) and the weight of the second.
-Between betweenUnclamped(float v, int n) {
+[[gnu::always_inline]] inline Between betweenUnclamped(float v, int n) {
     v = v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;
     const float s = v * float(n) - 0.5f;
     const float below = std::floor(s);
