@@ -117,8 +117,8 @@ Json clearcoat(Plugin& p, const Json& material, bool transmits) {
     const bool materialTextured =
         material["base_color"].is_object() && material["base_color"].contains("texture");
     std::string why;
-    if (textured || glossTextured) why = "a textured clearcoat or clearcoat_gloss";
-    if (materialTextured || material["roughness"].is_object()) why = "a textured material";
+    if (textured || glossTextured) why = "with a textured clearcoat or clearcoat_gloss";
+    if (materialTextured || material["roughness"].is_object()) why = "on a textured material";
     if (transmits) why = "with spec_trans (lamina's coat covers opaque bases only)";
     if (!why.empty()) {
         p.warn("clearcoat is not supported " + why +
@@ -186,14 +186,14 @@ TranslatedPrincipled principled(Plugin& p, std::vector<TranslatedTexture>& textu
             differences += ", untinted where Mitsuba tints it by sqrt(base_color)";
         if (metallic > 0)
             differences += ", weighted spec_trans where Mitsuba weighs (1 - metallic) spec_trans";
-        if (specTrans < 1 || metallic > 0)
-            differences +=
-                "; seen from inside, lamina reflects the whole Fresnel reflectance and its "
-                "diffuse share, where Mitsuba reflects (1 - metallic) spec_trans of the first "
-                "only";
-        if (!differences.empty())
-            p.warn("spec_trans became lamina's transmission through the same rough dielectric" +
-                   differences);
+        // Seen from inside, lamina's standard reflects with the Fresnel reflectance of the
+        // outside (tests/interchange/mitsuba_principled_test.cpp finds its transmission exact).
+        differences +=
+            "; seen from inside, lamina reflects with the outside's Fresnel reflectance (no "
+            "total internal reflection) and adds its diffuse share, where Mitsuba reflects "
+            "(1 - metallic) spec_trans of the inside's Fresnel reflectance only";
+        p.warn("spec_trans became lamina's transmission through the same rough dielectric" +
+               differences);
     }
     if (givenNonZero(p, "spec_tint"))
         p.warn(
