@@ -86,13 +86,14 @@ TEST_F(MitsubaPrincipled, MetallicAnisotropicAndTransmission) {
     EXPECT_EQ(m["metalness"], 0.7);
     EXPECT_EQ(m["fresnel"], "schlick");
     EXPECT_EQ(m["anisotropy"], 0.5);
-    EXPECT_EQ(m["transmission"], 0.4);
+    EXPECT_NEAR(m["transmission"].get<double>(), 0.3 * 0.4, 1e-12);  // (1 - metallic) spec_trans
     EXPECT_DOUBLE_EQ(m["ior"].get<double>(), 2 / (1 - std::sqrt(0.08 * 0.6)) - 1);
     for (const char* w :
          {"metallic between 0 and 1", "anisotropic: the retro-reflection",
           "spec_trans became lamina's transmission through the same rough dielectric, untinted "
-          "where Mitsuba tints it by sqrt(base_color), weighted spec_trans where Mitsuba weighs "
-          "(1 - metallic) spec_trans; seen from inside",
+          "where Mitsuba tints it by sqrt(base_color), of weight (1 - metallic) spec_trans as in "
+          "Mitsuba, but the diffuse term's is (1 - metallic)(1 - (1 - metallic) spec_trans) "
+          "where Mitsuba's is (1 - metallic)(1 - spec_trans); seen from inside",
           "spec_tint is not supported: dropped", "sheen and sheen_tint are not supported: dropped",
           "flatness is not supported: dropped", "main_specular_sampling_rate became lamina's own"})
         EXPECT_EQ(warningsWith(s, w).size(), 1u) << w;
@@ -126,6 +127,15 @@ TEST_F(MitsubaPrincipled, TexturedWeightsAreRefused) {
     EXPECT_THAT(error(R"(<bsdf type="principled" id="m"><float name="eta" value="1.3"/>
 <float name="specular" value="0.3"/></bsdf>)"),
                 HasSubstr(where(2) + ": <bsdf type=\"principled\">: give eta or specular"));
+}
+
+// Mitsuba weighs the transmission (1 - metallic) spec_trans: a metal with spec_trans is opaque.
+TEST_F(MitsubaPrincipled, MetalWithSpecTransStaysOpaque) {
+    const ImportedScene s = import(R"(<bsdf type="principled" id="m">
+<float name="metallic" value="1"/><float name="spec_trans" value="1"/></bsdf>)");
+    EXPECT_FALSE(s.scene["materials"]["m"].contains("transmission"));
+    EXPECT_EQ(warningsWith(s, "one-sided in Mitsuba").size(), 1u);
+    EXPECT_TRUE(warningsWith(s, "spec_trans").empty());
 }
 
 // clearcoat: a mix of 0.25 clearcoat with the material under a clear coat of index 1.5 and

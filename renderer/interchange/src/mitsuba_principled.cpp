@@ -179,13 +179,20 @@ TranslatedPrincipled principled(Plugin& p, std::vector<TranslatedTexture>& textu
                 "anisotropic: the retro-reflection of lamina's Burley diffuse takes the roughness "
                 "sqrt((alpha_x + alpha_y) / 2), slightly above Mitsuba's roughness");
     }
-    if (specTrans > 0) {
-        m["transmission"] = specTrans;
+    // Mitsuba weighs the transmission (1 - metallic) spec_trans and the diffuse term
+    // (1 - metallic)(1 - spec_trans); lamina's standard the first `transmission` and the second
+    // (1 - metalness)(1 - transmission). The transmission is kept: a metal stays opaque.
+    const double transmission = (1 - metallic) * specTrans;
+    if (transmission > 0) {
+        m["transmission"] = transmission;
         std::string differences;
         if (!isWhite(m["base_color"]))
             differences += ", untinted where Mitsuba tints it by sqrt(base_color)";
         if (metallic > 0)
-            differences += ", weighted spec_trans where Mitsuba weighs (1 - metallic) spec_trans";
+            differences +=
+                ", of weight (1 - metallic) spec_trans as in Mitsuba, but the diffuse term's is "
+                "(1 - metallic)(1 - (1 - metallic) spec_trans) where Mitsuba's is (1 - "
+                "metallic)(1 - spec_trans)";
         // Seen from inside, lamina's standard reflects with the Fresnel reflectance of the
         // outside (tests/interchange/mitsuba_principled_test.cpp finds its transmission exact).
         differences +=
@@ -202,9 +209,10 @@ TranslatedPrincipled principled(Plugin& p, std::vector<TranslatedTexture>& textu
     dropUnsupportedLobes(p);
     samplingRates(p, {"diffuse_reflectance_sampling_rate", "main_specular_sampling_rate",
                       "clearcoat_sampling_rate"});
-    // Mitsuba's diffuse, sheen and clearcoat are front-side lobes; without transmission its
-    // back side reflects nothing.
-    return {clearcoat(p, m, specTrans > 0), specTrans == 0};
+    // Mitsuba's diffuse, sheen and clearcoat are front-side lobes; without transmission (its
+    // back side reflects (1 - metallic) spec_trans of the Fresnel reflectance) it is black
+    // from behind.
+    return {clearcoat(p, m, transmission > 0), transmission == 0};
 }
 
 TranslatedPrincipled principledThin(Plugin& p, std::vector<TranslatedTexture>& textures) {
