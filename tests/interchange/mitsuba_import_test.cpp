@@ -814,8 +814,8 @@ TEST_F(MitsubaBsdf, UnsupportedPluginAndTextureAreRefused) {
               where(3) +
                   ": <bsdf type=\"hair\">: the BSDF plugin \"hair\" is not supported "
                   "(diffuse, conductor, roughconductor, dielectric, roughdielectric, "
-                  "thindielectric, plastic, roughplastic, twosided, blendbsdf, mask, bumpmap, "
-                  "normalmap, measured, polarizer)");
+                  "thindielectric, plastic, roughplastic, pplastic, principled, principledthin, "
+                  "twosided, blendbsdf, mask, bumpmap, normalmap, measured, polarizer)");
     // A texture where lamina takes none (mitsuba_textures.cpp's colorOrTexture is not asked there).
     EXPECT_EQ(error("<bsdf type=\"conductor\" id=\"m\">\n<texture type=\"bitmap\" "
                     "name=\"specular_reflectance\"/></bsdf>"),

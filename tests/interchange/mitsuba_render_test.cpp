@@ -57,11 +57,13 @@ TEST_P(MitsubaAgreement, ImportedSceneRendersLikeTheHandWrittenOne) {
 }
 
 // instances.xml (a shapegroup placed by instances) against instances.json, which writes the
-// same placements as lamina objects and instances.
+// same placements as lamina objects and instances; principled.xml (Mitsuba's principled at
+// metallic 1, which becomes lamina's standard) against conductors with Schlick's Fresnel.
 INSTANTIATE_TEST_SUITE_P(Scenes, MitsubaAgreement,
                          ::testing::Values(AgreementCase{"cbox", 1024}, AgreementCase{"glass", 256},
                                            AgreementCase{"metals", 1024},
-                                           AgreementCase{"instances", 256}),
+                                           AgreementCase{"instances", 256},
+                                           AgreementCase{"principled", 1024}),
                          [](const ::testing::TestParamInfo<AgreementCase>& p) {
                              return std::string(p.param.name);
                          });

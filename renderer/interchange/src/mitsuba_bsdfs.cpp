@@ -9,21 +9,12 @@
 
 #include "lamina/core/error.h"
 #include "lamina/core/math.h"
+#include "mitsuba_bsdf_parameters.h"
+#include "mitsuba_principled.h"
 
 namespace lamina::render::mitsuba {
 
 namespace {
-
-constexpr std::array<std::pair<const char*, double>, 23> kNamedIors{{
-    {"vacuum", 1.0},      {"helium", 1.000036},        {"hydrogen", 1.000132},
-    {"air", 1.000277},    {"carbon dioxide", 1.00045}, {"water", 1.3330},
-    {"acetone", 1.36},    {"ethanol", 1.361},          {"carbon tetrachloride", 1.461},
-    {"glycerol", 1.4729}, {"benzene", 1.501},          {"silicone oil", 1.52045},
-    {"bromine", 1.661},   {"water ice", 1.31},         {"fused quartz", 1.458},
-    {"pyrex", 1.470},     {"acrylic glass", 1.49},     {"polypropylene", 1.49},
-    {"bk7", 1.5046},      {"sodium chloride", 1.544},  {"amber", 1.55},
-    {"pet", 1.5750},      {"diamond", 2.419},
-}};
 
 // Mitsuba's conductor presets (mitsuba3 src/bsdfs/conductor.cpp, data/ior/*.spd) that lamina
 // has as named metals (measured tables, spectral/data/nk), by Mitsuba name -> lamina name.
@@ -38,26 +29,6 @@ constexpr std::array<std::pair<const char*, const char*>, 8> kConductorPresets{{
     {"Ni_palik", "Ni"},
 }};
 
-// An index of refraction: a <float> or one of Mitsuba's names (mitsuba3 lookup_ior: the
-// property's type decides).
-double indexOfRefraction(Plugin& p, const char* name, const char* fallback) {
-    if (p.tagOf(name) == "float" || p.tagOf(name) == "integer") {
-        const double v = p.number(name, 1.0);
-        if (!(v > 0)) p.fail(std::string("parameter \"") + name + "\" must be > 0");
-        return v;
-    }
-    const std::string n = p.string(name).value_or(fallback);
-    const auto v = namedIor(n);
-    if (!v) p.fail(std::string("parameter \"") + name + "\": unknown material \"" + n + "\"");
-    return *v;
-}
-
-// The index of refraction int_ior / ext_ior.
-double relativeIor(Plugin& p, const char* defaultInterior, const char* defaultExterior) {
-    const double interior = indexOfRefraction(p, "int_ior", defaultInterior);
-    return interior / indexOfRefraction(p, "ext_ior", defaultExterior);
-}
-
 // A lamina optical constant (a number, an rgb triple or a spectrum [[nm, value], ...])
 // divided by `d`.
 Json dividedOptics(Json v, double d) {
@@ -69,67 +40,6 @@ Json dividedOptics(Json v, double d) {
             e = e.get<double>() / d;
     }
     return v;
-}
-
-// A textured `alpha`, or `alpha_u` and `alpha_v` given by one texture, as lamina's textured
-// roughness (sqrt(alpha), mitsuba_textures.h); false when alpha is not textured.
-bool texturedAlpha(Plugin& p, Json& m, bool anisotropic, std::vector<TranslatedTexture>& textures) {
-    const auto element = [&](const char* name) -> const Element* {
-        const auto t = p.texture(name);
-        return t ? t->texture : nullptr;
-    };
-    const Element* alpha = element("alpha");
-    const Element* u = anisotropic ? element("alpha_u") : nullptr;
-    const Element* v = anisotropic ? element("alpha_v") : nullptr;
-    if (!alpha && !u && !v) return false;
-    if ((u || v) && u != v)
-        p.fail(
-            "a textured alpha_u / alpha_v is supported only as one texture given to both "
-            "(lamina's textured roughness is isotropic)");
-    if (alpha && u) p.fail("give alpha or alpha_u / alpha_v, not both");
-    const Element& texture = alpha ? *alpha : *u;
-    m["roughness"] = {{"texture", translateTexture(texture, TextureUse::Alpha, p.document(),
-                                                   p.diagnostics(), textures)}};
-    return true;
-}
-
-// Microfacet roughness of the rough plugins: `alpha` (0.1) or `alpha_u` / `alpha_v` (numbers
-// or a texture), and `distribution` (`beckmann`, Mitsuba's default, or `ggx`). Written into
-// `m`; a texture's definitions into `textures`.
-void roughness(Plugin& p, Json& m, bool anisotropic, std::vector<TranslatedTexture>& textures) {
-    const std::string distribution = p.string("distribution").value_or("beckmann");
-    if (distribution != "beckmann" && distribution != "ggx")
-        p.fail("distribution \"" + distribution + "\" is not supported (beckmann or ggx)");
-    m["distribution"] = distribution;
-    // Lamina samples visible normals always; Mitsuba's switch only changes the variance.
-    if (p.has("sample_visible") && !p.boolean("sample_visible", true))
-        p.warn("sample_visible false became lamina's visible-normal sampling (same expectation)");
-    if (texturedAlpha(p, m, anisotropic, textures)) return;
-    auto check = [&](double a, const char* name) {
-        if (!(a >= 0 && a <= 1))
-            p.fail(std::string("parameter \"") + name + "\" must be in [0, 1] for lamina");
-        return a;
-    };
-    if (anisotropic && (p.has("alpha_u") || p.has("alpha_v"))) {
-        if (p.has("alpha")) p.fail("give alpha or alpha_u / alpha_v, not both");
-        m["alpha_x"] = check(p.number("alpha_u", 0.1), "alpha_u");
-        m["alpha_y"] = check(p.number("alpha_v", 0.1), "alpha_v");
-    } else {
-        m["alpha"] = check(p.number("alpha", 0.1), "alpha");
-    }
-}
-
-void refuseScale(Plugin& p, const char* name) {
-    if (!p.has(name)) return;
-    const auto c = p.color(name);
-    if (c && *c != Json(1.0))
-        p.fail(std::string("parameter \"") + name + "\" other than 1 is not supported");
-}
-
-void warnOneSided(Plugin& p, bool insideTwoSided, const std::string& became) {
-    if (!insideTwoSided)
-        p.warn("one-sided in Mitsuba (black seen from behind) became lamina's " + became +
-               ", which reflects on both sides");
 }
 
 Json conductor(Plugin& p, bool rough, std::vector<TranslatedTexture>& textures) {
@@ -168,7 +78,7 @@ Json conductor(Plugin& p, bool rough, std::vector<TranslatedTexture>& textures) 
     if (!hasNk && p.has("ext_eta") && std::abs(indexOfRefraction(p, "ext_eta", "air") - 1) > 1e-3)
         p.fail("ext_eta other than air (1.000277) or vacuum is supported only with eta and k");
     refuseScale(p, "specular_reflectance");
-    if (rough) roughness(p, m, true, textures);
+    if (rough) microfacetRoughness(p, m, true, textures);
     return m;
 }
 
@@ -177,7 +87,7 @@ Json dielectric(Plugin& p, const char* type, bool rough, const char* interior,
     Json m{{"type", type}, {"ior", relativeIor(p, interior, "air")}};
     refuseScale(p, "specular_reflectance");
     refuseScale(p, "specular_transmittance");
-    if (rough) roughness(p, m, false, textures);
+    if (rough) microfacetRoughness(p, m, false, textures);
     return m;
 }
 
@@ -193,13 +103,54 @@ Json plastic(Plugin& p, bool rough, bool insideTwoSided, std::vector<TranslatedT
         p.fail(
             "a textured alpha on roughplastic is not supported (lamina's coat takes no "
             "texture)");
-    if (rough) roughness(p, m, false, textures);
+    if (rough) microfacetRoughness(p, m, false, textures);
     p.warn(std::string(rough ? "roughplastic" : "plastic") +
            " became lamina's coated (a dielectric coat over lambert, evaluated by a random walk "
            "that follows every internal reflection" +
            (nonlinear ? ", like Mitsuba's nonlinear model)"
                       : "; Mitsuba's default nonlinear=false model desaturates the colour less)"));
     warnOneSided(p, insideTwoSided, "coated");
+    return m;
+}
+
+// mitsuba3 src/bsdfs/pplastic.cpp: f = F D G / (4 cos_i cos_o), a rough reflection with the
+// exact Fresnel of eta, plus (1 - F(cos_i))(1 - F(cos_o)) rho / pi, added (no internal
+// reflections, no 1 / eta^2). Lamina's `layered` has that rough interface (which polarises in
+// the polarised mode, as Mitsuba's does; `coated` depolarises) and, with the albedo coupling,
+// the diffuse term's shape with the rough interface's albedo E in place of F.
+Json polarisedPlastic(Plugin& p, std::vector<TranslatedTexture>& textures) {
+    if (const auto t = p.texture("diffuse_reflectance"))
+        p.fail(
+            "a textured diffuse_reflectance on pplastic is not supported (lamina's layered "
+            "takes no texture)");
+    if (p.texture("alpha") || p.texture("alpha_u") || p.texture("alpha_v"))
+        p.fail("a textured alpha on pplastic is not supported (lamina's layered takes no texture)");
+    const Json reflectance = p.color("diffuse_reflectance").value_or(Json(0.5));
+    refuseScale(p, "specular_reflectance");
+    double ior = 0;
+    if (p.has("eta")) {
+        if (p.has("int_ior") || p.has("ext_ior")) p.fail("give eta or int_ior / ext_ior, not both");
+        if (p.texture("eta")) p.fail("a textured eta is not supported");
+        ior = p.number("eta", 1.5);
+        if (!(ior > 0)) p.fail("parameter \"eta\" must be > 0");
+    } else {
+        ior = relativeIor(p, "polypropylene", "air");
+    }
+    Json interface {
+        {"ior", ior}, {"fresnel", "exact"}, { "g2", "separable" }
+    };
+    microfacetRoughness(p, interface, true, textures);
+    interface["model"] = interface["distribution"];
+    interface.erase("distribution");
+    Json m{{"type", "layered"}, {"interface", interface}};
+    if (reflectance == Json(0.0)) return m;  // the rough reflection alone: the same
+    m["base"] = {{"type", "lambert"}, {"reflectance", reflectance}};
+    m["coupling"] = "albedo";
+    p.warn(
+        "pplastic became lamina's layered: the same rough reflection; the diffuse term (1 - "
+        "F(theta_i))(1 - F(theta_o)) rho / pi became (1 - E(theta_i))(1 - E(theta_o)) rho / (pi "
+        "(1 - E_avg)), E the rough interface's albedo (about 1 / (1 - E_avg), 10% at eta 1.5, "
+        "brighter), which depolarises where Mitsuba's refraction out polarises it weakly");
     return m;
 }
 
@@ -297,15 +248,6 @@ TranslatedBsdf shadingNormalMap(Plugin& p, const MitsubaDocument& document,
 
 }  // namespace
 
-std::optional<double> namedIor(const std::string& name) {
-    std::string lower;
-    for (char c : name)
-        lower += char(std::tolower(static_cast<unsigned char>(c)));
-    for (const auto& [n, v] : kNamedIors)
-        if (lower == n) return v;
-    return std::nullopt;
-}
-
 TranslatedBsdf translateBsdf(const Element& bsdf, const MitsubaDocument& document,
                              Diagnostics& diagnostics, bool insideTwoSided, int depth,
                              const SurfaceDirections* surface) {
@@ -329,6 +271,14 @@ TranslatedBsdf translateBsdf(const Element& bsdf, const MitsubaDocument& documen
         out.material = dielectric(p, "thin_dielectric", false, "bk7", out.textures);
     } else if (type == "plastic" || type == "roughplastic") {
         out.material = plastic(p, type == "roughplastic", insideTwoSided, out.textures);
+    } else if (type == "pplastic") {
+        out.material = polarisedPlastic(p, out.textures);
+        warnOneSided(p, insideTwoSided, "layered");
+    } else if (type == "principled" || type == "principledthin") {
+        const TranslatedPrincipled t =
+            type == "principled" ? principled(p, out.textures) : principledThin(p, out.textures);
+        out.material = t.material;
+        if (t.oneSided) warnOneSided(p, insideTwoSided, "standard");
     } else if (type == "twosided") {
         // Lamina's reflection models are two-sided already (shaded with the normal facing wo),
         // so twosided(X) is X. Mitsuba's form with two BSDFs (front, back) has no counterpart.
@@ -391,8 +341,9 @@ TranslatedBsdf translateBsdf(const Element& bsdf, const MitsubaDocument& documen
     } else {
         p.fail("the BSDF plugin \"" + type +
                "\" is not supported (diffuse, conductor, roughconductor, dielectric, "
-               "roughdielectric, thindielectric, plastic, roughplastic, twosided, blendbsdf, "
-               "mask, bumpmap, normalmap, measured, polarizer)");
+               "roughdielectric, thindielectric, plastic, roughplastic, pplastic, principled, "
+               "principledthin, twosided, blendbsdf, mask, bumpmap, normalmap, measured, "
+               "polarizer)");
     }
     p.finish();
     return out;

@@ -36,8 +36,4 @@ TranslatedBsdf translateBsdf(const Element& bsdf, const MitsubaDocument& documen
                              Diagnostics& diagnostics, bool insideTwoSided = false, int depth = 0,
                              const SurfaceDirections* surface = nullptr);
 
-/// Mitsuba's named indices of refraction (mitsuba3 include/mitsuba/render/ior.h, Hecht's
-/// Optics at ~589 nm); nullopt for an unknown name.
-std::optional<double> namedIor(const std::string& name);
-
 }  // namespace lamina::render::mitsuba

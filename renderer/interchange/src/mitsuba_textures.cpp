@@ -40,22 +40,30 @@ std::string baseName(const Plugin& p, const std::string& what) {
     return what + " (" + file + "line " + std::to_string(texture.line) + ")";
 }
 
+// Whether `use` evaluates the texture as one number (Texture::eval_1).
+bool singleValued(TextureUse use) {
+    return use == TextureUse::Alpha || use == TextureUse::Scalar;
+}
+
 // A checkerboard's colour as a lamina colour (a number or [r, g, b]); as an alpha, one number
-// in [0, 1], whose square root lamina's textured roughness squares back.
+// in [0, 1], whose square root lamina's textured roughness squares back; as a scalar, one
+// number in [0, 1].
 Json checkerColor(Plugin& p, const char* name, double fallback, TextureUse use) {
     const Json c = p.color(name).value_or(Json(fallback));
-    if (use != TextureUse::Alpha) {
+    if (!singleValued(use)) {
         if (c.is_object())
             p.fail(std::string("parameter \"") + name +
                    "\": a spectrum in a checkerboard is not supported (give an rgb)");
         return c;
     }
+    const std::string what = use == TextureUse::Alpha ? "an alpha" : "a roughness";
     if (!c.is_number())
-        p.fail(std::string("parameter \"") + name + "\": an alpha must be one number");
-    const double alpha = c.get<double>();
-    if (!(alpha >= 0 && alpha <= 1))
-        p.fail(std::string("parameter \"") + name + "\": an alpha must be in [0, 1] for lamina");
-    return std::sqrt(alpha);
+        p.fail(std::string("parameter \"") + name + "\": " + what + " must be one number");
+    const double v = c.get<double>();
+    if (!(v >= 0 && v <= 1))
+        p.fail(std::string("parameter \"") + name + "\": " + what +
+               " must be in [0, 1] for lamina");
+    return use == TextureUse::Alpha ? std::sqrt(v) : v;
 }
 
 // Whether 2 x is an integer: a checkerboard shifted by it keeps its cells' edges.
@@ -65,7 +73,8 @@ bool onHalfCells(double x) {
 
 // mitsuba3 checkerboard.cpp: with uv' = to_uv(uv), eval gives color0 where
 // frac(u') > 1/2 and frac(v') > 1/2 agree, that is where floor(2 u') + floor(2 v') is even
-// (edges aside), and color1 elsewhere; eval_1, which alpha parameters use, swaps the two.
+// (edges aside), and color1 elsewhere; eval_1, which one-number parameters (alpha, roughness)
+// use, swaps the two.
 // Lamina's checkerboard gives `a` where floor(u su) + floor(v sv) is even, so su = 2 |sx|,
 // sv = 2 |sy|, and the colours swap once for each of: an odd 2 tx + 2 ty, a negative sx, a
 // negative sy (floor(-x) = -floor(x) - 1 off the edges), the eval_1 use.
@@ -83,11 +92,11 @@ std::string checkerboard(Plugin& p, TextureUse use, std::vector<TranslatedTextur
             "checkerboard (lamina's has no offset)");
     const long shift = std::lround(2 * uv.offsetU) + std::lround(2 * uv.offsetV);
     const bool swap =
-        ((shift % 2 != 0) != (uv.scaleU < 0)) != ((uv.scaleV < 0) != (use == TextureUse::Alpha));
+        ((shift % 2 != 0) != (uv.scaleU < 0)) != ((uv.scaleV < 0) != singleValued(use));
     if (swap) std::swap(color0, color1);
     p.finish();
     const std::string name =
-        baseName(p, "checkerboard") + (use == TextureUse::Alpha ? " as roughness" : "");
+        baseName(p, "checkerboard") + (singleValued(use) ? " as roughness" : "");
     out.push_back({name,
                    {{"type", "checkerboard"},
                     {"a", color0},
@@ -151,6 +160,10 @@ std::string translateTexture(const Element& texture, TextureUse use,
         out.push_back({root, {{"type", "power"}, {"texture", name}, {"exponent", 0.5}}, {}});
         return root;
     }
+    if (p.type() == "bitmap" && use == TextureUse::Scalar)
+        p.warn(
+            "a bitmap as roughness: lamina reads its first channel where Mitsuba reads the "
+            "luminance of an RGB image (the same for a grey one)");
     if (p.type() == "bitmap") return bitmap(p, out, raw);
     if (use == TextureUse::Map)
         p.fail("a bumpmap's or normalmap's texture must be a bitmap (lamina reads image files)");

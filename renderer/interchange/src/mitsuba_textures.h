@@ -28,6 +28,9 @@ enum class TextureUse {
     /// A microfacet alpha (Texture::eval_1), which lamina takes as its textured `roughness`,
     /// alpha = roughness^2: the texture's values become their square roots.
     Alpha,
+    /// A number in [0, 1] taken as it is (Texture::eval_1): the principled BSDF's `roughness`,
+    /// which lamina's textured roughness takes with the same alpha = roughness^2.
+    Scalar,
     /// The height of a bumpmap or the texels of a normalmap: a bitmap, its first channel or its
     /// colour as it is.
     Map,
