@@ -412,7 +412,7 @@ TEST_F(MitsubaImport, UnsupportedShapesAreRefused) {
               where(3) +
                   ": <shape type=\"hyperboloid\">: the shape plugin \"hyperboloid\" is not "
                   "supported (obj, ply, serialized, rectangle, cube, sphere, disk, cylinder, "
-                  "instance, shapegroup)");
+                  "bsplinecurve, linearcurve, instance, shapegroup)");
 }
 
 // Mitsuba's cylinder (mitsuba3 src/shapes/cylinder.cpp): the unit cylinder placed by to_world *

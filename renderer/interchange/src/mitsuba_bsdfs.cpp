@@ -38,8 +38,8 @@ constexpr std::array<std::pair<const char*, const char*>, 8> kConductorPresets{{
     {"Ni_palik", "Ni"},
 }};
 
-// An index of refraction: a <float> or one of Mitsuba's names (mitsuba3 lookup_ior: the
-// property's type decides).
+}  // namespace
+
 double indexOfRefraction(Plugin& p, const char* name, const char* fallback) {
     if (p.tagOf(name) == "float" || p.tagOf(name) == "integer") {
         const double v = p.number(name, 1.0);
@@ -52,11 +52,12 @@ double indexOfRefraction(Plugin& p, const char* name, const char* fallback) {
     return *v;
 }
 
-// The index of refraction int_ior / ext_ior.
 double relativeIor(Plugin& p, const char* defaultInterior, const char* defaultExterior) {
     const double interior = indexOfRefraction(p, "int_ior", defaultInterior);
     return interior / indexOfRefraction(p, "ext_ior", defaultExterior);
 }
+
+namespace {
 
 // A lamina optical constant (a number, an rgb triple or a spectrum [[nm, value], ...])
 // divided by `d`.
@@ -388,11 +389,13 @@ TranslatedBsdf translateBsdf(const Element& bsdf, const MitsubaDocument& documen
         out.material = polariser(p, surface);
     } else if (type == "bumpmap" || type == "normalmap") {
         out = shadingNormalMap(p, document, diagnostics, insideTwoSided, depth);
+    } else if (type == "hair") {
+        out.material = hairMaterial(p);
     } else {
         p.fail("the BSDF plugin \"" + type +
                "\" is not supported (diffuse, conductor, roughconductor, dielectric, "
                "roughdielectric, thindielectric, plastic, roughplastic, twosided, blendbsdf, "
-               "mask, bumpmap, normalmap, measured, polarizer)");
+               "mask, bumpmap, normalmap, measured, polarizer, hair)");
     }
     p.finish();
     return out;

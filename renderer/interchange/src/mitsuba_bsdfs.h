@@ -36,6 +36,15 @@ TranslatedBsdf translateBsdf(const Element& bsdf, const MitsubaDocument& documen
                              Diagnostics& diagnostics, bool insideTwoSided = false, int depth = 0,
                              const SurfaceDirections* surface = nullptr);
 
+/// An index of refraction: a <float> or one of Mitsuba's names (mitsuba3 lookup_ior: the
+/// property's type decides); `fallback` names the default.
+double indexOfRefraction(Plugin& p, const char* name, const char* fallback);
+/// The relative index of refraction int_ior / ext_ior.
+double relativeIor(Plugin& p, const char* defaultInterior, const char* defaultExterior);
+
+/// `hair` (mitsuba_hair.cpp) -> lamina's `hair` material.
+Json hairMaterial(Plugin& p);
+
 /// Mitsuba's named indices of refraction (mitsuba3 include/mitsuba/render/ior.h, Hecht's
 /// Optics at ~589 nm); nullopt for an unknown name.
 std::optional<double> namedIor(const std::string& name);
