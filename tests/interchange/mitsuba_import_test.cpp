@@ -810,12 +810,12 @@ TEST_F(MitsubaBsdf, TwoSidedBlendAndMask) {
 }
 
 TEST_F(MitsubaBsdf, UnsupportedPluginAndTextureAreRefused) {
-    EXPECT_EQ(error("\n<bsdf type=\"hair\" id=\"m\"/>"),
+    EXPECT_EQ(error("\n<bsdf type=\"principled\" id=\"m\"/>"),
               where(3) +
-                  ": <bsdf type=\"hair\">: the BSDF plugin \"hair\" is not supported "
-                  "(diffuse, conductor, roughconductor, dielectric, roughdielectric, "
+                  ": <bsdf type=\"principled\">: the BSDF plugin \"principled\" is not "
+                  "supported (diffuse, conductor, roughconductor, dielectric, roughdielectric, "
                   "thindielectric, plastic, roughplastic, twosided, blendbsdf, mask, bumpmap, "
-                  "normalmap, measured, polarizer)");
+                  "normalmap, measured, polarizer, hair)");
     // A texture where lamina takes none (mitsuba_textures.cpp's colorOrTexture is not asked there).
     EXPECT_EQ(error("<bsdf type=\"conductor\" id=\"m\">\n<texture type=\"bitmap\" "
                     "name=\"specular_reflectance\"/></bsdf>"),
