@@ -412,7 +412,7 @@ TEST_F(MitsubaImport, UnsupportedShapesAreRefused) {
               where(3) +
                   ": <shape type=\"hyperboloid\">: the shape plugin \"hyperboloid\" is not "
                   "supported (obj, ply, serialized, rectangle, cube, sphere, disk, cylinder, "
-                  "instance, shapegroup)");
+                  "bsplinecurve, linearcurve, instance, shapegroup)");
 }
 
 // Mitsuba's cylinder (mitsuba3 src/shapes/cylinder.cpp): the unit cylinder placed by to_world *
@@ -810,12 +810,12 @@ TEST_F(MitsubaBsdf, TwoSidedBlendAndMask) {
 }
 
 TEST_F(MitsubaBsdf, UnsupportedPluginAndTextureAreRefused) {
-    EXPECT_EQ(error("\n<bsdf type=\"hair\" id=\"m\"/>"),
+    EXPECT_EQ(error("\n<bsdf type=\"measured_polarized\" id=\"m\"/>"),
               where(3) +
-                  ": <bsdf type=\"hair\">: the BSDF plugin \"hair\" is not supported "
-                  "(diffuse, conductor, roughconductor, dielectric, roughdielectric, "
+                  ": <bsdf type=\"measured_polarized\">: the BSDF plugin \"measured_polarized\" is "
+                  "not supported (diffuse, conductor, roughconductor, dielectric, roughdielectric, "
                   "thindielectric, plastic, roughplastic, pplastic, principled, principledthin, "
-                  "twosided, blendbsdf, mask, bumpmap, normalmap, measured, polarizer)");
+                  "twosided, blendbsdf, mask, bumpmap, normalmap, measured, polarizer, hair)");
     // A texture where lamina takes none (mitsuba_textures.cpp's colorOrTexture is not asked there).
     EXPECT_EQ(error("<bsdf type=\"conductor\" id=\"m\">\n<texture type=\"bitmap\" "
                     "name=\"specular_reflectance\"/></bsdf>"),

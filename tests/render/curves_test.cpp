@@ -2,7 +2,8 @@
 // a ray meets a straight tube where the closed form says, with the normal out of the axis and
 // the tangent along it; a ray from inside meets the far wall (the hair material's tubes let
 // light through that way); a flat ribbon faces the ray with a tube's shading normal; widths
-// taper; instances carry the tangent. The reader refuses what is not a strand, naming the path.
+// taper, or follow the widths given per control point; instances carry the tangent. The reader
+// refuses what is not a strand, naming the path.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -82,6 +83,19 @@ TEST(CurveHits, WidthsTaperFromRootToTip) {
     EXPECT_NEAR(tip->p.z, 0.5f * (0.8f - 0.6f * 3.5f / 4), 2e-3f);
 }
 
+TEST(CurveHits, WidthsPerControlPointRunWithTheBezierBasis) {
+    // Widths at the control points 0.2, 0.6, 1.0, 1.4 (evenly spaced, as the points are): the
+    // Bezier interpolation of them is 0.2 + 1.2 t, t = (x + 2) / 4 along the straight strand.
+    const SceneDesc scene = sceneWith(R"("type": "curves", "widths": [[0.2, 0.6, 1.0, 1.4]],
+        "strands": [[[-2, 0, 0], [-0.6667, 0, 0], [0.6667, 0, 0], [2, 0, 0]]])");
+    const Geometry g(scene);
+    const auto thin = g.intersect(Vec3f(-1.5f, 0, 5), Vec3f(0, 0, -1));
+    const auto thick = g.intersect(Vec3f(1.5f, 0, 5), Vec3f(0, 0, -1));
+    ASSERT_TRUE(thin && thick);
+    EXPECT_NEAR(thin->p.z, 0.5f * (0.2f + 1.2f * 0.125f), 2e-3f);
+    EXPECT_NEAR(thick->p.z, 0.5f * (0.2f + 1.2f * 0.875f), 2e-3f);
+}
+
 TEST(CurveHits, AnInstanceTurnsTheTangent) {
     const std::string objects =
         R"("objects": {"tuft": [{"material": "m", )" + std::string(kStraight) + R"(}]},)";
@@ -114,6 +128,26 @@ TEST(CurvesReader, RefusesWhatIsNotAStrand) {
                         "strands": [[[0, 0, 0], [1, 0, 0], [2, 0, 0], [3, 0, 0]]])");
                 }),
                 HasSubstr("width"));
+    EXPECT_THAT(testing::errorOf([] {
+                    sceneWith(R"("type": "curves", "width": 0.1, "widths": [[1, 1, 1, 1]],
+                        "strands": [[[0, 0, 0], [1, 0, 0], [2, 0, 0], [3, 0, 0]]])");
+                }),
+                HasSubstr("shapes[0].widths: give widths per control point or width"));
+    EXPECT_THAT(testing::errorOf([] {
+                    sceneWith(R"("type": "curves", "widths": [[1, 1, 1]],
+                        "strands": [[[0, 0, 0], [1, 0, 0], [2, 0, 0], [3, 0, 0]]])");
+                }),
+                HasSubstr("shapes[0].widths: expected at index 0 a list of 4 widths"));
+    EXPECT_THAT(testing::errorOf([] {
+                    sceneWith(R"("type": "curves", "widths": [[1, 1, 1, 1], [1]],
+                        "strands": [[[0, 0, 0], [1, 0, 0], [2, 0, 0], [3, 0, 0]]])");
+                }),
+                HasSubstr("shapes[0].widths: expected one list of widths per strand (1 strands)"));
+    EXPECT_THAT(testing::errorOf([] {
+                    sceneWith(R"("type": "curves", "widths": [[1, -1, 1, 1]],
+                        "strands": [[[0, 0, 0], [1, 0, 0], [2, 0, 0], [3, 0, 0]]])");
+                }),
+                HasSubstr("shapes[0].widths[0][1]"));
 }
 
 }  // namespace

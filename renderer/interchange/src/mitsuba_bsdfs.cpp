@@ -338,12 +338,14 @@ TranslatedBsdf translateBsdf(const Element& bsdf, const MitsubaDocument& documen
         out.material = polariser(p, surface);
     } else if (type == "bumpmap" || type == "normalmap") {
         out = shadingNormalMap(p, document, diagnostics, insideTwoSided, depth);
+    } else if (type == "hair") {
+        out.material = hairMaterial(p);
     } else {
         p.fail("the BSDF plugin \"" + type +
                "\" is not supported (diffuse, conductor, roughconductor, dielectric, "
                "roughdielectric, thindielectric, plastic, roughplastic, pplastic, principled, "
                "principledthin, twosided, blendbsdf, mask, bumpmap, normalmap, measured, "
-               "polarizer)");
+               "polarizer, hair)");
     }
     p.finish();
     return out;

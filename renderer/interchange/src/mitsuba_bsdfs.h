@@ -36,4 +36,7 @@ TranslatedBsdf translateBsdf(const Element& bsdf, const MitsubaDocument& documen
                              Diagnostics& diagnostics, bool insideTwoSided = false, int depth = 0,
                              const SurfaceDirections* surface = nullptr);
 
+/// `hair` (mitsuba_hair.cpp) -> lamina's `hair` material.
+Json hairMaterial(Plugin& p);
+
 }  // namespace lamina::render::mitsuba

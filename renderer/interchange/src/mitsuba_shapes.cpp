@@ -225,6 +225,8 @@ void translateShape(Translation& t, const Element& e, Json& out, bool inGroup) {
         if (p.boolean("flip_normals", false)) s["normal"] = Json::array({0.0, 0.0, -1.0});
     } else if (type == "cylinder") {
         s = cylinderShape(p);
+    } else if (type == "bsplinecurve" || type == "linearcurve") {
+        s = curveShape(t, p);
     } else if (type == "instance") {
         const auto groups = p.objects("shape");
         if (groups.size() != 1 || groups[0]->attribute("type") == nullptr ||
@@ -235,11 +237,12 @@ void translateShape(Translation& t, const Element& e, Json& out, bool inGroup) {
     } else {
         p.fail("the shape plugin \"" + type +
                "\" is not supported (obj, ply, serialized, rectangle, cube, sphere, disk, "
-               "cylinder, instance, shapegroup)");
+               "cylinder, bsplinecurve, linearcurve, instance, shapegroup)");
     }
     if (const std::string* id = e.attribute("id")) s["name"] = *id;
-    if (type == "cylinder") {
-        // Placed by cylinderShape: its transform holds p0, p1 and radius.
+    if (type == "cylinder" || s.value("type", "") == "curves") {
+        // Placed by cylinderShape (its transform holds p0, p1 and radius) and curveShape (its
+        // control points are in world space).
     } else if (const auto transform = p.transform("to_world")) {
         Json operations = transform->operations;
         if (type == "rectangle" && p.boolean("flip_normals", false))
@@ -263,6 +266,7 @@ void translateShape(Translation& t, const Element& e, Json& out, bool inGroup) {
         }
         std::optional<double> alpha;
         s["material"] = shapeMaterial(t, p, alpha, surface ? &*surface : nullptr);
+        if (s["type"] == "curves") warnCurveTextures(t, p, s["material"]);
         shapeMedia(t, p, s);
         if (s["material"] == kDocumentInterfaceMaterial && !s.contains("interior") &&
             !s.contains("exterior")) {
@@ -280,6 +284,8 @@ void translateShape(Translation& t, const Element& e, Json& out, bool inGroup) {
             if (emitter.type() != "area")
                 emitter.fail("only an area emitter can be attached to a shape");
             if (inGroup) emitter.fail("an emitting shape inside a shapegroup is not supported");
+            if (s.value("type", "") == "curves")
+                emitter.fail("an emitting curve is not supported (lamina's curves do not emit)");
             s["emission"] = {{"radiance", radiance(emitter, "radiance", 1.0)}};
             emitter.finish();
         }

@@ -35,6 +35,12 @@ struct Translation {
 void addTextures(Translation& t, const std::vector<TranslatedTexture>& textures);
 /// `<shape>` (also inside a shapegroup: `inGroup`) -> the lamina shape, appended to `out`.
 void translateShape(Translation& t, const Element& shape, Json& out, bool inGroup);
+/// `bsplinecurve` or `linearcurve` -> a lamina `curves` shape (mitsuba_curves.cpp): the
+/// curve file read, the control points placed by to_world, without material or name.
+Json curveShape(Translation& t, Plugin& p);
+/// Warns when the curves' `material` (a material or a name in the document) is textured:
+/// Mitsuba's curves are parameterised otherwise.
+void warnCurveTextures(Translation& t, Plugin& p, const Json& material);
 /// `<shape type="shapegroup" id>` -> lamina `objects[id]`.
 void translateShapeGroup(Translation& t, const Element& group);
 /// A top-level `<emitter>` -> a lamina light.

@@ -7,6 +7,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "cubic_bases.h"
 #include "lamina/core/error.h"
 #include "pbrt_shapes.h"
 
@@ -19,17 +20,6 @@ namespace {
 constexpr std::size_t kMaxCurvePoints = std::size_t(1) << 22;
 
 using P3 = glm::dvec3;
-
-// A cubic uniform B-spline segment's Bezier control points.
-std::array<P3, 4> bsplineToBezier(const P3& p0, const P3& p1, const P3& p2, const P3& p3) {
-    return {(p0 + 4.0 * p1 + p2) / 6.0, (2.0 * p1 + p2) / 3.0, (p1 + 2.0 * p2) / 3.0,
-            (p1 + 4.0 * p2 + p3) / 6.0};
-}
-
-// A quadratic Bezier segment raised to a cubic (the same curve).
-std::array<P3, 4> raiseQuadratic(const P3& q0, const P3& q1, const P3& q2) {
-    return {q0, (q0 + 2.0 * q1) / 3.0, (2.0 * q1 + q2) / 3.0, q2};
-}
 
 }  // namespace
 

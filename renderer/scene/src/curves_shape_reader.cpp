@@ -1,7 +1,10 @@
 // The `curves` shape (docs/scene-format.md, "curves"): strands of cubic Bezier segments with a
-// width that runs linearly from each strand's root to its tip, drawn as round tubes or as flat
-// ribbons facing the ray. Bounded for fuzzing: CurvesDesc::kMaxPoints control points a shape.
+// width that runs linearly from each strand's root to its tip, or a width per control point
+// (`widths`, interpolated by the segments' Bezier basis as the positions are), drawn as round
+// tubes or as flat ribbons facing the ray. Bounded for fuzzing: CurvesDesc::kMaxPoints control
+// points a shape.
 #include <cmath>
+#include <optional>
 
 #include "shape_readers.h"
 
@@ -34,6 +37,21 @@ void readStrand(const JsonReader& strands, std::size_t index, CurvesDesc& c) {
         c.segments.push_back(first + 3 * s);
 }
 
+// Strand `index`'s widths, one per control point (`count` of them), as radii appended to `c`.
+void readStrandWidths(const JsonReader& widths, std::size_t index, std::size_t count,
+                      double stretch, CurvesDesc& c) {
+    const Json& v = widths.value()[index];
+    const std::string path = widths.indexPath(index);
+    if (!v.is_array() || v.size() != count)
+        widths.fail("expected at index " + std::to_string(index) + " a list of " +
+                    std::to_string(count) + " widths, one per control point of strand " +
+                    std::to_string(index));
+    for (std::size_t k = 0; k < count; ++k)
+        c.radii.push_back(float(
+            0.5 * stretch *
+            widths.checkNumber(v[k], path + "[" + std::to_string(k) + "]", Range::nonNegative())));
+}
+
 }  // namespace
 
 ShapeDesc readCurves(const JsonReader& r, const std::string& name, SceneMaterials& materials) {
@@ -48,9 +66,17 @@ ShapeDesc readCurves(const JsonReader& r, const std::string& name, SceneMaterial
     const double width = r.number("width", 0.01, Range::positive());
     const double width0 = r.number("width0", width, Range::positive());
     const double width1 = r.number("width1", width, Range::positive());
+    const bool perPoint = r.has("widths");
+    if (perPoint && (r.has("width") || r.has("width0") || r.has("width1")))
+        r.failAt("widths", "give widths per control point or width / width0 / width1, not both");
     const JsonReader strands = r.child("strands");
     if (!strands.value().is_array() || strands.value().empty())
         strands.fail("expected a non-empty array of strands");
+    const std::optional<JsonReader> widths =
+        perPoint ? std::optional<JsonReader>(r.child("widths")) : std::nullopt;
+    if (widths && (!widths->value().is_array() || widths->value().size() != strands.value().size()))
+        widths->fail("expected one list of widths per strand (" +
+                     std::to_string(strands.value().size()) + " strands)");
     const Mat4 m = readTransform(r);
     // Widths scale with the transform's mean stretch (a curve stays round).
     const double stretch = std::cbrt(std::abs(glm::determinant(glm::dmat3(m))));
@@ -60,6 +86,10 @@ ShapeDesc readCurves(const JsonReader& r, const std::string& name, SceneMaterial
         const std::size_t first = c.points.size();
         readStrand(strands, i, c);
         const std::size_t n = c.points.size() - first;
+        if (widths) {
+            readStrandWidths(*widths, i, n, stretch, c);
+            continue;
+        }
         for (std::size_t k = 0; k < n; ++k) {
             const double t = double(k) / double(n - 1);
             c.radii.push_back(float(0.5 * stretch * ((1 - t) * width0 + t * width1)));
@@ -73,8 +103,9 @@ ShapeDesc readCurves(const JsonReader& r, const std::string& name, SceneMaterial
               std::abs(p.z) <= kMaxSceneCoordinate))
             checkCoordinates(r, key, p, "control point " + std::to_string(i) + " at");
         c.points[i] = Vec3<float>(p);
-        if (!std::isfinite(c.radii[i]) || !(c.radii[i] > 0))
-            r.failAt("width", "the width is out of float's range once transformed");
+        if (!std::isfinite(c.radii[i]) || !(c.radii[i] > 0 || (perPoint && c.radii[i] == 0)))
+            r.failAt(perPoint ? "widths" : "width",
+                     "the width is out of float's range once transformed");
     }
     return c;
 }
