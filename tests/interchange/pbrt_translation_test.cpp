@@ -107,6 +107,28 @@ TEST_F(PbrtTranslation, OptionsBlock) {
     EXPECT_EQ(import("Integrator \"lightpath\" \"integer maxdepth\" 3\n", false)
                   .scene["integrator"]["type"],
               "light");
+    // Integrators whose converged image is lamina's: one warning each, what they become.
+    const ImportedScene sppm = import(
+        "Integrator \"sppm\" \"integer maxdepth\" 7 \"float radius\" 0.05 "
+        "\"integer photonsperiteration\" 100000\n",
+        false);
+    EXPECT_EQ(sppm.scene["integrator"], Json::parse(R"({"type": "bdpt", "max_depth": 7})"));
+    ASSERT_EQ(sppm.warnings.size(), 1u);
+    EXPECT_EQ(sppm.warnings[0],
+              file_.string() +
+                  ":1: Integrator \"sppm\" became lamina's BDPT with the Sampler's sample count "
+                  "(the image SPPM converges to, without the blur of its photon radius at a "
+                  "finite count)");
+    const ImportedScene mlt =
+        import("Integrator \"mlt\" \"integer mutationsperpixel\" 64\n", false);
+    EXPECT_EQ(mlt.scene["integrator"], Json::parse(R"({"type": "bdpt", "max_depth": 5})"));
+    EXPECT_EQ(mlt.warnings.size(), 1u);
+    for (const char* name : {"randomwalk", "simplepath"}) {
+        const ImportedScene walk =
+            import(std::string("Integrator \"") + name + "\" \"integer maxdepth\" 3\n", false);
+        EXPECT_EQ(walk.scene["integrator"], Json::parse(R"({"type": "path", "max_depth": 3})"));
+        EXPECT_EQ(walk.warnings.size(), 1u) << name;
+    }
     // pbrt-v4's sobol: film positions from one global Sobol sequence, lamina's sobol-global.
     const ImportedScene g = import(
         "Sampler \"sobol\" \"integer pixelsamples\" 4 \"string randomization\" "

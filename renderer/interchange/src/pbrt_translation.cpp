@@ -127,10 +127,43 @@ Json translateIntegrator(TranslationContext& ctx, const Entity& e) {
                      "supported (lamina render --strategies writes them)");
     } else if (e.type == "lightpath") {
         type = "light";
+    } else if (e.type == "randomwalk" || e.type == "simplepath") {
+        // Unbiased path tracers with fewer strategies (integrators.cpp): the same expected
+        // image as lamina's path tracer, with more noise in pbrt.
+        type = "path";
+        if (e.type == "simplepath") {
+            p.boolean("samplelights", true);
+            p.boolean("samplebsdf", true);
+        }
+        ctx.warn(e.location, "Integrator \"" + e.type +
+                                 "\" became lamina's path tracer (next-event estimation and "
+                                 "MIS: the same expected image, less noise)");
+    } else if (e.type == "sppm" || e.type == "mlt") {
+        // SPPM is consistent (its radius blur vanishes as iterations grow) and MLT unbiased:
+        // both converge to the image BDPT converges to. SPPM's iterations are the sampler's
+        // sample count in pbrt-v4 (SPPMIntegrator::Render), which the Sampler gives lamina too.
+        type = "bdpt";
+        if (e.type == "sppm") {
+            p.integer("photonsperiteration", -1);
+            p.number("radius", 1.0);
+            p.integer("seed", 0);
+        } else {
+            p.integer("bootstrapsamples", 100000);
+            p.integer("chains", 1000);
+            p.integer("mutationsperpixel", 100);
+            p.number("largestepprobability", 0.3);
+            p.number("sigma", 0.01);
+        }
+        ctx.warn(e.location,
+                 "Integrator \"" + e.type + "\" became lamina's BDPT with the Sampler's sample count" +
+                     (e.type == "sppm" ? " (the image SPPM converges to, without the blur of its "
+                                         "photon radius at a finite count)"
+                                       : " (the image MLT converges to; its parameters are "
+                                         "ignored)"));
     } else {
         ctx.fail(e.location, "Integrator \"" + e.type +
-                                 "\" is not supported (path, volpath, "
-                                 "bdpt, lightpath)");
+                                 "\" is not supported (path, volpath, bdpt, lightpath, "
+                                 "randomwalk, simplepath, sppm, mlt)");
     }
     const int depth = p.integer("maxdepth", 5);
     if (depth < 1 || depth > 1024)
