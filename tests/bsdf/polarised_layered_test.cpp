@@ -8,6 +8,8 @@
 // fails the test from below at Brewster's angle, and a depolarised interface fails all three.
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include <numbers>
 
 #include "bsdf_cases.h"
@@ -72,16 +74,22 @@ const char* const kSmoothMaterials[] = {
 const char* const kRoughInterface =
     R"({"type":"layered","interface":{"ior":1.5,"fresnel":"exact","roughness":0.3}})";
 
+// An opaque stack is the same from either side; a transmitting one (the last smooth material)
+// seen from inside reflects as the inside of its dielectric, whose Brewster angle is
+// atan(1 / 1.5).
 TEST(PolarisedLayered, AtBrewstersAngleOfItsInterfaceItReflectsOnlySFromEitherSide) {
     const double brewster = std::atan(1.5) * 180.0 / std::numbers::pi;
+    const double insideBrewster = std::atan(1.0 / 1.5) * 180.0 / std::numbers::pi;
     for (const double side : {1.0, -1.0}) {
         const Vec3d wo = at(brewster, side);
         for (const char* json : kSmoothMaterials) {
+            const bool transmits = std::string(json).find("transmission") != std::string::npos;
+            const Vec3d w = at(transmits && side < 0 ? insideBrewster : brewster, side);
             const auto bxdf = build(json);
-            const auto s = bxdf->sample(wo, 0.0, {0.5, 0.5}, TransportMode::Radiance);
+            const auto s = bxdf->sample(w, 0.0, {0.5, 0.5}, TransportMode::Radiance);
             ASSERT_TRUE(s && s->isSpecular() && !s->isTransmission()) << json;
             const Polarisation p =
-                polarisationOf(bxdf->sampleMueller(wo, *s, TransportMode::Radiance), wo);
+                polarisationOf(bxdf->sampleMueller(w, *s, TransportMode::Radiance), w);
             EXPECT_NEAR(p.dolp, 1.0, 1e-9) << json << " side " << side;
             EXPECT_LT(p.offAxis, 1e-6) << json << " side " << side;
             EXPECT_NEAR(p.circular, 0.0, 1e-12);
@@ -126,8 +134,11 @@ TEST(PolarisedLayered, ItsBaseAndTransmissionDepolarise) {
         build(R"({"type":"layered","interface":{"ior":1.5,"fresnel":"exact","roughness":0.3,)"
               R"("multiscatter":true},"base":{"type":"lambert","reflectance":[0.8,0.4,0.2]},)"
               R"("transmission":0.3,"coupling":"albedo"})");
+    // The interface with a black base and the same transmission: from inside it reflects with
+    // the Fresnel seen from inside, as the stack does.
     const auto alone =
-        build(R"({"type":"layered","interface":{"ior":1.5,"fresnel":"exact","roughness":0.3}})");
+        build(R"({"type":"layered","interface":{"ior":1.5,"fresnel":"exact","roughness":0.3},)"
+              R"("base":{"type":"lambert","reflectance":0},"transmission":0.3})");
     Pcg32 rng(12);
     int reflections = 0, transmissions = 0;
     for (int i = 0; i < 1000; ++i) {

@@ -36,7 +36,13 @@
 // own Fresnel model on the refraction microfacet normal m_t, so reflection and transmission
 // split each microfacet's energy exactly once (never twice: Mitsuba 3 issue 465). A Fresnel
 // approximation seen from inside is evaluated at the angle outside (Snell's law), and total
-// internal reflection gives F = 1.
+// internal reflection gives F = 1. With transmission, wo below the surface is inside the
+// material, and the interface's microfacet reflection there is weighted by that same Fresnel
+// seen from inside, so that what it reflects and what it transmits add to 1 (with the outside
+// Fresnel, light past the critical angle was neither transmitted nor reflected); with
+// transmission weight 1 and the exact dielectric Fresnel the stack is Walter et al.'s rough
+// dielectric from both sides. Without transmission a pair below the surface is the mirror
+// image of the pair above (a two-sided opaque material).
 //
 // Sampling picks a lobe with probabilities estimated from wo (specular ~ F(cos_o), cosine
 // lobes (diffuse and multiple-scattering compensation) ~ their albedos, transmission ~
@@ -107,7 +113,7 @@ class LayeredBxdf final : public Bxdf<S> {
         if (wo.z == Float(0) || wi.z == Float(0)) return S(Float(0));
         if (!sameHemisphere(wo, wi)) return evalTransmission(wo, wi, mode);
         const Float s = wo.z < Float(0) ? Float(-1) : Float(1);
-        return evalReflection(wo * s, wi * s, mode);
+        return evalReflection(wo * s, wi * s, mode, reflectsInside(wo));
     }
 
     Float pdf(const V3& wo, const V3& wi) const override {
@@ -132,7 +138,8 @@ class LayeredBxdf final : public Bxdf<S> {
         V3 wi;
         if (uc < p[0]) {  // specular interface
             if (interfaceSmooth()) {
-                const S f = l_.interface->fresnel().evaluate(std::abs(wo.z));
+                const S f = reflectsInside(wo) ? insideFresnel(wo, V3(0, 0, 1))
+                                               : l_.interface->fresnel().evaluate(std::abs(wo.z));
                 return BsdfSample<S>{V3(-wo.x, -wo.y, wo.z), f / p[0], p[0],
                                      kLobeSpecularReflection, Float(1)};
             }
@@ -182,9 +189,10 @@ class LayeredBxdf final : public Bxdf<S> {
         if (!sameHemisphere(wo, wi)) return depolarising(evalTransmission(wo, wi, mode));
         const Float s = wo.z < Float(0) ? Float(-1) : Float(1);
         MuellerMatrix<S> m;
-        reflectionTerms(wo * s, wi * s, mode, [&](const S& term, bool interface) {
-            m += interface ? interfaceMueller(term, wo, wi) : depolarising(term);
-        });
+        reflectionTerms(wo * s, wi * s, mode, reflectsInside(wo),
+                        [&](const S& term, bool interface) {
+                            m += interface ? interfaceMueller(term, wo, wi) : depolarising(term);
+                        });
         return m;
     }
 
@@ -207,8 +215,10 @@ class LayeredBxdf final : public Bxdf<S> {
 
     /// Lobe selection probabilities (specular, diffuse, transmission, conductor base) for wo.
     std::array<Float, 4> lobeProbabilities(const V3& wo) const {
-        const Float F =
-            l_.interface ? l_.interface->fresnel().evaluate(std::abs(wo.z)).average() : Float(0);
+        const Float F = !l_.interface ? Float(0)
+                        : reflectsInside(wo)
+                            ? insideFresnel(wo, V3(0, 0, 1)).average()
+                            : l_.interface->fresnel().evaluate(std::abs(wo.z)).average();
         const Float t = l_.transmissionWeight;
         std::array<Float, 4> w{};
         const Float mu = std::abs(wo.z);
@@ -253,17 +263,43 @@ class LayeredBxdf final : public Bxdf<S> {
 
     bool interfaceSmooth() const { return l_.interface && l_.interface->isSmooth(); }
 
-    S evalReflection(const V3& wo, const V3& wi, TransportMode mode) const {
+    S evalReflection(const V3& wo, const V3& wi, TransportMode mode, bool inside) const {
         S result(Float(0));
-        reflectionTerms(wo, wi, mode, [&](const S& term, bool) { result += term; });
+        reflectionTerms(wo, wi, mode, inside, [&](const S& term, bool) { result += term; });
         return result;
     }
 
-    // The terms of the reflection (wo, wi above the surface), in the order evalReflection adds
-    // them, each with whether it is the interface's own reflection: add(term, interface).
+    // Whether a pair on wo's side below the surface is inside the material: it transmits, and
+    // its microfacet interface then reflects with the Fresnel seen from inside.
+    bool reflectsInside(const V3& wo) const {
+        return wo.z < Float(0) && l_.transmission && l_.interface && l_.interface->microfacet();
+    }
+
+    // F of the interface for light inside the material arriving along `wo` (z < 0) on the
+    // microfacet of outward normal m: what transmissionFresnelFactor does not let out.
+    S insideFresnel(const V3& wo, const V3& m) const {
+        return S(Float(1)) - transmissionFresnelFactor(wo, m);
+    }
+
+    // The terms of the reflection (wo, wi above the surface: a pair inside the material,
+    // `inside`, mirrored), in the order evalReflection adds them, each with whether it is the
+    // interface's own reflection: add(term, interface).
     template <typename Add>
-    void reflectionTerms(const V3& wo, const V3& wi, TransportMode mode, Add&& add) const {
-        if (l_.interface && !interfaceSmooth()) add(l_.interface->eval(wo, wi), true);
+    void reflectionTerms(const V3& wo, const V3& wi, TransportMode mode, bool inside,
+                         Add&& add) const {
+        if (l_.interface && !interfaceSmooth()) {
+            if (inside) {
+                // The mirrored half vector is the microfacet's outward normal; the light
+                // arrives along -wo.
+                const auto m = MicrofacetReflectionLobe<S>::halfVector(wo, wi);
+                if (m)
+                    add(insideFresnel(-wo, *m) *
+                            l_.interface->microfacet()->evalWithoutFresnel(wo, wi),
+                        true);
+            } else {
+                add(l_.interface->eval(wo, wi), true);
+            }
+        }
         if (l_.interfaceMultiscatter) add(l_.interfaceMultiscatter->eval(wo, wi), false);
         if (l_.diffuse) {
             S coupling(Float(1));
@@ -287,7 +323,13 @@ class LayeredBxdf final : public Bxdf<S> {
     // on either side: its Fresnel model on the half vector, seen from that side.
     MuellerMatrix<S> interfaceMueller(const S& value, const V3& wo, const V3& wi) const {
         if (l_.interface->isPhong()) return depolarising(value);
-        return twoSidedReflectionMueller(value, l_.interface->fresnel(), wo, wi);
+        const Fresnel<S>& f = l_.interface->fresnel();
+        // Inside an exact dielectric the amplitudes are those of the inverse index (total
+        // internal reflection's phase included); an approximation keeps the outside's shape.
+        if (reflectsInside(wo) && f.kind == FresnelKind::ExactDielectric && !f.film)
+            return twoSidedReflectionMueller(value, Fresnel<S>::dielectric(S(Float(1)) / f.eta), wo,
+                                             wi);
+        return twoSidedReflectionMueller(value, f, wo, wi);
     }
 
     // W_c of the conductor base (the top of this file).

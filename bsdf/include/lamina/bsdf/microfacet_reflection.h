@@ -49,8 +49,16 @@ class MicrofacetReflectionLobe {
         if (!(wo.z > Float(0)) || !(wi.z > Float(0))) return S(Float(0));
         const auto m = halfVector(wo, wi);
         if (!m) return S(Float(0));
-        const Float dg = distribution_.D(*m) * distribution_.G2(wo, wi, g2_);
-        return fresnel_.evaluate(glm::dot(wo, *m)) * (dg / (Float(4) * wo.z));
+        return fresnel_.evaluate(glm::dot(wo, *m)) * evalWithoutFresnel(wo, wi);
+    }
+
+    /// D(m) G2(wo, wi) / (4 cos_o): eval() without its Fresnel factor, for a layer that weights
+    /// the microfacets by the Fresnel of another side (a layered interface seen from inside).
+    Float evalWithoutFresnel(const V3& wo, const V3& wi) const {
+        if (!(wo.z > Float(0)) || !(wi.z > Float(0))) return Float(0);
+        const auto m = halfVector(wo, wi);
+        if (!m) return Float(0);
+        return distribution_.D(*m) * distribution_.G2(wo, wi, g2_) / (Float(4) * wo.z);
     }
 
     Float pdf(const V3& wo, const V3& wi) const {

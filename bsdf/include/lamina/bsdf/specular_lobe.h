@@ -46,6 +46,10 @@ class SpecularLobe {
         return m && m->distribution().effectivelySmooth();
     }
     bool isPhong() const { return std::holds_alternative<PhongLobe<S>>(lobe_); }
+    /// The microfacet lobe (nullptr for Phong).
+    const MicrofacetReflectionLobe<S>* microfacet() const {
+        return std::get_if<MicrofacetReflectionLobe<S>>(&lobe_);
+    }
 
   private:
     std::variant<MicrofacetReflectionLobe<S>, PhongLobe<S>> lobe_;
