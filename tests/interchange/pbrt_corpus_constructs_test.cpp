@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "lamina/image/image_io.h"
 #include "lamina/interchange/scene_import.h"
 #include "lamina/scene/scene_description.h"
 #include "scratch_directory.h"
@@ -375,7 +376,7 @@ TEST_F(PbrtCorpusConstructs, AMirroredImageMapKeepsItsNegativeScale) {
 // lamina's mapping carries that transform. The two vectors and offsets as the villa's phone
 // and kroken's book covers write them.
 TEST_F(PbrtCorpusConstructs, ProjectedMappingsCarryTheTexturesTransform) {
-    write("a.png", "not read by the importer");
+    writeRgb8(dir_ / "a.png", 1, 1, {0.5f, 0.5f, 0.5f});
     const ImportedScene s = import(
         "Texture \"p\" \"spectrum\" \"imagemap\" \"string filename\" \"a.png\"\n"
         "    \"string mapping\" [ \"planar\" ] \"vector3 v1\" [ 0.5 0 0 ]\n"
@@ -402,7 +403,8 @@ TEST_F(PbrtCorpusConstructs, ProjectedMappingsCarryTheTexturesTransform) {
                                     {"a", 1},
                                     {"b", 0},
                                     {"mapping", {{"type", "spherical"}, {"transform", moved}}}}));
-    // The translated scene loads: the mappings are lamina's.
+    // The translation is a scene lamina loads: the mappings are lamina's.
+    EXPECT_NO_THROW(loadScene(file_, false)) << errorOf([&] { loadScene(file_, false); });
     EXPECT_EQ(importError("Texture \"x\" \"spectrum\" \"imagemap\" \"string filename\" \"a.png\"\n"
                           "    \"string mapping\" \"cubic\"\n"
                           "Material \"diffuse\" \"texture reflectance\" \"x\"\nShape \"sphere\"\n"),
@@ -456,6 +458,8 @@ TEST_F(PbrtCorpusConstructs, NoiseTexturesBecomeLaminasWithTheirPlacement) {
         "scale": 2, "variation": 0.5})"));
     EXPECT_EQ(t["d"], Json::parse(R"({"type": "dots", "inside": "stone",
         "outside": [0.1, 0.2, 0.3], "scale": [4, 4]})"));
+    // The translation is a scene lamina loads: every texture and mapping is lamina's own.
+    EXPECT_NO_THROW(loadScene(file_, false)) << errorOf([&] { loadScene(file_, false); });
     // One warning for the file: lamina sums every octave.
     EXPECT_EQ(std::count_if(s.warnings.begin(), s.warnings.end(),
                             [](const std::string& w) {

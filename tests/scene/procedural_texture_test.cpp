@@ -24,6 +24,7 @@
 #include "lamina/core/math.h"
 #include "lamina/output/image_output.h"
 #include "lamina/scene/procedural_textures.h"
+#include "lamina/scene/shading_normal_maps.h"
 #include "render_helpers.h"
 #include "scratch_directory.h"
 
@@ -117,6 +118,32 @@ TEST(DotsTexture, DotsWhereTheReferenceHasThem) {
                            std::make_shared<ConstantTexture>(Rgb<float>(0.25f)));
     EXPECT_EQ(dots.evaluate(Vec2<float>(-0.9f, -0.95f)), Rgb<float>(1));
     EXPECT_EQ(dots.evaluate(Vec2<float>(-2.9f, -2.95f)), Rgb<float>(0.25f));
+}
+
+// A bump map of a solid texture differences the height along the surface: on the plane z = 0
+// with dp/du = 2 x, dp/dv = y and the normal z, the bumped normal is Blinn's (t_u + h_u n) x
+// (t_v + h_v n) with h_u, h_v the central differences (step kBumpStep) of the height at
+// p +- step dp/du and p +- step dp/dv. Were the point not moved with the uv step, a solid
+// texture's differences would be 0 and the normal unchanged.
+TEST(NoiseTextures, BumpMapsDifferenceThemAlongTheSurface) {
+    const FbmTexture height(TextureSpace{}, 8, 0.5f);
+    SurfaceDerivatives d;
+    d.dpdu = Vec3<float>(2, 0, 0);
+    d.dpdv = Vec3<float>(0, 1, 0);
+    const Vec3<float> ns(0, 0, 1), p(0.3f, 0.7f, 0.2f);
+    const auto h = [&](const Vec3<float>& q) {
+        return double(height.evaluate(TexturePoint(Vec2<float>(0.0f), q))[0]);
+    };
+    const float e = kBumpStep;
+    const double hu = (h(p + e * d.dpdu) - h(p - e * d.dpdu)) / (2 * e);
+    const double hv = (h(p + e * d.dpdv) - h(p - e * d.dpdv)) / (2 * e);
+    // (t_u + h_u n) x (t_v + h_v n) with t_u = 2 x, t_v = y (h dn = 0 on a plane).
+    const Vec3<double> expected =
+        glm::normalize(glm::cross(Vec3<double>(2, 0, hu), Vec3<double>(0, 1, hv)));
+    const Vec3<float> n = bumpMappedNormal(height, TexturePoint(Vec2<float>(0.5f), p), ns, d);
+    EXPECT_GT(std::abs(hu) + std::abs(hv), 0.1);  // the noise does slope here
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(n[c], expected[c], 1e-4) << c;
 }
 
 TextureMapping2D projected(TextureMappingKind kind, const glm::dmat4& worldFromTexture) {
