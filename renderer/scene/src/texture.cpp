@@ -54,12 +54,14 @@ Rgb<float> ImageTexture::evaluate(const TexturePoint& at) const {
     const Vec2<float> st = mapping_.map(at);
     float x = st.x * float(width_) - 0.5f;
     float y = (1.0f - st.y) * float(height_) - 0.5f;
-    if (!std::isfinite(x) || !std::isfinite(y)) return Rgb<float>(0.0f);
-    // Far from the origin (a projected mapping of distant points) the texel index leaves int:
-    // the image repeats, so move there by whole images (exact in float at these magnitudes).
     constexpr float kFar = float(1 << 24);
-    if (std::abs(x) >= kFar) x = std::fmod(x, float(width_));
-    if (std::abs(y) >= kFar) y = std::fmod(y, float(height_));
+    if (!(std::abs(x) < kFar && std::abs(y) < kFar)) {
+        if (!std::isfinite(x) || !std::isfinite(y)) return Rgb<float>(0.0f);
+        // Far from the origin (a projected mapping of distant points) the texel index leaves
+        // int: the image repeats, so move there by whole images (exact in float out there).
+        if (std::abs(x) >= kFar) x = std::fmod(x, float(width_));
+        if (std::abs(y) >= kFar) y = std::fmod(y, float(height_));
+    }
     const int x0 = int(std::floor(x)), y0 = int(std::floor(y));
     const float fx = x - float(x0), fy = y - float(y0);
     const Rgb<float> value =

@@ -65,10 +65,13 @@ class CheckerboardTexture final : public Texture {
     }
     Rgb<float> evaluate(const TexturePoint& at) const override {
         const Vec2<float> st = mapping_.map(at);
-        // The parity of floor(s) + floor(t), without an int that far coordinates would leave.
-        const float ps = std::fmod(std::abs(std::floor(st.x)), 2.0f);
-        const float pt = std::fmod(std::abs(std::floor(st.y)), 2.0f);
-        return ps != pt ? b_ : a_;
+        const float fs = std::floor(st.x), ft = std::floor(st.y);
+        constexpr float kIntRange = float(1 << 30);
+        if (std::abs(fs) < kIntRange && std::abs(ft) < kIntRange)
+            return ((int(fs) + int(ft)) & 1) ? b_ : a_;
+        // Far out (a projected mapping of distant points) or not a number: the parity without
+        // an int those coordinates would leave.
+        return std::fmod(std::abs(fs), 2.0f) != std::fmod(std::abs(ft), 2.0f) ? b_ : a_;
     }
 
   private:
