@@ -428,10 +428,15 @@ TEST_F(PbrtCorpusConstructs, NoiseTexturesBecomeLaminasWithTheirPlacement) {
         "      \"texture scale\" [ \"sc\" ]\nTransformEnd\n"
         "Texture \"f\" \"float\" \"fbm\" \"integer octaves\" 4 \"float roughness\" 0.25\n"
         "Texture \"stone\" \"spectrum\" \"marble\" \"float scale\" 2 \"float variation\" 0.5\n"
+        "TransformBegin\n  Scale 2 2 2\n"
+        "  Texture \"cube\" \"float\" \"checkerboard\" \"integer dimension\" 3\n"
+        "TransformEnd\n"
         "Texture \"d\" \"spectrum\" \"dots\" \"texture inside\" \"stone\"\n"
         "    \"rgb outside\" [ 0.1 0.2 0.3 ] \"float uscale\" 4 \"float vscale\" 4\n"
         "AttributeBegin\nMaterial \"diffuse\" \"texture displacement\" \"scaled\"\n"
         "    \"texture reflectance\" \"d\"\nShape \"sphere\"\nAttributeEnd\n"
+        "AttributeBegin\nMaterial \"diffuse\" \"texture displacement\" \"cube\"\n"
+        "Shape \"sphere\" \"float radius\" 4\nAttributeEnd\n"
         "AttributeBegin\nMaterial \"dielectric\" \"texture displacement\" \"swater\"\n"
         "Shape \"sphere\" \"float radius\" 2\nAttributeEnd\n"
         "Material \"diffuse\" \"texture displacement\" \"f\"\n"
@@ -458,6 +463,11 @@ TEST_F(PbrtCorpusConstructs, NoiseTexturesBecomeLaminasWithTheirPlacement) {
         "scale": 2, "variation": 0.5})"));
     EXPECT_EQ(t["d"], Json::parse(R"({"type": "dots", "inside": "stone",
         "outside": [0.1, 0.2, 0.3], "scale": [4, 4]})"));
+    EXPECT_EQ(t["cube (float)"],
+              (Json{{"type", "checkerboard"},
+                    {"a", 1},
+                    {"b", 0},
+                    {"mapping", {{"type", "point"}, {"transform", scaled(2)}}}}));
     // The translation is a scene lamina loads: every texture and mapping is lamina's own.
     EXPECT_NO_THROW(loadScene(file_, false)) << errorOf([&] { loadScene(file_, false); });
     // One warning for the file: lamina sums every octave.

@@ -146,6 +146,22 @@ TEST(NoiseTextures, BumpMapsDifferenceThemAlongTheSurface) {
         EXPECT_NEAR(n[c], expected[c], 1e-4) << c;
 }
 
+// pbrt-v4's 3D checkerboard: tex1 where floor(x) + floor(y) + floor(z) is even.
+TEST(SolidCheckerboard, CellsOfTheTexturesSpace) {
+    const SolidCheckerboardTexture c(Rgb<float>(1.0f), Rgb<float>(0.0f), TextureSpace{});
+    const auto at = [&](float x, float y, float z) {
+        return c.evaluate(TexturePoint(Vec2<float>(0.5f), Vec3<float>(x, y, z)))[0];
+    };
+    EXPECT_EQ(at(0.5f, 0.5f, 0.5f), 1.0f);
+    EXPECT_EQ(at(1.5f, 0.5f, 0.5f), 0.0f);
+    EXPECT_EQ(at(1.5f, 1.5f, 0.5f), 1.0f);
+    EXPECT_EQ(at(1.5f, 1.5f, 1.5f), 0.0f);
+    EXPECT_EQ(at(-0.5f, 0.5f, 0.5f), 0.0f);   // floor -1: odd
+    EXPECT_EQ(at(-0.5f, -0.5f, 2.5f), 1.0f);  // -1 - 1 + 2
+    EXPECT_EQ(at(3e7f, 0.5f, 0.5f), 1.0f);    // far out every float is even
+    EXPECT_EQ(at(7.0f, 0.5f, 1e30f), 0.0f);
+}
+
 TextureMapping2D projected(TextureMappingKind kind, const glm::dmat4& worldFromTexture) {
     TextureMapping2D m;
     m.kind = kind;
@@ -242,8 +258,13 @@ TEST(TextureMappings, SceneFilesNameThem) {
     EXPECT_EQ(checks.textures[0]->evaluate(TexturePoint(Vec2<float>(0.0f), {0.75f, 0.25f, 9}))[0],
               0.0f);
     EXPECT_THAT(sceneError(R"({"type": "fbm", "octaves": 31})"), HasSubstr("octaves"));
-    EXPECT_THAT(sceneError(R"({"type": "checkerboard", "mapping": {"type": "point"}})"),
+    EXPECT_THAT(sceneError(R"({"type": "dots", "mapping": {"type": "point"}})"),
                 HasSubstr("a 2D texture takes a uv, planar, spherical or cylindrical mapping"));
+    // A checkerboard with a point mapping is pbrt-v4's 3D one: q = p / 2, (1.25, 0, 0) odd.
+    const SceneDesc solid = sceneWith(R"({"type": "checkerboard", "a": 1, "b": 0,
+        "mapping": {"type": "point", "transform": [{"scale": 2}]}})");
+    EXPECT_EQ(solid.textures[0]->evaluate(TexturePoint(Vec2<float>(0.0f), {2.5f, 0, 0}))[0], 0.0f);
+    EXPECT_EQ(solid.textures[0]->evaluate(TexturePoint(Vec2<float>(0.0f), {1.5f, 0, 0}))[0], 1.0f);
     EXPECT_THAT(sceneError(R"({"type": "marble", "mapping": {"type": "planar"}})"),
                 HasSubstr("a solid texture takes the point mapping"));
     EXPECT_THAT(sceneError(R"({"type": "checkerboard", "scale": [1, 2],

@@ -72,10 +72,15 @@ void translateMapping2D(TranslationContext& ctx, const Entity& e, Json& t) {
     t["mapping"] = std::move(m);
 }
 
+void translateMapping3D(TranslationContext& ctx, const Entity& e, Json& t) {
+    requireInvertible(ctx, e);
+    if (Json p = placement(e); !p.is_null())
+        t["mapping"] = {{"type", "point"}, {"transform", std::move(p)}};
+}
+
 std::optional<Json> translateSolidTexture(TranslationContext& ctx, const Entity& e) {
     const bool noise = e.type == "fbm" || e.type == "wrinkled" || e.type == "windy";
     if (!noise && e.type != "marble") return std::nullopt;
-    requireInvertible(ctx, e);
     const ParamList& params = e.params;
     Json t = {{"type", e.type}};
     if (e.type != "windy") {
@@ -94,8 +99,7 @@ std::optional<Json> translateSolidTexture(TranslationContext& ctx, const Entity&
             t["variation"] = constantNumber(params, "variation", 0.2);
         }
     }
-    if (Json p = placement(e); !p.is_null())
-        t["mapping"] = {{"type", "point"}, {"transform", std::move(p)}};
+    translateMapping3D(ctx, e, t);
     ctx.warnOnce(e.location,
                  "noise textures (fbm, wrinkled, windy, marble) sum every octave at every point "
                  "in lamina, which has no pixel footprints; pbrt-v4 leaves out the octaves "

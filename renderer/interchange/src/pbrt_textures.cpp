@@ -103,13 +103,19 @@ std::string useTexture(TranslationContext& ctx, const std::string& name,
             t = {{"type", "scale"}, {"texture", imageName}, {"scale", scale}};
         }
     } else if (e.type == "checkerboard") {
-        if (params.integer("dimension", 2) != 2)
-            ctx.fail(e.location, "checkerboard: only dimension 2 is supported");
-        // pbrt-v4's Checkerboard (textures.cpp): tex1 where floor(u) + floor(v) is even,
-        // tex2 where it is odd; lamina's a and b.
+        const int dimension = params.integer("dimension", 2);
+        if (dimension != 2 && dimension != 3)
+            ctx.fail(e.location, "checkerboard: dimension must be 2 or 3");
+        // pbrt-v4's Checkerboard (textures.cpp): tex1 where floor(u) + floor(v) (or the sum of
+        // the point's three floors) is even, tex2 where it is odd; lamina's a and b.
         Json a = colour(ctx, e, "tex1", 1.0, false), b = colour(ctx, e, "tex2", 0.0, false);
         t = {{"type", "checkerboard"}, {"a", a}, {"b", b}};
-        translateMapping2D(ctx, e, t);
+        if (dimension == 3) {
+            translateMapping3D(ctx, e, t);
+            if (!t.contains("mapping")) t["mapping"] = {{"type", "point"}};
+        } else {
+            translateMapping2D(ctx, e, t);
+        }
     } else if (e.type == "dots") {
         // pbrt-v4's DotsTexture: inside (1) in the dots, outside (0) between them, each a
         // texture or a constant.

@@ -82,6 +82,9 @@ std::string useTexture(TranslationContext& context, const std::string& name,
 /// "v1", "v2") written into the lamina texture `t`: the uv mapping's "scale" and "offset", or a
 /// projecting "mapping" (pbrt_texture_mappings.cpp).
 void translateMapping2D(TranslationContext& context, const Entity& e, Json& t);
+/// pbrt-v4's 3D mapping of `e` (PointTransformMapping) as the lamina texture's "point" mapping,
+/// left out for the identity (pbrt_texture_mappings.cpp).
+void translateMapping3D(TranslationContext& context, const Entity& e, Json& t);
 /// pbrt-v4's solid textures fbm, wrinkled, windy and marble as lamina's, placed by the point
 /// mapping; nullopt for any other type (pbrt_texture_mappings.cpp).
 std::optional<Json> translateSolidTexture(TranslationContext& context, const Entity& e);

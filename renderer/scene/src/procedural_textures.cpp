@@ -67,6 +67,18 @@ Rgb<float> MarbleTexture::evaluate(const TexturePoint& at) const {
     return c;
 }
 
+Rgb<float> SolidCheckerboardTexture::evaluate(const TexturePoint& at) const {
+    const Vec3<float> q = space_(at.p);
+    // Each axis's parity as floor(x) - 2 floor(x / 2), 0 or 1: exact for every finite float
+    // (beyond 2^24 every float is an even integer), and NaN for NaN (then `b`).
+    float odd = 0.0f;
+    for (int k = 0; k < 3; ++k) {
+        const float f = std::floor(q[k]);
+        odd += f - 2.0f * std::floor(0.5f * f);
+    }
+    return odd == 0.0f || odd == 2.0f ? a_ : b_;
+}
+
 bool DotsTexture::insideDot(const Vec2<float>& st) {
     // pbrt-v4's InsidePolkaDot: the cell's noise at z = 1/2 (its Noise(x, y) default).
     const float sCell = std::floor(st.x + 0.5f), tCell = std::floor(st.y + 0.5f);

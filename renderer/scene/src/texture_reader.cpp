@@ -59,7 +59,7 @@ TextureMapping2D readMapping2D(const JsonReader& t, Vec2<float> defaultScale) {
     if (m.kind == TextureMappingKind::Point)
         mapping->failAt("type",
                         "a 2D texture takes a uv, planar, spherical or cylindrical mapping "
-                        "(point is for the solid textures)");
+                        "(point is for the solid textures and the checkerboard)");
     if (m.kind != TextureMappingKind::Uv) {
         for (const char* key : {"scale", "offset"})
             if (t.has(key))
@@ -122,10 +122,15 @@ std::shared_ptr<const Texture> readTexture(
         case TextureKind::Checkerboard: {
             const auto a = t.triple("a", {0.8, 0.8, 0.8}, Range::nonNegative());
             const auto b = t.triple("b", {0.2, 0.2, 0.2}, Range::nonNegative());
-            texture = std::make_shared<CheckerboardTexture>(
-                Rgb<float>(float(a[0]), float(a[1]), float(a[2])),
-                Rgb<float>(float(b[0]), float(b[1]), float(b[2])),
-                readMapping2D(t, Vec2<float>(8.0f)));
+            const Rgb<float> ca{float(a[0]), float(a[1]), float(a[2])};
+            const Rgb<float> cb{float(b[0]), float(b[1]), float(b[2])};
+            // A point mapping makes it pbrt-v4's 3D checkerboard, cells of the texture's space.
+            const Json* mapping = t.value().contains("mapping") ? &t.value()["mapping"] : nullptr;
+            if (mapping && mapping->is_object() && mapping->value("type", Json()) == "point")
+                texture = std::make_shared<SolidCheckerboardTexture>(ca, cb, readPointMapping(t));
+            else
+                texture = std::make_shared<CheckerboardTexture>(
+                    ca, cb, readMapping2D(t, Vec2<float>(8.0f)));
             break;
         }
         case TextureKind::Image: {

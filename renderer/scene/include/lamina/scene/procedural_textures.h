@@ -74,6 +74,19 @@ class MarbleTexture final : public Texture {
     float omega_, scale_, variation_;
 };
 
+/// pbrt-v4's 3D checkerboard (`dimension` 3): `a` where floor(q.x) + floor(q.y) + floor(q.z) is
+/// even, `b` where it is odd, q the point in the texture's space (unfiltered).
+class SolidCheckerboardTexture final : public Texture {
+  public:
+    SolidCheckerboardTexture(const Rgb<float>& a, const Rgb<float>& b, const TextureSpace& space)
+        : a_(a), b_(b), space_(space) {}
+    Rgb<float> evaluate(const TexturePoint& at) const override;
+
+  private:
+    Rgb<float> a_, b_;
+    TextureSpace space_;
+};
+
 /// pbrt-v4's DotsTexture: `inside` within a dot, `outside` elsewhere. Each unit cell around
 /// integer (s, t) holds a dot where noise(s + 1/2, t + 1/2) > 0, of radius 0.35, its centre
 /// moved by up to 0.15 along each axis by two more noise values.
