@@ -836,11 +836,11 @@ TEST_F(PbrtTranslation, Textures) {
               Json::parse(R"j({"type": "lambert", "reflectance": {"texture": "half"}})j"));
     EXPECT_EQ(s.scene["shapes"][0]["alpha"], Json::parse(R"j({"texture": "mask (float)"})j"));
     EXPECT_EQ(s.scene["shapes"][1]["alpha"], 0.5);
-    EXPECT_EQ(importError("Texture \"n\" \"spectrum\" \"marble\"\nMaterial \"diffuse\" "
+    EXPECT_EQ(importError("Texture \"n\" \"spectrum\" \"bilerp\"\nMaterial \"diffuse\" "
                           "\"texture reflectance\" \"n\"\nShape \"sphere\"\n"),
               at(1) +
-                  ": texture \"marble\" is not supported (lamina reads imagemap, constant, "
-                  "checkerboard, scale and mix)");
+                  ": texture \"bilerp\" is not supported (lamina reads imagemap, constant, "
+                  "checkerboard, dots, fbm, wrinkled, windy, marble, scale and mix)");
     EXPECT_EQ(importError("Material \"diffuse\" \"texture reflectance\" \"none\"\n"
                           "Shape \"sphere\"\n"),
               at(1) + ": no spectrum texture named \"none\"");

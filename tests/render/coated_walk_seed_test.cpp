@@ -48,7 +48,7 @@ TEST(CoatedWalkSeed, RendersWithDifferentSeedsGetIndependentWalkEstimates) {
         const Mode mode(scene, seed);
         Mode::Path path;
         const Rgb<float> f =
-            mode.bsdf(paint, {0.5f, 0.5f}, path).eval(wo, wi, TransportMode::Radiance);
+            mode.bsdf(paint, Vec2<float>(0.5f, 0.5f), path).eval(wo, wi, TransportMode::Radiance);
         return luminance(Rgb<double>(f));
     };
     EXPECT_NE(luminanceAt(1), luminanceAt(2));
@@ -61,8 +61,8 @@ TEST(CoatedWalkSeed, RendersWithDifferentSeedsGetIndependentWalkEstimates) {
 
     const Mode mode(scene, 0);
     Mode::Path path;
-    const auto& walk =
-        dynamic_cast<const CoatedBxdf<Rgb<float>>&>(mode.bsdf(paint, {0.5f, 0.5f}, path));
+    const auto& walk = dynamic_cast<const CoatedBxdf<Rgb<float>>&>(
+        mode.bsdf(paint, Vec2<float>(0.5f, 0.5f), path));
     Pcg32 rng(20261202);
     RunningMean walkRuns;
     for (int i = 0; i < 65536; ++i)

@@ -47,8 +47,8 @@ TEST(CoatedTexture, TheBaseTakesTheTexturesColourAtEachUv) {
     const render::SceneDesc scene = testing::sceneFromText(kScene);
     const int textured = materialIndex(scene, "textured");
     EXPECT_EQ(scene.materialTextures[std::size_t(textured)].color >= 0, true);
-    const MaterialDesc inA = render::texturedMaterial(scene, textured, {0.25f, 0.25f});
-    const MaterialDesc inB = render::texturedMaterial(scene, textured, {0.75f, 0.25f});
+    const MaterialDesc inA = render::texturedMaterial(scene, textured, Vec2<float>(0.25f, 0.25f));
+    const MaterialDesc inB = render::texturedMaterial(scene, textured, Vec2<float>(0.75f, 0.25f));
     // Textures hold floats: the texel is 0.8 to float precision.
     EXPECT_NEAR(baseReflectance(inA), 0.8, 1e-7);
     EXPECT_NEAR(baseReflectance(inB), 0.2, 1e-7);

@@ -121,7 +121,7 @@ TEST_F(ObjMaterials, TheMappingOfEachKey) {
     const auto& tex = s.materialTextures.at(std::size_t(meshes[4].material));
     ASSERT_GE(tex.color, 0);
     EXPECT_EQ(s.textureNames.at(std::size_t(tex.color)), mtl() + ":photo:map_Kd");
-    const Rgb<float> left = s.textures[std::size_t(tex.color)]->evaluate({0.25f, 0.5f});
+    const Rgb<float> left = s.textures[std::size_t(tex.color)]->evaluate(Vec2<float>(0.25f, 0.5f));
     EXPECT_GT(left[0], 0.9f);
     EXPECT_LT(left[1], 0.1f);
 }

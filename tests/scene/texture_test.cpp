@@ -34,13 +34,14 @@ TEST(ImageTexture, DecodesSrgbAndInterpolatesBilinearly) {
     const render::ImageTexture srgb(file, Vec2<float>(1.0f), true, false);
     const render::ImageTexture linear(file, Vec2<float>(1.0f), false, false);
     // Texel centres: (u, v) = (0.25, 0.75) is the top-left texel (v = 0 at the bottom).
-    EXPECT_NEAR(srgb.evaluate({0.75f, 0.75f})[0], 1.0, 1e-6);
-    EXPECT_NEAR(srgb.evaluate({0.25f, 0.25f})[0], srgbToLinear(128 / 255.0), 1e-6);
-    EXPECT_NEAR(linear.evaluate({0.25f, 0.25f})[0], 128 / 255.0, 1e-6);
+    EXPECT_NEAR(srgb.evaluate(Vec2<float>(0.75f, 0.75f))[0], 1.0, 1e-6);
+    EXPECT_NEAR(srgb.evaluate(Vec2<float>(0.25f, 0.25f))[0], srgbToLinear(128 / 255.0), 1e-6);
+    EXPECT_NEAR(linear.evaluate(Vec2<float>(0.25f, 0.25f))[0], 128 / 255.0, 1e-6);
     // Half-way between the bottom texels, and repeating beyond [0, 1).
-    EXPECT_NEAR(srgb.evaluate({0.5f, 0.25f})[1],
+    EXPECT_NEAR(srgb.evaluate(Vec2<float>(0.5f, 0.25f))[1],
                 0.5 * (srgbToLinear(128 / 255.0) + srgbToLinear(64 / 255.0)), 1e-6);
-    EXPECT_NEAR(srgb.evaluate({1.75f, -0.25f})[2], srgb.evaluate({0.75f, 0.75f})[2], 1e-6);
+    EXPECT_NEAR(srgb.evaluate(Vec2<float>(1.75f, -0.25f))[2],
+                srgb.evaluate(Vec2<float>(0.75f, 0.75f))[2], 1e-6);
     fs::remove(file);
 }
 

@@ -62,22 +62,6 @@ std::string useTexture(TranslationContext& ctx, const std::string& name,
     const Entity& e = def->entity;
     const ParamList& params = e.params;
     Json t;
-    auto uvScale = [&]() {
-        const double su = constantNumber(params, "uscale", 1.0);
-        const double sv = constantNumber(params, "vscale", 1.0);
-        // pbrt-v4 mirrors the pattern for a negative scale; lamina's scale is positive.
-        if (!(su > 0) || !(sv > 0))
-            ctx.fail(e.location,
-                     "a negative or zero uscale / vscale (a mirrored texture) is not "
-                     "supported");
-        if ((constantNumber(params, "udelta", 0.0) != 0 ||
-             constantNumber(params, "vdelta", 0.0) != 0) &&
-            e.type != "imagemap")
-            ctx.fail(e.location, "udelta and vdelta (uv offsets) are not supported");
-        if (params.string("mapping", "uv") != "uv")
-            ctx.fail(e.location, "only the \"uv\" texture mapping is supported");
-        return Json::array({su, sv});
-    };
     if (e.type == "imagemap") {
         const Param* file = params.find("filename");
         if (!file) ctx.fail(e.location, "imagemap: no \"string filename\" parameter");
@@ -92,11 +76,8 @@ std::string useTexture(TranslationContext& ctx, const std::string& name,
                      "imagemap: encoding \"" + encoding + "\" is not supported (sRGB or linear)");
         t = {{"type", "image"},
              {"file", ctx.filePath(params, *file)},
-             {"color_space", encoding == "sRGB" ? "srgb" : "linear"},
-             {"scale", uvScale()}};
-        // pbrt-v4's UVMapping: (uscale u + udelta, vscale v + vdelta), lamina's offset.
-        const double du = params.number("udelta", 0.0), dv = params.number("vdelta", 0.0);
-        if (du != 0 || dv != 0) t["offset"] = Json::array({du, dv});
+             {"color_space", encoding == "sRGB" ? "srgb" : "linear"}};
+        translateMapping2D(ctx, e, t);
         const std::string filter = params.string("filter", "bilinear");
         if (filter != "bilinear")
             ctx.warn(e.location,
@@ -122,12 +103,28 @@ std::string useTexture(TranslationContext& ctx, const std::string& name,
             t = {{"type", "scale"}, {"texture", imageName}, {"scale", scale}};
         }
     } else if (e.type == "checkerboard") {
-        if (params.integer("dimension", 2) != 2)
-            ctx.fail(e.location, "checkerboard: only dimension 2 is supported");
-        // pbrt-v4's Checkerboard (textures.cpp): tex1 where floor(u) + floor(v) is even,
-        // tex2 where it is odd; lamina's a and b.
+        const int dimension = params.integer("dimension", 2);
+        if (dimension != 2 && dimension != 3)
+            ctx.fail(e.location, "checkerboard: dimension must be 2 or 3");
+        // pbrt-v4's Checkerboard (textures.cpp): tex1 where floor(u) + floor(v) (or the sum of
+        // the point's three floors) is even, tex2 where it is odd; lamina's a and b.
         Json a = colour(ctx, e, "tex1", 1.0, false), b = colour(ctx, e, "tex2", 0.0, false);
-        t = {{"type", "checkerboard"}, {"a", a}, {"b", b}, {"scale", uvScale()}};
+        t = {{"type", "checkerboard"}, {"a", a}, {"b", b}};
+        if (dimension == 3) {
+            translateMapping3D(ctx, e, t);
+            if (!t.contains("mapping")) t["mapping"] = {{"type", "point"}};
+        } else {
+            translateMapping2D(ctx, e, t);
+        }
+    } else if (e.type == "dots") {
+        // pbrt-v4's DotsTexture: inside (1) in the dots, outside (0) between them, each a
+        // texture or a constant.
+        t = {{"type", "dots"},
+             {"inside", operand(ctx, e, "inside", valueType, 1.0)},
+             {"outside", operand(ctx, e, "outside", valueType, 0.0)}};
+        translateMapping2D(ctx, e, t);
+    } else if (auto solid = translateSolidTexture(ctx, e)) {
+        t = std::move(*solid);
     } else if (e.type == "constant") {
         // pbrt-v4's constant textures (textures.cpp: "value", 1): the value everywhere, a
         // lamina mix of the value with itself at amount 0, exactly (1 - 0) v + 0 v = v.
@@ -160,7 +157,8 @@ std::string useTexture(TranslationContext& ctx, const std::string& name,
     } else {
         ctx.fail(e.location, "texture \"" + e.type +
                                  "\" is not supported (lamina reads imagemap, constant, "
-                                 "checkerboard, scale and mix)");
+                                 "checkerboard, dots, fbm, wrinkled, windy, marble, scale and "
+                                 "mix)");
     }
     params.refuseUnused();
     ctx.document["textures"][laminaName] = t;

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -77,6 +78,16 @@ double constantNumber(const ParamList& params, const std::string& name, double f
 /// The lamina texture name for a pbrt float or spectrum texture, written on first use.
 std::string useTexture(TranslationContext& context, const std::string& name,
                        const std::string& valueType, const Location& usedAt);
+/// pbrt-v4's 2D texture mapping of `e` ("mapping", "uscale", "vscale", "udelta", "vdelta",
+/// "v1", "v2") written into the lamina texture `t`: the uv mapping's "scale" and "offset", or a
+/// projecting "mapping" (pbrt_texture_mappings.cpp).
+void translateMapping2D(TranslationContext& context, const Entity& e, Json& t);
+/// pbrt-v4's 3D mapping of `e` (PointTransformMapping) as the lamina texture's "point" mapping,
+/// left out for the identity (pbrt_texture_mappings.cpp).
+void translateMapping3D(TranslationContext& context, const Entity& e, Json& t);
+/// pbrt-v4's solid textures fbm, wrinkled, windy and marble as lamina's, placed by the point
+/// mapping; nullopt for any other type (pbrt_texture_mappings.cpp).
+std::optional<Json> translateSolidTexture(TranslationContext& context, const Entity& e);
 
 // Media (pbrt_media.cpp).
 

@@ -10,21 +10,6 @@ namespace lamina::render {
 
 namespace {
 
-// An operand of a texture operation: the name of a texture, or a constant (a number or
-// [r, g, b]; `colour` false: a number only).
-std::shared_ptr<const Texture> readOperand(
-    const JsonReader& t, const std::string& key, double fallback, bool colour, Range range,
-    const TextureLookup& textureIndex,
-    const std::vector<std::shared_ptr<const Texture>>& textures) {
-    if (t.has(key) && t.value()[key].is_string())
-        return textures[std::size_t(textureIndex(t, key, t.requiredString(key)))];
-    if (colour) {
-        const auto c = t.triple(key, {fallback, fallback, fallback}, range);
-        return std::make_shared<ConstantTexture>(Rgb<float>(float(c[0]), float(c[1]), float(c[2])));
-    }
-    return std::make_shared<ConstantTexture>(Rgb<float>(float(t.number(key, fallback, range))));
-}
-
 // Why `key` of a material of type `kind` cannot name a texture, and what can.
 std::string texturableKeysMessage(const MaterialKind& kind, const std::string& key) {
     std::string own;
@@ -78,78 +63,6 @@ bool patchNestedTextures(const JsonReader& r, Json& copy, MaterialTextures& tex,
 }
 
 }  // namespace
-
-std::shared_ptr<const Texture> readTexture(
-    const JsonReader& t, const TextureLookup& textureIndex,
-    const std::vector<std::shared_ptr<const Texture>>& textures) {
-    t.expectObject();
-    t.noteNames("type", kTextureKindNames.names());
-    const std::string type = t.requiredString("type");
-    const auto kind = kTextureKindNames.find(type);
-    if (!kind)
-        t.failAt("type", "expected " + kTextureKindNames.list(" or ") + ", got \"" + type + "\"");
-    Vec2<float> scale(1.0f);
-    // [u, v] repeats of the patterns (has() marks the key as known: ask only where it is).
-    const bool pattern = *kind == TextureKind::Checkerboard || *kind == TextureKind::Image;
-    if (pattern && t.has("scale")) {
-        const auto sc = t.requiredArray<2>("scale", Range::positive());
-        scale = Vec2<float>(float(sc[0]), float(sc[1]));
-    }
-    std::shared_ptr<const Texture> texture;
-    switch (*kind) {
-        case TextureKind::Checkerboard: {
-            const auto a = t.triple("a", {0.8, 0.8, 0.8}, Range::nonNegative());
-            const auto b = t.triple("b", {0.2, 0.2, 0.2}, Range::nonNegative());
-            if (!t.has("scale")) scale = Vec2<float>(8.0f);
-            texture = std::make_shared<CheckerboardTexture>(
-                Rgb<float>(float(a[0]), float(a[1]), float(a[2])),
-                Rgb<float>(float(b[0]), float(b[1]), float(b[2])), scale);
-            break;
-        }
-        case TextureKind::Image: {
-            const std::filesystem::path file = t.filePath("file");
-            const bool srgb = t.choice("color_space", TextureColorSpace::Srgb,
-                                       kTextureColorSpaceNames) == TextureColorSpace::Srgb;
-            const bool invert = t.boolean("invert", false);
-            Vec2<float> offset(0.0f);
-            if (t.has("offset")) {
-                const auto o = t.requiredArray<2>("offset", {-1e6, 1e6});
-                offset = Vec2<float>(float(o[0]), float(o[1]));
-            }
-            try {
-                texture = std::make_shared<ImageTexture>(file, scale, srgb, invert, offset);
-            } catch (const InputError& e) {
-                t.failAt("file", e.what());
-            }
-            break;
-        }
-        case TextureKind::Scale:
-        case TextureKind::Power: {
-            if (!t.has("texture") || !t.value()["texture"].is_string())
-                t.failAt("texture", "expected the name of a texture");
-            const auto source =
-                textures[std::size_t(textureIndex(t, "texture", t.requiredString("texture")))];
-            if (*kind == TextureKind::Scale)
-                texture = std::make_shared<ScaleTexture>(
-                    source, float(t.requiredNumber("scale", {0.0, 1e6})));
-            else
-                texture = std::make_shared<PowerTexture>(
-                    source, float(t.requiredNumber("exponent", {0.0625, 16.0})));
-            break;
-        }
-        case TextureKind::Mix: {
-            // pbrt-v4's defaults: tex1 0, tex2 1, amount 0.5.
-            auto a = readOperand(t, "a", 0.0, true, Range::nonNegative(), textureIndex, textures);
-            auto b = readOperand(t, "b", 1.0, true, Range::nonNegative(), textureIndex, textures);
-            auto amount =
-                readOperand(t, "amount", 0.5, false, Range::unit(), textureIndex, textures);
-            texture = std::make_shared<MixTexture>(std::move(a), std::move(b), std::move(amount));
-            break;
-        }
-    }
-    t.finish();
-    return texture;
-}
 
 // Replaces {"texture": name} in the keys the material's type may texture (its registration,
 // material_kind.h) by a constant the material parser accepts, then checks that the material
@@ -206,19 +119,19 @@ std::pair<MaterialDesc, MaterialTextures> readTexturedMaterial(const JsonReader&
     return {std::move(desc), tex};
 }
 
-MaterialDesc texturedMaterial(const SceneDesc& scene, int material, const Vec2<float>& uv) {
+MaterialDesc texturedMaterial(const SceneDesc& scene, int material, const TexturePoint& at) {
     MaterialDesc desc = scene.materials[std::size_t(material)];
     const MaterialTextures& t = scene.materialTextures[std::size_t(material)];
     TexturedValues values;
     if (t.color >= 0) {
-        const Rgb<float> c = scene.textures[std::size_t(t.color)]->evaluate(uv);
+        const Rgb<float> c = scene.textures[std::size_t(t.color)]->evaluate(at);
         values.color =
             RgbInput(std::clamp(double(c[0]), 0.0, 1.0), std::clamp(double(c[1]), 0.0, 1.0),
                      std::clamp(double(c[2]), 0.0, 1.0));
     }
     if (t.roughness >= 0)
         values.roughness =
-            std::clamp(double(scene.textures[std::size_t(t.roughness)]->evaluate(uv)[0]), 0.0, 1.0);
+            std::clamp(double(scene.textures[std::size_t(t.roughness)]->evaluate(at)[0]), 0.0, 1.0);
     // Only a type with texturable keys, or a material nested through texturedThrough, has
     // textures (readTexturedMaterial).
     findMaterialKind(desc.type)->applyTextures(desc.model, values);

@@ -20,7 +20,7 @@ Vec3<float> tangential(const Vec3<float>& v, const Vec3<float>& n) {
 
 }  // namespace
 
-Vec3<float> bumpMappedNormal(const Texture& height, const Vec2<float>& uv, const Vec3<float>& ns,
+Vec3<float> bumpMappedNormal(const Texture& height, const TexturePoint& at, const Vec3<float>& ns,
                              const SurfaceDerivatives& d) {
     Vec3<float> tu = tangential(d.dpdu, ns), tv = tangential(d.dpdv, ns);
     Vec3<float> side = glm::cross(tu, tv);
@@ -30,8 +30,11 @@ Vec3<float> bumpMappedNormal(const Texture& height, const Vec2<float>& uv, const
         tv = frame.t;
         side = ns;
     }
+    // The point moves with uv along the tangents (pbrt-v4's BumpMap shifts p by du dp/du), so
+    // a solid texture's height is differenced along the surface as a uv-mapped one is.
     const auto h = [&](float du, float dv) {
-        return height.evaluate(Vec2<float>(uv.x + du, uv.y + dv))[0];
+        return height.evaluate(
+            TexturePoint(Vec2<float>(at.uv.x + du, at.uv.y + dv), at.p + du * tu + dv * tv))[0];
     };
     const float hu = (h(kBumpStep, 0) - h(-kBumpStep, 0)) / (2 * kBumpStep);
     const float hv = (h(0, kBumpStep) - h(0, -kBumpStep)) / (2 * kBumpStep);
@@ -44,24 +47,24 @@ Vec3<float> bumpMappedNormal(const Texture& height, const Vec2<float>& uv, const
     return glm::dot(side, ns) < 0 ? -n : n;
 }
 
-Vec3<float> normalMappedNormal(const Texture& map, const Vec2<float>& uv, const Vec3<float>& ns,
+Vec3<float> normalMappedNormal(const Texture& map, const TexturePoint& at, const Vec3<float>& ns,
                                const Vec3<float>& dpdu) {
-    const Rgb<float> c = map.evaluate(uv);
+    const Rgb<float> c = map.evaluate(at);
     const Vec3<float> local = safeNormalize(Vec3<float>(2 * c[0] - 1, 2 * c[1] - 1, 2 * c[2] - 1));
     if (!finite(local) || local == Vec3<float>(0.0f)) return ns;
     const Frame<float> frame = Frame<float>::fromNormalTangent(ns, dpdu);
     return safeNormalize(frame.toWorld(local));
 }
 
-Vec3<float> perturbedShadingNormal(const SceneDesc& scene, int material, const Vec2<float>& uv,
+Vec3<float> perturbedShadingNormal(const SceneDesc& scene, int material, const TexturePoint& at,
                                    const Vec3<float>& ng, const Vec3<float>& ns,
                                    const SurfaceDerivatives& d) {
     const MaterialTextures& t = scene.materialTextures[std::size_t(material)];
     Vec3<float> n = ns;
     if (t.displacement >= 0)
-        n = bumpMappedNormal(*scene.textures[std::size_t(t.displacement)], uv, ns, d);
+        n = bumpMappedNormal(*scene.textures[std::size_t(t.displacement)], at, ns, d);
     else if (t.normalMap >= 0)
-        n = normalMappedNormal(*scene.textures[std::size_t(t.normalMap)], uv, ns, d.dpdu);
+        n = normalMappedNormal(*scene.textures[std::size_t(t.normalMap)], at, ns, d.dpdu);
     return glm::dot(n, ng) < 0 ? -n : n;
 }
 

@@ -7,9 +7,24 @@
 
 namespace lamina::render {
 
+namespace {
+
+TextureMapping2D uvMapping(const Vec2<float>& scale, const Vec2<float>& offset) {
+    TextureMapping2D m;
+    m.scale = scale;
+    m.offset = offset;
+    return m;
+}
+
+}  // namespace
+
 ImageTexture::ImageTexture(const std::filesystem::path& file, const Vec2<float>& scale, bool srgb,
                            bool invert, const Vec2<float>& offset)
-    : scale_(scale), invert_(invert), offset_(offset) {
+    : ImageTexture(file, uvMapping(scale, offset), srgb, invert) {}
+
+ImageTexture::ImageTexture(const std::filesystem::path& file, const TextureMapping2D& mapping,
+                           bool srgb, bool invert)
+    : mapping_(mapping), invert_(invert) {
     InputImage image = readInputImage(file, "texture");
     width_ = image.width;
     height_ = image.height;
@@ -33,11 +48,20 @@ Rgb<float> ImageTexture::texel(int x, int y) const {
     return pixels_[std::size_t(y) * width_ + x];
 }
 
-Rgb<float> ImageTexture::evaluate(const Vec2<float>& uv) const {
-    // v = 0 at the bottom row of the image; bilinear between texel centres, repeating.
-    // An offset of 0 adds exactly nothing: without one the lookup is what it was.
-    const float x = (uv.x * scale_.x + offset_.x) * float(width_) - 0.5f;
-    const float y = (1.0f - (uv.y * scale_.y + offset_.y)) * float(height_) - 0.5f;
+Rgb<float> ImageTexture::evaluate(const TexturePoint& at) const {
+    // t = 0 at the bottom row of the image; bilinear between texel centres, repeating (also
+    // towards negative coordinates: a mirrored mapping reads the image backwards).
+    const Vec2<float> st = mapping_.map(at);
+    float x = st.x * float(width_) - 0.5f;
+    float y = (1.0f - st.y) * float(height_) - 0.5f;
+    constexpr float kFar = float(1 << 24);
+    if (!(std::abs(x) < kFar && std::abs(y) < kFar)) {
+        if (!std::isfinite(x) || !std::isfinite(y)) return Rgb<float>(0.0f);
+        // Far from the origin (a projected mapping of distant points) the texel index leaves
+        // int: the image repeats, so move there by whole images (exact in float out there).
+        if (std::abs(x) >= kFar) x = std::fmod(x, float(width_));
+        if (std::abs(y) >= kFar) y = std::fmod(y, float(height_));
+    }
     const int x0 = int(std::floor(x)), y0 = int(std::floor(y));
     const float fx = x - float(x0), fy = y - float(y0);
     const Rgb<float> value =

@@ -38,8 +38,11 @@ inline float alphaHash(const Vec3<float>& origin, const Vec3<float>& direction, 
     return float(h >> 40u) * 0x1p-24f;  // 24 bits: exactly representable, below 1
 }
 
-/// The alpha of a cut-out shape at barycentrics (u, v) of triangle `prim`.
-float alphaAt(const AlphaTest& test, std::uint32_t prim, float u, float v);
+/// The alpha of a cut-out shape at barycentrics (u, v) of triangle `prim`, at the point `p`
+/// (in the space the ray was traced in: the world, or an instance's object; read by the
+/// textures that project the point).
+float alphaAt(const AlphaTest& test, std::uint32_t prim, float u, float v,
+              const Vec3<float>& p = Vec3<float>(0.0f));
 
 /// The Embree filter (intersection and occlusion alike) of a cut-out shape; its user data is
 /// the shape's AlphaTest.

@@ -10,7 +10,7 @@
 // material's random walks, so renders with different seeds get independent walk estimates
 // (docs/bsdf.md, "Random numbers").
 //
-// bsdf(material, uv, path) returns a reference valid until the next call to bsdf() from the
+// bsdf(material, at, path) returns a reference valid until the next call to bsdf() from the
 // same thread (at the path's next vertex, or for another path): a textured material's BSDF is
 // rebuilt at every call, and in spectral mode a call for another path resets the per-thread
 // cache of built BSDFs. Use the reference at one vertex, then ask again.
@@ -60,19 +60,19 @@ class RenderMode<Rgb<float>> {
     Path startPath(PixelSampler&) const { return {}; }
     Spectrum emission(const Emission& e, Path&) const { return e.rgb(); }
     /// Valid until the next call from this thread (see the top of this file).
-    const Bxdf<Spectrum>& bsdf(int material, const Vec2<float>& uv, Path&) const {
+    const Bxdf<Spectrum>& bsdf(int material, const TexturePoint& at, Path&) const {
         if (!scene_.materialTextures[std::size_t(material)].any())
             return *bsdfs_[std::size_t(material)];
-        // A textured material is built at every hit, with its parameters looked up at uv.
+        // A textured material is built at every hit, with its parameters looked up there.
         thread_local std::unique_ptr<Bxdf<Spectrum>> textured;
         textured =
-            buildBxdf(texturedMaterial(scene_, material, uv), SpectrumContext<Spectrum>{}, seed_);
+            buildBxdf(texturedMaterial(scene_, material, at), SpectrumContext<Spectrum>{}, seed_);
         return *textured;
     }
     /// The same: the unpolarised modes have no use for the shading frame.
-    const Bxdf<Spectrum>& bsdf(int material, const Vec2<float>& uv, const Frame<float>&,
+    const Bxdf<Spectrum>& bsdf(int material, const TexturePoint& at, const Frame<float>&,
                                Path& path) const {
-        return bsdf(material, uv, path);
+        return bsdf(material, at, path);
     }
     Rgb<double> filmValue(const Spectrum& L, const Path&) const { return Rgb<double>(L); }
     /// The coefficients of SceneDesc::media[index].
@@ -154,13 +154,13 @@ class RenderMode<SampledSpectrum<float>> {
     // that material along a path and reused at later hits of the same path (a per-thread
     // cache, reset when the path changes); one that does not is the one built at load. Valid
     // until the next call from this thread.
-    const Bxdf<Spectrum>& bsdf(int material, const Vec2<float>& uv, Path& path) const {
+    const Bxdf<Spectrum>& bsdf(int material, const TexturePoint& at, Path& path) const {
         BsdfCache& c = cache();
         const UpsampledColors* colors = &colors_[std::size_t(material)];
         if (scene_.materialTextures[std::size_t(material)].any()) {
             // Colours the textures do not replace are among those collected at load.
             const SpectrumContext<Spectrum> context{path.lambda, colors};
-            c.textured = buildBxdf(texturedMaterial(scene_, material, uv), context, seed_);
+            c.textured = buildBxdf(texturedMaterial(scene_, material, at), context, seed_);
             return *c.textured;
         }
         if (const auto& shared = shared_[std::size_t(material)]) return *shared;
@@ -179,9 +179,9 @@ class RenderMode<SampledSpectrum<float>> {
     }
 
     /// The same: the unpolarised modes have no use for the shading frame.
-    const Bxdf<Spectrum>& bsdf(int material, const Vec2<float>& uv, const Frame<float>&,
+    const Bxdf<Spectrum>& bsdf(int material, const TexturePoint& at, const Frame<float>&,
                                Path& path) const {
-        return bsdf(material, uv, path);
+        return bsdf(material, at, path);
     }
 
     Rgb<double> filmValue(const Spectrum& L, const Path& path) const {
@@ -293,7 +293,7 @@ class RenderMode<PolarisedSpectrum> {
         return depolarising(spectral_.emission(e, path));
     }
     /// Valid until the next call from this thread, as in the spectral mode.
-    const Bxdf<Spectrum>& bsdf(int material, const Vec2<float>& uv, const Frame<float>& frame,
+    const Bxdf<Spectrum>& bsdf(int material, const TexturePoint& at, const Frame<float>& frame,
                                Path& path) const {
         thread_local PolarisedBxdf view;
         if (oriented_[std::size_t(material)]) {
@@ -305,7 +305,7 @@ class RenderMode<PolarisedSpectrum> {
             view.bind(*sheet, frame);
             return view;
         }
-        view.bind(spectral_.bsdf(material, uv, path), frame);
+        view.bind(spectral_.bsdf(material, at, path), frame);
         return view;
     }
     Rgb<double> filmValue(const Spectrum& L, const Path& path) const {

@@ -36,11 +36,14 @@ struct MaterialTextures {
 using TextureLookup =
     std::function<int(const JsonReader& at, const std::string& key, const std::string& name)>;
 
-/// A texture definition: {"type": "checkerboard", "a": colour, "b": colour, "scale": [u, v]},
-/// {"type": "image", "file": path, "scale": [u, v], "color_space": "srgb" | "linear",
-/// "invert": bool}, {"type": "scale", "texture": name, "scale": number} or {"type": "mix",
-/// "a": name | colour, "b": name | colour, "amount": name | number}. `textures` are the
-/// scene's textures so far, which `textureIndex` indexes.
+/// A texture definition (texture_reader.cpp; docs/scene-format.md, "textures"): {"type":
+/// "checkerboard", "a": colour, "b": colour, "scale": [u, v]}, {"type": "image", "file": path,
+/// "scale": [u, v], "color_space": "srgb" | "linear", "invert": bool}, {"type": "scale",
+/// "texture": name, "scale": number}, {"type": "mix", "a": name | colour, "b": name | colour,
+/// "amount": name | number}, the noise textures fbm, wrinkled, windy, marble and dots
+/// (procedural_textures.h), and the 2D textures' and solid textures' "mapping"
+/// (texture_mapping.h). `textures` are the scene's textures so far, which `textureIndex`
+/// indexes.
 std::shared_ptr<const Texture> readTexture(
     const JsonReader& t, const TextureLookup& textureIndex,
     const std::vector<std::shared_ptr<const Texture>>& textures);
@@ -50,7 +53,7 @@ std::shared_ptr<const Texture> readTexture(
 std::pair<MaterialDesc, MaterialTextures> readTexturedMaterial(const JsonReader& r,
                                                                const TextureLookup& textureIndex);
 
-/// The material with its textured parameters looked up at `uv`.
-MaterialDesc texturedMaterial(const SceneDesc& scene, int material, const Vec2<float>& uv);
+/// The material with its textured parameters looked up at `at`.
+MaterialDesc texturedMaterial(const SceneDesc& scene, int material, const TexturePoint& at);
 
 }  // namespace lamina::render

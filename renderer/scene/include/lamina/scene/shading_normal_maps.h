@@ -7,6 +7,7 @@
 #pragma once
 
 #include "lamina/core/vector.h"
+#include "lamina/scene/texture_mapping.h"
 
 namespace lamina::render {
 
@@ -34,20 +35,21 @@ inline constexpr float kBumpStep = 0.0005f;
 /// parameterisation. dh/du and dh/dv are central differences of step kBumpStep (pbrt-v4 takes
 /// forward ones). Where the parameterisation degenerates, the tangents are the unit frame
 /// around n (Frame::fromNormal). `ns`: unit. Returns a unit normal (`ns` if the bump leaves no
-/// finite one).
-Vec3<float> bumpMappedNormal(const Texture& height, const Vec2<float>& uv, const Vec3<float>& ns,
+/// finite one). The height is looked up at `at` moved along t_u and t_v with its uv, so that
+/// solid textures are differenced along the surface too.
+Vec3<float> bumpMappedNormal(const Texture& height, const TexturePoint& at, const Vec3<float>& ns,
                              const SurfaceDerivatives& d);
 
 /// Normal mapping (pbrt-v4's NormalMap, materials.h): the texel's colour c in [0, 1]^3 is the
 /// direction 2c - 1 in the tangent frame x = dp/du made normal to n, z = n, y = z x x.
 /// Returns a unit normal (`ns` if the texel's direction is zero).
-Vec3<float> normalMappedNormal(const Texture& map, const Vec2<float>& uv, const Vec3<float>& ns,
+Vec3<float> normalMappedNormal(const Texture& map, const TexturePoint& at, const Vec3<float>& ns,
                                const Vec3<float>& dpdu);
 
 /// The shading normal of `material`'s bump or normal map at the point, turned into the
 /// hemisphere of the geometric normal `ng` as every shading normal is (geometry.h); `ns` for a
 /// material that has neither.
-Vec3<float> perturbedShadingNormal(const SceneDesc& scene, int material, const Vec2<float>& uv,
+Vec3<float> perturbedShadingNormal(const SceneDesc& scene, int material, const TexturePoint& at,
                                    const Vec3<float>& ng, const Vec3<float>& ns,
                                    const SurfaceDerivatives& d);
 

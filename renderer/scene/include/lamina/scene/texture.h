@@ -1,11 +1,12 @@
-// Textures for material parameters (colours and roughness), looked up by the surface's uv: a
+// Textures for material parameters (colours and roughness), looked up at a surface point
+// (texture_mapping.h: its uv, or its position for the mappings that project it): a
 // checkerboard and images (EXR through OpenEXR, other formats through lamina's OpenImageIO module,
 // image_input.h; bilinear, repeating; 8-bit images are decoded from sRGB unless declared linear;
 // optionally inverted), and the operations on textures that pbrt-v4 scenes use: a texture times a
 // number, a mix of two, and a texture to a power (the remapping of a looked-up roughness). Only the
 // renderer knows textures: the BSDF library receives the looked-up values (material_textures.h
 // reads them from a scene file and looks them up; render_mode.h rebuilds a textured material per
-// hit).
+// hit). The procedural textures of pbrt-v4 made of noise are in procedural_textures.h.
 #pragma once
 
 #include <algorithm>
@@ -17,15 +18,29 @@
 #include "lamina/core/name_table.h"
 #include "lamina/core/spectrum.h"
 #include "lamina/core/vector.h"
+#include "lamina/scene/texture_mapping.h"
 
 namespace lamina::render {
 
 /// The `type` of a texture in a scene file.
-enum class TextureKind { Checkerboard, Image, Scale, Mix, Power };
-inline constexpr NameTable kTextureKindNames{
-    std::array{NameEntry{TextureKind::Checkerboard, "checkerboard"},
-               NameEntry{TextureKind::Image, "image"}, NameEntry{TextureKind::Scale, "scale"},
-               NameEntry{TextureKind::Mix, "mix"}, NameEntry{TextureKind::Power, "power"}}};
+enum class TextureKind {
+    Checkerboard,
+    Image,
+    Scale,
+    Mix,
+    Power,
+    Fbm,
+    Wrinkled,
+    Windy,
+    Marble,
+    Dots
+};
+inline constexpr NameTable kTextureKindNames{std::array{
+    NameEntry{TextureKind::Checkerboard, "checkerboard"}, NameEntry{TextureKind::Image, "image"},
+    NameEntry{TextureKind::Scale, "scale"}, NameEntry{TextureKind::Mix, "mix"},
+    NameEntry{TextureKind::Power, "power"}, NameEntry{TextureKind::Fbm, "fbm"},
+    NameEntry{TextureKind::Wrinkled, "wrinkled"}, NameEntry{TextureKind::Windy, "windy"},
+    NameEntry{TextureKind::Marble, "marble"}, NameEntry{TextureKind::Dots, "dots"}}};
 
 /// How an image texture's integer texels are decoded: sRGB or linear.
 enum class TextureColorSpace { Srgb, Linear };
@@ -35,32 +50,46 @@ inline constexpr NameTable kTextureColorSpaceNames{std::array{
 class Texture {
   public:
     virtual ~Texture() = default;
-    virtual Rgb<float> evaluate(const Vec2<float>& uv) const = 0;
+    virtual Rgb<float> evaluate(const TexturePoint& at) const = 0;
 };
 
+/// `a` where floor(s) + floor(t) is even, `b` where it is odd ((s, t) from the mapping; pbrt-v4's
+/// checkerboard, unfiltered).
 class CheckerboardTexture final : public Texture {
   public:
+    CheckerboardTexture(const Rgb<float>& a, const Rgb<float>& b, const TextureMapping2D& mapping)
+        : a_(a), b_(b), mapping_(mapping) {}
     CheckerboardTexture(const Rgb<float>& a, const Rgb<float>& b, const Vec2<float>& scale)
-        : a_(a), b_(b), scale_(scale) {}
-    Rgb<float> evaluate(const Vec2<float>& uv) const override {
-        const int parity = int(std::floor(uv.x * scale_.x)) + int(std::floor(uv.y * scale_.y));
-        return (parity & 1) ? b_ : a_;
+        : a_(a), b_(b) {
+        mapping_.scale = scale;
+    }
+    Rgb<float> evaluate(const TexturePoint& at) const override {
+        const Vec2<float> st = mapping_.map(at);
+        const float fs = std::floor(st.x), ft = std::floor(st.y);
+        constexpr float kIntRange = float(1 << 30);
+        if (std::abs(fs) < kIntRange && std::abs(ft) < kIntRange)
+            return ((int(fs) + int(ft)) & 1) ? b_ : a_;
+        // Far out (a projected mapping of distant points) or not a number: the parity without
+        // an int those coordinates would leave.
+        return std::fmod(std::abs(fs), 2.0f) != std::fmod(std::abs(ft), 2.0f) ? b_ : a_;
     }
 
   private:
     Rgb<float> a_, b_;
-    Vec2<float> scale_;
+    TextureMapping2D mapping_;
 };
 
 class ImageTexture final : public Texture {
   public:
     /// `srgb`: decode 8- and 16-bit integer images with the sRGB transfer function.
     /// `invert`: max(0, 1 - value) per channel after decoding (pbrt-v4's imagemap `invert`).
-    /// The image is looked up at scale * uv + offset (pbrt-v4's UVMapping: uscale, vscale,
-    /// udelta, vdelta).
+    /// The image is looked up at the mapping's (s, t): by default scale * uv + offset (pbrt-v4's
+    /// UVMapping: uscale, vscale, udelta, vdelta; a negative scale mirrors the image).
+    ImageTexture(const std::filesystem::path& file, const TextureMapping2D& mapping, bool srgb,
+                 bool invert);
     ImageTexture(const std::filesystem::path& file, const Vec2<float>& scale, bool srgb,
                  bool invert, const Vec2<float>& offset = Vec2<float>(0.0f));
-    Rgb<float> evaluate(const Vec2<float>& uv) const override;
+    Rgb<float> evaluate(const TexturePoint& at) const override;
     /// Its texels were decoded from sRGB (an integer image not declared linear).
     bool decodedSrgb() const { return decodedSrgb_; }
 
@@ -68,9 +97,8 @@ class ImageTexture final : public Texture {
     Rgb<float> texel(int x, int y) const;
     int width_ = 0, height_ = 0;
     std::vector<Rgb<float>> pixels_;
-    Vec2<float> scale_;
+    TextureMapping2D mapping_;
     bool invert_;
-    Vec2<float> offset_;
     bool decodedSrgb_ = false;
 };
 
@@ -78,7 +106,7 @@ class ImageTexture final : public Texture {
 class ConstantTexture final : public Texture {
   public:
     explicit ConstantTexture(const Rgb<float>& value) : value_(value) {}
-    Rgb<float> evaluate(const Vec2<float>&) const override { return value_; }
+    Rgb<float> evaluate(const TexturePoint&) const override { return value_; }
 
   private:
     Rgb<float> value_;
@@ -89,8 +117,8 @@ class ScaleTexture final : public Texture {
   public:
     ScaleTexture(std::shared_ptr<const Texture> texture, float scale)
         : texture_(std::move(texture)), scale_(scale) {}
-    Rgb<float> evaluate(const Vec2<float>& uv) const override {
-        return texture_->evaluate(uv) * scale_;
+    Rgb<float> evaluate(const TexturePoint& at) const override {
+        return texture_->evaluate(at) * scale_;
     }
 
   private:
@@ -106,8 +134,8 @@ class PowerTexture final : public Texture {
   public:
     PowerTexture(std::shared_ptr<const Texture> texture, float exponent)
         : texture_(std::move(texture)), exponent_(exponent) {}
-    Rgb<float> evaluate(const Vec2<float>& uv) const override {
-        const Rgb<float> v = texture_->evaluate(uv);
+    Rgb<float> evaluate(const TexturePoint& at) const override {
+        const Rgb<float> v = texture_->evaluate(at);
         Rgb<float> out;
         for (int c = 0; c < 3; ++c)
             out[c] = std::pow(std::max(v[c], 0.0f), exponent_);
@@ -125,9 +153,9 @@ class MixTexture final : public Texture {
     MixTexture(std::shared_ptr<const Texture> a, std::shared_ptr<const Texture> b,
                std::shared_ptr<const Texture> amount)
         : a_(std::move(a)), b_(std::move(b)), amount_(std::move(amount)) {}
-    Rgb<float> evaluate(const Vec2<float>& uv) const override {
-        const float t = amount_->evaluate(uv)[0];
-        return a_->evaluate(uv) * (1 - t) + b_->evaluate(uv) * t;
+    Rgb<float> evaluate(const TexturePoint& at) const override {
+        const float t = amount_->evaluate(at)[0];
+        return a_->evaluate(at) * (1 - t) + b_->evaluate(at) * t;
     }
 
   private:
