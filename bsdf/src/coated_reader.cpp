@@ -33,6 +33,7 @@ MaterialModel readCoated(const JsonReader& r) {
     // direction only: neither the walk's sampling nor its connections find it, so eval would
     // miss it. Such stacks are refused rather than rendered too dark.
     const std::uint32_t baseFlags = buildBxdf(*c.base, SpectrumContext<Rgb<double>>{})->flags();
+    c.baseHasDeltaLobe = isSpecular(baseFlags);
     const bool smoothCoat = std::max(c.microfacet.alphaX, c.microfacet.alphaY) < kSmoothAlpha;
     const bool scatters = c.thickness > 0 && (c.albedo.rgb.maxValue() > 0 || c.albedo.spectrum);
     if (smoothCoat && isSpecular(baseFlags) &&
@@ -55,12 +56,22 @@ std::vector<const MaterialDesc*> coatedNested(const MaterialModel& model) {
     return {model.as<CoatedMaterial>().base.get()};
 }
 
-// A coat takes no texture itself; the textures of its base set the base (texturedThrough): a
-// copy of the base with them, so that the scene's material stays as it was read.
+constexpr TexturableKey kCoatedTextured[] = {{"roughness", TexturedParameter::Roughness}};
+
+// The coat's own roughness may be textured (a textured roughness inside the base is refused:
+// readTexturedMaterial), so a textured roughness is the coat's; over a base with a delta lobe
+// it stays above the smooth limit, where readCoated would have refused the stack. The base's
+// colour texture sets a copy of the base, so that the scene's material stays as it was read.
 void texturedCoated(MaterialModel& model, const TexturedValues& t) {
     auto& c = model.as<CoatedMaterial>();
+    if (t.roughness) {
+        double alpha = *t.roughness * *t.roughness;
+        if (c.baseHasDeltaLobe) alpha = std::max(alpha, double(kSmoothAlpha));
+        c.microfacet.alphaX = c.microfacet.alphaY = alpha;
+    }
+    if (!t.color) return;
     auto base = std::make_shared<MaterialDesc>(*c.base);
-    findMaterialKind(base->type)->applyTextures(base->model, t);
+    findMaterialKind(base->type)->applyTextures(base->model, TexturedValues{t.color, std::nullopt});
     c.base = std::move(base);
 }
 
@@ -79,7 +90,7 @@ extern const MaterialKind kCoatedMaterial{
     "type": {"const": "coated"},
     "ior": {"type": "number", "exclusiveMinimum": 0, "default": 1.5},
     "distribution": {"enum": ["ggx", "beckmann"]},
-    "roughness": {"type": "number", "minimum": 0, "maximum": 1, "default": 0},
+    "roughness": {"$ref": "#/$defs/textured_roughness"},
     "alpha": {"type": "number", "minimum": 0, "maximum": 1},
     "alpha_x": {"type": "number", "minimum": 0, "maximum": 1},
     "alpha_y": {"type": "number", "minimum": 0, "maximum": 1},
@@ -111,6 +122,7 @@ extern const MaterialKind kCoatedMaterial{
     }
   ]
 })json",
+    .texturable = kCoatedTextured,
     .applyTextures = texturedCoated,
     .nested = coatedNested,
     .texturedThrough = "base",

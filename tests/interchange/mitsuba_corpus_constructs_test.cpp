@@ -438,6 +438,23 @@ TEST_F(MitsubaCorpusConstructs, BitmapAlphaIsTheSquareRootOfTheLookup) {
     EXPECT_EQ(channel, 1);
 }
 
+// roughplastic's textured alpha is its coat's: lamina's coated takes a textured roughness.
+TEST_F(MitsubaCorpusConstructs, RoughPlasticsTexturedAlphaIsTheCoatsRoughness) {
+    const ImportedScene s = material(R"j(<bsdf type="roughplastic" id="m">
+<texture type="checkerboard" name="alpha"><float name="color0" value="0.04"/>
+  <float name="color1" value="0.25"/></texture></bsdf>
+<shape type="sphere"><ref id="m"/></shape>)j");
+    const Json& m = s.scene["materials"]["m"];
+    EXPECT_EQ(m["type"], "coated");
+    const std::string root = m["roughness"]["texture"];
+    EXPECT_EQ(s.scene["textures"][root]["type"], "checkerboard");
+    // alpha = roughness^2: the checkerboard of the square roots.
+    EXPECT_NEAR(
+        s.scene["textures"][root]["a"].get<double>() + s.scene["textures"][root]["b"].get<double>(),
+        0.2 + 0.5, 1e-12);
+    EXPECT_FALSE(m.contains("alpha"));
+}
+
 TEST_F(MitsubaCorpusConstructs, NamedBitmapUsedTwiceWarnsOnce) {
     write("w.png", "x");
     const ImportedScene s = import(

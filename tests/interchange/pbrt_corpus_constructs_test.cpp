@@ -247,8 +247,8 @@ TEST_F(PbrtCorpusConstructs, AnInterfaceOnlySceneHasAnEmptyMaterialsObject) {
 // remaproughness, TrowbridgeReitzDistribution::RoughnessToAlpha; the value itself without):
 // lamina's textured roughness is sqrt(alpha), so the importer writes a `power` texture of the
 // looked-up value, 1/4 or 1/2. uroughness and vroughness naming one texture are the same;
-// different textures, or a texture beside a number, are anisotropic and refused, as is a coat's
-// textured roughness (lamina's coat takes no texture).
+// different textures, or a texture beside a number, are anisotropic and refused. A coat's
+// textured roughness is the coated material's.
 TEST_F(PbrtCorpusConstructs, TexturedRoughnessIsRemappedAfterItsLookup) {
     const ImportedScene s = import(
         "Texture \"r\" \"float\" \"checkerboard\" \"float tex1\" 0.04 \"float tex2\" 0.36\n"
@@ -277,9 +277,20 @@ TEST_F(PbrtCorpusConstructs, TexturedRoughnessIsRemappedAfterItsLookup) {
     EXPECT_THAT(importError(texture + "Material \"conductor\" \"texture roughness\" \"r\" "
                                       "\"float vroughness\" 0.1\nShape \"sphere\"\n"),
                 HasSubstr("an anisotropic textured roughness is not supported"));
-    EXPECT_THAT(importError(texture + "Material \"coateddiffuse\" \"texture roughness\" \"r\"\n"
-                                      "Shape \"sphere\"\n"),
-                HasSubstr("parameter \"texture roughness\" as a texture is not supported"));
+    const ImportedScene coat = import(texture +
+                                      "Material \"coateddiffuse\" \"texture roughness\" \"r\"\n"
+                                      "Shape \"sphere\"\n");
+    const Json& coated =
+        coat.scene["materials"][coat.scene["shapes"][0]["material"].get<std::string>()];
+    EXPECT_EQ(coated["type"], "coated");
+    EXPECT_EQ(coat.scene["textures"][coated["roughness"]["texture"].get<std::string>()]["exponent"],
+              0.25);
+    EXPECT_NO_THROW(loadScene(file_)) << errorOf([&] { loadScene(file_); });
+    // The conductor under a coatedconductor's coat stays refused (a nested textured roughness).
+    EXPECT_THAT(
+        importError(texture + "Material \"coatedconductor\" \"texture conductor.roughness\" "
+                              "\"r\"\nShape \"sphere\"\n"),
+        HasSubstr("as a texture is not supported"));
 }
 
 // pbrt-v4's coateddiffuse takes a textured reflectance (CoatedDiffuseMaterial, materials.h):

@@ -76,6 +76,55 @@ TEST(CoatedTexture, TheBaseTakesTheTexturesColourAtEachUv) {
     }
 }
 
+// The coat's own roughness from a texture (pbrt-v4's coateddiffuse and coatedconductor, Mitsuba's
+// roughplastic): at each uv the coat of the texel's roughness, the base's colour texture beside
+// it; over a base with a delta lobe the coat stays rough where the texture says 0 (a smooth coat
+// over it is refused).
+TEST(CoatedTexture, TheCoatTakesItsOwnRoughnessFromATexture) {
+    const render::SceneDesc scene = testing::sceneFromText(R"({
+  "textures": {"r": {"type": "checkerboard", "a": 0.2, "b": 0.6, "scale": [2, 2]},
+               "zero": {"type": "checkerboard", "a": 0, "b": 0.5, "scale": [2, 2]},
+               "checks": {"type": "checkerboard", "a": 0.8, "b": 0.2, "scale": [2, 2]}},
+  "materials": {
+    "textured": {"type": "coated", "ior": 1.5, "roughness": {"texture": "r"},
+                 "base": {"type": "lambert", "reflectance": {"texture": "checks"}}},
+    "constant": {"type": "coated", "ior": 1.5, "roughness": 0.6,
+                 "base": {"type": "lambert", "reflectance": 0.2}},
+    "mirror": {"type": "coated", "roughness": {"texture": "zero"},
+               "base": {"type": "conductor", "material": "Au"}}},
+  "shapes": [{"type": "sphere", "material": "textured", "emission": {"radiance": 1}},
+             {"type": "sphere", "material": "constant", "center": [3, 0, 0]},
+             {"type": "sphere", "material": "mirror", "center": [6, 0, 0]}]
+})");
+    const int textured = materialIndex(scene, "textured");
+    const auto alphaOf = [](const MaterialDesc& m) {
+        return m.model.as<CoatedMaterial>().microfacet.alphaX;
+    };
+    const MaterialDesc inA = render::texturedMaterial(scene, textured, Vec2<float>(0.25f, 0.25f));
+    const MaterialDesc inB = render::texturedMaterial(scene, textured, Vec2<float>(0.75f, 0.25f));
+    EXPECT_NEAR(alphaOf(inA), 0.04, 1e-7);  // alpha = roughness^2
+    EXPECT_NEAR(alphaOf(inB), 0.36, 1e-7);
+    EXPECT_NEAR(baseReflectance(inA), 0.8, 1e-7);
+    EXPECT_NEAR(baseReflectance(inB), 0.2, 1e-7);
+    // The coat at a texel is the constant coat of that roughness and base colour.
+    const SpectrumContext<Rgb<double>> rgb{};
+    const auto atB = buildBxdf(inB, rgb, 7);
+    const auto constant =
+        buildBxdf(scene.materials[std::size_t(materialIndex(scene, "constant"))], rgb, 7);
+    const Vec3<double> wo = normalize(Vec3<double>(0.3, -0.2, 0.9));
+    for (const Vec3<double>& wi :
+         {Vec3<double>(0, 0, 1), normalize(Vec3<double>(-0.5, 0.1, 0.6))}) {
+        const double a = atB->eval(wo, wi, TransportMode::Radiance)[0];
+        const double c = constant->eval(wo, wi, TransportMode::Radiance)[0];
+        EXPECT_NEAR(a, c, 1e-5 * c);
+    }
+    // Over the smooth gold, the texel of roughness 0 keeps the smallest rough alpha.
+    const int mirror = materialIndex(scene, "mirror");
+    const MaterialDesc smooth = render::texturedMaterial(scene, mirror, Vec2<float>(0.25f, 0.25f));
+    EXPECT_GE(alphaOf(smooth), double(kSmoothAlpha));
+    EXPECT_NO_THROW(buildBxdf(smooth, rgb, 7));
+}
+
 TEST(CoatedTexture, WhatANestedMaterialCannotTakeIsRefused) {
     const auto errorOf = [](const std::string& base) {
         try {

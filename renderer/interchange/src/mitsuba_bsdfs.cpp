@@ -92,17 +92,13 @@ Json dielectric(Plugin& p, const char* type, bool rough, const char* interior,
 }
 
 Json plastic(Plugin& p, bool rough, bool insideTwoSided, std::vector<TranslatedTexture>& textures) {
-    // Lamina's coat takes no texture; its base's colour may be one.
+    // The coat's roughness and the base's colour may be textured.
     Json base{
         {"type", "lambert"},
         {"reflectance", colorOrTexture(p, "diffuse_reflectance", textures).value_or(Json(0.5))}};
     Json m{{"type", "coated"}, {"ior", relativeIor(p, "polypropylene", "air")}, {"base", base}};
     refuseScale(p, "specular_reflectance");
     const bool nonlinear = p.boolean("nonlinear", false);
-    if (rough && p.texture("alpha"))
-        p.fail(
-            "a textured alpha on roughplastic is not supported (lamina's coat takes no "
-            "texture)");
     if (rough) microfacetRoughness(p, m, false, textures);
     p.warn(std::string(rough ? "roughplastic" : "plastic") +
            " became lamina's coated (a dielectric coat over lambert, evaluated by a random walk "

@@ -65,7 +65,7 @@ bool texturedRoughness(TranslationContext& ctx, const Entity& e, const std::stri
 // maps a roughness r to the Trowbridge-Reitz alpha sqrt(r)
 // (TrowbridgeReitzDistribution::RoughnessToAlpha, util/scattering.h). lamina's GGX is the
 // same distribution with the same alpha. `textureAllowed`: the lamina material takes a
-// textured roughness (conductors and dielectrics; not a coat, nor a coat's base).
+// textured roughness (conductors, dielectrics and a coat; not a coat's base).
 void roughness(TranslationContext& ctx, const Entity& e, const std::string& prefix, Json& material,
                bool textureAllowed) {
     const ParamList& params = e.params;
@@ -158,7 +158,7 @@ Json coated(TranslationContext& ctx, const Entity& e, const std::string& roughne
         ctx.fail(e.location, "a coat's index must be a number in lamina's coated material");
     ior = iorJson.get<double>();
     m["ior"] = ior;
-    roughness(ctx, e, roughnessPrefix, m, false);
+    roughness(ctx, e, roughnessPrefix, m, true);
     m["thickness"] = constantNumber(params, "thickness", 0.01);
     m["albedo"] = colour(ctx, e, "albedo", 0.0, false);
     m["g"] = constantNumber(params, "g", 0.0);

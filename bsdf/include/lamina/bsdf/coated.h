@@ -203,6 +203,9 @@ struct CoatedMaterial {
     double g = 0;                      ///< Henyey-Greenstein asymmetry
     int maxDepth = 0;  ///< the most events of a walk; 0: no cap (Russian roulette ends it)
     int samples = 1;
+    /// Whether the base has a delta lobe (readCoated): a textured coat roughness then stays
+    /// rough (texturedCoated), as a smooth coat over such a base is refused.
+    bool baseHasDeltaLobe = false;
 };
 
 template <SpectrumType S>
