@@ -155,9 +155,11 @@ TEST(Textures, OnlyATypesTexturableKeysTakeATexture) {
                                      "textured parameters: standard (base_color / roughness)"));
     for (const MaterialKind* kind : materialKinds())
         for (const TexturableKey& t : kind->texturable) {
-            // Every registered key does take one (a conductor needs its optics, every other
-            // type's defaults are a material).
-            const std::string extra = kind->name == "conductor" ? R"(, "f0": 0.9)" : "";
+            // Every registered key does take one (a conductor needs its optics, a coat its
+            // base, every other type's defaults are a material).
+            const std::string extra = kind->name == "conductor" ? R"(, "f0": 0.9)"
+                                      : kind->name == "coated"  ? R"(, "base": {"type": "lambert"})"
+                                                                : "";
             const std::string material = std::string(R"({"type": ")") + std::string(kind->name) +
                                          R"(", ")" + std::string(t.key) + R"(": {"texture": "r"})" +
                                          extra + "}";
