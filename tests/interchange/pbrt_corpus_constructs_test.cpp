@@ -249,6 +249,25 @@ TEST_F(PbrtCorpusConstructs, AnInterfaceOnlySceneHasAnEmptyMaterialsObject) {
 // looked-up value, 1/4 or 1/2. uroughness and vroughness naming one texture are the same;
 // different textures, or a texture beside a number, are anisotropic and refused. A coat's
 // textured roughness is the coated material's.
+// pbrt-v4-scenes' villa gives coateddiffuse "float roughness" 2: alpha sqrt(2), beyond lamina's
+// microfacet models, which stop at alpha 1: clamped there with one warning.
+TEST_F(PbrtCorpusConstructs, AnAlphaAboveOneBecomesOneWithAWarning) {
+    const ImportedScene s = import(
+        "Material \"coateddiffuse\" \"float roughness\" 2\nShape \"sphere\"\n"
+        "Material \"conductor\" \"float roughness\" 0.25\nShape \"disk\"\n");
+    const auto materialOf = [&](int shape) -> const Json& {
+        return s.scene["materials"][s.scene["shapes"][shape]["material"].get<std::string>()];
+    };
+    EXPECT_EQ(materialOf(0)["alpha"], 1.0);
+    EXPECT_EQ(materialOf(1)["alpha"], 0.5);
+    int clamped = 0;
+    for (const std::string& w : s.warnings)
+        clamped += w.find("a roughness of alpha 1.414214 became lamina's largest, alpha 1") !=
+                   std::string::npos;
+    EXPECT_EQ(clamped, 1);
+    EXPECT_NO_THROW(loadScene(file_)) << errorOf([&] { loadScene(file_); });
+}
+
 TEST_F(PbrtCorpusConstructs, TexturedRoughnessIsRemappedAfterItsLookup) {
     const ImportedScene s = import(
         "Texture \"r\" \"float\" \"checkerboard\" \"float tex1\" 0.04 \"float tex2\" 0.36\n"

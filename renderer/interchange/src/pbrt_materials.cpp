@@ -76,7 +76,16 @@ void roughness(TranslationContext& ctx, const Entity& e, const std::string& pref
     const double v = constantNumber(params, prefix + "vroughness", r);
     auto alpha = [&](double x) {
         if (x < 0) ctx.fail(e.location, "a roughness is negative");
-        return remap ? std::sqrt(x) : x;
+        const double a = remap ? std::sqrt(x) : x;
+        // pbrt-v4's Trowbridge-Reitz takes any alpha; lamina's microfacet models stop at 1
+        // (their albedo tables and schema), where the lobe is already close to uniform.
+        if (a > 1) {
+            ctx.warn(e.location, "a roughness of alpha " + std::to_string(a) +
+                                     " became lamina's largest, alpha 1 (a slightly less "
+                                     "diffuse lobe)");
+            return 1.0;
+        }
+        return a;
     };
     if (u == v) {
         if (u != 0) material["alpha"] = alpha(u);
