@@ -17,30 +17,30 @@ namespace lamina::render {
 /// cheap whatever a scene file asks.
 inline constexpr int kMaxNoiseOctaves = 30;
 
-/// pbrt-v4's FBmTexture: fbm(q, omega = roughness, octaves), q the point in texture space.
-class FbmTexture final : public Texture {
+/// What the two noise-sum textures share: their texture space, octaves and omega (roughness).
+class NoiseSumTexture : public Texture {
   public:
-    FbmTexture(const TextureSpace& space, int octaves, float roughness)
+    NoiseSumTexture(const TextureSpace& space, int octaves, float roughness)
         : space_(space), octaves_(octaves), omega_(roughness) {}
-    Rgb<float> evaluate(const TexturePoint& at) const override;
 
-  private:
+  protected:
     TextureSpace space_;
     int octaves_;
     float omega_;
 };
 
-/// pbrt-v4's WrinkledTexture: turbulence(q, omega = roughness, octaves).
-class WrinkledTexture final : public Texture {
+/// pbrt-v4's FBmTexture: fbm(q, omega = roughness, octaves), q the point in texture space.
+class FbmTexture final : public NoiseSumTexture {
   public:
-    WrinkledTexture(const TextureSpace& space, int octaves, float roughness)
-        : space_(space), octaves_(octaves), omega_(roughness) {}
+    using NoiseSumTexture::NoiseSumTexture;
     Rgb<float> evaluate(const TexturePoint& at) const override;
+};
 
-  private:
-    TextureSpace space_;
-    int octaves_;
-    float omega_;
+/// pbrt-v4's WrinkledTexture: turbulence(q, omega = roughness, octaves).
+class WrinkledTexture final : public NoiseSumTexture {
+  public:
+    using NoiseSumTexture::NoiseSumTexture;
+    Rgb<float> evaluate(const TexturePoint& at) const override;
 };
 
 /// pbrt-v4's WindyTexture: |fbm(q / 10, 1/2, 3)| fbm(q, 1/2, 6), waves whose height a slower
