@@ -1,6 +1,8 @@
 // Environment maps: importance sampling matches its density (chi-square, significance 0.01),
-// lookups follow the documented mapping, and a constant image is a white furnace (in both
-// mappings; environment_mapping_test.cpp tests the mappings and the transform).
+// lookups follow the documented mapping, a constant image is a white furnace (in both
+// mappings; environment_mapping_test.cpp tests the mappings and the transform), and a floor
+// under a sky that shines only around the zenith has the closed form's radiance by every
+// integrator and by BSDF sampling alone.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -80,6 +82,47 @@ TEST(EnvironmentMap, ConstantImageIsAWhiteFurnace) {
                     << light << ", channel " << c;
             }
         }
+    }
+    fs::remove_all(dir);
+}
+
+// A sky of radiance 10 within 45 degrees of the zenith and black below: a diffuse floor of
+// reflectance 0.5 receives E = L pi sin^2(45 deg) and reflects 0.5 L / 2 = 2.5. Every escaping
+// ray must look the sky up in its own direction: the path tracer once looked it up in the
+// opposite one, so that BSDF-sampled rays saw the black nadir (1.98 with next-event estimation
+// and MIS, 0 by BSDF sampling alone, where light tracing and BDPT gave 2.5).
+TEST(EnvironmentMap, AFloorUnderAZenithSkyHasTheClosedFormsRadiance) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("lamina-zenith-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    // 64 x 32 latitude-longitude: rows 0-7 are theta < 45 degrees exactly.
+    std::vector<float> data(std::size_t(64 * 32 * 3), 0.0f);
+    std::fill(data.begin(), data.begin() + 64 * 8 * 3, 10.0f);
+    render::writeFloatExr(dir / "zenith.exr", 64, 32, {"R", "G", "B"}, data);
+    const auto scene = [&](const std::string& integrator, bool nextEvent) {
+        return testing::sceneFromText(R"({
+          "camera": {"position": [0, 2, -3], "look_at": [0, 0, 0], "fov": 30},
+          "film": {"resolution": [16, 16]},
+          "integrator": {"type": ")" + integrator + R"(", "max_depth": 1)" +
+                                      (integrator == "path" ? std::string(", \"next_event\": ") +
+                                                                  (nextEvent ? "true" : "false")
+                                                            : std::string()) +
+                                      R"(},
+          "materials": {"floor": {"type": "lambert", "reflectance": 0.5}},
+          "shapes": [{"type": "rectangle", "material": "floor",
+                      "transform": [{"rotate": {"axis": [1, 0, 0], "angle": -90}}, {"scale": 3}]}],
+          "lights": [{"type": "environment", "file": ")" +
+                                      (dir / "zenith.exr").string() + R"("}]})");
+    };
+    const std::pair<std::string, bool> cases[] = {
+        {"path", true}, {"path", false}, {"light", true}, {"bdpt", true}};
+    for (const auto& [integrator, nextEvent] : cases) {
+        render::RenderOptions o;
+        o.spp = 256;
+        const auto r = render::renderScene(scene(integrator, nextEvent), o);
+        const auto m = testing::imageMean(*r.film, 0);
+        EXPECT_NEAR(m.mean, 2.5, 4 * m.standardError + 1e-3)
+            << integrator << (nextEvent ? "" : " without next-event estimation");
     }
     fs::remove_all(dir);
 }
