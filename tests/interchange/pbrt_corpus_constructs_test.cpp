@@ -189,18 +189,20 @@ TEST_F(PbrtCorpusConstructs, AttributeDefaultsAreTheParametersWrittenOut) {
 }
 
 // pbrt-v4's PortalImageInfiniteLight (lights.cpp) shows the environment image only through
-// the portal; lamina keeps the environment (the same light, translated as without the portal)
-// and warns. A portal on a uniform L, which pbrt-v4 turns into an unnormalised RGB image, and
-// a portal of other than four corners are refused.
-TEST_F(PbrtCorpusConstructs, EnvironmentPortalsAreWarnedAboutOrRefused) {
+// the portal: it becomes lamina's environment with the same corners as its `portal`
+// (portal_environment.h), with no warning. A portal on a uniform L, which pbrt-v4 turns into an
+// unnormalised RGB image, a portal of other than four corners and one that is not a rectangle
+// (pbrt-v4 goes on with a wrong frame) are refused at the file's line.
+TEST_F(PbrtCorpusConstructs, EnvironmentPortalsBecomeLaminasPortals) {
     write("sky.exr", "not read by the importer");
     const std::string light = "LightSource \"infinite\" \"string filename\" \"sky.exr\"";
     const ImportedScene plain = import(light + "\n");
     const ImportedScene portal =
         import(light + "\n    \"point3 portal\" [0 0 0  1 0 0  1 1 0  0 1 0]\n");
-    EXPECT_EQ(portal.scene["lights"], plain.scene["lights"]);
-    ASSERT_EQ(portal.warnings.size(), 1u);
-    EXPECT_THAT(portal.warnings[0], HasSubstr(at(2) + ": infinite: the portal ignored"));
+    Json expected = plain.scene["lights"];
+    expected[1]["portal"] = Json::parse("[[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]]");
+    EXPECT_EQ(portal.scene["lights"], expected);
+    EXPECT_TRUE(portal.warnings.empty());
     EXPECT_EQ(importError("LightSource \"infinite\" \"rgb L\" [1 1 1]\n"
                           "    \"point3 portal\" [0 0 0  1 0 0  1 1 0  0 1 0]\n"),
               at(2) +
@@ -208,6 +210,63 @@ TEST_F(PbrtCorpusConstructs, EnvironmentPortalsAreWarnedAboutOrRefused) {
                   "into an unnormalised RGB image there): remove the portal");
     EXPECT_THAT(importError(light + " \"point3 portal\" [0 0 0  1 0 0  1 1 0]\n"),
                 HasSubstr("expected the portal's four corners"));
+    EXPECT_THAT(importError(light + "\n    \"point3 portal\" [0 0 0  1 0 0  1.5 1 0  0 1 0]\n"),
+                HasSubstr(at(2) + ": LightSource \"infinite\": parameter \"point3 portal\" "
+                                  "expected a rectangle"));
+}
+
+// pbrt-v4's SubsurfaceMaterial (materials.cpp) becomes a dielectric of its eta around the
+// homogeneous medium of its coefficients times `scale`, which every shape using it holds; one
+// warning says that lamina renders the volumetric transport pbrt-v4's BSSRDF approximates.
+// sssdragon's material: the measured Skin1 (Jensen et al. 2001), scale 50, eta 1.5.
+TEST_F(PbrtCorpusConstructs, SubsurfaceBecomesADielectricAroundItsMedium) {
+    const ImportedScene s = import(
+        "MakeNamedMaterial \"skin\" \"string type\" \"subsurface\" \"string name\" \"Skin1\"\n"
+        "    \"float scale\" 50 \"float eta\" 1.5\n"
+        "NamedMaterial \"skin\"\nShape \"sphere\"\n");
+    EXPECT_EQ(s.scene["materials"]["skin"], Json::parse(R"({"type": "dielectric", "ior": 1.5})"));
+    ASSERT_EQ(s.scene["shapes"].size(), 1u);
+    EXPECT_EQ(s.scene["shapes"][0]["interior"], "subsurface of skin");
+    EXPECT_FALSE(s.scene["shapes"][0].contains("exterior"));
+    EXPECT_EQ(s.scene["media"]["subsurface of skin"],
+              Json::parse(R"({"type": "homogeneous", "sigma_a": [0.032, 0.17, 0.48],
+                              "sigma_s": [0.74, 0.88, 1.01], "scale": 50, "g": 0})"));
+    ASSERT_EQ(s.warnings.size(), 1u);
+    EXPECT_THAT(s.warnings[0], HasSubstr(at(1) + ": subsurface: rendered as the light transport "
+                                                 "in its homogeneous medium"));
+    // The lamina document loads: a dielectric shape holding a medium.
+    EXPECT_NO_THROW(parseScene(s.scene.dump(), JsonSource{"<imported>", dir_}));
+
+    // Coefficients given, with a roughness; pbrt-v4's defaults when nothing is given.
+    const ImportedScene given = import(
+        "Material \"subsurface\" \"rgb sigma_a\" [0.1 0.2 0.3] \"rgb sigma_s\" [1 2 3]\n"
+        "    \"float g\" 0.4 \"float roughness\" 0.01\nShape \"sphere\"\n");
+    const std::string name = given.scene["shapes"][0]["interior"];
+    EXPECT_EQ(given.scene["media"][name]["sigma_a"], Json::parse("[0.1, 0.2, 0.3]"));
+    EXPECT_EQ(given.scene["media"][name]["g"], 0.4);
+    const Json& material =
+        given.scene["materials"][given.scene["shapes"][0]["material"].get<std::string>()];
+    EXPECT_EQ(material["ior"], 1.33);
+    EXPECT_NEAR(material["alpha"].get<double>(), 0.1, 1e-12);
+    const ImportedScene defaults = import("Material \"subsurface\"\nShape \"sphere\"\n");
+    EXPECT_EQ(defaults.scene["media"][defaults.scene["shapes"][0]["interior"].get<std::string>()]
+                            ["sigma_s"],
+              Json::parse("[2.55, 3.21, 3.77]"));
+
+    // What pbrt-v4 refuses, and what lamina cannot do faithfully.
+    EXPECT_EQ(importError("Material \"subsurface\" \"rgb sigma_a\" [1 1 1]\nShape \"sphere\"\n"),
+              at(1) + ": subsurface: give both sigma_a and sigma_s (as pbrt-v4 requires)");
+    EXPECT_THAT(importError("Material \"subsurface\" \"rgb reflectance\" [0.5 0.5 0.5]\n"
+                            "Shape \"sphere\"\n"),
+                HasSubstr(at(1) + ": subsurface: \"reflectance\" (with \"mfp\") is not supported"));
+    EXPECT_THAT(
+        importError("Material \"subsurface\" \"string name\" \"Jelly\"\nShape \"sphere\"\n"),
+        HasSubstr(at(1) + ": subsurface: no measured medium \"Jelly\""));
+    EXPECT_THAT(importError("MakeNamedMaterial \"skin\" \"string type\" \"subsurface\"\n"
+                            "MakeNamedMaterial \"half\" \"string type\" \"mix\"\n"
+                            "    \"string materials\" [\"skin\" \"skin\"]\n"
+                            "NamedMaterial \"half\"\nShape \"sphere\"\n"),
+                HasSubstr("a subsurface material cannot be mixed"));
 }
 
 // pbrt-v4's DiffuseAreaLight emits nothing where AlphaMasked (lights.h: alpha <= 0 always,

@@ -113,6 +113,9 @@ INSTANTIATE_TEST_SUITE_P(
         // from its own plane).
         AgreementCase{"ReflectingLampBeforeAWall", "scenes/reciprocity/lamp-before-wall.json",
                       RenderModeKind::Rgb},
+        // A sky seen only through a window (a portal): next-event samples through it, particles
+        // start on it.
+        AgreementCase{"PortalWindow", "scenes/reciprocity/portal-window.json", RenderModeKind::Rgb},
         // Curves of the hair material: a BSDF that is not reciprocal, light crossing tubes;
         // 189 blocks see the floor and the hair (the sky above is black).
         AgreementCase{"Hair", "scenes/hair-tufts.json", RenderModeKind::Rgb, 189}),

@@ -28,13 +28,15 @@ S BdptConnector<S>::evalAt(const Vertex& v, const Vec3f& wPrev, const Vec3f& wNe
     return f;
 }
 
-/// Radiance emitted by emitter vertex `v` towards `w`.
+/// Radiance emitted by emitter vertex `v` towards `w`, received at `receiver` (which a portal's
+/// environment needs: it is seen only through the portal).
 template <SpectrumType S>
-S BdptConnector<S>::emitted(const Vertex& v, const Vec3f& w, typename Mode::Path& path) const {
+S BdptConnector<S>::emitted(const Vertex& v, const Vec3f& w, const Vec3f& receiver,
+                            typename Mode::Path& path) const {
     if (v.infinite) {
         S Le(0.0f);
         for (std::size_t i : c_.lights.infiniteLights())
-            Le += mode_.emission(c_.lights.light(i).environment(-w), path);
+            Le += mode_.emission(c_.lights.light(i).environment(receiver, -w), path);
         return Le;
     }
     if (v.light < 0) return S(0.0f);
@@ -102,9 +104,9 @@ BdptConnection<S> BdptConnector<S>::connect(const std::vector<Vertex>& lightPath
         // The camera subpath's end is an emitter.
         if (!(cv.infinite || (cv.type == BdptVertexType::Surface && cv.light >= 0))) return result;
         const Vertex& prev = cameraPath[std::size_t(t - 2)];
-        value =
-            throughMedia(cv.beta * emitted(cv, cv.infinite ? -cv.p : directionTo(cv, prev), path),
-                         Transmittance<S>{}, cv.rU, S(1.0f), hero);
+        value = throughMedia(
+            cv.beta * emitted(cv, cv.infinite ? -cv.p : directionTo(cv, prev), prev.p, path),
+            Transmittance<S>{}, cv.rU, S(1.0f), hero);
     } else if (t == 1) {
         // Light vertex s-1 (a surface or medium vertex: s >= 2, since (1, 1) is skipped)
         // seen by the camera.

@@ -13,11 +13,21 @@ float BdptMisWeights<S>::pdfLight(const Vertex& v, const Vertex& next) const {
     // A medium's emission leaves in a direction uniform on the sphere.
     if (inVolume(v)) return toArea(uniformSpherePdf<float>(), v, next);
     if (v.infinite) {
-        // From the disk every infinite light shares: its density projected on the surface at
-        // `next`.
+        // The density perpendicular to the direction, projected on the surface at `next`: the
+        // disk's, which every environment without a portal shares, or a portal's, which is the
+        // scene's only environment (the scene reader refuses others beside it). A vertex that
+        // does not say its light (a camera subpath's escape) is an environment's.
         const Vec3f d = -v.p;
-        const Light& any = c_.lights.light(c_.lights.infiniteLights().front());
-        const EmissionPdf e = any.emissionPdf(Vec3f(0.0f), Vec3f(0.0f), d);
+        std::size_t light = c_.lights.infiniteLights().front();
+        if (v.light >= 0)
+            light = std::size_t(v.light);
+        else
+            for (std::size_t k : c_.lights.infiniteLights())
+                if (!c_.lights.light(k).isDelta()) {
+                    light = k;
+                    break;
+                }
+        const EmissionPdf e = c_.lights.light(light).emissionPdf(next.p, Vec3f(0.0f), d);
         return e.position * (next.onSurface() ? std::abs(glm::dot(next.ng, d)) : 1.0f);
     }
     const Light& light = c_.lights.light(std::size_t(v.light));

@@ -143,12 +143,12 @@ S PathIntegrator<S>::radiance(const Vec3f& rayOrigin, const Vec3f& rayDirection,
         if (!hit) {
             for (std::size_t i : c_.lights.infiniteLights()) {
                 const Light& light = c_.lights.light(i);
-                const Emission Le = light.environment(d);
+                const Emission Le = light.environment(o, d);
                 if (Le.isZero()) continue;
                 const float lightPdf = specularBounce || !nextEvent
                                            ? 0.0f
                                            : c_.lights.probability(i, prevPoint, prevNormal) *
-                                                 light.environmentPdf(d);
+                                                 light.environmentPdf(o, d);
                 L += reached(mode_.emission(Le, path), lightPdf);
             }
             break;

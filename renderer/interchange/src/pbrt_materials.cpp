@@ -219,6 +219,67 @@ Json hair(TranslationContext& ctx, const Entity& e) {
     return m;
 }
 
+// pbrt-v4's SubsurfaceMaterial (materials.cpp, SubsurfaceMaterial::Create): a dielectric
+// boundary (a float eta, default 1.33; roughness as a dielectric's) around a homogeneous
+// medium given by a measured `name` (sigma_a and the reduced sigma_s, g = 0), by `sigma_a` and
+// `sigma_s`, or by pbrt-v4's defaults, all times `scale`. pbrt-v4 renders the light beneath the
+// surface with a tabulated BSSRDF (photon beam diffusion); lamina renders the volumetric light
+// transport that the BSSRDF approximates: the shapes using the material hold the medium
+// (subsurfaceInteriors) and their surface is the dielectric.
+Json subsurface(TranslationContext& ctx, const MaterialDef& def) {
+    const Entity& e = def.entity;
+    const ParamList& params = e.params;
+    Json medium{{"type", "homogeneous"}};
+    double g = params.number("g", 0.0);
+    const std::string name = params.string("name", "");
+    if (!name.empty()) {
+        const auto measured = measuredMediumCoefficients(name);
+        if (!measured)
+            ctx.fail(e.location, "subsurface: no measured medium \"" + name +
+                                     "\" (pbrt-v4's names, e.g. \"Skin1\")");
+        if (g != 0)
+            ctx.warn(e.location,
+                     "subsurface: \"g\" ignored with a named medium (its sigma_s is the "
+                     "reduced one, for g = 0, as in pbrt-v4)");
+        g = 0;
+        medium["sigma_a"] = measured->first;
+        medium["sigma_s"] = measured->second;
+    } else if (params.find("sigma_a") || params.find("sigma_s")) {
+        if (!params.find("sigma_a") || !params.find("sigma_s"))
+            ctx.fail(e.location, "subsurface: give both sigma_a and sigma_s (as pbrt-v4 requires)");
+        medium["sigma_a"] = mediumCoefficient(ctx, params, "sigma_a");
+        medium["sigma_s"] = mediumCoefficient(ctx, params, "sigma_s");
+    } else if (params.find("reflectance")) {
+        ctx.fail(e.location,
+                 "subsurface: \"reflectance\" (with \"mfp\") is not supported: pbrt-v4 inverts "
+                 "its BSSRDF's table for the coefficients; give \"sigma_a\" and \"sigma_s\", or "
+                 "a measured \"name\"");
+    } else {
+        medium["sigma_a"] = Json::array({0.0011, 0.0024, 0.014});
+        medium["sigma_s"] = Json::array({2.55, 3.21, 3.77});
+    }
+    const double scale = constantNumber(params, "scale", 1.0);
+    if (!(scale >= 0) || !std::isfinite(scale))
+        ctx.fail(e.location, "subsurface: \"scale\" must be finite and >= 0");
+    medium["scale"] = scale;
+    if (!(std::abs(g) < 1))
+        ctx.fail(e.location,
+                 "subsurface: \"g\" must lie in (-1, 1): lamina's Henyey-Greenstein phase "
+                 "function has no delta limit");
+    medium["g"] = g;
+    const std::string mediumName = "subsurface of " + def.name;
+    ctx.document["media"][mediumName] = medium;
+    ctx.writtenMedia.insert(mediumName);
+    ctx.subsurfaceInteriors[def.name] = mediumName;
+    Json m{{"type", "dielectric"}, {"ior", constantNumber(params, "eta", 1.33)}};
+    roughness(ctx, e, "", m, true);
+    ctx.warn(e.location,
+             "subsurface: rendered as the light transport in its homogeneous medium behind a "
+             "dielectric boundary, which pbrt-v4's tabulated BSSRDF approximates (each "
+             "scattering inside counts towards max_depth: raise it for deep translucency)");
+    return m;
+}
+
 Json translateMaterial(TranslationContext& ctx, const MaterialDef& def, int depth) {
     const Entity& e = def.entity;
     const ParamList& params = e.params;
@@ -276,6 +337,11 @@ Json translateMaterial(TranslationContext& ctx, const MaterialDef& def, int dept
         const double amount = constantNumber(params, "amount", 0.5);
         Json a = materialByName(ctx, names->strings[0], names->location, depth);
         Json b = materialByName(ctx, names->strings[1], names->location, depth);
+        for (const std::string& mixed : names->strings)
+            if (ctx.subsurfaceInteriors.count(mixed))
+                ctx.fail(e.location,
+                         "mix: a subsurface material cannot be mixed (its medium "
+                         "belongs to the shape)");
         if (a.is_null() || b.is_null())
             ctx.fail(e.location, "mix: an interface material cannot be mixed");
         for (const Json* mixed : {&a, &b})
@@ -292,6 +358,12 @@ Json translateMaterial(TranslationContext& ctx, const MaterialDef& def, int dept
         m = {{"type", "measured"}, {"filename", ctx.filePath(params, *file)}};
     } else if (e.type == "hair") {
         m = hair(ctx, e);
+    } else if (e.type == "subsurface") {
+        // A mix's materials are translated one level deeper than a shape's.
+        if (depth > 1)
+            ctx.fail(e.location,
+                     "a subsurface material cannot be mixed (its medium belongs to the shape)");
+        m = subsurface(ctx, def);
     } else if (e.type == "interface" || e.type == "" || e.type == "none") {
         // pbrt-v4 reads Material "" and "none" as "interface" (Material::Create).
         params.refuseUnused();
@@ -300,7 +372,8 @@ Json translateMaterial(TranslationContext& ctx, const MaterialDef& def, int dept
         ctx.fail(e.location, "material \"" + e.type +
                                  "\" is not supported (lamina reads diffuse, conductor, "
                                  "dielectric, thindielectric, coateddiffuse, coatedconductor, "
-                                 "diffusetransmission, measured, hair, mix and interface)");
+                                 "diffusetransmission, measured, hair, subsurface, mix and "
+                                 "interface)");
     }
     if (e.type != "mix" && e.type != "hair") shadingNormalMaps(ctx, e, m);
     params.refuseUnused();

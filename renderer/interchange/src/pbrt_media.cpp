@@ -80,6 +80,12 @@ Json triple(const std::array<double, 3>& v) {
 
 }  // namespace
 
+std::optional<std::pair<Json, Json>> measuredMediumCoefficients(const std::string& name) {
+    for (const MeasuredMedium& mm : kMeasuredMedia)
+        if (name == mm.name) return std::pair{triple(mm.sigmaA), triple(mm.sigmaPrimeS)};
+    return std::nullopt;
+}
+
 // A scattering coefficient: a float, an rgb triple (both as lamina reads them: spectral mode
 // upsamples an rgb coefficient as an unbounded spectrum, as pbrt-v4 does) or spectrum pairs of
 // one value (a constant). Pairs that vary are refused: lamina's media take RGB coefficients.
@@ -133,17 +139,15 @@ Json translateMedium(TranslationContext& ctx, const MediumDef& m) {
     if (e.type != "homogeneous") return translateGridMedium(ctx, m);
     Json medium{{"type", "homogeneous"}};
     const std::string preset = params.string("preset", "");
-    const MeasuredMedium* measured = nullptr;
-    for (const MeasuredMedium& mm : kMeasuredMedia)
-        if (preset == mm.name) measured = &mm;
+    const auto measured = measuredMediumCoefficients(preset);
     if (!preset.empty() && !measured)
         // pbrt-v4 warns and falls back to sigma_a and sigma_s; so does lamina.
         ctx.warn(e.location, "MakeNamedMedium \"" + m.name + "\": no preset \"" + preset +
                                  "\" (pbrt-v4's names, e.g. \"Wholemilk\"): sigma_a and sigma_s "
                                  "are used instead");
     if (measured) {
-        medium["sigma_a"] = triple(measured->sigmaA);
-        medium["sigma_s"] = triple(measured->sigmaPrimeS);
+        medium["sigma_a"] = measured->first;
+        medium["sigma_s"] = measured->second;
         for (const char* ignored : {"sigma_a", "sigma_s"})
             if (params.find(ignored))
                 ctx.warn(e.location, std::string("MakeNamedMedium \"") + m.name + "\": \"" +

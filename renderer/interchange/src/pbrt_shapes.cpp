@@ -296,6 +296,14 @@ std::optional<Json> translateShape(TranslationContext& ctx, const ShapeDef& s, b
         shape["interior"] = useMedium(ctx, s.media.inside, s.media.location);
         shape["exterior"] = useMedium(ctx, s.media.outside, s.media.location);
     }
+    if (const auto sub = ctx.subsurfaceInteriors.find(s.material);
+        sub != ctx.subsurfaceInteriors.end()) {
+        // A subsurface material's shape holds its medium (pbrt_materials.cpp).
+        if (boundary && !s.media.inside.empty())
+            ctx.warn(e.location, "the subsurface material's medium replaces the interior \"" +
+                                     s.media.inside + "\" of the MediumInterface");
+        shape["interior"] = sub->second;
+    }
     if (!shape.contains("center") && !ownTransform && !isIdentity(m))
         shape["transform"] = Json::array({Json{{"matrix", rowMajor(m)}}});
     // Alpha cut-outs ("float alpha" or a float texture; pbrt-v4 shapes.cpp).

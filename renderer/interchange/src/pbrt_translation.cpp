@@ -10,6 +10,7 @@
 
 #include "lamina/core/error.h"
 #include "lamina/core/input_file.h"
+#include "lamina/core/rectangle_corners.h"
 #include "lamina/interchange/scene_import.h"
 #include "pbrt_importer.h"
 #include "pbrt_motion.h"
@@ -155,7 +156,8 @@ Json translateIntegrator(TranslationContext& ctx, const Entity& e) {
             p.number("sigma", 0.01);
         }
         ctx.warn(e.location,
-                 "Integrator \"" + e.type + "\" became lamina's BDPT with the Sampler's sample count" +
+                 "Integrator \"" + e.type +
+                     "\" became lamina's BDPT with the Sampler's sample count" +
                      (e.type == "sppm" ? " (the image SPPM converges to, without the blur of its "
                                          "photon radius at a finite count)"
                                        : " (the image MLT converges to; its parameters are "
@@ -234,21 +236,23 @@ Json translateLight(TranslationContext& ctx, const Entity& e) {
     } else if (e.type == "infinite") {
         const double illuminance = p.number("illuminance", -1);
         const Param* file = p.find("filename");
+        Json portalCorners;
         if (const Param* portal = p.find("portal")) {
-            // pbrt-v4's PortalImageInfiniteLight (lights.cpp) shows the same environment but
-            // only through the portal quadrilateral (Le is 0 for rays that miss it); lamina's
-            // environment shines from every direction. Inside a room closed but for the portal
-            // (what portals are for) no other direction reaches the environment.
-            if (p.numbers("portal", {"point3"}, 3)->size() != 12)
-                p.fail(*portal, "expected the portal's four corners");
+            // pbrt-v4's PortalImageInfiniteLight: the environment seen only through the
+            // rectangle, whose corners are world points (lights.cpp applies no light transform
+            // to them): lamina's portal (portal_environment.h) is the same light.
+            const std::vector<double> c = *p.numbers("portal", {"point3"}, 3);
+            if (c.size() != 12) p.fail(*portal, "expected the portal's four corners");
             if (!file)
                 ctx.fail(portal->location,
                          "infinite: a portal on a uniform \"L\" is not supported (pbrt-v4 "
                          "turns L into an unnormalised RGB image there): remove the portal");
-            ctx.warn(portal->location,
-                     "infinite: the portal ignored: lamina's environment light shines from every "
-                     "direction, pbrt-v4's only through the portal (the same image where walls "
-                     "close the scene around it)");
+            std::array<glm::dvec3, 4> corners;
+            for (std::size_t k = 0; k < 4; ++k) {
+                corners[k] = glm::dvec3(c[3 * k], c[3 * k + 1], c[3 * k + 2]);
+                portalCorners.push_back(vec(corners[k]));
+            }
+            if (const auto why = whyNotARectangle(corners)) p.fail(*portal, *why);
         }
         if (file) {
             p.expectType(*file, {"string"});
@@ -281,6 +285,7 @@ Json translateLight(TranslationContext& ctx, const Entity& e) {
                      {"scale", scale},
                      {"mapping", "equal_area_octahedral"}};
             if (r != glm::dmat3(1.0)) light["transform"] = {{{"matrix", rowMajor(glm::dmat4(r))}}};
+            if (!portalCorners.is_null()) light["portal"] = portalCorners;
         } else {
             // UniformInfiniteLight: illuminance E gives scale *= E / pi.
             if (illuminance > 0) scale *= illuminance / kPi;

@@ -27,6 +27,8 @@ struct TranslationContext {
     /// Each pbrt material translated once (a mix refers to others by name), null for
     /// "interface".
     std::map<std::string, Json> translatedMaterials;
+    /// The medium inside the shapes of each subsurface material (pbrt name -> lamina medium).
+    std::map<std::string, std::string> subsurfaceInteriors;
     /// Textures being translated (a texture made of itself is refused).
     std::set<std::string> texturesInProgress;
     /// The film's diagonal in mm (pbrt-v4's Film "diagonal", 35), for a realistic camera.
@@ -63,7 +65,8 @@ Json translateCamera(TranslationContext& context, const Entity& camera, int widt
 
 /// The lamina material name for a shape's material (`name` empty: pbrt's default diffuse),
 /// writing it (and the textures it uses) into the document on first use. Returns an empty
-/// string for pbrt's "interface" material: the shape is to be omitted.
+/// string for pbrt's "interface" material: the shape is to be omitted. A subsurface material
+/// also names the medium its shapes hold (subsurfaceInteriors).
 std::string useMaterial(TranslationContext& context, const std::string& name,
                         const Location& usedAt);
 /// A reflectance-like spectrum parameter `name` of `e`: a number, [r, g, b], {"spectrum": pairs}
@@ -96,6 +99,10 @@ std::optional<Json> translateSolidTexture(TranslationContext& context, const Ent
 std::string useMedium(TranslationContext& context, const std::string& name, const Location& usedAt);
 /// Warns of each MakeNamedMedium no shape or camera used (it is not translated).
 void warnUnusedMedia(TranslationContext& context);
+/// pbrt-v4's measured media by name (a medium's "preset", a subsurface material's "name"):
+/// sigma_a and the reduced sigma'_s as rgb triples in mm^-1; nullopt for an unknown name
+/// (pbrt_media.cpp).
+std::optional<std::pair<Json, Json>> measuredMediumCoefficients(const std::string& name);
 /// A medium's sigma_a or sigma_s (default 1, pbrt-v4's): a number or rgb (pbrt_media.cpp).
 Json mediumCoefficient(TranslationContext& context, const ParamList& params,
                        const std::string& name);

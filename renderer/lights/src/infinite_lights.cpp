@@ -46,7 +46,8 @@ std::optional<LightSample> EnvironmentLight::sample(const Vec3f&, const Vec2f& u
     const Vec3f wi = sampleDirection(u, pdf);
     if (!(pdf > 0.0f)) return std::nullopt;
     return LightSample{
-        wi, std::numeric_limits<float>::infinity(), environment(wi), pdf, false, Vec3f(0.0f), -wi};
+        wi, std::numeric_limits<float>::infinity(), radianceTowards(wi), pdf, false, Vec3f(0.0f),
+        -wi};
 }
 
 // A direction w the light arrives from, and a start on the disk facing it: the particle
@@ -59,7 +60,7 @@ std::optional<EmissionSample> EnvironmentLight::sampleEmission(const Vec2f& uPos
     EmissionSample e;
     e.point = disk_.pointFacing(-w, uPosition);
     e.direction = e.normal = -w;
-    e.radiance = environment(w);
+    e.radiance = radianceTowards(w);
     e.pdfPosition = disk_.pdf();
     e.pdfDirection = pdf;
     return e;
@@ -67,7 +68,7 @@ std::optional<EmissionSample> EnvironmentLight::sampleEmission(const Vec2f& uPos
 
 EmissionPdf EnvironmentLight::emissionPdf(const Vec3f&, const Vec3f&,
                                           const Vec3f& direction) const {
-    return {disk_.pdf(), environmentPdf(-direction)};
+    return {disk_.pdf(), directionPdf(-direction)};
 }
 
 double EnvironmentLight::fluxPerRadiance() const {
@@ -81,7 +82,7 @@ double ConstantEnvironment::power() const {
     return fluxPerRadiance() * luminance(color_.rgbDouble());
 }
 
-float ConstantEnvironment::environmentPdf(const Vec3f&) const {
+float ConstantEnvironment::directionPdf(const Vec3f&) const {
     return uniformSpherePdf<float>();
 }
 
@@ -99,7 +100,7 @@ double ImageEnvironment::power() const {
     return fluxPerRadiance() * scale_ * map_.averageLuminance();
 }
 
-Emission ImageEnvironment::environment(const Vec3f& w) const {
+Emission ImageEnvironment::radianceTowards(const Vec3f& w) const {
     return Emission{nullptr, scale_, map_.lookup(w)};
 }
 

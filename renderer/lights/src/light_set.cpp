@@ -5,6 +5,7 @@
 #include "lamina/lights/area_lights.h"
 #include "lamina/lights/infinite_lights.h"
 #include "lamina/lights/point_lights.h"
+#include "lamina/lights/portal_environment.h"
 
 namespace lamina::render {
 
@@ -70,8 +71,13 @@ std::unique_ptr<Light> makeLight(const DirectionalLightDesc& d, const Geometry& 
 }
 
 std::unique_ptr<Light> makeLight(const EnvironmentLightDesc& d, const Geometry& g) {
-    if (d.file.empty()) return std::make_unique<ConstantEnvironment>(d, g);
-    return std::make_unique<ImageEnvironment>(d, g);
+    std::unique_ptr<EnvironmentLight> environment;
+    if (d.file.empty())
+        environment = std::make_unique<ConstantEnvironment>(d, g);
+    else
+        environment = std::make_unique<ImageEnvironment>(d, g);
+    if (d.portal) return std::make_unique<PortalEnvironment>(std::move(environment), *d.portal, g);
+    return environment;
 }
 
 }  // namespace

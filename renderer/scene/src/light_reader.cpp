@@ -1,6 +1,7 @@
 #include <cmath>
 #include <string>
 
+#include "lamina/core/rectangle_corners.h"
 #include "lamina/scene/scene_readers.h"
 
 namespace lamina::render {
@@ -109,8 +110,29 @@ DirectionalLightDesc readDirectionalLight(const JsonReader& r) {
     return l;
 }
 
+// A portal: four corners in order around a rectangle. Portal sampling maps directions through
+// it by two angles measured in the rectangle's own axes (portal_environment.h), which holds
+// only for a rectangle: a parallelogram or a non-planar quadrilateral is refused.
+std::array<Vec3d, 4> readPortal(const JsonReader& r) {
+    const JsonReader list = r.child("portal");
+    if (!list.value().is_array() || list.value().size() != 4)
+        list.fail("expected the portal's four corners, [[x, y, z], ...] in order around it");
+    std::array<Vec3d, 4> c;
+    for (std::size_t i = 0; i < 4; ++i) {
+        const auto& v = list.value()[i];
+        if (!v.is_array() || v.size() != 3)
+            list.fail("expected [x, y, z] at index " + std::to_string(i));
+        for (int k = 0; k < 3; ++k)
+            c[i][k] = list.checkNumber(v[std::size_t(k)], list.indexPath(i), Range::any());
+        checkCoordinates(r, "portal", c[i], "corner " + std::to_string(i));
+    }
+    if (const auto why = whyNotARectangle(c)) list.fail(*why);
+    return c;
+}
+
 EnvironmentLightDesc readEnvironmentLight(const JsonReader& r) {
     EnvironmentLightDesc l;
+    if (r.has("portal")) l.portal = readPortal(r);
     if (!r.has("file")) {
         std::tie(l.intensity, l.spectrum) = readEmissionValue(r, "radiance");
         return l;

@@ -64,7 +64,8 @@ class BdptConnector {
   private:
     S evalAt(const Vertex& v, const Vec3f& wPrev, const Vec3f& wNext, bool lightSubpath,
              typename Mode::Path& path) const;
-    S emitted(const Vertex& v, const Vec3f& w, typename Mode::Path& path) const;
+    S emitted(const Vertex& v, const Vec3f& w, const Vec3f& receiver,
+              typename Mode::Path& path) const;
     /// Whether light passes between `from` and `to` (a point, or a direction when infinite),
     /// and with media the transmittance of the segment, which starts in the medium on the side
     /// of `from` it leaves to (`before`: the vertex its subpath came to `from` from; none for

@@ -53,7 +53,7 @@ class DirectionalLight final : public InfiniteLight {
 };
 
 /// Radiance arriving from every direction: next-event samples and particles are drawn from
-/// sampleDirection() and weighted by environment().
+/// sampleDirection() and weighted by radianceTowards().
 class EnvironmentLight : public InfiniteLight {
   public:
     std::optional<LightSample> sample(const Vec3f& ref, const Vec2f& u) const final;
@@ -61,13 +61,16 @@ class EnvironmentLight : public InfiniteLight {
                                                  const Vec2f& uDirection) const final;
     EmissionPdf emissionPdf(const Vec3f& point, const Vec3f& normal,
                             const Vec3f& direction) const final;
-    Emission environment(const Vec3f& w) const override = 0;
-    float environmentPdf(const Vec3f& w) const override = 0;
+    /// The environment's radiance along w, wherever it is seen from.
+    virtual Emission radianceTowards(const Vec3f& w) const = 0;
+    virtual float directionPdf(const Vec3f& w) const = 0;
+    Emission environment(const Vec3f&, const Vec3f& w) const final { return radianceTowards(w); }
+    float environmentPdf(const Vec3f&, const Vec3f& w) const final { return directionPdf(w); }
 
   protected:
     using InfiniteLight::InfiniteLight;
 
-    /// A direction w (away from the scene) drawn with density environmentPdf(w), returned
+    /// A direction w (away from the scene) drawn with density directionPdf(w), returned
     /// in `pdf` (0: nothing drawn).
     virtual Vec3f sampleDirection(const Vec2f& u, float& pdf) const = 0;
     /// The flux through the scene's disk from all directions per unit radiance, 4 pi^2 r^2
@@ -81,8 +84,8 @@ class ConstantEnvironment final : public EnvironmentLight {
     ConstantEnvironment(const EnvironmentLightDesc& d, const Geometry& g);
 
     double power() const override;
-    Emission environment(const Vec3f&) const override { return {&color_, 1.0f}; }
-    float environmentPdf(const Vec3f&) const override;
+    Emission radianceTowards(const Vec3f&) const override { return {&color_, 1.0f}; }
+    float directionPdf(const Vec3f&) const override;
 
   private:
     Vec3f sampleDirection(const Vec2f& u, float& pdf) const override;
@@ -96,8 +99,8 @@ class ImageEnvironment final : public EnvironmentLight {
     ImageEnvironment(const EnvironmentLightDesc& d, const Geometry& g);
 
     double power() const override;
-    Emission environment(const Vec3f& w) const override;
-    float environmentPdf(const Vec3f& w) const override { return map_.pdf(w); }
+    Emission radianceTowards(const Vec3f& w) const override;
+    float directionPdf(const Vec3f& w) const override { return map_.pdf(w); }
 
   private:
     Vec3f sampleDirection(const Vec2f& u, float& pdf) const override;

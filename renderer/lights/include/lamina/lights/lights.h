@@ -11,8 +11,8 @@
 #include <optional>
 #include <vector>
 
-#include "lamina/lights/emitter_color.h"
 #include "lamina/geometry/geometry.h"
+#include "lamina/lights/emitter_color.h"
 #include "lamina/lights/light_bounds.h"
 #include "lamina/lights/light_bvh.h"
 
@@ -63,17 +63,21 @@ class Light {
     virtual std::optional<LightBounds> bounds() const { return std::nullopt; }
     virtual bool isDelta() const { return false; }
     virtual bool isInfinite() const { return false; }
-    /// Infinite lights: radiance arriving along -w (w points away from the scene) and density.
-    virtual Emission environment(const Vec3f&) const { return {}; }
-    virtual float environmentPdf(const Vec3f&) const { return 0.0f; }
+    /// Infinite lights: radiance arriving at `origin` along -w (w points away from the scene:
+    /// the direction of a ray from `origin` that escapes), and the density of sample(origin)
+    /// drawing w. Only a portal's depend on the origin (portal_environment.h).
+    virtual Emission environment(const Vec3f& /*origin*/, const Vec3f& /*w*/) const { return {}; }
+    virtual float environmentPdf(const Vec3f& /*origin*/, const Vec3f& /*w*/) const { return 0.0f; }
 
     /// Samples a particle: `uPosition` chooses the point, `uDirection` the direction. Its
     /// weight is radiance |cos(normal, direction)| / (pdfPosition pdfDirection).
     virtual std::optional<EmissionSample> sampleEmission(const Vec2f& uPosition,
                                                          const Vec2f& uDirection) const = 0;
     /// Densities of sampleEmission producing a particle at `point` (surface normal `normal`,
-    /// as the surface was hit) leaving along `direction`. For infinite lights only the
-    /// direction matters and the position density is that of the disk.
+    /// as the surface was hit) leaving along `direction`. For infinite lights `point` is any
+    /// point of the particle's line (none: the zero vector, when only the direction density
+    /// is asked for) and the position density is per unit area perpendicular to the direction:
+    /// the disk's, or a portal's projected.
     virtual EmissionPdf emissionPdf(const Vec3f& point, const Vec3f& normal,
                                     const Vec3f& direction) const = 0;
 };

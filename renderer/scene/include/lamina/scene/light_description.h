@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <type_traits>
 #include <variant>
 
@@ -62,6 +63,10 @@ struct EnvironmentLightDesc : LightIntensityDesc {
     double rotation = 0;  ///< rotation of the image about +y, degrees
     /// the `transform` (an orthogonal matrix), applied after `rotation`
     Mat3<double> orientation{1.0};
+    /// A rectangle (world corners in order around it) the environment is seen through, and
+    /// only through (pbrt-v4's portal; portal_environment.h); the environment lies on the side
+    /// of (c3 - c0) x (c1 - c0).
+    std::optional<std::array<Vec3<double>, 4>> portal;
 };
 
 /// One light that is not a shape.
