@@ -421,6 +421,29 @@ TEST_F(PbrtCorpusConstructs, ConstantTexturesAndConstantOperands) {
                                 at(7) + ": texture \"scale\" by a texture became a mix of 0")));
 }
 
+// pbrt-v4's DirectionMixTexture (textures.cpp): tex1 where the geometric normal is along dir,
+// tex2 across it, dir turned by the transform in effect at the Texture and normalised.
+TEST_F(PbrtCorpusConstructs, DirectionMixTexturesTurnTheirDirection) {
+    const ImportedScene s = import(
+        "AttributeBegin\nRotate 90 0 0 1\n"
+        "Texture \"d\" \"spectrum\" \"directionmix\" \"rgb tex1\" [1 0 0] \"vector3 dir\" [0 2 0]\n"
+        "AttributeEnd\n"
+        "Texture \"u\" \"float\" \"directionmix\"\n"
+        "Material \"diffuse\" \"texture reflectance\" \"d\"\nShape \"sphere\"\n"
+        "Material \"conductor\" \"texture roughness\" \"u\"\nShape \"disk\"\n");
+    const Json& d = s.scene["textures"]["d"];
+    EXPECT_EQ(d["type"], "direction_mix");
+    EXPECT_EQ(d["a"], Json::parse("[1, 0, 0]"));
+    EXPECT_EQ(d["b"], 1.0);
+    ASSERT_EQ(d["direction"].size(), 3u);
+    EXPECT_NEAR(d["direction"][0].get<double>(), -1.0, 1e-12);
+    EXPECT_NEAR(d["direction"][1].get<double>(), 0.0, 1e-12);
+    EXPECT_NEAR(d["direction"][2].get<double>(), 0.0, 1e-12);
+    EXPECT_EQ(s.scene["textures"]["u (float)"],
+              Json::parse(R"({"type": "direction_mix", "a": 0, "b": 1, "direction": [0, 1, 0]})"));
+    EXPECT_NO_THROW(parseScene(s.scene.dump(), JsonSource{"<imported>", dir_}));
+}
+
 // pbrt-v4's UVMapping looks an image up at (uscale u + udelta, vscale v + vdelta): lamina's
 // image texture with that scale and offset, a checkerboard's too.
 TEST_F(PbrtCorpusConstructs, ImageMapOffsetsBecomeTheImagesOffset) {

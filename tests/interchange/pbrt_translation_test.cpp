@@ -681,11 +681,12 @@ TEST_F(PbrtTranslation, Materials) {
 }
 
 TEST_F(PbrtTranslation, MaterialErrors) {
-    EXPECT_EQ(importError("Material \"subsurface\"\nShape \"sphere\"\n"),
+    // pbrt-v3's plastic, which pbrt-v4 has not either.
+    EXPECT_EQ(importError("Material \"plastic\"\nShape \"sphere\"\n"),
               at(1) +
-                  ": material \"subsurface\" is not supported (lamina reads diffuse, conductor, "
+                  ": material \"plastic\" is not supported (lamina reads diffuse, conductor, "
                   "dielectric, thindielectric, coateddiffuse, coatedconductor, "
-                  "diffusetransmission, measured, hair, mix and interface)");
+                  "diffusetransmission, measured, hair, subsurface, mix and interface)");
     EXPECT_EQ(importError("Material \"conductor\" \"spectrum eta\" \"metal-CuZn-eta\" "
                           "\"spectrum k\" \"metal-CuZn-k\"\nShape \"sphere\"\n"),
               at(1) +

@@ -118,6 +118,9 @@ INSTANTIATE_TEST_SUITE_P(
                   RenderModeKind::Spectral},
         MediaCase{"GlowingCloudInFog", "scenes/media/glowing-cloud-in-fog.json",
                   RenderModeKind::Rgb},
+        // The procedural cloud glowing: its emission weighed by the density formula.
+        MediaCase{"GlowingProceduralCloud", "scenes/media/glowing-procedural-cloud.json",
+                  RenderModeKind::Rgb},
         // Twice the samples: spectral BDPT's estimate of the glowing grid is heavy-tailed
         // enough at the usual counts that 3 to 4% of the blocks were rejected while the image
         // means agreed (bdpt / path 0.999 and 1.000 per channel at 2048 / 4096 samples).

@@ -199,7 +199,7 @@ TEST_F(PortalSky, NextEventSamplesFollowTheirDensity) {
     c.significance = testing::kSignificance;
     c.cosThetaBins = 64;
     c.phiBins = 128;
-    c.sampleCount = 400000;
+    c.sampleCount = 200000;
     const ChiSquareResult r = runChiSquareTest(
         c,
         [&](Pcg32& rng) -> std::optional<Vec3d> {
@@ -234,7 +234,7 @@ TEST(PortalEnvironment, InAClosedRoomThePortalRendersThePlainEnvironment) {
     o.seed = 3;
     const BatchImages a = renderBatches(portal, o, 256, 32);
     o.seed = 4;
-    const BatchImages b = renderBatches(plain, o, 1024, 32);
+    const BatchImages b = renderBatches(plain, o, 512, 32);
     AgreementTest test;
     test.alpha = 0.01;
     test.blockSize = 2;

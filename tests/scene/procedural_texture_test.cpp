@@ -310,5 +310,56 @@ TEST(TextureMappings, APlanarCheckerboardSeenOrthographicallyIsHalfWhite) {
     EXPECT_NEAR(lamina::testing::imageMean(*r.film, 1).mean, 1.0, 1e-5);
 }
 
+// pbrt-v4's directionmix weighs by |n . dir| with the geometric normal: a white sphere (a = 1,
+// b = 0 along the view) under a uniform sky of radiance 1, seen orthographically with one
+// bounce, is |n . view| = sqrt(1 - r^2) at distance r from its centre on the image (a convex
+// surface sees the whole sky, so the reflected radiance is the reflectance). Pixels within
+// r < 0.8 are checked against their centre's value (the box filter's average differs by less
+// than 0.003 there).
+TEST(DirectionMixTexture, WeighsByTheNormalsAlignment) {
+    const SceneDesc scene = testing::sceneFromText(R"({
+      "camera": {"type": "orthographic", "position": [0, 0, -3], "look_at": [0, 0, 0],
+                 "screen_window": [-1.1, 1.1, -1.1, 1.1]},
+      "film": {"resolution": [22, 22], "filter": {"type": "box"}},
+      "integrator": {"max_depth": 1},
+      "sampler": {"spp": 64, "seed": 3},
+      "textures": {"facing": {"type": "direction_mix", "a": 1, "b": 0, "direction": [0, 0, -2]}},
+      "materials": {"m": {"type": "lambert", "reflectance": {"texture": "facing"}}},
+      "shapes": [{"type": "sphere", "radius": 1, "material": "m"}],
+      "lights": [{"type": "environment", "radiance": 1}]
+    })");
+    RenderOptions o;
+    const RenderResult r = renderScene(scene, o);
+    int checked = 0;
+    for (int y = 0; y < 22; ++y)
+        for (int x = 0; x < 22; ++x) {
+            const double px = -1.1 + 0.1 * (x + 0.5), py = 1.1 - 0.1 * (y + 0.5);
+            const double r2 = px * px + py * py;
+            if (r2 > 0.64) continue;
+            EXPECT_NEAR(r.film->pixel(x, y)[1], std::sqrt(1 - r2), 0.005) << x << ", " << y;
+            ++checked;
+        }
+    EXPECT_GT(checked, 150);
+    const auto texture = [](const std::string& keys) {
+        return lamina::testing::errorOf([&] {
+            testing::sceneFromText(R"({"textures": {"t": {"type": "direction_mix", )" + keys +
+                                   R"(}}, "materials": {"m": {"type": "lambert",
+                                                  "reflectance": {"texture": "t"}}},
+                 "shapes": [{"type": "sphere", "material": "m"}],
+                 "lights": [{"type": "environment", "radiance": 1}]})");
+        });
+    };
+    EXPECT_EQ(texture(R"("direction": [0, 0, 0])"),
+              "<test scene>: textures.t.direction: expected a non-zero vector");
+    // At a point of unknown normal (an alpha test's) the weight is 0: b.
+    const DirectionMixTexture mix(std::make_shared<ConstantTexture>(Rgb<float>(1.0f)),
+                                  std::make_shared<ConstantTexture>(Rgb<float>(0.25f)),
+                                  Vec3<float>(0, 1, 0));
+    EXPECT_EQ(mix.evaluate(TexturePoint(Vec2<float>(0.5f)))[0], 0.25f);
+    EXPECT_NEAR(mix.evaluate(TexturePoint(Vec2<float>(0.5f), Vec3<float>(0.0f),
+                                          glm::normalize(Vec3<float>(0, -1, 1))))[0],
+                0.25f + 0.75f * std::sqrt(0.5f), 1e-6f);
+}
+
 }  // namespace
 }  // namespace lamina::render

@@ -345,8 +345,8 @@ std::optional<SurfaceHit> Geometry::intersect(const Vec3f& origin, const Vec3f& 
         const ShapeInfo& info = shapes_[rh.hit.geomID];
         surfaceAt(info, Vec3<double>(origin), Vec3<double>(direction), rh.hit, hit);
         if (info.turnsNormal)
-            hit.ns = perturbedShadingNormal(scene_, info.material, {hit.uv, hit.p}, hit.ng, hit.ns,
-                                            hit.derivatives);
+            hit.ns = perturbedShadingNormal(scene_, info.material, {hit.uv, hit.p, hit.ng}, hit.ng,
+                                            hit.ns, hit.derivatives);
         return hit;
     }
     // An instance's hit: the surface in the object's space along the ray Embree traced there
@@ -390,7 +390,8 @@ std::optional<SurfaceHit> Geometry::intersect(const Vec3f& origin, const Vec3f& 
         };
         dw.dndu = normalDerivative(dw.dndu);
         dw.dndv = normalDerivative(dw.dndv);
-        hit.ns = perturbedShadingNormal(scene_, info.material, {hit.uv, hit.p}, hit.ng, hit.ns, dw);
+        hit.ns = perturbedShadingNormal(scene_, info.material, {hit.uv, hit.p, hit.ng}, hit.ng,
+                                        hit.ns, dw);
     }
     return hit;
 }

@@ -20,7 +20,7 @@ S BdptConnector<S>::evalAt(const Vertex& v, const Vec3f& wPrev, const Vec3f& wNe
     if (v.type == BdptVertexType::Medium) return S(henyeyGreenstein(-glm::dot(wPrev, wNext), v.g));
     if (!sidesAgree(wPrev, wNext, v.ng, v.ns)) return S(0.0f);
     const Frame<float> frame = Frame<float>::fromNormalTangent(v.ns, v.tangent);
-    const Bxdf<S>& bsdf = mode_.bsdf(v.material, {v.uv, v.p}, frame, path);
+    const Bxdf<S>& bsdf = mode_.bsdf(v.material, {v.uv, v.p, v.ng}, frame, path);
     const Vec3f prev = frame.toLocal(wPrev), next = frame.toLocal(wNext);
     if (!lightSubpath) return bsdf.eval(prev, next, TransportMode::Radiance);
     S f = ablations_.connectionBsdf(bsdf, prev, next);

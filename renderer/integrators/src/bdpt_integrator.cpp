@@ -288,7 +288,7 @@ void BdptIntegrator<S>::randomWalk(WalkStart start, int maxVertices, TransportMo
         if (++vertices >= maxVertices) return;
 
         const ShadingPoint at(cur.p, cur.ng, cur.ns, -d, c_.geometry.rayOffsetScale(), cur.tangent);
-        const Bxdf<S>& bsdf = mode_.bsdf(cur.material, {cur.uv, cur.p}, at.frame, path);
+        const Bxdf<S>& bsdf = mode_.bsdf(cur.material, {cur.uv, cur.p, cur.ng}, at.frame, path);
         const auto step =
             scatter(bsdf, at, bsdfMode, vertices, settings_.russianRouletteDepth, sampler, beta,
                     [&](S& b, const BsdfSample<S>& s, const Vec3f& wi) {

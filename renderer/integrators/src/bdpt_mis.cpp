@@ -101,7 +101,7 @@ float BdptMisWeights<S>::pdf(const Vertex& v, const Vertex* prev, const Vertex& 
     if (v.type == BdptVertexType::Medium)
         return toArea(henyeyGreenstein(-glm::dot(wp, wn), v.g), v, next);
     const Frame<float> frame = Frame<float>::fromNormalTangent(v.ns, v.tangent);
-    const Bxdf<S>& bsdf = mode_.bsdf(v.material, {v.uv, v.p}, frame, path);
+    const Bxdf<S>& bsdf = mode_.bsdf(v.material, {v.uv, v.p, v.ng}, frame, path);
     return toArea(bsdf.pdf(frame.toLocal(wp), frame.toLocal(wn)), v, next);
 }
 

@@ -183,7 +183,8 @@ void LightIntegrator<S>::traceParticle(PixelSampler& sampler, typename Mode::Pat
         }
         const ShadingPoint at(hit->p, hit->ng, hit->ns, -d, c_.geometry.rayOffsetScale(),
                               hit->tangent);  // wo towards the light's side
-        const Bxdf<S>& bsdf = mode_.bsdf(shape.material, {hit->uv, hit->p}, at.frame, path);
+        const Bxdf<S>& bsdf =
+            mode_.bsdf(shape.material, {hit->uv, hit->p, hit->ng}, at.frame, path);
 
         // Connection to the camera.
         const Vec2f uCamera = sampler.get2DIfUsed(!c_.camera.isPinhole());

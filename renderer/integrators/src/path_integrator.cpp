@@ -179,7 +179,8 @@ S PathIntegrator<S>::radiance(const Vec3f& rayOrigin, const Vec3f& rayDirection,
 
         const ShadingPoint at(hit->p, hit->ng, hit->ns, -d, c_.geometry.rayOffsetScale(),
                               hit->tangent);
-        const Bxdf<S>& bsdf = mode_.bsdf(shape.material, {hit->uv, hit->p}, at.frame, path);
+        const Bxdf<S>& bsdf =
+            mode_.bsdf(shape.material, {hit->uv, hit->p, hit->ng}, at.frame, path);
 
         // Next-event estimation (its two dimensions are used at every vertex, skipped when
         // there is no estimate to make or, the light's, no light to choose between, so the

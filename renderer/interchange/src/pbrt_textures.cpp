@@ -2,6 +2,8 @@
 // defaults). Each is translated when a material first uses it.
 #include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
 
 #include "lamina/core/error.h"
 #include "pbrt_translation.h"
@@ -154,11 +156,28 @@ std::string useTexture(TranslationContext& ctx, const std::string& name,
              {"a", operand(ctx, e, "tex1", valueType, 0.0)},
              {"b", operand(ctx, e, "tex2", valueType, 1.0)},
              {"amount", operand(ctx, e, "amount", "float", 0.5)}};
+    } else if (e.type == "directionmix") {
+        // pbrt-v4's DirectionMixTexture (textures.cpp): tex1 (0) where the geometric normal is
+        // along dir, tex2 (1) where it is across, dir ((0, 1, 0)) turned by the transform in
+        // effect at the Texture and normalised: lamina's direction_mix.
+        glm::dvec3 dir(0, 1, 0);
+        if (const auto v = params.numbers("dir", {"vector3"}, 3)) {
+            if (v->size() != 3) params.fail(*params.find("dir"), "expected 3 numbers");
+            dir = glm::dvec3((*v)[0], (*v)[1], (*v)[2]);
+        }
+        dir = glm::dmat3(e.transform) * dir;
+        if (!(glm::length(dir) > 0) || !std::isfinite(glm::length(dir)))
+            ctx.fail(e.location, "directionmix: \"dir\" is zero (after the transform)");
+        dir = glm::normalize(dir);
+        t = {{"type", "direction_mix"},
+             {"a", operand(ctx, e, "tex1", valueType, 0.0)},
+             {"b", operand(ctx, e, "tex2", valueType, 1.0)},
+             {"direction", Json::array({dir.x, dir.y, dir.z})}};
     } else {
         ctx.fail(e.location, "texture \"" + e.type +
                                  "\" is not supported (lamina reads imagemap, constant, "
-                                 "checkerboard, dots, fbm, wrinkled, windy, marble, scale and "
-                                 "mix)");
+                                 "checkerboard, dots, fbm, wrinkled, windy, marble, scale, "
+                                 "mix and directionmix)");
     }
     params.refuseUnused();
     ctx.document["textures"][laminaName] = t;

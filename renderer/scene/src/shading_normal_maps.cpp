@@ -33,8 +33,8 @@ Vec3<float> bumpMappedNormal(const Texture& height, const TexturePoint& at, cons
     // The point moves with uv along the tangents (pbrt-v4's BumpMap shifts p by du dp/du), so
     // a solid texture's height is differenced along the surface as a uv-mapped one is.
     const auto h = [&](float du, float dv) {
-        return height.evaluate(
-            TexturePoint(Vec2<float>(at.uv.x + du, at.uv.y + dv), at.p + du * tu + dv * tv))[0];
+        return height.evaluate(TexturePoint(Vec2<float>(at.uv.x + du, at.uv.y + dv),
+                                            at.p + du * tu + dv * tv, at.n))[0];
     };
     const float hu = (h(kBumpStep, 0) - h(-kBumpStep, 0)) / (2 * kBumpStep);
     const float hv = (h(0, kBumpStep) - h(0, -kBumpStep)) / (2 * kBumpStep);

@@ -169,6 +169,17 @@ std::shared_ptr<const Texture> readTexture(
             texture = std::make_shared<MixTexture>(std::move(a), std::move(b), std::move(amount));
             break;
         }
+        case TextureKind::DirectionMix: {
+            // pbrt-v4's defaults: tex1 0, tex2 1, dir (0, 1, 0).
+            auto a = readOperand(t, "a", 0.0, true, Range::nonNegative(), textureIndex, textures);
+            auto b = readOperand(t, "b", 1.0, true, Range::nonNegative(), textureIndex, textures);
+            const Vec3<float> d = readVector(t, "direction", Vec3<float>(0, 1, 0));
+            const float length = glm::length(d);
+            if (!(length > 0.0f) || !std::isfinite(length))
+                t.failAt("direction", "expected a non-zero vector");
+            texture = std::make_shared<DirectionMixTexture>(std::move(a), std::move(b), d / length);
+            break;
+        }
         case TextureKind::Fbm:
         case TextureKind::Wrinkled:
         case TextureKind::Windy:

@@ -3,7 +3,8 @@
 // checkerboard and images (EXR through OpenEXR, other formats through lamina's OpenImageIO module,
 // image_input.h; bilinear, repeating; 8-bit images are decoded from sRGB unless declared linear;
 // optionally inverted), and the operations on textures that pbrt-v4 scenes use: a texture times a
-// number, a mix of two, and a texture to a power (the remapping of a looked-up roughness). Only the
+// number, a mix of two (by an amount, or by the normal's alignment with a direction), and a
+// texture to a power (the remapping of a looked-up roughness). Only the
 // renderer knows textures: the BSDF library receives the looked-up values (material_textures.h
 // reads them from a scene file and looks them up; render_mode.h rebuilds a textured material per
 // hit). The procedural textures of pbrt-v4 made of noise are in procedural_textures.h.
@@ -33,14 +34,16 @@ enum class TextureKind {
     Wrinkled,
     Windy,
     Marble,
-    Dots
+    Dots,
+    DirectionMix
 };
 inline constexpr NameTable kTextureKindNames{std::array{
     NameEntry{TextureKind::Checkerboard, "checkerboard"}, NameEntry{TextureKind::Image, "image"},
     NameEntry{TextureKind::Scale, "scale"}, NameEntry{TextureKind::Mix, "mix"},
     NameEntry{TextureKind::Power, "power"}, NameEntry{TextureKind::Fbm, "fbm"},
     NameEntry{TextureKind::Wrinkled, "wrinkled"}, NameEntry{TextureKind::Windy, "windy"},
-    NameEntry{TextureKind::Marble, "marble"}, NameEntry{TextureKind::Dots, "dots"}}};
+    NameEntry{TextureKind::Marble, "marble"}, NameEntry{TextureKind::Dots, "dots"},
+    NameEntry{TextureKind::DirectionMix, "direction_mix"}}};
 
 /// How an image texture's integer texels are decoded: sRGB or linear.
 enum class TextureColorSpace { Srgb, Linear };
@@ -160,6 +163,25 @@ class MixTexture final : public Texture {
 
   private:
     std::shared_ptr<const Texture> a_, b_, amount_;
+};
+
+/// t a + (1 - t) b with t = |n . direction|, n the surface's geometric normal: `a` where the
+/// surface faces along the direction (or against it), `b` where it is seen edge-on from there
+/// (pbrt-v4's `directionmix` texture, whose tex1 is `a`).
+class DirectionMixTexture final : public Texture {
+  public:
+    /// `direction` unit.
+    DirectionMixTexture(std::shared_ptr<const Texture> a, std::shared_ptr<const Texture> b,
+                        const Vec3<float>& direction)
+        : a_(std::move(a)), b_(std::move(b)), direction_(direction) {}
+    Rgb<float> evaluate(const TexturePoint& at) const override {
+        const float t = std::min(std::abs(glm::dot(at.n, direction_)), 1.0f);
+        return a_->evaluate(at) * t + b_->evaluate(at) * (1 - t);
+    }
+
+  private:
+    std::shared_ptr<const Texture> a_, b_;
+    Vec3<float> direction_;
 };
 
 }  // namespace lamina::render

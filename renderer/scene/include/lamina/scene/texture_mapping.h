@@ -17,10 +17,14 @@ namespace lamina::render {
 /// A surface point a texture is looked up at. A lookup that knows only uv (p at the origin)
 /// is what every uv-mapped texture needs.
 struct TexturePoint {
-    TexturePoint(const Vec2<float>& uv_, const Vec3<float>& p_ = Vec3<float>(0.0f))
-        : uv(uv_), p(p_) {}
+    TexturePoint(const Vec2<float>& uv_, const Vec3<float>& p_ = Vec3<float>(0.0f),
+                 const Vec3<float>& n_ = Vec3<float>(0.0f))
+        : uv(uv_), p(p_), n(n_) {}
     Vec2<float> uv;
     Vec3<float> p;  ///< in the world
+    /// The geometric normal, unit, in the world (pbrt-v4's TextureEvalContext::n); the zero
+    /// vector where none is known (an alpha test)
+    Vec3<float> n;
 };
 
 /// The `type` of a texture's `mapping`.
