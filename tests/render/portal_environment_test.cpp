@@ -156,6 +156,50 @@ TEST(PortalEnvironment, AFloorUnderAWindowMatchesTheFormFactorByBdpt) {
     expectFloorMatchesTheFormFactor("bdpt", 256);
 }
 
+// Two windows, two portal environments of the same sky (pbrt-v4-scenes' watercolor has a
+// room with two): the floor receives the sum of both form factors, by every integrator. BDPT's
+// weights see one light at infinity whose density along a line is the environments' together
+// (bdpt_mis.cpp). (Weighing with the first portal's density alone, or recording a particle's
+// own portal's density at its first vertex, did not show at this test's noise: the
+// light-tracing strategy carries little weight for a floor seen from above.)
+void expectTwoWindowsAddUp(const std::string& integrator, int spp) {
+    std::string scene = floorUnderAWindow(integrator);
+    const std::string second =
+        R"(, {"type": "environment", "radiance": [1, 2, 3],
+              "portal": [[1.5, 2, 1], [1.5, 2, -1], [3.5, 2, -1], [3.5, 2, 1]]}]})";
+    const auto end = scene.rfind("]\n    }");
+    ASSERT_NE(end, std::string::npos);
+    scene = scene.substr(0, end) + second;
+    RenderOptions o;
+    o.spp = spp;
+    o.seed = 8;
+    const RenderResult r = renderScene(sceneFromText(scene), o);
+    for (int c = 0; c < 3; ++c) {
+        const double L = c + 1.0;
+        constexpr int n = 200;
+        double sum = 0;
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                const double x = -0.3 + 0.6 * (i + 0.5) / n, z = -0.3 + 0.6 * (j + 0.5) / n;
+                for (const double x0 : {-1.0, 1.5})
+                    sum += cornerFormFactor(x0 + 2 - x, 1 - z, 2) -
+                           cornerFormFactor(x0 - x, 1 - z, 2) -
+                           cornerFormFactor(x0 + 2 - x, -1 - z, 2) +
+                           cornerFormFactor(x0 - x, -1 - z, 2);
+            }
+        const double expected = 0.5 * L * sum / (double(n) * n);
+        const auto m = testing::imageMean(*r.film, c);
+        EXPECT_NEAR(m.mean, expected, 4 * m.standardError + 0.003 * expected)
+            << integrator << ", channel " << c;
+    }
+}
+
+TEST(PortalEnvironment, TwoWindowsAddUpByEveryIntegrator) {
+    expectTwoWindowsAddUp("path", 256);
+    expectTwoWindowsAddUp("light", 4096);
+    expectTwoWindowsAddUp("bdpt", 256);
+}
+
 // Without the portal the same floor sees the whole sky: L x reflectance, 6.5 times more here.
 TEST(PortalEnvironment, WithoutThePortalTheFloorSeesTheWholeSky) {
     std::string scene = floorUnderAWindow("path");
@@ -246,8 +290,8 @@ TEST(PortalEnvironment, InAClosedRoomThePortalRendersThePlainEnvironment) {
     EXPECT_GE(r.meanPValue, 0.0027);
 }
 
-// A portal that is not a rectangle, or beside another environment, is refused at its key.
-TEST(PortalEnvironment, RefusesWhatIsNotARectangleOrNotAlone) {
+// A portal that is not a rectangle is refused at its key.
+TEST(PortalEnvironment, RefusesWhatIsNotARectangle) {
     const auto error = [](const std::string& lights) {
         return lamina::testing::errorOf([&] {
             sceneFromText(R"({"materials": {"m": {"type": "lambert"}},
@@ -268,10 +312,6 @@ TEST(PortalEnvironment, RefusesWhatIsNotARectangleOrNotAlone) {
     EXPECT_EQ(error(env + "[[0, 0, 0], [1, 0, 0], [1, 1, 0]]}"),
               "<test scene>: lights[0].portal: expected the portal's four corners, [[x, y, z], "
               "...] in order around it");
-    EXPECT_EQ(error(R"({"type": "environment", "radiance": 0.5}, )" + env +
-                    "[[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]]}"),
-              "<test scene>: lights[1].portal: an environment with a portal must be the scene's "
-              "only environment");
     EXPECT_EQ(error(env + "[[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]]}"), "(accepted)");
 }
 

@@ -163,13 +163,10 @@ void BdptIntegrator<S>::generateLightSubpath(PixelSampler& sampler, typename Mod
     const std::size_t first = out.size();
     randomWalk({particle->origin, e.direction, beta, e.pdfDirection, medium, hero, rU},
                settings_.maxDepth, TransportMode::Importance, sampler, path, out, stats);
-    // From infinity the first vertex's density is the disk's, projected on a surface (not
-    // 1/d^2).
-    if (v.infinite && out.size() > first) {
-        Vertex& v1 = out[first];
-        v1.pdfFwd =
-            e.pdfPosition * (v1.onSurface() ? std::abs(glm::dot(v1.ng, e.direction)) : 1.0f);
-    }
+    // From infinity the first vertex's density is per unit perpendicular area, projected on a
+    // surface (not 1/d^2): the MIS weights' density of the lights at infinity (bdpt_mis.cpp).
+    if (v.infinite && out.size() > first)
+        out[first].pdfFwd = mis_.pdfLight(out[first - 1], out[first]);
 }
 
 /// Extends a subpath from its last vertex along start's ray until `maxVertices` vertices

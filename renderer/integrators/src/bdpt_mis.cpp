@@ -13,22 +13,33 @@ float BdptMisWeights<S>::pdfLight(const Vertex& v, const Vertex& next) const {
     // A medium's emission leaves in a direction uniform on the sphere.
     if (inVolume(v)) return toArea(uniformSpherePdf<float>(), v, next);
     if (v.infinite) {
-        // The density perpendicular to the direction, projected on the surface at `next`: the
-        // disk's, which every environment without a portal shares, or a portal's, which is the
-        // scene's only environment (the scene reader refuses others beside it). A vertex that
-        // does not say its light (a camera subpath's escape) is an environment's.
+        // The density per unit area perpendicular to the direction, projected on the surface
+        // at `next`. A directional light's is its disk's. The environments are one light at
+        // infinity for the MIS weights (a camera subpath's escape does not say which one it
+        // met): their particles' densities along the line through `next`, each light's
+        // position density weighted by its share of the direction density (the disk's for
+        // all of them without portals; a portal's only for lines through it). With the
+        // direction density of pdfLightOrigin, the product is the sum over the environments of
+        // the density of a particle from each on this line, which keeps the weights of every
+        // strategy summing to one (portal_environment.h).
         const Vec3f d = -v.p;
-        std::size_t light = c_.lights.infiniteLights().front();
-        if (v.light >= 0)
-            light = std::size_t(v.light);
-        else
-            for (std::size_t k : c_.lights.infiniteLights())
-                if (!c_.lights.light(k).isDelta()) {
-                    light = k;
-                    break;
-                }
-        const EmissionPdf e = c_.lights.light(light).emissionPdf(next.p, Vec3f(0.0f), d);
-        return e.position * (next.onSurface() ? std::abs(glm::dot(next.ng, d)) : 1.0f);
+        float position = 0.0f;
+        if (v.light >= 0 && v.deltaLight) {
+            position =
+                c_.lights.light(std::size_t(v.light)).emissionPdf(next.p, Vec3f(0.0f), d).position;
+        } else {
+            float weighted = 0.0f, total = 0.0f;
+            for (std::size_t i : c_.lights.infiniteLights()) {
+                const Light& light = c_.lights.light(i);
+                if (light.isDelta()) continue;
+                const EmissionPdf e = light.emissionPdf(next.p, Vec3f(0.0f), d);
+                const float share = emitters_.lightProbability(i) * e.direction;
+                weighted += share * e.position;
+                total += share;
+            }
+            position = total > 0.0f ? weighted / total : 0.0f;
+        }
+        return position * (next.onSurface() ? std::abs(glm::dot(next.ng, d)) : 1.0f);
     }
     const Light& light = c_.lights.light(std::size_t(v.light));
     const Vec3f d = directionTo(v, next);

@@ -38,18 +38,6 @@ SceneDesc readScene(const Json& json, const JsonSource& source) {
         if (!l->value().is_array()) l->fail("expected an array of lights");
         for (std::size_t i = 0; i < l->value().size(); ++i)
             scene.lights.push_back(readLight(JsonReader(l->value()[i], l->indexPath(i), source)));
-        // BDPT treats the environments as one light at infinity whose particles all start on
-        // the scene's disk; a portal's start on the portal instead (portal_environment.h).
-        int environments = 0, portal = -1;
-        for (std::size_t i = 0; i < scene.lights.size(); ++i)
-            if (const auto* e = std::get_if<EnvironmentLightDesc>(&scene.lights[i])) {
-                ++environments;
-                if (e->portal) portal = int(i);
-            }
-        if (portal >= 0 && environments > 1)
-            JsonReader(l->value()[std::size_t(portal)], l->indexPath(std::size_t(portal)), source)
-                .failAt("portal",
-                        "an environment with a portal must be the scene's only environment");
     }
     root.finish();
     materials.recordUnused();

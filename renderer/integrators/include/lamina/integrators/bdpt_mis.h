@@ -33,9 +33,11 @@ class BdptMisWeights {
     /// Density with which a light subpath starts at light vertex `v` (or, for a camera
     /// subpath's Medium vertex, in the medium's volume there: per unit volume).
     float pdfLightOrigin(const Vertex& v) const;
+    /// Density (area measure at `next`) with which a light subpath starting at light vertex
+    /// `v` reaches `next`.
+    float pdfLight(const Vertex& v, const Vertex& next) const;
 
   private:
-    float pdfLight(const Vertex& v, const Vertex& next) const;
     /// Whether `v`, as the path's light end, is a point of an emitting medium's volume.
     static bool inVolume(const Vertex& v) { return v.volume || v.type == BdptVertexType::Medium; }
     /// The factor that turns a camera subpath's area density of reaching volume point `v` into
