@@ -841,7 +841,7 @@ TEST_F(PbrtTranslation, Textures) {
                           "\"texture reflectance\" \"n\"\nShape \"sphere\"\n"),
               at(1) +
                   ": texture \"bilerp\" is not supported (lamina reads imagemap, constant, "
-                  "checkerboard, dots, fbm, wrinkled, windy, marble, scale and mix)");
+                  "checkerboard, dots, fbm, wrinkled, windy, marble, scale, mix and directionmix)");
     EXPECT_EQ(importError("Material \"diffuse\" \"texture reflectance\" \"none\"\n"
                           "Shape \"sphere\"\n"),
               at(1) + ": no spectrum texture named \"none\"");
