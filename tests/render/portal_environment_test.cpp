@@ -116,15 +116,18 @@ double cornerFormFactor(double a, double b, double h) {
     return (A / sa * std::atan(B / sa) + B / sb * std::atan(A / sb)) / (2 * kPi<double>);
 }
 
-/// The floor's radiance averaged over the camera's view: reflectance x L x form factor.
-double expectedFloorRadiance(double L) {
+/// The floor's radiance averaged over the camera's view: reflectance x L x the form factor of
+/// the 2 x 2 windows whose lowest x is each of `windowsX` (z in [-1, 1], 2 above the floor).
+double expectedFloorRadiance(double L, std::initializer_list<double> windowsX = {-1.0}) {
     constexpr int n = 200;
     double sum = 0;
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
             const double x = -0.3 + 0.6 * (i + 0.5) / n, z = -0.3 + 0.6 * (j + 0.5) / n;
-            sum += cornerFormFactor(1 - x, 1 - z, 2) - cornerFormFactor(-1 - x, 1 - z, 2) -
-                   cornerFormFactor(1 - x, -1 - z, 2) + cornerFormFactor(-1 - x, -1 - z, 2);
+            for (const double x0 : windowsX)
+                sum += cornerFormFactor(x0 + 2 - x, 1 - z, 2) - cornerFormFactor(x0 - x, 1 - z, 2) -
+                       cornerFormFactor(x0 + 2 - x, -1 - z, 2) +
+                       cornerFormFactor(x0 - x, -1 - z, 2);
         }
     return 0.5 * L * sum / (double(n) * n);
 }
@@ -175,19 +178,7 @@ void expectTwoWindowsAddUp(const std::string& integrator, int spp) {
     o.seed = 8;
     const RenderResult r = renderScene(sceneFromText(scene), o);
     for (int c = 0; c < 3; ++c) {
-        const double L = c + 1.0;
-        constexpr int n = 200;
-        double sum = 0;
-        for (int j = 0; j < n; ++j)
-            for (int i = 0; i < n; ++i) {
-                const double x = -0.3 + 0.6 * (i + 0.5) / n, z = -0.3 + 0.6 * (j + 0.5) / n;
-                for (const double x0 : {-1.0, 1.5})
-                    sum += cornerFormFactor(x0 + 2 - x, 1 - z, 2) -
-                           cornerFormFactor(x0 - x, 1 - z, 2) -
-                           cornerFormFactor(x0 + 2 - x, -1 - z, 2) +
-                           cornerFormFactor(x0 - x, -1 - z, 2);
-            }
-        const double expected = 0.5 * L * sum / (double(n) * n);
+        const double expected = expectedFloorRadiance(c + 1.0, {-1.0, 1.5});
         const auto m = testing::imageMean(*r.film, c);
         EXPECT_NEAR(m.mean, expected, 4 * m.standardError + 0.003 * expected)
             << integrator << ", channel " << c;
