@@ -44,8 +44,6 @@ class WindowedDistribution2D {
   private:
     /// The integral of f over [0, u] x [0, v].
     double cumulative(double u, double v) const;
-    /// The integral over [w.lo.x, w.hi.x] x [w.lo.y, v].
-    double rowsBelow(const UnitWindow& w, double v) const;
     double cell(int i, int j) const {
         return f_[std::size_t(j) * std::size_t(nx_) + std::size_t(i)];
     }
