@@ -140,6 +140,12 @@ Vec3<float> EnvironmentMap::fromUv(double u, double v) const {
     return Vec3<float>(apply(worldFromMap_, d));
 }
 
+int EnvironmentMap::pixelsAroundTheHorizon() const {
+    if (mapping_ == EnvironmentMapping::EqualAreaOctahedral)
+        return int(std::lround(2 * std::sqrt(2.0) * width_));
+    return width_;
+}
+
 double EnvironmentMap::solidAnglePerArea(double v) const {
     if (mapping_ == EnvironmentMapping::EqualAreaOctahedral) return 4 * kPi<double>;
     return 2 * kPi<double> * kPi<double> * std::sin(v * kPi<double>);

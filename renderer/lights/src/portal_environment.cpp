@@ -1,5 +1,6 @@
 #include "lamina/lights/portal_environment.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -59,7 +60,8 @@ PortalEnvironment::PortalEnvironment(std::unique_ptr<EnvironmentLight> environme
     // the cell, plus a thousandth of the mean so that no direction the environment lights is
     // left to BSDF sampling alone. The flux through the rectangle integrates the same points
     // with cos theta.
-    constexpr int n = kResolution;
+    const int n =
+        std::clamp(environment_->pixelsAroundTheHorizon(), kMinResolution, kMaxResolution);
     std::vector<double> weights(std::size_t(n) * n);
     double flux = 0, sum = 0;
     for (int j = 0; j < n; ++j)

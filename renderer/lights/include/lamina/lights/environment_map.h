@@ -60,6 +60,9 @@ class EnvironmentMap {
     /// A direction drawn with density pdf(w).
     Vec3<float> sample(const Vec2<float>& u, float& pdf) const;
     float pdf(const Vec3<float>& w) const;
+    /// Pixels along the horizon: the width of an equirectangular image, the perimeter of the
+    /// equator's diamond (2 sqrt 2 times the side) in an equal-area octahedral one.
+    int pixelsAroundTheHorizon() const;
     /// Mean luminance over the sphere (solid-angle weighted).
     double averageLuminance() const { return average_; }
 

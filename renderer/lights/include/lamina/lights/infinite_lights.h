@@ -66,6 +66,9 @@ class EnvironmentLight : public InfiniteLight {
     virtual float directionPdf(const Vec3f& w) const = 0;
     Emission environment(const Vec3f&, const Vec3f& w) const final { return radianceTowards(w); }
     float environmentPdf(const Vec3f&, const Vec3f& w) const final { return directionPdf(w); }
+    /// Pixels of its image around the horizon, 0 without an image: how fine a grid that steers
+    /// samples towards its bright parts needs to be (portal_environment.h).
+    virtual int pixelsAroundTheHorizon() const { return 0; }
 
   protected:
     using InfiniteLight::InfiniteLight;
@@ -101,6 +104,7 @@ class ImageEnvironment final : public EnvironmentLight {
     double power() const override;
     Emission radianceTowards(const Vec3f& w) const override;
     float directionPdf(const Vec3f& w) const override { return map_.pdf(w); }
+    int pixelsAroundTheHorizon() const override { return map_.pixelsAroundTheHorizon(); }
 
   private:
     Vec3f sampleDirection(const Vec2f& u, float& pdf) const override;

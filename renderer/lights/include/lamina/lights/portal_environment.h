@@ -76,8 +76,11 @@ class PortalEnvironment final : public InfiniteLight {
     EmissionPdf emissionPdf(const Vec3f& point, const Vec3f& normal,
                             const Vec3f& direction) const override;
 
-    /// Cells of the steering grid per side.
-    static constexpr int kResolution = 512;
+    /// Cells of the steering grid per side: the environment's pixels around the horizon
+    /// (pixelsAroundTheHorizon), within these bounds. The grid's u spans pi radians, the
+    /// horizon 2 pi, so this is twice the image's angular resolution; a constant environment
+    /// gets the smallest grid, which has only the Jacobian to follow.
+    static constexpr int kMinResolution = 32, kMaxResolution = 512;
 
   private:
     std::unique_ptr<EnvironmentLight> environment_;
