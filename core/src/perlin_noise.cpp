@@ -32,19 +32,35 @@ int permute(int i) {
     return kPermutation[std::size_t(i & 255)];
 }
 
-/// The ramp of lattice point (x, y, z) at offset (dx, dy, dz) from it: Perlin 2002's twelve
-/// gradients, the directions to the midpoints of a cube's edges, (+-1, +-1, 0), (+-1, 0, +-1),
-/// (0, +-1, +-1), chosen by the low four bits of the hash (the sign of the first component by
-/// bit 0, of the second by bit 1). Hashes 12..15 repeat four of them; they are those of
-/// pbrt-v4's Noise, (1, 1, 0), (-1, 1, 0), (0, 1, -1), (0, -1, -1), so that lamina's noise is
-/// the one pbrt-v4's procedural media and textures read (Perlin's reference takes
-/// (1, 1, 0), (0, -1, 1), (-1, 1, 0), (0, -1, -1) there).
+struct Gradient {
+    float x, y, z;
+};
+
+/// Perlin 2002's twelve gradients, the directions to the midpoints of a cube's edges,
+/// (+-1, +-1, 0), (+-1, 0, +-1), (0, +-1, +-1), indexed by the low four bits h of a lattice
+/// point's hash: its ramp g . (dx, dy, dz) is u + v with u = dx (h < 8, 12, 13) or dy, v = dy
+/// (h < 4, 12, 13) or dz, u negated by bit 0 of h and v by bit 1. Hashes 12..15 repeat four of
+/// them; they are those of pbrt-v4's Noise, (1, 1, 0), (-1, 1, 0), (0, 1, -1), (0, -1, -1), so
+/// that lamina's noise is the one pbrt-v4's procedural media and textures read (Perlin's
+/// reference takes (1, 1, 0), (0, -1, 1), (-1, 1, 0), (0, -1, -1) there). A table, not the
+/// branches on h: the hash is random, so the branches were mispredicted about half the time
+/// (the noise is most of a procedural cloud's cost); the products with +-1 and 0 are exact, so
+/// the sums are those of the branches.
+constexpr std::array<Gradient, 16> kGradients = [] {
+    std::array<Gradient, 16> g{};
+    for (int h = 0; h < 16; ++h) {
+        const bool uIsX = h < 8 || h == 12 || h == 13, vIsY = h < 4 || h == 12 || h == 13;
+        const float u = h & 1 ? -1.0f : 1.0f, v = h & 2 ? -1.0f : 1.0f;
+        g[std::size_t(h)] = {uIsX ? u : 0.0f, (uIsX ? 0.0f : u) + (vIsY ? v : 0.0f),
+                             vIsY ? 0.0f : v};
+    }
+    return g;
+}();
+
+/// The ramp of lattice point (x, y, z) at offset (dx, dy, dz) from it.
 float ramp(int x, int y, int z, float dx, float dy, float dz) {
-    const int h = permute(permute(permute(x) + y) + z) & 15;
-    const bool xy = h < 8 || h == 12 || h == 13;
-    const float u = xy ? dx : dy;
-    const float v = h < 4 || h == 12 || h == 13 ? dy : dz;
-    return (h & 1 ? -u : u) + (h & 2 ? -v : v);
+    const Gradient& g = kGradients[std::size_t(permute(permute(permute(x) + y) + z) & 15)];
+    return g.x * dx + g.y * dy + g.z * dz;
 }
 
 /// Perlin 2002's fade 6t^5 - 15t^4 + 10t^3: 0 and 1 at the ends with zero first and second
@@ -63,7 +79,9 @@ float blend(float t, float a, float b) {
 float perlinNoise(const Vec3f& p) {
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return 0.0f;
     constexpr float kWrap = float(1 << 30);
-    const float x = std::fmod(p.x, kWrap), y = std::fmod(p.y, kWrap), z = std::fmod(p.z, kWrap);
+    // (fmod leaves |c| < kWrap as it is: skipped there, as it costs as much as the rest.)
+    const auto wrap = [](float c) { return std::abs(c) < kWrap ? c : std::fmod(c, kWrap); };
+    const float x = wrap(p.x), y = wrap(p.y), z = wrap(p.z);
     const float fx = std::floor(x), fy = std::floor(y), fz = std::floor(z);
     const float dx = x - fx, dy = y - fy, dz = z - fz;
     // The lattice cell modulo 256 (two's complement: & 255 is the floor modulo for negatives).
