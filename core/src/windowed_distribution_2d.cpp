@@ -80,8 +80,10 @@ std::optional<Vec2d> WindowedDistribution2D::sample(const Vec2d& u, const UnitWi
     // window's sides cut the same two columns on every row), where the general case reads four
     // rows: the binary search touches a quarter of the memory, which is what a sample costs.
     const std::size_t stride = std::size_t(nx_) + 1;
-    const auto [loI, loFx] = cellOf(w.lo.x, nx_);
-    const auto [hiI, hiFx] = cellOf(w.hi.x, nx_);
+    // (Not structured bindings: clang 14 cannot capture them in the lambda.)
+    const std::pair<int, double> lo = cellOf(w.lo.x, nx_), hi = cellOf(w.hi.x, nx_);
+    const std::size_t loI = std::size_t(lo.first), hiI = std::size_t(hi.first);
+    const double loFx = lo.second, hiFx = hi.second;
     const double below = cumulative(w.hi.x, w.lo.y) - cumulative(w.lo.x, w.lo.y);
     const auto massBelowRow = [&](int m) {
         const double v = double(m) / ny_;
