@@ -252,26 +252,29 @@ TEST_F(MitsubaCorpusConstructs, CheckerboardAlphaBecomesTheRoughnessOfItsSquareR
 // Rendered: a lambert square under a uniform environment of radiance 1 reflects radiance equal
 // to its reflectance, so each pixel of an orthographic view is color0 or color1 where Mitsuba's
 // formula puts them (mitsuba3 rectangle.cpp: uv = ((x + 1) / 2, (y + 1) / 2) on [-1, 1]^2).
-TEST_F(MitsubaCorpusConstructs, RenderedCheckerboardPutsTheColoursWhereMitsubaDoes) {
-    constexpr int kSize = 48;
-    const double c0 = 0.7, c1 = 0.1, sx = 1.5, sy = 1, tx = 0.5, ty = 0;
-    const auto file = scene(R"j(<sensor type="orthographic">
+// An orthographic 48 x 48 view of the 2 x 2 rectangle at the origin (Mitsuba's), 64 samples a
+// pixel, in a uniform sky, the rectangle's BSDF `bsdf`.
+std::string checkerScene(const std::string& bsdf) {
+    return R"j(<sensor type="orthographic">
   <transform name="to_world"><lookat origin="0, 0, 5" target="0, 0, 0" up="0, 1, 0"/></transform>
   <film type="hdrfilm"><integer name="width" value="48"/><integer name="height" value="48"/>
     <rfilter type="box"/></film>
   <sampler type="independent"><integer name="sample_count" value="64"/></sampler>
 </sensor>
 <integrator type="path"><integer name="max_depth" value="2"/></integrator>
-<shape type="rectangle"><bsdf type="twosided"><bsdf type="diffuse">
-  <texture type="checkerboard" name="reflectance">
-    <float name="color0" value="0.7"/><float name="color1" value="0.1"/>
-    <transform name="to_uv"><scale x="1.5" y="1"/><translate x="0.5"/></transform>
-  </texture></bsdf></bsdf></shape>
-<emitter type="constant"/>)j");
-    const SceneDesc loaded = loadScene(file);
-    RenderOptions o;
-    o.seed = 7;
-    const RenderResult result = renderScene(loaded, o);
+<shape type="rectangle">)j" +
+           bsdf + R"j(</shape>
+<emitter type="constant"/>)j";
+}
+
+/// The pixels of checkerScene's image inside the cells of a checkerboard with to_uv scale 1.5 x 1
+/// and translate 0.5 (those a cell edge crosses left out) against `first` in the cells of
+/// Mitsuba's color0 and `second` in the others: every pixel nearer its own value than the other
+/// cells', and the mean within 1% (each pixel's 64 samples of a uniform light estimate its value
+/// with a relative standard deviation below 5%: the mean of hundreds of pixels lies within 1%).
+void expectCheckerCells(const Film& film, double first, double second) {
+    constexpr int kSize = 48;
+    const double sx = 1.5, sy = 1, tx = 0.5, ty = 0;
     int checked = 0, wrong = 0;
     double sum = 0, expectedSum = 0;
     for (int j = 0; j < kSize; ++j)
@@ -285,20 +288,59 @@ TEST_F(MitsubaCorpusConstructs, RenderedCheckerboardPutsTheColoursWhereMitsubaDo
             if (std::abs(fu - 0.5) < margin || std::abs(fv - 0.5) < margin || fu < margin ||
                 fu > 1 - margin || fv < margin || fv > 1 - margin)
                 continue;
-            const double expected = (fu > 0.5) == (fv > 0.5) ? c0 : c1;
-            const double value = result.film->pixel(i, j)[1];
+            const double expected = (fu > 0.5) == (fv > 0.5) ? first : second;
+            const double value = film.pixel(i, j)[1];
             ++checked;
-            wrong += std::abs(value - expected) > std::abs(value - (c0 + c1 - expected));
+            wrong += std::abs(value - expected) > std::abs(value - (first + second - expected));
             sum += value;
             expectedSum += expected;
         }
-    std::printf("  %d pixels checked, %d nearer the other colour; mean %.4f, expected %.4f\n",
+    std::printf("  %d pixels checked, %d nearer the other cells' value; mean %.4f, expected %.4f\n",
                 checked, wrong, sum / checked, expectedSum / checked);
     EXPECT_GT(checked, kSize * kSize / 3);
     EXPECT_EQ(wrong, 0);
-    // Each pixel's 64 samples of a uniform light estimate its reflectance with a relative
-    // standard deviation below 5%: the mean of hundreds of pixels lies within 1%.
     EXPECT_NEAR(sum / checked, expectedSum / checked, 0.01 * expectedSum / checked);
+}
+
+TEST_F(MitsubaCorpusConstructs, RenderedCheckerboardPutsTheColoursWhereMitsubaDoes) {
+    const auto file = scene(checkerScene(R"j(<bsdf type="twosided"><bsdf type="diffuse">
+  <texture type="checkerboard" name="reflectance">
+    <float name="color0" value="0.7"/><float name="color1" value="0.1"/>
+    <transform name="to_uv"><scale x="1.5" y="1"/><translate x="0.5"/></transform>
+  </texture></bsdf></bsdf>)j"));
+    RenderOptions o;
+    o.seed = 7;
+    expectCheckerCells(*renderScene(loadScene(file), o).film, 0.7, 0.1);
+}
+
+// mitsuba3 src/bsdfs/mask.cpp: at a hit the ray goes on through the surface with probability
+// 1 - opacity (a null BSDF), the opacity its texture's eval_1 clamped to [0, 1]; lamina's
+// stochastic alpha test, with the texture as the shape's `alpha`. A checkerboard opacity of 1
+// (color0) and 0 cuts square holes in a diffuse 0.7 rectangle: the sky (1) through the holes.
+// eval_1 gives color0 where the cells' parities differ (the colour lookup where they agree).
+TEST_F(MitsubaCorpusConstructs, TexturedMaskOpacityIsTheShapesAlpha) {
+    const std::string mask = R"j(<bsdf type="mask">
+  <texture type="checkerboard" name="opacity">
+    <float name="color0" value="1"/><float name="color1" value="0"/>
+    <transform name="to_uv"><scale x="1.5" y="1"/><translate x="0.5"/></transform>
+  </texture><bsdf type="twosided"><bsdf type="diffuse"><float name="reflectance" value="0.7"/>
+  </bsdf></bsdf></bsdf>)j";
+    const ImportedScene s = import(checkerScene(mask));
+    const Json& shape = s.scene["shapes"][0];
+    ASSERT_TRUE(shape["alpha"].is_object()) << shape.dump();
+    EXPECT_EQ(s.scene["textures"][shape["alpha"]["texture"].get<std::string>()]["type"],
+              "checkerboard");
+    RenderOptions o;
+    o.seed = 8;
+    expectCheckerCells(*renderScene(loadScene(scene(checkerScene(mask))), o).film, 1.0, 0.7);
+    // A textured alpha is read at a triangle shape's uv: a sphere's is refused at its line.
+    EXPECT_EQ(error("<shape type=\"sphere\">\n<bsdf type=\"mask\"><texture type=\"checkerboard\" "
+                    "name=\"opacity\"/><bsdf type=\"diffuse\"/></bsdf></shape>" +
+                    std::string(kLight)),
+              where(2) +
+                  ": <shape type=\"sphere\">: a textured mask opacity on a sphere is not "
+                  "supported (lamina reads a texture alpha at a triangle mesh's uv; give a "
+                  "number)");
 }
 
 // ---- polarizer -----------------------------------------------------------------------------

@@ -310,14 +310,23 @@ TranslatedBsdf translateBsdf(const Element& bsdf, const MitsubaDocument& documen
     } else if (type == "mask") {
         const auto nested = p.objects("bsdf");
         if (nested.size() != 1) p.fail("mask needs one nested BSDF");
-        const auto opacity = p.color("opacity");
-        if (opacity && !opacity->is_number())
-            p.fail("opacity must be one number (a coloured or textured opacity is not supported)");
-        const double alpha = opacity ? opacity->get<double>() : 0.5;
-        if (!(alpha >= 0 && alpha <= 1)) p.fail("opacity must be in [0, 1]");
         out = translateBsdf(*nested[0], document, diagnostics, insideTwoSided, depth + 1);
         if (out.alpha) p.fail("a mask inside a mask is not supported");
-        if (alpha < 1) out.alpha = alpha;
+        // A textured opacity is the shape's textured alpha: Mitsuba's mask passes a ray on
+        // with probability 1 - opacity at the hit, as lamina's stochastic alpha test does.
+        if (const auto t = p.texture("opacity")) {
+            out.alpha = Json{{"texture", translateTexture(*t->texture, TextureUse::Opacity,
+                                                          document, diagnostics, out.textures)}};
+        } else {
+            const auto opacity = p.color("opacity");
+            if (opacity && !opacity->is_number())
+                p.fail(
+                    "opacity must be one number or a texture (a coloured opacity is not "
+                    "supported)");
+            const double alpha = opacity ? opacity->get<double>() : 0.5;
+            if (!(alpha >= 0 && alpha <= 1)) p.fail("opacity must be in [0, 1]");
+            if (alpha < 1) out.alpha = alpha;
+        }
     } else if (type == "null") {
         p.fail(
             "a null BSDF is only supported as a shape's own BSDF (an index-matched "

@@ -13,11 +13,11 @@
 
 namespace lamina::render::mitsuba {
 
-/// A translated `<bsdf>`: the lamina material, for `mask` the shape's alpha, and the textures
-/// the material names.
+/// A translated `<bsdf>`: the lamina material, for `mask` the shape's alpha (a number or
+/// {"texture": name}), and the textures the material and the alpha name.
 struct TranslatedBsdf {
     Json material;
-    std::optional<double> alpha;
+    std::optional<Json> alpha;
     std::vector<TranslatedTexture> textures;
 };
 

@@ -47,7 +47,7 @@ std::string path(Translation& t, const std::filesystem::path& file) {
 
 // The material of a shape: its one `<bsdf>` (nested or a ref), or Mitsuba's default diffuse
 // 0.5; `alpha` receives a mask's opacity.
-Json shapeMaterial(Translation& t, Plugin& p, std::optional<double>& alpha,
+Json shapeMaterial(Translation& t, Plugin& p, std::optional<Json>& alpha,
                    const SurfaceDirections* surface) {
     const auto bsdfs = p.objects("bsdf");
     if (bsdfs.size() > 1) p.fail("a shape takes one BSDF, got " + std::to_string(bsdfs.size()));
@@ -264,7 +264,7 @@ void translateShape(Translation& t, const Element& e, Json& out, bool inGroup) {
             if (glm::length(u) > 0 && glm::length(v) > 0)
                 surface = SurfaceDirections{glm::normalize(u), glm::normalize(v)};
         }
-        std::optional<double> alpha;
+        std::optional<Json> alpha;
         s["material"] = shapeMaterial(t, p, alpha, surface ? &*surface : nullptr);
         if (s["type"] == "curves") warnCurveTextures(t, p, s["material"]);
         shapeMedia(t, p, s);
@@ -291,6 +291,12 @@ void translateShape(Translation& t, const Element& e, Json& out, bool inGroup) {
         }
         if (alpha) {
             if (!emitters.empty()) p.fail("a mask on an emitting shape is not supported");
+            const std::string kind = s.value("type", "");
+            if (alpha->is_object() &&
+                (kind == "sphere" || kind == "disk" || kind == "cylinder" || kind == "curves"))
+                p.fail("a textured mask opacity on a " + kind +
+                       " is not supported (lamina reads a texture alpha at a triangle mesh's "
+                       "uv; give a number)");
             s["alpha"] = *alpha;
         }
     }

@@ -42,7 +42,7 @@ std::string baseName(const Plugin& p, const std::string& what) {
 
 // Whether `use` evaluates the texture as one number (Texture::eval_1).
 bool singleValued(TextureUse use) {
-    return use == TextureUse::Alpha || use == TextureUse::Scalar;
+    return use == TextureUse::Alpha || use == TextureUse::Scalar || use == TextureUse::Opacity;
 }
 
 // A checkerboard's colour as a lamina colour (a number or [r, g, b]); as an alpha, one number
@@ -56,7 +56,9 @@ Json checkerColor(Plugin& p, const char* name, double fallback, TextureUse use) 
                    "\": a spectrum in a checkerboard is not supported (give an rgb)");
         return c;
     }
-    const std::string what = use == TextureUse::Alpha ? "an alpha" : "a roughness";
+    const std::string what = use == TextureUse::Alpha     ? "an alpha"
+                             : use == TextureUse::Opacity ? "an opacity"
+                                                          : "a roughness";
     if (!c.is_number())
         p.fail(std::string("parameter \"") + name + "\": " + what + " must be one number");
     const double v = c.get<double>();
@@ -160,10 +162,11 @@ std::string translateTexture(const Element& texture, TextureUse use,
         out.push_back({root, {{"type", "power"}, {"texture", name}, {"exponent", 0.5}}, {}});
         return root;
     }
-    if (p.type() == "bitmap" && use == TextureUse::Scalar)
-        p.warn(
-            "a bitmap as roughness: lamina reads its first channel where Mitsuba reads the "
-            "luminance of an RGB image (the same for a grey one)");
+    if (p.type() == "bitmap" && (use == TextureUse::Scalar || use == TextureUse::Opacity))
+        p.warn(std::string("a bitmap as ") +
+               (use == TextureUse::Opacity ? "a mask's opacity" : "roughness") +
+               ": lamina reads its first channel where Mitsuba reads the luminance of an RGB "
+               "image (the same for a grey one)");
     if (p.type() == "bitmap") return bitmap(p, out, raw);
     if (use == TextureUse::Map)
         p.fail("a bumpmap's or normalmap's texture must be a bitmap (lamina reads image files)");

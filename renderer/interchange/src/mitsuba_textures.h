@@ -31,6 +31,9 @@ enum class TextureUse {
     /// A number in [0, 1] taken as it is (Texture::eval_1): the principled BSDF's `roughness`,
     /// which lamina's textured roughness takes with the same alpha = roughness^2.
     Scalar,
+    /// A mask's opacity (Texture::eval_1): a number in [0, 1] taken as it is, lamina's
+    /// textured `alpha` (which reads a texture's first channel).
+    Opacity,
     /// The height of a bumpmap or the texels of a normalmap: a bitmap, its first channel or its
     /// colour as it is.
     Map,

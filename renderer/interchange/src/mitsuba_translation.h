@@ -23,7 +23,7 @@ struct Translation {
     Json scene = Json::object();
     /// Top-level BSDFs with an id, translated once: the lamina material name (the id) and
     /// the alpha a `mask` gives the shapes that use it.
-    std::map<const Element*, std::optional<double>> namedBsdfs;
+    std::map<const Element*, std::optional<Json>> namedBsdfs;
     /// Media translated so far (each once, wherever it is referred to): their lamina names.
     std::map<const Element*, std::string> media;
     /// Area emitters that shapes took (a top-level one with an id is used by reference).
