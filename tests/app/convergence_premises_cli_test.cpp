@@ -33,6 +33,10 @@ std::string readText(const fs::path& path) {
 
 class ConvergencePremisesCli : public CliTest {
   protected:
+    void SetUp() override {
+        CliTest::SetUp();
+        withoutDrawing();
+    }
     // A reference rendered by `lamina render` with another seed than the measured renders.
     std::string reference(const std::string& name, const std::string& options,
                           const std::string& sceneFile) {

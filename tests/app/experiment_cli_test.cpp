@@ -31,6 +31,10 @@ const char* kFurnace = R"({
 
 class ExperimentCli : public CliTest {
   protected:
+    void SetUp() override {
+        CliTest::SetUp();
+        withoutDrawing();
+    }
     /// The furnace scene and its environment image of ones, beside each other in dir_.
     std::string furnace() {
         render::writeFloatExr((dir_ / "ones-sky.exr").string(), 16, 8, {"R", "G", "B"},

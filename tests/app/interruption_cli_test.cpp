@@ -45,6 +45,10 @@ std::string scene(int width, int height) {
 
 class Interruption : public CliTest {
   protected:
+    void SetUp() override {
+        CliTest::SetUp();
+        withoutDrawing();
+    }
     // Starts lamina with `args` (stdout and stderr to files in the scratch directory).
     pid_t start(const std::vector<std::string>& args) {
         std::vector<std::string> argv = {std::string(LAMINA_BINARY_DIR) + "/app/lamina"};

@@ -24,7 +24,13 @@ const char* kTinyTestObject = R"({
   "lights": [{"type": "environment", "radiance": 1}]
 })";
 
-class LayeringCli : public CliTest {};
+class LayeringCli : public CliTest {
+  protected:
+    void SetUp() override {
+        CliTest::SetUp();
+        withoutDrawing();
+    }
+};
 
 TEST_F(LayeringCli, WritesAReportWhoseNumbersMakeSense) {
     const std::string scene = write("object.json", kTinyTestObject);

@@ -36,6 +36,10 @@ const char* kFurnace = R"({
 
 class ProvenanceCli : public CliTest {
   protected:
+    void SetUp() override {
+        CliTest::SetUp();
+        withoutDrawing();
+    }
     render::RgbImage render(const std::string& scene, const std::string& name,
                             const std::string& options = "--spp 2") {
         const std::string out = (dir_ / name).string();

@@ -66,8 +66,8 @@ TEST_F(CliTest, ReciprocityReportsAgreementAndWritesItsMaps) {
 // test reject 13-15% of pixels although the estimators agree. The verdict must say that those
 // numbers mean nothing here and what sample count would do, not print them as if they did.
 TEST_F(CliTest, ReciprocityVerdictSaysWhenThePerPixelTestCannotBeTrusted) {
-    const std::string scene =
-        testing::sourceFile("scenes/reciprocity/rough-glass.json");
+    withoutDrawing();
+    const std::string scene = testing::sourceFile("scenes/reciprocity/rough-glass.json");
     const CommandRun r =
         runLamina("reciprocity " + scene + " --spp 32 --batches 8 -o " + dir_.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
@@ -84,8 +84,8 @@ TEST_F(CliTest, ReciprocityVerdictSaysWhenThePerPixelTestCannotBeTrusted) {
 }
 
 TEST_F(CliTest, ReciprocityExitsWithTwoWhenAnAblationBreaksLightTracing) {
-    const std::string scene =
-        testing::sourceFile("scenes/reciprocity/smooth-normals.json");
+    withoutDrawing();
+    const std::string scene = testing::sourceFile("scenes/reciprocity/smooth-normals.json");
     const CommandRun r = runLamina("reciprocity " + scene +
                                    " --integrators path,light --spp 256 --batches 16 "
                                    "--ablate adjoint-correction -o " +

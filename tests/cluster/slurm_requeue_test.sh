@@ -16,8 +16,8 @@ source "$(dirname "$0")/local_slurm.sh"
 local_slurm_require
 local_slurm_start
 
-# Two shards of 2048 samples, a few seconds each on one thread: long enough to interrupt.
-settings=(--spp 4096 --resolution 64x64 --max-depth 4)
+# Two shards of 1024 samples, about ten seconds each on one thread: long enough to interrupt.
+settings=(--spp 2048 --resolution 64x64 --max-depth 4)
 timeout 30 "$lamina" farm plan "$scene" --shards 2 "${settings[@]}" --threads 1 \
   -o "$work/plan" --submit || fail "farm plan --submit"
 
@@ -32,7 +32,7 @@ wait_for "array task 0 to run" task_running
 task_rendered_a_while() {
   local cmdline stat fields
   for cmdline in /proc/[0-9]*/cmdline; do
-    [[ "$(tr '\0' ' ' 2>/dev/null <"$cmdline")" == *" render "*" --samples 0:2048 "* ]] || continue
+    [[ "$(tr '\0' ' ' 2>/dev/null <"$cmdline")" == *" render "*" --samples 0:1024 "* ]] || continue
     stat=$(cat "${cmdline%cmdline}stat" 2>/dev/null) || continue
     read -r -a fields <<<"${stat##*) }"  # fields from the third on; utime is the 14th
     [ "${fields[11]:-0}" -ge $(($(getconf CLK_TCK) / 2)) ] && return 0

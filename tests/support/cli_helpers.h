@@ -7,8 +7,10 @@
 
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -85,7 +87,25 @@ class CliTest : public ::testing::Test {
         fs::remove_all(dir_);
         fs::create_directories(dir_);
     }
-    void TearDown() override { fs::remove_all(dir_); }
+    void TearDown() override {
+        fs::remove_all(dir_);
+        if (savedPython_) {
+            if (savedPython_->empty())
+                ::unsetenv("LAMINA_PYTHON");
+            else
+                ::setenv("LAMINA_PYTHON", savedPython_->c_str(), 1);
+        }
+    }
+
+    /// For tests of an experiment's numbers and files, not of its figures: the runs of this
+    /// test get `true` as their Python, so figures.py and report_page.py do nothing
+    /// (tests/python/test_figures.py runs the same experiments, then draws and inspects every
+    /// figure). Drawing took a third of these tests' time.
+    void withoutDrawing() {
+        const char* old = std::getenv("LAMINA_PYTHON");
+        if (!savedPython_) savedPython_ = old ? old : "";
+        ::setenv("LAMINA_PYTHON", "true", 1);
+    }
 
     std::string write(const std::string& name, const std::string& text) {
         const fs::path p = dir_ / name;
@@ -97,6 +117,9 @@ class CliTest : public ::testing::Test {
     }
 
     fs::path dir_;
+
+  private:
+    std::optional<std::string> savedPython_;  ///< LAMINA_PYTHON before withoutDrawing ("": unset)
 };
 
 }  // namespace lamina
