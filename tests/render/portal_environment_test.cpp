@@ -90,23 +90,38 @@ TEST(PortalMapping, TheWindowHoldsTheDirectionsThroughTheRectangle) {
     EXPECT_FALSE(m.windowFrom(c[0] + 0.5 * (ex + ey) + 0.1 * m.normal()));
 }
 
-// The scene of the closed-form tests: a diffuse floor patch of reflectance 0.5 under a 2 x 2
-// window 2 above it, in a uniform sky of radiance [1, 2, 3]; an orthographic camera looks
-// straight down at the 0.6 x 0.6 patch around the window's axis.
-std::string floorUnderAWindow(const std::string& integrator) {
+/// A diffuse floor of reflectance 0.5, the square [-half, half]^2 at y = 0, seen by `camera`
+/// and lit by `lights` (JSON objects) alone, one bounce.
+std::string floorScene(const std::string& camera, const std::string& integrator, double half,
+                       const std::string& lights) {
     return R"({
-      "camera": {"type": "orthographic", "position": [0, 1, 0], "look_at": [0, 0, 0],
-                 "up": [0, 0, 1], "screen_window": [-0.3, 0.3, -0.3, 0.3]},
+      "camera": )" +
+           camera +
+           R"(,
       "film": {"resolution": [12, 12], "filter": {"type": "box", "radius": 0.5}},
       "integrator": {"type": ")" +
            integrator + R"(", "max_depth": 1},
       "materials": {"floor": {"type": "lambert", "reflectance": 0.5}},
       "shapes": [{"type": "rectangle", "material": "floor",
                   "transform": [{"rotate": {"axis": [1, 0, 0], "angle": -90}},
-                                {"scale": 0.3}]}],
-      "lights": [{"type": "environment", "radiance": [1, 2, 3],
-                  "portal": [[-1, 2, 1], [-1, 2, -1], [1, 2, -1], [1, 2, 1]]}]
-    })";
+                                {"scale": )" +
+           std::to_string(half) + R"(}]}],
+      "lights": [)" +
+           lights + "]\n    }";
+}
+
+/// An orthographic camera 1 above the floor looking straight down at its 0.6 x 0.6 patch.
+constexpr const char* kDownOntoThePatch =
+    R"({"type": "orthographic", "position": [0, 1, 0], "look_at": [0, 0, 0], "up": [0, 0, 1],
+        "screen_window": [-0.3, 0.3, -0.3, 0.3]})";
+
+// The scene of the closed-form tests: a diffuse floor patch of reflectance 0.5 under a 2 x 2
+// window 2 above it, in a uniform sky of radiance [1, 2, 3]; an orthographic camera looks
+// straight down at the 0.6 x 0.6 patch around the window's axis.
+std::string floorUnderAWindow(const std::string& integrator) {
+    return floorScene(kDownOntoThePatch, integrator, 0.3,
+                      R"({"type": "environment", "radiance": [1, 2, 3],
+                  "portal": [[-1, 2, 1], [-1, 2, -1], [1, 2, -1], [1, 2, 1]]})");
 }
 
 /// (1 / pi) x the integral of cos over the solid angle of the rectangle [0, a] x [0, b] at
@@ -170,19 +185,6 @@ TEST(PortalEnvironment, AFloorUnderAWindowMatchesTheFormFactorByBdpt) {
     expectFloorMatchesTheFormFactor("bdpt", 256);
 }
 
-/// floorUnderAWindow(integrator) with a second portal environment of radiance `radiance`.
-std::string withASecondWindow(const std::string& integrator, const std::string& radiance,
-                              const Window& w) {
-    std::string scene = floorUnderAWindow(integrator);
-    const auto end = scene.rfind("]\n    }");
-    const auto corner = [&](double x, double z) {
-        return "[" + std::to_string(x) + ", 2, " + std::to_string(z) + "]";
-    };
-    return scene.substr(0, end) + R"(, {"type": "environment", "radiance": )" + radiance +
-           R"(, "portal": [)" + corner(w.x0, w.z1) + ", " + corner(w.x0, w.z0) + ", " +
-           corner(w.x1, w.z0) + ", " + corner(w.x1, w.z1) + "]}]}";
-}
-
 void expectFloorRadiance(const std::string& scene, const std::string& integrator, int spp,
                          const std::function<double(int channel)>& expected) {
     RenderOptions o;
@@ -202,10 +204,14 @@ void expectFloorRadiance(const std::string& scene, const std::string& integrator
 // room with two): the floor receives the sum of both form factors, by every integrator.
 void expectTwoWindowsAddUp(const std::string& integrator, int spp) {
     const Window second{1.5, 3.5, -1, 1};
-    expectFloorRadiance(withASecondWindow(integrator, "[1, 2, 3]", second), integrator, spp,
-                        [&](int c) {
-                            return expectedFloorRadiance(c + 1.0, {{-1, 1, -1, 1}, second});
-                        });
+    const std::string scene = floorScene(kDownOntoThePatch, integrator, 0.3,
+                                         R"({"type": "environment", "radiance": [1, 2, 3],
+                  "portal": [[-1, 2, 1], [-1, 2, -1], [1, 2, -1], [1, 2, 1]]},
+                 {"type": "environment", "radiance": [1, 2, 3],
+                  "portal": [[1.5, 2, 1], [1.5, 2, -1], [3.5, 2, -1], [3.5, 2, 1]]})");
+    expectFloorRadiance(scene, integrator, spp, [&](int c) {
+        return expectedFloorRadiance(c + 1.0, {{-1, 1, -1, 1}, second});
+    });
 }
 
 TEST(PortalEnvironment, TwoWindowsAddUpByEveryIntegrator) {
@@ -229,21 +235,13 @@ void expectNestedWindowsAddUp(const std::string& integrator, int spp) {
     const double largeRadiance[3] = {1, 2, 3}, smallRadiance[3] = {6, 1, 3};
     // The camera 1 above the floor sees [-0.6, 0.6] x [-0.6, 0.6] of it (a plane square to the axis
     // maps linearly to the film): fov 2 atan(0.6).
-    const std::string scene = R"({
-      "camera": {"position": [0, 1, 0], "look_at": [0, 0, 0], "up": [0, 0, 1],
-                 "fov": 61.9275130641471},
-      "film": {"resolution": [12, 12], "filter": {"type": "box", "radius": 0.5}},
-      "integrator": {"type": ")" +
-                              integrator + R"(", "max_depth": 1},
-      "materials": {"floor": {"type": "lambert", "reflectance": 0.5}},
-      "shapes": [{"type": "rectangle", "material": "floor",
-                  "transform": [{"rotate": {"axis": [1, 0, 0], "angle": -90}},
-                                {"scale": 0.8}]}],
-      "lights": [{"type": "environment", "radiance": [1, 2, 3],
+    const std::string scene = floorScene(
+        R"({"position": [0, 1, 0], "look_at": [0, 0, 0], "up": [0, 0, 1],
+            "fov": 61.9275130641471})",
+        integrator, 0.8, R"({"type": "environment", "radiance": [1, 2, 3],
                   "portal": [[-0.6, 2, 0.6], [-0.6, 2, -0.6], [0.6, 2, -0.6], [0.6, 2, 0.6]]},
                  {"type": "environment", "radiance": [6, 1, 3],
-                  "portal": [[-0.2, 2, 0.2], [-0.2, 2, -0.2], [0.2, 2, -0.2], [0.2, 2, 0.2]]}]
-    })";
+                  "portal": [[-0.2, 2, 0.2], [-0.2, 2, -0.2], [0.2, 2, -0.2], [0.2, 2, 0.2]]})");
     expectFloorRadiance(scene, integrator, spp, [&](int c) {
         return expectedFloorRadiance(largeRadiance[c], {large}, 0.6) +
                expectedFloorRadiance(smallRadiance[c], {small}, 0.6);
